@@ -1,0 +1,353 @@
+#include "vtkSyntheticFibersSource.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+vtkStandardNewMacro(vtkSyntheticFibersSource);
+
+namespace
+{
+// A small counter-based generator (splitmix64): every tube gets its own
+// stream from (seed, tube id), so the output does not depend on threading
+// or on how the tubes are split into pieces.
+struct TubeRandom
+{
+  uint64_t State;
+  TubeRandom(unsigned int seed, vtkIdType tube)
+    : State(0x9E3779B97F4A7C15ull * (static_cast<uint64_t>(seed) + 1) ^
+        (static_cast<uint64_t>(tube) * 0xD1B54A32D192ED03ull))
+  {
+  }
+  uint64_t Next()
+  {
+    uint64_t z = (this->State += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+  }
+  /// Uniform in [0, 1).
+  double Uniform() { return static_cast<double>(this->Next() >> 11) * (1.0 / 9007199254740992.0); }
+  double Uniform(double a, double b) { return a + (b - a) * this->Uniform(); }
+  void UnitVector(double v[3])
+  {
+    const double z = this->Uniform(-1.0, 1.0);
+    const double phi = this->Uniform(0.0, 2.0 * 3.14159265358979323846);
+    const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
+    v[0] = s * std::cos(phi);
+    v[1] = s * std::sin(phi);
+    v[2] = z;
+  }
+};
+
+double Dot(const double a[3], const double b[3])
+{
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+void Normalize(double v[3])
+{
+  const double n = std::sqrt(Dot(v, v));
+  if (n > 0.0)
+  {
+    v[0] /= n;
+    v[1] /= n;
+    v[2] /= n;
+  }
+}
+
+/// Weight of a tube's share of the segments (in [0.5, 1.5)), from its id only.
+double TubeWeight(unsigned int seed, vtkIdType tube)
+{
+  TubeRandom r(seed ^ 0xA5A5A5A5u, tube);
+  return 0.5 + r.Uniform();
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSyntheticFibersSource::vtkSyntheticFibersSource()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+//------------------------------------------------------------------------------
+void vtkSyntheticFibersSource::SetPreset(int preset)
+{
+  vtkIdType tubes = this->NumberOfTubes;
+  vtkIdType segments = this->NumberOfSegments;
+  switch (preset)
+  {
+    case FIBERS:
+      tubes = 241;
+      segments = 3530;
+      break;
+    case FIBERS2:
+      tubes = 1701;
+      segments = 114489;
+      break;
+    case ONE_MILLION:
+      tubes = 8000;
+      segments = 1000000;
+      break;
+    case CUSTOM:
+      break;
+    default:
+      vtkErrorMacro(<< "Unknown preset " << preset
+                    << " (expected 0 = custom, 1 = Fibers, 2 = Fibers2, 3 = one million)");
+      return;
+  }
+  if (this->Preset != preset || tubes != this->NumberOfTubes || segments != this->NumberOfSegments)
+  {
+    this->Preset = preset;
+    this->NumberOfTubes = tubes;
+    this->NumberOfSegments = segments;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSyntheticFibersSource::SetNumberOfTubes(vtkIdType n)
+{
+  n = std::max<vtkIdType>(n, 0);
+  if (n != this->NumberOfTubes)
+  {
+    this->NumberOfTubes = n;
+    this->Preset = CUSTOM;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSyntheticFibersSource::SetNumberOfSegments(vtkIdType n)
+{
+  n = std::max<vtkIdType>(n, 0);
+  if (n != this->NumberOfSegments)
+  {
+    this->NumberOfSegments = n;
+    this->Preset = CUSTOM;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkSyntheticFibersSource::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  outInfo->Set(vtkAlgorithm::CAN_HANDLE_PIECE_REQUEST(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkSyntheticFibersSource::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* output = vtkPolyData::GetData(outInfo);
+
+  const vtkIdType nTubes = this->NumberOfTubes;
+  if (nTubes > 0 && this->NumberOfSegments < nTubes)
+  {
+    vtkErrorMacro(<< "NumberOfSegments (" << this->NumberOfSegments
+                  << ") must be at least NumberOfTubes (" << nTubes
+                  << "): every tube has at least one segment.");
+    return 0;
+  }
+  if (this->RadiusRange[0] <= 0.0 || this->RadiusRange[1] < this->RadiusRange[0])
+  {
+    vtkErrorMacro(<< "RadiusRange must satisfy 0 < min <= max, got [" << this->RadiusRange[0]
+                  << ", " << this->RadiusRange[1] << "]");
+    return 0;
+  }
+
+  int piece = 0;
+  int numPieces = 1;
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
+  {
+    piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+    numPieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+  }
+  numPieces = std::max(numPieces, 1);
+  const vtkIdType firstTube = nTubes * piece / numPieces;
+  const vtkIdType endTube = nTubes * (piece + 1) / numPieces;
+
+  // Segments per tube: one each, plus a share of the rest proportional to a
+  // per-tube weight; the cumulative rounding makes the total exact.
+  std::vector<double> cumulative(static_cast<size_t>(nTubes) + 1, 0.0);
+  for (vtkIdType t = 0; t < nTubes; ++t)
+  {
+    cumulative[t + 1] = cumulative[t] + TubeWeight(this->Seed, t);
+  }
+  const vtkIdType extra = this->NumberOfSegments - nTubes;
+  auto extraBefore = [&](vtkIdType t) -> vtkIdType
+  {
+    if (nTubes == 0 || cumulative[nTubes] <= 0.0)
+    {
+      return 0;
+    }
+    return static_cast<vtkIdType>(
+      std::floor(static_cast<double>(extra) * cumulative[t] / cumulative[nTubes] + 0.5));
+  };
+
+  const vtkIdType localTubes = endTube - firstTube;
+  std::vector<vtkIdType> pointOffset(static_cast<size_t>(localTubes) + 1, 0);
+  for (vtkIdType i = 0; i < localTubes; ++i)
+  {
+    const vtkIdType t = firstTube + i;
+    const vtkIdType segments = 1 + extraBefore(t + 1) - extraBefore(t);
+    pointOffset[i + 1] = pointOffset[i] + segments + 1;
+  }
+  const vtkIdType nPoints = pointOffset[localTubes];
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(nPoints);
+  vtkNew<vtkFloatArray> radius;
+  radius->SetName("Radius");
+  radius->SetNumberOfTuples(nPoints);
+  vtkNew<vtkFloatArray> scalar;
+  scalar->SetName("Scalar");
+  scalar->SetNumberOfTuples(nPoints);
+  vtkNew<vtkIdTypeArray> tubeIds;
+  tubeIds->SetName("TubeId");
+  tubeIds->SetNumberOfTuples(localTubes);
+
+  float* pts = static_cast<float*>(points->GetVoidPointer(0));
+  float* rad = radius->GetPointer(0);
+  float* sca = scalar->GetPointer(0);
+  const double half = 0.5 * this->BoxSize;
+  const double step = this->StepLength;
+  const double maxTurn = this->MaximumTurn;
+  const double rmin = this->RadiusRange[0];
+  const double rmax = this->RadiusRange[1];
+  const unsigned int seed = this->Seed;
+  const double twoPi = 2.0 * 3.14159265358979323846;
+
+  vtkSMPTools::For(0, localTubes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const vtkIdType t = firstTube + i;
+        TubeRandom rng(seed, t);
+        double p[3] = { rng.Uniform(-0.8, 0.8) * half, rng.Uniform(-0.8, 0.8) * half,
+          rng.Uniform(-0.8, 0.8) * half };
+        double d[3];
+        rng.UnitVector(d);
+        double omega[3] = { 0.0, 0.0, 0.0 }; // slowly varying turn vector
+        const double radiusWave = rng.Uniform(0.15, 0.5) * this->BoxSize;
+        const double radiusPhase = rng.Uniform(0.0, twoPi);
+        const double scalarWave = rng.Uniform(0.3, 1.0) * this->BoxSize;
+        const double scalarPhase = rng.Uniform(0.0, twoPi);
+        double arc = 0.0;
+
+        for (vtkIdType k = pointOffset[i]; k < pointOffset[i + 1]; ++k)
+        {
+          pts[3 * k + 0] = static_cast<float>(p[0]);
+          pts[3 * k + 1] = static_cast<float>(p[1]);
+          pts[3 * k + 2] = static_cast<float>(p[2]);
+          rad[k] = static_cast<float>(
+            rmin + (rmax - rmin) * (0.5 + 0.5 * std::sin(twoPi * arc / radiusWave + radiusPhase)));
+          sca[k] = static_cast<float>(0.5 + 0.5 * std::sin(twoPi * arc / scalarWave + scalarPhase));
+
+          // Evolve the turn vector: a damped random walk, plus a pull towards
+          // the centre near the walls of the box.
+          double kick[3];
+          rng.UnitVector(kick);
+          for (int c = 0; c < 3; ++c)
+          {
+            omega[c] = 0.85 * omega[c] + 0.25 * maxTurn * kick[c];
+            const double ahead = p[c] + 4.0 * step * d[c];
+            if (std::abs(ahead) > 0.85 * half)
+            {
+              omega[c] -= (ahead > 0 ? 1.0 : -1.0) * maxTurn;
+            }
+          }
+          // Only the part of omega normal to d turns the direction.
+          const double along = Dot(omega, d);
+          double turn[3] = { omega[0] - along * d[0], omega[1] - along * d[1],
+            omega[2] - along * d[2] };
+          const double turnLength = std::sqrt(Dot(turn, turn));
+          if (turnLength > maxTurn)
+          {
+            for (double& c : turn)
+            {
+              c *= maxTurn / turnLength;
+            }
+          }
+          // Rotate d by the angle |turn| towards turn (exact rotation, so the
+          // turning angle between segments never exceeds MaximumTurn).
+          const double angle = std::min(std::sqrt(Dot(turn, turn)), maxTurn);
+          if (angle > 0.0)
+          {
+            Normalize(turn);
+            for (int c = 0; c < 3; ++c)
+            {
+              d[c] = std::cos(angle) * d[c] + std::sin(angle) * turn[c];
+            }
+            Normalize(d);
+          }
+          for (int c = 0; c < 3; ++c)
+          {
+            p[c] += step * d[c];
+          }
+          arc += step;
+        }
+        tubeIds->SetValue(i, t);
+      }
+    });
+
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfTuples(localTubes + 1);
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfTuples(nPoints);
+  for (vtkIdType i = 0; i <= localTubes; ++i)
+  {
+    offsets->SetValue(i, pointOffset[i]);
+  }
+  vtkSMPTools::For(0, nPoints,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType k = begin; k < end; ++k)
+      {
+        connectivity->SetValue(k, k);
+      }
+    });
+  lines->SetData(offsets, connectivity);
+
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetPointData()->AddArray(radius);
+  output->GetPointData()->SetScalars(scalar);
+  output->GetCellData()->AddArray(tubeIds);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkSyntheticFibersSource::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Preset: " << this->Preset << "\n";
+  os << indent << "NumberOfTubes: " << this->NumberOfTubes << "\n";
+  os << indent << "NumberOfSegments: " << this->NumberOfSegments << "\n";
+  os << indent << "BoxSize: " << this->BoxSize << "\n";
+  os << indent << "StepLength: " << this->StepLength << "\n";
+  os << indent << "MaximumTurn: " << this->MaximumTurn << "\n";
+  os << indent << "RadiusRange: " << this->RadiusRange[0] << " " << this->RadiusRange[1] << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+}

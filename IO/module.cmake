@@ -1,0 +1,1 @@
+# IO/: readers of the SplineViz module (included from cmake/module/CMakeLists.txt).

@@ -1,0 +1,528 @@
+// Spline-tube math shared, as one source, by the shaders and the CPU code.
+//
+// This file is written in the common subset of GLSL and C++ (with GLM):
+// it is embedded into the tube shaders and also compiled as C++ through
+// vtkSplineTubeMath.h, so the CPU reference, the unit tests and the GPU run
+// the same algorithm. Rules of the subset: `real` for scalars (float on the
+// GPU, double on the CPU), vec2/vec3/vec4 of real, SV_OUT(T)/SV_INOUT(T) for
+// output parameters, real literals written with a decimal point, no swizzles
+// other than single components, no recursion, no constructors of structs.
+//
+// Contents:
+//  - cubic Hermite evaluation of (x, y, z, radius) splines (Salm §3);
+//  - the split of a cubic segment into C1-continuous quadratic Bezier
+//    sub-segments (Salm §3.2), and their oriented bounding boxes;
+//  - the ray / quadratic sphere-swept sub-segment intersection of Salm §3.2
+//    (roots of polyB by derivative bracketing and bisection, minima of the
+//    entry distance f_t on each real interval).
+
+//------------------------------------------------------------------------------
+// Cubic Hermite spline through p0 (t = 0) and p1 (t = 1) with derivatives m0, m1.
+vec4 svHermite(vec4 p0, vec4 m0, vec4 p1, vec4 m1, real t)
+{
+  real t2 = t * t;
+  real t3 = t2 * t;
+  real h00 = 2.0 * t3 - 3.0 * t2 + 1.0;
+  real h10 = t3 - 2.0 * t2 + t;
+  real h01 = -2.0 * t3 + 3.0 * t2;
+  real h11 = t3 - t2;
+  return h00 * p0 + h10 * m0 + h01 * p1 + h11 * m1;
+}
+
+// Derivative with respect to t of svHermite.
+vec4 svHermiteDerivative(vec4 p0, vec4 m0, vec4 p1, vec4 m1, real t)
+{
+  real t2 = t * t;
+  real d00 = 6.0 * t2 - 6.0 * t;
+  real d10 = 3.0 * t2 - 4.0 * t + 1.0;
+  real d01 = -6.0 * t2 + 6.0 * t;
+  real d11 = 3.0 * t2 - 2.0 * t;
+  return d00 * p0 + d10 * m0 + d01 * p1 + d11 * m1;
+}
+
+//------------------------------------------------------------------------------
+// Quadratic sub-segments.
+//
+// A cubic segment c(t), t in [0, 1], is cut into `count` (even) pieces. Each
+// pair of pieces covers [a, b] = [2j / count, (2j + 2) / count]; with the
+// end values c(a), c(b) and end derivatives d_a = c'(a)(b - a), d_b = c'(b)(b - a)
+// of that cubic piece, the two quadratic Bezier curves are
+//   (c(a), A, M) and (M, B, c(b)),  A = c(a) + d_a / 4,  B = c(b) - d_b / 4,
+//   M = (A + B) / 2.
+// They interpolate c at a, b and at the middle (a + b) / 2 (M equals the
+// cubic piece's midpoint), match its derivatives at a and b, and meet with a
+// common tangent at M: the sub-segments form a C1 quadratic spline through
+// the nodes. The radius (w component) is treated the same way; its control
+// values are clamped to >= 0 so that the radius never becomes negative.
+//
+// Sub-segment k covers the cubic parameter range [k / count, (k + 1) / count].
+void svSplitSegment(vec4 p0, vec4 m0, vec4 p1, vec4 m1, int count, int k, SV_OUT(vec4) q0,
+  SV_OUT(vec4) q1, SV_OUT(vec4) q2)
+{
+  int pairIndex = k / 2;
+  real a = 2.0 * real(pairIndex) / real(count);
+  real b = 2.0 * real(pairIndex + 1) / real(count);
+  vec4 ca = svHermite(p0, m0, p1, m1, a);
+  vec4 cb = svHermite(p0, m0, p1, m1, b);
+  vec4 da = (b - a) * svHermiteDerivative(p0, m0, p1, m1, a);
+  vec4 db = (b - a) * svHermiteDerivative(p0, m0, p1, m1, b);
+  vec4 A = ca + 0.25 * da;
+  vec4 B = cb - 0.25 * db;
+  vec4 M = 0.5 * (A + B);
+  if (k - 2 * pairIndex == 0)
+  {
+    q0 = ca;
+    q1 = A;
+    q2 = M;
+  }
+  else
+  {
+    q0 = M;
+    q1 = B;
+    q2 = cb;
+  }
+  q0.w = max(q0.w, 0.0);
+  q1.w = max(q1.w, 0.0);
+  q2.w = max(q2.w, 0.0);
+}
+
+// Quadratic Bezier evaluation and derivative.
+vec4 svQuadratic(vec4 q0, vec4 q1, vec4 q2, real l)
+{
+  real u = 1.0 - l;
+  return (u * u) * q0 + (2.0 * u * l) * q1 + (l * l) * q2;
+}
+
+vec4 svQuadraticDerivative(vec4 q0, vec4 q1, vec4 q2, real l)
+{
+  return (2.0 * (1.0 - l)) * (q1 - q0) + (2.0 * l) * (q2 - q1);
+}
+
+//------------------------------------------------------------------------------
+// Oriented bounding box of the spheres swept along a quadratic sub-segment
+// (Salm §3.2 'Rendering'): x axis from start to end point, y axis the
+// direction to the control point made orthogonal to x, z = x cross y; on each
+// axis the extent is the exact range of (axis . center(l) -+ radius(l)),
+// quadratics in l whose extrema are endpoints or the root of a linear equation.
+// Collinear and coincident control points fall back to any orthonormal axes.
+
+// Any unit vector orthogonal to unit vector n.
+vec3 svAnyOrthogonal(vec3 n)
+{
+  vec3 o;
+  if (abs(n.x) < abs(n.y) && abs(n.x) < abs(n.z))
+  {
+    o = vec3(0.0, -n.z, n.y);
+  }
+  else if (abs(n.y) < abs(n.z))
+  {
+    o = vec3(-n.z, 0.0, n.x);
+  }
+  else
+  {
+    o = vec3(-n.y, n.x, 0.0);
+  }
+  return normalize(o);
+}
+
+// Range over l in [0, 1] of the quadratic Bezier with control values c0, c1, c2.
+vec2 svQuadraticRange(real c0, real c1, real c2)
+{
+  real lo = min(c0, c2);
+  real hi = max(c0, c2);
+  real den = c0 - 2.0 * c1 + c2;
+  if (abs(den) > 1e-30)
+  {
+    real l = (c0 - c1) / den;
+    if (l > 0.0 && l < 1.0)
+    {
+      real u = 1.0 - l;
+      real v = u * u * c0 + 2.0 * u * l * c1 + l * l * c2;
+      lo = min(lo, v);
+      hi = max(hi, v);
+    }
+  }
+  return vec2(lo, hi);
+}
+
+struct SvBox
+{
+  vec3 center; // world (or whatever frame the control points are in)
+  vec3 axis0;  // unit axes
+  vec3 axis1;
+  vec3 axis2;
+  vec3 halfSize; // half extents along the axes
+};
+
+void svSubSegmentBox(vec4 q0, vec4 q1, vec4 q2, SV_OUT(SvBox) box)
+{
+  vec3 p0 = vec3(q0);
+  vec3 p1 = vec3(q1);
+  vec3 p2 = vec3(q2);
+  real scale = max(max(length(p1 - p0), length(p2 - p1)), max(max(q0.w, q1.w), q2.w));
+  real tiny = 1e-6 * scale + 1e-30;
+  vec3 x = p2 - p0;
+  if (length(x) <= tiny)
+  {
+    x = p1 - p0;
+  }
+  if (length(x) <= tiny)
+  {
+    x = vec3(1.0, 0.0, 0.0);
+  }
+  x = normalize(x);
+  vec3 y = (p1 - p0) - dot(p1 - p0, x) * x;
+  if (length(y) <= tiny)
+  {
+    y = svAnyOrthogonal(x);
+  }
+  y = normalize(y);
+  vec3 z = cross(x, y);
+  box.axis0 = x;
+  box.axis1 = y;
+  box.axis2 = z;
+
+  vec3 lo;
+  vec3 hi;
+  for (int i = 0; i < 3; ++i)
+  {
+    vec3 a = x;
+    if (i == 1)
+    {
+      a = y;
+    }
+    if (i == 2)
+    {
+      a = z;
+    }
+    real c0 = dot(a, p0);
+    real c1 = dot(a, p1);
+    real c2 = dot(a, p2);
+    vec2 upper = svQuadraticRange(c0 + q0.w, c1 + q1.w, c2 + q2.w);
+    vec2 lower = svQuadraticRange(c0 - q0.w, c1 - q1.w, c2 - q2.w);
+    lo[i] = lower.x;
+    hi[i] = upper.y;
+  }
+  vec3 mid = 0.5 * (lo + hi);
+  box.center = mid.x * x + mid.y * y + mid.z * z;
+  box.halfSize = 0.5 * (hi - lo);
+}
+
+//------------------------------------------------------------------------------
+// Ray / sub-segment intersection (Salm §3.2, eqs. 1-8).
+//
+// In ray space the ray is the x axis. A sphere of center (x, y, z) and
+// radius r is entered at s = x - sqrt(r^2 - y^2 - z^2). Along the sub-segment
+// the entry distance is f(l) = polyA(l) - sqrt(polyB(l)) with
+// polyA = t_x(l) (degree 2) and polyB = t_r^2 - t_y^2 - t_z^2 (degree 4).
+// The ray enters the union of the spheres at the smallest f over the set where
+// polyB >= 0: at l = 0 or l = 1 (the rounded caps) or at a minimum of f inside
+// a real interval, where f'(l) = polyA' - polyB' / (2 sqrt(polyB)) = 0.
+//
+// 1. The real intervals: the roots of polyB in [0, 1] by Salm's bracketing,
+//    polyB''' (linear) and polyB'' (quadratic) analytically, then polyB' and
+//    polyB by bisection between consecutive roots of their derivative.
+// 2. On each interval, g(l) = 2 polyA' sqrt(polyB) - polyB' has the sign of f'
+//    and the same roots but stays finite at the interval ends (where f' is
+//    -infinite at a left end and +infinite at a right end, so an interval holds
+//    1 or 3 roots, Salm Figs. 15-16). g is sampled at a few points; every
+//    - to + change of sign brackets a minimum of f, refined by bisection.
+
+// Polynomial of degree <= 4 in power form: c0 + c1 l + ... + c4 l^4.
+struct SvPoly
+{
+  real c0;
+  real c1;
+  real c2;
+  real c3;
+  real c4;
+};
+
+real svPolyEval(SvPoly p, real l)
+{
+  return (((p.c4 * l + p.c3) * l + p.c2) * l + p.c1) * l + p.c0;
+}
+
+SvPoly svPolyDerivative(SvPoly p)
+{
+  SvPoly d;
+  d.c0 = p.c1;
+  d.c1 = 2.0 * p.c2;
+  d.c2 = 3.0 * p.c3;
+  d.c3 = 4.0 * p.c4;
+  d.c4 = 0.0;
+  return d;
+}
+
+// Sorted roots in [0, 1] (at most 4), with 0 and 1 always included as
+// bracket ends: v[0] = 0 < roots < v[n-1] = 1.
+struct SvBrackets
+{
+  real v[6];
+  int n;
+};
+
+// Roots of p inside (0, 1) given brackets whose consecutive entries enclose
+// at most one root each (the roots of p' plus the ends). Bisection with
+// `iterations` steps when the ends differ in sign.
+SvBrackets svRootsBetween(SvPoly p, SvBrackets b, int iterations)
+{
+  SvBrackets r;
+  r.n = 1;
+  r.v[0] = 0.0;
+  for (int i = 0; i + 1 < b.n; ++i)
+  {
+    real lo = b.v[i];
+    real hi = b.v[i + 1];
+    real flo = svPolyEval(p, lo);
+    real fhi = svPolyEval(p, hi);
+    if ((flo < 0.0 && fhi > 0.0) || (flo > 0.0 && fhi < 0.0))
+    {
+      for (int it = 0; it < iterations; ++it)
+      {
+        real mid = 0.5 * (lo + hi);
+        real fm = svPolyEval(p, mid);
+        if ((fm < 0.0) == (flo < 0.0))
+        {
+          lo = mid;
+          flo = fm;
+        }
+        else
+        {
+          hi = mid;
+        }
+      }
+      r.v[r.n] = 0.5 * (lo + hi);
+      r.n = r.n + 1;
+    }
+  }
+  r.v[r.n] = 1.0;
+  r.n = r.n + 1;
+  return r;
+}
+
+// Brackets from the real roots in (0, 1) of a quadratic a l^2 + b l + c.
+SvBrackets svQuadraticBrackets(real a, real b, real c)
+{
+  SvBrackets r;
+  r.n = 1;
+  r.v[0] = 0.0;
+  real scale = max(max(abs(a), abs(b)), abs(c));
+  if (abs(a) > 1e-12 * scale)
+  {
+    real disc = b * b - 4.0 * a * c;
+    if (disc > 0.0)
+    {
+      real s = sqrt(disc);
+      // Numerically stable pair of roots.
+      real q = -0.5 * (b + (b >= 0.0 ? s : -s));
+      real x0 = q / a;
+      real x1 = abs(q) > 0.0 ? c / q : x0;
+      real lo = min(x0, x1);
+      real hi = max(x0, x1);
+      if (lo > 0.0 && lo < 1.0)
+      {
+        r.v[r.n] = lo;
+        r.n = r.n + 1;
+      }
+      if (hi > 0.0 && hi < 1.0 && hi > lo)
+      {
+        r.v[r.n] = hi;
+        r.n = r.n + 1;
+      }
+    }
+  }
+  else if (abs(b) > 1e-12 * scale)
+  {
+    real x = -c / b;
+    if (x > 0.0 && x < 1.0)
+    {
+      r.v[r.n] = x;
+      r.n = r.n + 1;
+    }
+  }
+  r.v[r.n] = 1.0;
+  r.n = r.n + 1;
+  return r;
+}
+
+// g(l) = 2 polyA'(l) sqrt(polyB(l)) - polyB'(l), sign of f'(l) where polyB > 0.
+real svEntrySlope(SvPoly dA, SvPoly B, SvPoly dB, real l)
+{
+  return 2.0 * svPolyEval(dA, l) * sqrt(max(svPolyEval(B, l), 0.0)) - svPolyEval(dB, l);
+}
+
+// Result of a ray / sub-segment intersection.
+struct SvHit
+{
+  bool hit;      // the ray enters the swept volume at distance `distance` >= 0
+  bool inside;   // the ray starts inside the swept volume
+  real distance; // along the (unit) ray direction, from the ray origin
+  real l;        // curve parameter of the sphere hit, in [0, 1]
+};
+
+// Intersect the ray origin + s * dir (dir of unit length, s >= 0) with the
+// spheres swept along the quadratic sub-segment (q0, q1, q2) (xyz center,
+// w radius). `rootIterations` bisection steps per root; `samples` (>= 2)
+// evaluations of g per real interval to bracket the minima of f.
+SvHit svIntersectSubSegment(
+  vec3 origin, vec3 dir, vec4 q0, vec4 q1, vec4 q2, int rootIterations, int samples)
+{
+  SvHit result;
+  result.hit = false;
+  result.inside = false;
+  result.distance = 0.0;
+  result.l = 0.0;
+
+  // Ray space: x along the ray, y and z across; the origin is moved along the
+  // ray next to the sub-segment so that the coordinates stay small.
+  vec3 ex = dir;
+  vec3 ey = svAnyOrthogonal(ex);
+  vec3 ez = cross(ex, ey);
+  real shift = dot(vec3(q0) - origin, ex);
+  vec3 o = origin + shift * ex;
+  vec3 a0 = vec3(q0) - o;
+  vec3 a1 = vec3(q1) - o;
+  vec3 a2 = vec3(q2) - o;
+
+  // Power-basis coefficients of a quadratic Bezier: c + b l + a l^2.
+  vec3 X = vec3(dot(a0, ex), dot(a1, ex), dot(a2, ex));
+  vec3 Y = vec3(dot(a0, ey), dot(a1, ey), dot(a2, ey));
+  vec3 Z = vec3(dot(a0, ez), dot(a1, ez), dot(a2, ez));
+  vec3 R = vec3(q0.w, q1.w, q2.w);
+  // (c, b, a) of each component
+  vec3 px = vec3(X.x, 2.0 * (X.y - X.x), X.x - 2.0 * X.y + X.z);
+  vec3 py = vec3(Y.x, 2.0 * (Y.y - Y.x), Y.x - 2.0 * Y.y + Y.z);
+  vec3 pz = vec3(Z.x, 2.0 * (Z.y - Z.x), Z.x - 2.0 * Z.y + Z.z);
+  vec3 pr = vec3(R.x, 2.0 * (R.y - R.x), R.x - 2.0 * R.y + R.z);
+
+  SvPoly A;
+  A.c0 = px.x;
+  A.c1 = px.y;
+  A.c2 = px.z;
+  A.c3 = 0.0;
+  A.c4 = 0.0;
+  // polyB = r^2 - y^2 - z^2; the square of (c + b l + a l^2) is
+  // c^2 + 2bc l + (b^2 + 2ac) l^2 + 2ab l^3 + a^2 l^4.
+  SvPoly B;
+  B.c0 = pr.x * pr.x - py.x * py.x - pz.x * pz.x;
+  B.c1 = 2.0 * (pr.y * pr.x - py.y * py.x - pz.y * pz.x);
+  B.c2 = (pr.y * pr.y + 2.0 * pr.z * pr.x) - (py.y * py.y + 2.0 * py.z * py.x) -
+    (pz.y * pz.y + 2.0 * pz.z * pz.x);
+  B.c3 = 2.0 * (pr.z * pr.y - py.z * py.y - pz.z * pz.y);
+  B.c4 = pr.z * pr.z - py.z * py.z - pz.z * pz.z;
+
+  // 1. Roots of polyB in (0, 1): B''' is linear, B'' quadratic (analytic),
+  //    B' and B by bisection between the roots of their derivatives.
+  SvPoly dB = svPolyDerivative(B);
+  SvPoly ddB = svPolyDerivative(dB);
+  SvBrackets rootsB2 = svQuadraticBrackets(ddB.c2, ddB.c1, ddB.c0);
+  SvBrackets rootsB1 = svRootsBetween(dB, rootsB2, rootIterations);
+  SvBrackets rootsB = svRootsBetween(B, rootsB1, rootIterations);
+
+  SvPoly dA = svPolyDerivative(A);
+  real best = 1e30;
+  real bestL = 0.0;
+  bool found = false;
+
+  // 2. Minima of f on every real interval [rootsB.v[i], rootsB.v[i+1]].
+  for (int i = 0; i + 1 < rootsB.n; ++i)
+  {
+    real lo = rootsB.v[i];
+    real hi = rootsB.v[i + 1];
+    real mid = 0.5 * (lo + hi);
+    if (svPolyEval(B, mid) < 0.0)
+    {
+      continue; // the ray misses the spheres of this interval
+    }
+    // The ends of the sub-segment are candidates (the rounded caps).
+    if (lo == 0.0)
+    {
+      real f0 = svPolyEval(A, 0.0) - sqrt(max(svPolyEval(B, 0.0), 0.0));
+      if (f0 < best)
+      {
+        best = f0;
+        bestL = 0.0;
+        found = true;
+      }
+    }
+    if (hi == 1.0)
+    {
+      real f1 = svPolyEval(A, 1.0) - sqrt(max(svPolyEval(B, 1.0), 0.0));
+      if (f1 < best)
+      {
+        best = f1;
+        bestL = 1.0;
+        found = true;
+      }
+    }
+    // Bracket the minima of f by sampling the sign of g, then bisect.
+    real dl = (hi - lo) / real(samples);
+    real prevL = lo;
+    real prevG = svEntrySlope(dA, B, dB, lo);
+    for (int s = 1; s <= samples; ++s)
+    {
+      real curL = (s == samples) ? hi : lo + real(s) * dl;
+      real curG = svEntrySlope(dA, B, dB, curL);
+      if (prevG < 0.0 && curG >= 0.0)
+      {
+        real a = prevL;
+        real b = curL;
+        for (int it = 0; it < rootIterations; ++it)
+        {
+          real m = 0.5 * (a + b);
+          if (svEntrySlope(dA, B, dB, m) < 0.0)
+          {
+            a = m;
+          }
+          else
+          {
+            b = m;
+          }
+        }
+        real lm = 0.5 * (a + b);
+        real fm = svPolyEval(A, lm) - sqrt(max(svPolyEval(B, lm), 0.0));
+        if (fm < best)
+        {
+          best = fm;
+          bestL = lm;
+          found = true;
+        }
+      }
+      prevL = curL;
+      prevG = curG;
+    }
+  }
+
+  if (found)
+  {
+    real dist = best + shift;
+    if (dist < 0.0)
+    {
+      result.inside = true;
+    }
+    else
+    {
+      result.hit = true;
+      result.distance = dist;
+      result.l = bestL;
+    }
+  }
+  return result;
+}
+
+//------------------------------------------------------------------------------
+// Frames for the tessellated tubes (Salm §3.1): the orthogonal vector at
+// parameter t is the linear interpolation of the two node vectors, projected
+// onto the cross-section plane of tangent `tangent` and normalized.
+vec3 svInterpolateFrame(vec3 n0, vec3 n1, real t, vec3 tangent)
+{
+  vec3 n = (1.0 - t) * n0 + t * n1;
+  vec3 tu = normalize(tangent);
+  n = n - dot(n, tu) * tu;
+  if (length(n) < 1e-12)
+  {
+    return svAnyOrthogonal(tu);
+  }
+  return normalize(n);
+}

@@ -1,0 +1,556 @@
+#include "vtkSplineTubeCore.h"
+
+#include "vtkSplineTubeMath.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkMath.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkTypeUInt32Array.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkSplineTubeCore);
+
+namespace
+{
+using vtkSplineTubeMath::vec3;
+using vtkSplineTubeMath::vec4;
+
+bool IsFinite(double v)
+{
+  return std::isfinite(v);
+}
+
+/// Central differences inside, second-order one-sided differences at the ends
+/// (first-order for two values): the derivative of `n` values with `comps`
+/// components each, in place into `out`.
+void FiniteDifferences(const float* values, float* out, vtkIdType n, int comps)
+{
+  for (int c = 0; c < comps; ++c)
+  {
+    auto v = [&](vtkIdType i) { return static_cast<double>(values[i * comps + c]); };
+    if (n == 1)
+    {
+      out[c] = 0.0f;
+      continue;
+    }
+    if (n == 2)
+    {
+      const float d = static_cast<float>(v(1) - v(0));
+      out[c] = d;
+      out[comps + c] = d;
+      continue;
+    }
+    out[c] = static_cast<float>(0.5 * (-3.0 * v(0) + 4.0 * v(1) - v(2)));
+    for (vtkIdType i = 1; i + 1 < n; ++i)
+    {
+      out[i * comps + c] = static_cast<float>(0.5 * (v(i + 1) - v(i - 1)));
+    }
+    out[(n - 1) * comps + c] =
+      static_cast<float>(0.5 * (3.0 * v(n - 1) - 4.0 * v(n - 2) + v(n - 3)));
+  }
+}
+
+/// One double-reflection step of the rotation-minimizing frame (Wang et al.
+/// 2008): carries the unit normal `r0` at (x0, t0) to the point x1 with unit
+/// tangent t1.
+vec3 DoubleReflection(
+  const vec3& x0, const vec3& t0, const vec3& r0, const vec3& x1, const vec3& t1)
+{
+  const vec3 v1 = x1 - x0;
+  const double c1 = glm::dot(v1, v1);
+  vec3 rL = r0;
+  vec3 tL = t0;
+  if (c1 > 0.0)
+  {
+    rL = r0 - (2.0 / c1) * glm::dot(v1, r0) * v1;
+    tL = t0 - (2.0 / c1) * glm::dot(v1, t0) * v1;
+  }
+  const vec3 v2 = t1 - tL;
+  const double c2 = glm::dot(v2, v2);
+  vec3 r1 = rL;
+  if (c2 > 0.0)
+  {
+    r1 = rL - (2.0 / c2) * glm::dot(v2, rL) * v2;
+  }
+  // Remove the round-off drift: orthogonal to t1, unit length.
+  r1 = r1 - glm::dot(r1, t1) * t1;
+  const double len = glm::length(r1);
+  if (len < 1e-12)
+  {
+    return vtkSplineTubeMath::svAnyOrthogonal(t1);
+  }
+  return r1 / len;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkSplineTubeCore::vtkSplineTubeCore()
+{
+  this->NodePositions->SetNumberOfComponents(3);
+  this->NodePositions->SetName("Positions");
+  this->NodeTangents->SetNumberOfComponents(3);
+  this->NodeTangents->SetName("Tangents");
+  this->NodeRadii->SetNumberOfComponents(2);
+  this->NodeRadii->SetName("Radii");
+  this->NodeColors->SetNumberOfComponents(4);
+  this->NodeColors->SetName("Colors");
+  this->NodeColorDerivatives->SetNumberOfComponents(4);
+  this->NodeColorDerivatives->SetName("ColorDerivatives");
+  this->NodeFrames->SetNumberOfComponents(3);
+  this->NodeFrames->SetName("Frames");
+  this->SegmentFirstNodes->SetName("SegmentFirstNodes");
+  this->SegmentFlags->SetName("SegmentFlags");
+  this->SegmentCellIds->SetName("SegmentCellIds");
+  this->SegmentBlockIds->SetName("SegmentBlockIds");
+  this->TubeFirstNodes->SetName("TubeFirstNodes");
+  this->TubeNumberOfNodes->SetName("TubeNumberOfNodes");
+}
+
+//------------------------------------------------------------------------------
+vtkSplineTubeCore::~vtkSplineTubeCore()
+{
+  this->SetRadiusArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::Initialize()
+{
+  this->NodePositions->SetNumberOfTuples(0);
+  this->NodeTangents->SetNumberOfTuples(0);
+  this->NodeRadii->SetNumberOfTuples(0);
+  this->NodeColors->SetNumberOfTuples(0);
+  this->NodeColorDerivatives->SetNumberOfTuples(0);
+  this->NodeFrames->SetNumberOfTuples(0);
+  this->SegmentFirstNodes->SetNumberOfTuples(0);
+  this->SegmentFlags->SetNumberOfTuples(0);
+  this->SegmentCellIds->SetNumberOfTuples(0);
+  this->SegmentBlockIds->SetNumberOfTuples(0);
+  this->TubeFirstNodes->SetNumberOfTuples(0);
+  this->TubeNumberOfNodes->SetNumberOfTuples(0);
+  this->ColorsGiven = false;
+  this->ColorsMissing = false;
+  this->MaximumRadius = 0.0;
+  this->NumberOfSkippedLines = 0;
+  this->NumberOfMergedPoints = 0;
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkSplineTubeCore::GetNumberOfTubes() const
+{
+  return this->TubeFirstNodes->GetNumberOfTuples();
+}
+
+vtkIdType vtkSplineTubeCore::GetNumberOfNodes() const
+{
+  return this->NodePositions->GetNumberOfTuples();
+}
+
+vtkIdType vtkSplineTubeCore::GetNumberOfSegments() const
+{
+  return this->SegmentFirstNodes->GetNumberOfTuples();
+}
+
+//------------------------------------------------------------------------------
+bool vtkSplineTubeCore::AddPolyData(
+  vtkPolyData* input, vtkUnsignedCharArray* colors, unsigned int blockId)
+{
+  if (!input || !input->GetPoints() || input->GetNumberOfPoints() == 0 ||
+    input->GetNumberOfLines() == 0)
+  {
+    return true; // nothing to add; the caller reports an empty scene
+  }
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+
+  vtkDataArray* radiusArray = nullptr;
+  if (this->RadiusArrayName && this->RadiusArrayName[0])
+  {
+    vtkAbstractArray* abstractArray =
+      input->GetPointData()->GetAbstractArray(this->RadiusArrayName);
+    if (!abstractArray)
+    {
+      vtkErrorMacro(<< "The radius array \"" << this->RadiusArrayName
+                    << "\" is not a point array of the input.");
+      return false;
+    }
+    radiusArray = vtkDataArray::SafeDownCast(abstractArray);
+    if (!radiusArray)
+    {
+      vtkErrorMacro(<< "The radius array \"" << this->RadiusArrayName << "\" is not numeric.");
+      return false;
+    }
+    if (radiusArray->GetNumberOfComponents() != 1)
+    {
+      vtkErrorMacro(<< "The radius array \"" << this->RadiusArrayName << "\" has "
+                    << radiusArray->GetNumberOfComponents()
+                    << " components; a radius array needs exactly one.");
+      return false;
+    }
+  }
+  if (colors && (colors->GetNumberOfComponents() != 4 || colors->GetNumberOfTuples() < numPoints))
+  {
+    vtkErrorMacro(<< "Colors must be RGBA (4 components) with one tuple per point; got "
+                  << colors->GetNumberOfComponents() << " components and "
+                  << colors->GetNumberOfTuples() << " tuples for " << numPoints << " points.");
+    return false;
+  }
+  if (colors)
+  {
+    this->ColorsGiven = true;
+  }
+  else
+  {
+    this->ColorsMissing = true;
+  }
+
+  vtkPoints* points = input->GetPoints();
+  std::vector<vtkIdType> ids;
+  std::vector<double> pos;
+  std::vector<double> rad;
+  vtkIdType mergedHere = 0;
+  vtkIdType shortLines = 0;
+  vtkIdType cellId = input->GetNumberOfVerts(); // cell ids of lines follow the verts
+  const double constantRadius = this->Radius;
+
+  auto iter = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cellId)
+  {
+    vtkIdType npts;
+    const vtkIdType* pts;
+    iter->GetCurrentCell(npts, pts);
+    ids.clear();
+    pos.clear();
+    rad.clear();
+    bool bad = false;
+    for (vtkIdType k = 0; k < npts && !bad; ++k)
+    {
+      double p[3];
+      points->GetPoint(pts[k], p);
+      if (!IsFinite(p[0]) || !IsFinite(p[1]) || !IsFinite(p[2]))
+      {
+        vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << pts[k]
+                        << " has a NaN or infinite coordinate.");
+        bad = true;
+        break;
+      }
+      double r = constantRadius;
+      if (radiusArray)
+      {
+        r = radiusArray->GetComponent(pts[k], 0) * this->RadiusScale;
+        if (!IsFinite(r) || r <= 0.0)
+        {
+          vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << pts[k]
+                          << " has the radius " << r << " (radii must be finite and > 0).");
+          bad = true;
+          break;
+        }
+      }
+      // Merge repeated consecutive points (the spline needs distinct nodes).
+      if (!ids.empty())
+      {
+        const double* q = &pos[pos.size() - 3];
+        const double d2 = vtkMath::Distance2BetweenPoints(p, q);
+        const double scale = std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]), r });
+        if (d2 <= (1e-10 * scale) * (1e-10 * scale))
+        {
+          ++mergedHere;
+          continue;
+        }
+      }
+      ids.push_back(pts[k]);
+      pos.insert(pos.end(), p, p + 3);
+      rad.push_back(r);
+    }
+    if (bad)
+    {
+      ++this->NumberOfSkippedLines;
+      continue;
+    }
+    if (ids.size() < 2)
+    {
+      ++shortLines;
+      ++this->NumberOfSkippedLines;
+      continue;
+    }
+
+    // Append the tube.
+    const vtkIdType first = this->NodePositions->GetNumberOfTuples();
+    const vtkIdType n = static_cast<vtkIdType>(ids.size());
+    this->TubeFirstNodes->InsertNextValue(first);
+    this->TubeNumberOfNodes->InsertNextValue(n);
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      this->NodePositions->InsertNextTuple3(pos[3 * k], pos[3 * k + 1], pos[3 * k + 2]);
+      this->NodeRadii->InsertNextTuple2(rad[k], 0.0);
+      this->MaximumRadius = std::max(this->MaximumRadius, rad[k]);
+      if (colors)
+      {
+        const unsigned char* c = colors->GetPointer(4 * ids[k]);
+        this->NodeColors->InsertNextTuple4(c[0] / 255.0, c[1] / 255.0, c[2] / 255.0, c[3] / 255.0);
+      }
+      else
+      {
+        this->NodeColors->InsertNextTuple4(1.0, 1.0, 1.0, 1.0);
+      }
+    }
+    for (vtkIdType k = 0; k + 1 < n; ++k)
+    {
+      unsigned char flags = 0;
+      if (k == 0)
+      {
+        flags |= TUBE_START;
+      }
+      if (k + 2 == n)
+      {
+        flags |= TUBE_END;
+      }
+      this->SegmentFirstNodes->InsertNextValue(static_cast<vtkTypeUInt32>(first + k));
+      this->SegmentFlags->InsertNextValue(flags);
+      this->SegmentCellIds->InsertNextValue(cellId);
+      this->SegmentBlockIds->InsertNextValue(blockId);
+    }
+  }
+
+  if (mergedHere > 0)
+  {
+    vtkWarningMacro(<< mergedHere << " repeated consecutive point(s) merged.");
+    this->NumberOfMergedPoints += mergedHere;
+  }
+  if (shortLines > 0)
+  {
+    vtkWarningMacro(<< shortLines
+                    << " polyline(s) with fewer than two distinct points skipped (a tube "
+                       "needs at least one segment).");
+  }
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::Build()
+{
+  const vtkIdType numNodes = this->NodePositions->GetNumberOfTuples();
+  const vtkIdType numTubes = this->TubeFirstNodes->GetNumberOfTuples();
+  this->NodeTangents->SetNumberOfTuples(numNodes);
+  this->NodeColorDerivatives->SetNumberOfTuples(numNodes);
+  this->NodeFrames->SetNumberOfTuples(numNodes);
+
+  float* positions = this->NodePositions->GetPointer(0);
+  float* tangents = this->NodeTangents->GetPointer(0);
+  float* radii = this->NodeRadii->GetPointer(0);
+  float* colors = this->NodeColors->GetPointer(0);
+  float* colorDerivatives = this->NodeColorDerivatives->GetPointer(0);
+
+  vtkSMPTools::For(0, numTubes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      std::vector<float> r;
+      std::vector<float> dr;
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const vtkIdType first = this->TubeFirstNodes->GetValue(t);
+        const vtkIdType n = this->TubeNumberOfNodes->GetValue(t);
+        FiniteDifferences(positions + 3 * first, tangents + 3 * first, n, 3);
+        FiniteDifferences(colors + 4 * first, colorDerivatives + 4 * first, n, 4);
+        r.resize(n);
+        dr.resize(n);
+        for (vtkIdType k = 0; k < n; ++k)
+        {
+          r[k] = radii[2 * (first + k)];
+        }
+        FiniteDifferences(r.data(), dr.data(), n, 1);
+        for (vtkIdType k = 0; k < n; ++k)
+        {
+          radii[2 * (first + k) + 1] = dr[k];
+        }
+        this->PropagateFrames(t);
+      }
+    });
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::PropagateFrames(vtkIdType tube)
+{
+  const vtkIdType first = this->TubeFirstNodes->GetValue(tube);
+  const vtkIdType n = this->TubeNumberOfNodes->GetValue(tube);
+  const float* P = this->NodePositions->GetPointer(0);
+  const float* M = this->NodeTangents->GetPointer(0);
+  float* F = this->NodeFrames->GetPointer(0);
+
+  auto node = [&](vtkIdType i) { return vec4(P[3 * i], P[3 * i + 1], P[3 * i + 2], 0.0); };
+  auto deriv = [&](vtkIdType i) { return vec4(M[3 * i], M[3 * i + 1], M[3 * i + 2], 0.0); };
+  // Unit tangent of the cubic of segment s at parameter u; falls back to the
+  // chord when the derivative vanishes (a cusp of the spline).
+  auto unitTangent = [&](vtkIdType s, double u)
+  {
+    vec3 d =
+      vec3(vtkSplineTubeMath::svHermiteDerivative(node(s), deriv(s), node(s + 1), deriv(s + 1), u));
+    double len = glm::length(d);
+    if (len < 1e-12)
+    {
+      d = vec3(node(s + 1) - node(s));
+      len = glm::length(d);
+    }
+    return len > 0.0 ? d / len : vec3(1.0, 0.0, 0.0);
+  };
+
+  vec3 t = unitTangent(first, 0.0);
+  vec3 r = vtkSplineTubeMath::svAnyOrthogonal(t);
+  F[3 * first + 0] = static_cast<float>(r.x);
+  F[3 * first + 1] = static_cast<float>(r.y);
+  F[3 * first + 2] = static_cast<float>(r.z);
+
+  const double maxAngle = this->MaximumFrameStepAngle;
+  for (vtkIdType s = first; s + 1 < first + n; ++s)
+  {
+    // Sub-steps: sample the tangent densely enough that no step turns it by
+    // more than maxAngle (the total turning is estimated on 8 samples).
+    double turning = 0.0;
+    vec3 prev = t;
+    for (int k = 1; k <= 8; ++k)
+    {
+      const vec3 cur = unitTangent(s, k / 8.0);
+      turning += std::acos(std::max(-1.0, std::min(1.0, glm::dot(prev, cur))));
+      prev = cur;
+    }
+    const int steps = std::max(1, std::min(256, static_cast<int>(std::ceil(turning / maxAngle))));
+    vec3 x = vec3(node(s));
+    for (int k = 1; k <= steps; ++k)
+    {
+      const double u = static_cast<double>(k) / steps;
+      const vec3 x1 =
+        vec3(vtkSplineTubeMath::svHermite(node(s), deriv(s), node(s + 1), deriv(s + 1), u));
+      const vec3 t1 = unitTangent(s, u);
+      r = DoubleReflection(x, t, r, x1, t1);
+      x = x1;
+      t = t1;
+    }
+    F[3 * (s + 1) + 0] = static_cast<float>(r.x);
+    F[3 * (s + 1) + 1] = static_cast<float>(r.y);
+    F[3 * (s + 1) + 2] = static_cast<float>(r.z);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::EvaluateSegment(vtkIdType segment, double t, double position[3],
+  double derivative[3], double* radius, double* radiusDerivative)
+{
+  const vtkIdType i = this->SegmentFirstNodes->GetValue(segment);
+  const float* P = this->NodePositions->GetPointer(0);
+  const float* M = this->NodeTangents->GetPointer(0);
+  const float* R = this->NodeRadii->GetPointer(0);
+  const vec4 p0(P[3 * i], P[3 * i + 1], P[3 * i + 2], R[2 * i]);
+  const vec4 m0(M[3 * i], M[3 * i + 1], M[3 * i + 2], R[2 * i + 1]);
+  const vtkIdType j = i + 1;
+  const vec4 p1(P[3 * j], P[3 * j + 1], P[3 * j + 2], R[2 * j]);
+  const vec4 m1(M[3 * j], M[3 * j + 1], M[3 * j + 2], R[2 * j + 1]);
+  const vec4 c = vtkSplineTubeMath::svHermite(p0, m0, p1, m1, t);
+  const vec4 d = vtkSplineTubeMath::svHermiteDerivative(p0, m0, p1, m1, t);
+  if (position)
+  {
+    position[0] = c.x;
+    position[1] = c.y;
+    position[2] = c.z;
+  }
+  if (derivative)
+  {
+    derivative[0] = d.x;
+    derivative[1] = d.y;
+    derivative[2] = d.z;
+  }
+  if (radius)
+  {
+    *radius = c.w;
+  }
+  if (radiusDerivative)
+  {
+    *radiusDerivative = d.w;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::GetBounds(double bounds[6])
+{
+  vtkMath::UninitializeBounds(bounds);
+  const vtkIdType numSegments = this->SegmentFirstNodes->GetNumberOfTuples();
+  if (numSegments == 0)
+  {
+    return;
+  }
+  const float* P = this->NodePositions->GetPointer(0);
+  const float* M = this->NodeTangents->GetPointer(0);
+  const float* R = this->NodeRadii->GetPointer(0);
+  const vtkTypeUInt32* first = this->SegmentFirstNodes->GetPointer(0);
+
+  struct Local
+  {
+    double B[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
+      VTK_DOUBLE_MIN };
+  };
+  vtkSMPThreadLocal<Local> locals;
+  vtkSMPTools::For(0, numSegments,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double* B = locals.Local().B;
+      for (vtkIdType s = begin; s < end; ++s)
+      {
+        const vtkIdType i = first[s];
+        const vtkIdType j = i + 1;
+        // The cubic Bezier control points of the position and radius splines:
+        // the curve lies in their convex hull and the radius below their maximum.
+        const double r = std::max({ static_cast<double>(R[2 * i]), static_cast<double>(R[2 * j]),
+          R[2 * i] + R[2 * i + 1] / 3.0, R[2 * j] - R[2 * j + 1] / 3.0 });
+        for (int c = 0; c < 3; ++c)
+        {
+          const double c0 = P[3 * i + c];
+          const double c1 = P[3 * i + c] + M[3 * i + c] / 3.0;
+          const double c2 = P[3 * j + c] - M[3 * j + c] / 3.0;
+          const double c3 = P[3 * j + c];
+          B[2 * c] = std::min({ B[2 * c], c0 - r, c1 - r, c2 - r, c3 - r });
+          B[2 * c + 1] = std::max({ B[2 * c + 1], c0 + r, c1 + r, c2 + r, c3 + r });
+        }
+      }
+    });
+  for (int c = 0; c < 3; ++c)
+  {
+    bounds[2 * c] = VTK_DOUBLE_MAX;
+    bounds[2 * c + 1] = VTK_DOUBLE_MIN;
+  }
+  for (auto& local : locals)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      bounds[2 * c] = std::min(bounds[2 * c], local.B[2 * c]);
+      bounds[2 * c + 1] = std::max(bounds[2 * c + 1], local.B[2 * c + 1]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "RadiusArrayName: " << (this->RadiusArrayName ? this->RadiusArrayName : "(none)")
+     << "\n";
+  os << indent << "RadiusScale: " << this->RadiusScale << "\n";
+  os << indent << "MaximumFrameStepAngle: " << this->MaximumFrameStepAngle << "\n";
+  os << indent << "NumberOfTubes: " << this->GetNumberOfTubes() << "\n";
+  os << indent << "NumberOfNodes: " << this->GetNumberOfNodes() << "\n";
+  os << indent << "NumberOfSegments: " << this->GetNumberOfSegments() << "\n";
+  os << indent << "NumberOfSkippedLines: " << this->NumberOfSkippedLines << "\n";
+  os << indent << "NumberOfMergedPoints: " << this->NumberOfMergedPoints << "\n";
+}

@@ -1,0 +1,35 @@
+/**
+ * @file   vtkSplineTubeMath.h
+ * @brief  The spline-tube math of glsl/vtkSplineTubeMath.glsl, compiled as C++.
+ *
+ * glsl/vtkSplineTubeMath.glsl is written in the common subset of GLSL and C++
+ * (see the rules at its top). The shaders embed it; this header compiles the
+ * very same text in double precision with GLM, in the namespace
+ * vtkSplineTubeMath, for the tube core, the CPU reference intersection and the
+ * unit tests: Hermite evaluation, the split of a cubic segment into quadratic
+ * sub-segments and their oriented boxes (Salm §3.2 'Rendering'), and the
+ * ray / sub-segment intersection (Salm §3.2 'Intersection calculation').
+ *
+ * Not wrapped; header-only.
+ */
+#ifndef vtkSplineTubeMath_h
+#define vtkSplineTubeMath_h
+
+#include <glm/glm.hpp>
+
+namespace vtkSplineTubeMath
+{
+using namespace glm;
+using real = double;
+using vec2 = glm::dvec2;
+using vec3 = glm::dvec3;
+using vec4 = glm::dvec4;
+
+#define SV_OUT(T) T&
+#define SV_INOUT(T) T&
+#include "glsl/vtkSplineTubeMath.glsl"
+#undef SV_OUT
+#undef SV_INOUT
+}
+
+#endif

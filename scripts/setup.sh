@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Install what SplineViz needs (Debian 12 packages; idempotent, non-interactive),
+# then configure and build it in ./build (or $SPLINEVIZ_BUILD_DIR).
+#
+#   scripts/setup.sh            # install missing packages, configure, build
+#   SPLINEVIZ_SKIP_INSTALL=1 scripts/setup.sh   # do not touch packages
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${SPLINEVIZ_BUILD_DIR:-$here/build}"
+
+# ParaView 5.11 with its own VTK 9.2 and the development packages its CMake
+# package needs for the components SplineViz uses; Xvfb for headless
+# rendering (Mesa llvmpipe: OpenGL 4.5 with tessellation); GLM; DIPY for the
+# real diffusion data of the tensor examples.
+packages=(
+  build-essential cmake
+  paraview-dev python3-paraview
+  qtbase5-dev libqt5svg5-dev qttools5-dev qtxmlpatterns5-dev-tools
+  mpi-default-dev libhdf5-dev libdouble-conversion-dev libutfcpp-dev
+  libglew-dev liblz4-dev libtiff-dev
+  libglm-dev
+  xvfb xauth x11-utils
+  python3-dipy
+)
+
+if [ -z "${SPLINEVIZ_SKIP_INSTALL:-}" ]; then
+  missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    echo "== installing: ${missing[*]}"
+    sudo=""
+    if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+    export DEBIAN_FRONTEND=noninteractive
+    $sudo apt-get update -q
+    $sudo apt-get install -y -q "${missing[@]}"
+  else
+    echo "== all packages present"
+  fi
+fi
+
+echo "== configuring $build"
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release
+echo "== building with $(nproc) jobs"
+cmake --build "$build" -j "$(nproc)"
+echo "== built; to use it: source $build/splineviz-env.sh"

@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# Run a command with an X display: the current one if it answers, otherwise a
+# private Xvfb (24-bit, large enough for 1200x768 renderings; Mesa llvmpipe
+# gives OpenGL 4.5 with tessellation shaders).
+set -euo pipefail
+if [ -n "${DISPLAY:-}" ] && xdpyinfo >/dev/null 2>&1; then
+  exec "$@"
+fi
+exec xvfb-run -a -s "-screen 0 1920x1200x24 +extension GLX" "$@"
