@@ -2,3 +2,10 @@
 # numerical code they share (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkSyntheticFibersSource")
+# Symmetric tensor math (layouts, eigen-decomposition, invariants, Kindlmann's
+# glyph shape): plain C++ shared by the tensor filters and mappers; its core is
+# glsl/vtkTensorMathShared.glsl, compiled as C++ and embedded in shaders.
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizTensorMath")
+list(APPEND splineviz_shaders
+  "${SPLINEVIZ_FOLDER}/glsl/vtkTensorMathShared.glsl")
