@@ -1,7 +1,8 @@
 # Filters/: VTK filters and sources of the SplineViz module, and the plain C++
 # numerical code they share (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
-  "${SPLINEVIZ_FOLDER}/vtkSyntheticFibersSource")
+  "${SPLINEVIZ_FOLDER}/vtkSyntheticFibersSource"
+  "${SPLINEVIZ_FOLDER}/vtkTensorAnalysisFilter")
 # Symmetric tensor math (layouts, eigen-decomposition, invariants, Kindlmann's
 # glyph shape): plain C++ shared by the tensor filters and mappers; its core is
 # glsl/vtkTensorMathShared.glsl, compiled as C++ and embedded in shaders.

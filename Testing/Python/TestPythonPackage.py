@@ -5,7 +5,7 @@ import sys
 import splineviz
 from splineviz import vtkSplineTubeCore, vtkSyntheticFibersSource
 
-expected = {"vtkSplineTubeCore", "vtkSyntheticFibersSource"}
+expected = {"vtkSplineTubeCore", "vtkSyntheticFibersSource", "vtkTensorAnalysisFilter"}
 missing = expected - set(splineviz.__all__)
 if missing:
     print("ERROR: classes missing from splineviz:", sorted(missing))
