@@ -2,3 +2,19 @@
 # (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineTubeCore")
+# Superquadric tensor glyphs: the glyph math shared with the shaders
+# (vtkSuperquadricGlyphMath.h compiles glsl/vtkSuperquadricGlyphShared.glsl as C++).
+list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkSuperquadricGlyphMath.h")
+list(APPEND splineviz_shaders
+  "${SPLINEVIZ_FOLDER}/glsl/vtkSuperquadricGlyphShared.glsl")
+# The superquadric tensor glyph mapper (Hlawitschka et al., Kindlmann 2004)
+# and its shaders.
+list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkSuperquadricGlyphMapper")
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkSuperquadricGlyphPreparer")
+list(APPEND splineviz_shaders
+  "${SPLINEVIZ_FOLDER}/glsl/vtkSuperquadricGlyphVS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkSuperquadricGlyphGS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkSuperquadricGlyphFS.glsl")

@@ -1,0 +1,86 @@
+//VTK::System::Dec
+
+// Fragment shader of vtkSuperquadricGlyphMapper: casts the pixel's ray in
+// glyph space (Hlawitschka et al. §3.3-3.4): clip to the unit box, find the
+// first root of the superquadric function robustly (svqIntersect), write the
+// exact depth, shade with VTK's lights using the analytic normal.
+
+uniform int PrimitiveIDOffset;
+
+//VTK::CustomUniforms::Dec
+
+in vec4 vertexVCGSOutput;
+flat in mat3 glyphInverseGSOutput;
+flat in vec3 glyphCenterGSOutput;
+flat in vec2 glyphShapeGSOutput;
+flat in vec4 glyphColorGSOutput;
+
+uniform mat4 VCDCMatrix;
+uniform int cameraParallel;
+uniform int sqMaximumIterations;
+
+//VTK::Color::Dec
+
+//VTK::Light::Dec
+
+//VTK::Picking::Dec
+
+//VTK::DepthPeeling::Dec
+
+//VTK::Output::Dec
+
+#define real float
+#define SV_OUT(T) out T
+#define SV_INOUT(T) inout T
+//SQ::GlyphMath::Dec
+
+void main()
+{
+  vec4 vertexVC = vertexVCGSOutput;
+  vec3 dirVC = vec3(0.0, 0.0, -1.0);
+  if (cameraParallel == 0)
+  {
+    dirVC = normalize(vertexVC.xyz);
+  }
+  mat3 inv = glyphInverseGSOutput;
+  vec3 o = inv * (vertexVC.xyz - glyphCenterGSOutput);
+  vec3 d = inv * dirVC;
+  float t;
+  int evaluations;
+  if (!svqIntersect(o, d, glyphShapeGSOutput.x, glyphShapeGSOutput.y, sqMaximumIterations, t,
+        evaluations))
+  {
+    discard;
+  }
+  vertexVC.xyz = vertexVC.xyz + t * dirVC;
+  vec3 gradient;
+  svqValueGradient(o + t * d, glyphShapeGSOutput.x, glyphShapeGSOutput.y, gradient);
+  // normal = G^-T grad q; the first hit faces the viewer
+  vec3 normalVCVSOutput = normalize(transpose(inv) * gradient);
+  if (dot(normalVCVSOutput, dirVC) > 0.0)
+  {
+    normalVCVSOutput = -normalVCVSOutput;
+  }
+  vec4 posDC = VCDCMatrix * vertexVC;
+  float depth = 0.5 * (posDC.z / posDC.w) + 0.5;
+  if (depth > 1.0)
+  {
+    discard;
+  }
+  gl_FragDepth = depth;
+
+  //VTK::DepthPeeling::PreColor
+
+  //VTK::Color::Impl
+
+  //VTK::Light::Impl
+
+  if (gl_FragData[0].a <= 0.0)
+  {
+    discard;
+  }
+
+  //VTK::DepthPeeling::Impl
+
+  //VTK::Picking::Impl
+}

@@ -1,0 +1,110 @@
+//VTK::System::Dec
+
+// Vertex shader of vtkSuperquadricGlyphMapper: one vertex per glyph, carrying
+// the glyph's centre and its raw symmetric tensor. Per glyph, on the GPU
+// (Hlawitschka et al. §3.1, §3.6): eigen-decomposition, sign policy,
+// thresholds, Westin metrics, Kindlmann's shape (alpha, beta, symmetry axis),
+// the glyph frame in view coordinates and the glyph's color.
+
+in vec4 vertexMC;
+in vec3 tensorDiagMC; // xx, yy, zz
+in vec3 tensorOffMC;  // xy, yz, xz
+//SQ::ScalarColor::Dec
+
+uniform mat4 MCVCMatrix;
+uniform mat3 glyphMCVC; // linear part of model -> view
+
+uniform float sqGamma;
+uniform float sqScaleFactor;
+uniform float sqMaximumScale;
+uniform float sqMinimumThickness;
+uniform float sqMinimumRoundness;
+uniform float sqAnisotropyThreshold;
+uniform float sqMinimumEigenvalue;
+uniform int sqScaleMode;
+uniform int sqSignPolicy;
+uniform int sqColorMode;
+
+out int glyphValidVSOut;
+out vec3 glyphCenterVSOut;
+out mat3 glyphFrameVSOut; // columns: the glyph's u, v, w axes (scaled), view coordinates
+out vec2 glyphShapeVSOut; // alpha, beta
+out vec4 glyphColorVSOut; // rgba, a < 0: use the actor's colors
+
+//VTK::Picking::Dec
+
+#define real float
+#define SV_OUT(T) out T
+#define SV_INOUT(T) inout T
+//SQ::TensorMath::Dec
+//SQ::GlyphMath::Dec
+
+void main()
+{
+  glyphValidVSOut = 0;
+  glyphCenterVSOut = (MCVCMatrix * vertexMC).xyz;
+  glyphFrameVSOut = mat3(1.0);
+  glyphShapeVSOut = vec2(1.0);
+  glyphColorVSOut = vec4(1.0, 1.0, 1.0, -1.0);
+  gl_Position = vec4(glyphCenterVSOut, 1.0);
+
+  //VTK::Picking::Impl
+
+  if (any(isnan(tensorDiagMC)) || any(isnan(tensorOffMC)) || any(isinf(tensorDiagMC)) ||
+    any(isinf(tensorOffMC)))
+  {
+    return;
+  }
+  vec3 lambda;
+  vec3 e1;
+  vec3 e2;
+  vec3 e3;
+  svtSymmetricEigen(tensorDiagMC, tensorOffMC, lambda, e1, e2, e3);
+  if (!(max(abs(lambda.x), abs(lambda.z)) > 0.0))
+  {
+    return; // the zero tensor
+  }
+  float fa = svtFractionalAnisotropy(lambda);
+  if (fa < sqAnisotropyThreshold)
+  {
+    return;
+  }
+  if (!svtApplySignPolicy(sqSignPolicy, lambda, e1, e2, e3))
+  {
+    return;
+  }
+  if (lambda.z < sqMinimumEigenvalue)
+  {
+    return;
+  }
+  vec3 westin = svtWestinMetrics(lambda);
+  float alpha;
+  float beta;
+  bool isLinear =
+    svtKindlmannShape(westin.x, westin.y, sqGamma, sqMinimumRoundness, alpha, beta);
+  vec3 s = svqSemiAxes(lambda, sqScaleMode, sqScaleFactor, sqMaximumScale, sqMinimumThickness);
+  if (!(s.x > 0.0))
+  {
+    return;
+  }
+  // Canonical axes (u, v, w), w the symmetry axis: e1 for linear glyphs
+  // (Kindlmann's x axis), e3 otherwise (z axis).
+  mat3 frameMC;
+  if (isLinear)
+  {
+    frameMC = mat3(s.y * e2, s.z * e3, s.x * e1);
+  }
+  else
+  {
+    frameMC = mat3(s.x * e1, s.y * e2, s.z * e3);
+  }
+  glyphFrameVSOut = glyphMCVC * frameMC;
+  glyphShapeVSOut = vec2(alpha, beta);
+  if (sqColorMode == 0)
+  {
+    // principal direction RGB, modulated by FA
+    glyphColorVSOut = vec4(abs(e1) * fa, 1.0);
+  }
+  //SQ::ScalarColor::Impl
+  glyphValidVSOut = 1;
+}

@@ -1,0 +1,327 @@
+/**
+ * @class   vtkSuperquadricGlyphMapper
+ * @brief   Ray-cast superquadric tensor glyphs on the GPU, one per point.
+ *
+ * Draws Kindlmann's superquadric tensor glyph (Kindlmann, "Superquadric
+ * Tensor Glyphs", VisSym 2004) at every point of any vtkDataSet (image data
+ * of a DTI volume, unstructured grids, polydata, point clouds) or of every
+ * leaf of a composite data set, following Hlawitschka, Eichelbaum and
+ * Scheuermann, "Fast and memory efficient GPU-based rendering of tensor data":
+ *
+ * - Only the raw tensors are uploaded, once per data change: per glyph its
+ *   position and the 6 independent tensor components (36 bytes), plus 4
+ *   bytes of color when the glyphs may be colored by a scalar array.
+ *   Points whose tensor has a NaN/infinite component, is zero, or is masked
+ *   out (MaskArrayName) are left out on the CPU (with a warning for the
+ *   first two).
+ * - The vertex shader does, per glyph and per frame (paper §3.1, §3.6): the
+ *   eigen-decomposition (glsl/vtkTensorMathShared.glsl, the same code as
+ *   vtkSplineVizTensorMath), the negative-eigenvalue policy, the thresholds,
+ *   the trace-normalized Westin metrics cl, cp, Kindlmann's alpha and beta
+ *   from Gamma with the symmetry axis x (along e1) when cl > cp and z (along
+ *   e3) otherwise, the glyph frame and the color. The geometry shader emits
+ *   the sprite: the screen rectangle of the glyph's box, the worst case of
+ *   any gamma (paper §3.2). The fragment shader ray-casts the implicit
+ *   surface in glyph space (paper §3.3-3.4): clip to the unit box, bracket
+ *   the first root (entry into the inscribed unit ball, or safe Newton steps
+ *   on the convex function, which also prove misses), refine by Newton on
+ *   log(1 + f) with a bisection fallback (Teem's echo/sqd.c approach), at
+ *   most MaximumIterations evaluations; it writes the exact depth and shades
+ *   with VTK's lights and the analytic normal.
+ * - So changing Gamma, ScaleFactor, ScaleMode, thresholds, the sign policy or
+ *   ColorMode only changes uniforms: no re-upload (GetUploadCount()).
+ *
+ * Glyph size: the semi-axes are ScaleFactor * l_i (SCALE_BY_EIGENVALUES),
+ * ScaleFactor * l_i / l_1 (SCALE_NORMALIZED: the largest semi-axis is
+ * ScaleFactor) or ScaleFactor * l_i uniformly shrunk to a largest semi-axis
+ * of at most MaximumScale (SCALE_CLAMPED); every semi-axis is then at least
+ * MinimumThickness times the largest. (vtkTensorGlyph with a source of size
+ * 2 gives the same sizes.) alpha and beta are clamped to
+ * [MinimumRoundness, 1] (the paper suggests [0.2, 1]) which bounds the
+ * exponents 2/alpha, 2/beta and so the root-finding work.
+ *
+ * Colors: COLOR_BY_EIGENVECTOR (|e1| as RGB times FA, the usual DTI map),
+ * COLOR_BY_SCALARS (the mapper's scalar array through its lookup table, as
+ * any vtkMapper: ScalarVisibility, ScalarMode, SelectColorArray,
+ * LookupTable; point data only; without scalars the actor's color is used)
+ * or COLOR_SOLID (the actor's property). Lighting, ambient/diffuse/specular
+ * and opacity come from the actor's property.
+ *
+ * Picking: vtkHardwareSelector prop picking and point-id selection (the ids
+ * of the input points; for composite inputs the ids within the concatenation
+ * of the leaves' points). Not supported: clipping planes, texture maps,
+ * per-block colors of composite data, the Schultz-Kindlmann shapes for
+ * indefinite tensors (use ABSOLUTE_VALUES or SKIP_NEGATIVE).
+ *
+ * Bad input: a missing tensor array or one whose number of components does
+ * not fit TensorLayout is an error for that block (nothing drawn for it);
+ * NaN/infinite and zero tensors are not drawn (one warning with the counts
+ * per data change).
+ */
+#ifndef vtkSuperquadricGlyphMapper_h
+#define vtkSuperquadricGlyphMapper_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkNew.h"          // for vtkNew
+#include "vtkOpenGLPolyDataMapper.h"
+
+#include <memory> // for unique_ptr
+#include <string> // for std::string
+
+class vtkDataSet;
+class vtkFloatArray;
+
+class SPLINEVIZ_EXPORT vtkSuperquadricGlyphMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkSuperquadricGlyphMapper* New();
+  vtkTypeMacro(vtkSuperquadricGlyphMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Scale modes (see the class documentation).
+  enum ScaleModes
+  {
+    SCALE_BY_EIGENVALUES = 0,
+    SCALE_NORMALIZED = 1,
+    SCALE_CLAMPED = 2
+  };
+
+  /// Negative-eigenvalue policies (vtkSplineVizTensorMath::SignPolicy).
+  enum NegativeEigenvaluePolicies
+  {
+    SKIP_NEGATIVE = 0,
+    ABSOLUTE_VALUES = 1
+  };
+
+  /// Color modes (see the class documentation).
+  enum ColorModes
+  {
+    COLOR_BY_EIGENVECTOR = 0,
+    COLOR_BY_SCALARS = 1,
+    COLOR_SOLID = 2
+  };
+
+  /**
+   * The input: any vtkDataSet or composite data set with a point tensor array.
+   */
+  void SetInputData(vtkDataObject* input);
+
+  ///@{
+  /**
+   * Inputs are routed through an internal preparation step
+   * (vtkSuperquadricGlyphPreparer) that keeps the drawable points' positions
+   * and tensors; GetInput() returns its output (a vtkPolyData of glyph points).
+   */
+  void SetInputConnection(int port, vtkAlgorithmOutput* input) override;
+  void SetInputConnection(vtkAlgorithmOutput* input) override
+  {
+    this->SetInputConnection(0, input);
+  }
+  void SetInputDataObject(int port, vtkDataObject* input) override;
+  void SetInputDataObject(vtkDataObject* input) override { this->SetInputDataObject(0, input); }
+  ///@}
+
+  /// Bounds of the glyphs (the points padded by the largest possible glyph).
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
+
+  ///@{
+  /**
+   * Name of the point tensor array; nullptr (default) uses the active point
+   * tensors of each data set.
+   */
+  vtkSetStringMacro(TensorArrayName);
+  vtkGetStringMacro(TensorArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Component order of 6-component tensor arrays, a
+   * vtkSplineVizTensorMath::TensorLayout: SYMMETRIC_VTK (1, default: XX YY ZZ
+   * XY YZ XZ), SYMMETRIC_LOWER (2: XX XY YY XZ YZ ZZ, DIPY and FSL) or
+   * SYMMETRIC_UPPER (3: XX XY XZ YY YZ ZZ, MFEM). 9-component arrays are read
+   * as row-major 3x3 matrices (symmetrized), 7-component arrays as Teem/NRRD
+   * (confidence first, ignored); FULL_9 (0) and TEEM_7 (4) demand them.
+   */
+  vtkSetClampMacro(TensorLayout, int, 0, 4);
+  vtkGetMacro(TensorLayout, int);
+  ///@}
+
+  ///@{
+  /**
+   * Optional point array: points where its (first component) value is 0 are
+   * not drawn (and not uploaded). nullptr (default): no mask.
+   */
+  vtkSetStringMacro(MaskArrayName);
+  vtkGetStringMacro(MaskArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Kindlmann's sharpness gamma >= 0: 0 gives ellipsoids, large values boxes
+   * and cylinders. Default 3 (Teem's default).
+   */
+  vtkSetClampMacro(Gamma, double, 0.0, 1000.0);
+  vtkGetMacro(Gamma, double);
+  ///@}
+
+  ///@{
+  /**
+   * Lower bound of alpha and beta, in [0.05, 1]. Default 0.2 (the paper's
+   * suggestion: exponents 2/alpha, 2/beta of at most 10).
+   */
+  vtkSetClampMacro(MinimumRoundness, double, 0.05, 1.0);
+  vtkGetMacro(MinimumRoundness, double);
+  ///@}
+
+  ///@{
+  /// Scale factor of the glyphs (see the class documentation). Default 1.
+  vtkSetClampMacro(ScaleFactor, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ScaleFactor, double);
+  ///@}
+
+  ///@{
+  /// Scale mode (ScaleModes). Default SCALE_BY_EIGENVALUES.
+  vtkSetClampMacro(ScaleMode, int, SCALE_BY_EIGENVALUES, SCALE_CLAMPED);
+  vtkGetMacro(ScaleMode, int);
+  ///@}
+
+  ///@{
+  /// Largest semi-axis in SCALE_CLAMPED mode. Default 1.
+  vtkSetClampMacro(MaximumScale, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Every semi-axis is at least this fraction of the largest one, in [0, 1]
+   * (a zero eigenvalue would make a flat glyph). Default 0.05.
+   */
+  vtkSetClampMacro(MinimumThickness, double, 0.0, 1.0);
+  vtkGetMacro(MinimumThickness, double);
+  ///@}
+
+  ///@{
+  /**
+   * Glyphs of tensors with a fractional anisotropy below this value are not
+   * drawn. Default 0 (all).
+   */
+  vtkSetClampMacro(AnisotropyThreshold, double, 0.0, 1.0);
+  vtkGetMacro(AnisotropyThreshold, double);
+  ///@}
+
+  ///@{
+  /**
+   * Glyphs whose smallest eigenvalue (after the negative-eigenvalue policy)
+   * is below this value are not drawn. Default -VTK_DOUBLE_MAX (all).
+   */
+  vtkSetMacro(MinimumEigenvalue, double);
+  vtkGetMacro(MinimumEigenvalue, double);
+  ///@}
+
+  ///@{
+  /**
+   * What to do with negative eigenvalues (NegativeEigenvaluePolicies):
+   * SKIP_NEGATIVE (default, as Teem) does not draw tensors with a negative
+   * eigenvalue; ABSOLUTE_VALUES draws the glyph of the absolute values.
+   */
+  vtkSetClampMacro(NegativeEigenvaluePolicy, int, SKIP_NEGATIVE, ABSOLUTE_VALUES);
+  vtkGetMacro(NegativeEigenvaluePolicy, int);
+  ///@}
+
+  ///@{
+  /// Color mode (ColorModes). Default COLOR_BY_EIGENVECTOR.
+  vtkSetClampMacro(GlyphColorMode, int, COLOR_BY_EIGENVECTOR, COLOR_SOLID);
+  vtkGetMacro(GlyphColorMode, int);
+  ///@}
+
+  ///@{
+  /**
+   * Maximum number of evaluations of the superquadric function per ray, in
+   * [1, 100]. Default 10 (the paper's maximum).
+   */
+  vtkSetClampMacro(MaximumIterations, int, 1, 100);
+  vtkGetMacro(MaximumIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Statistics of the last data preparation: glyphs uploaded, points left
+   * out for NaN/infinite tensors, for zero tensors, and by the mask.
+   */
+  vtkGetMacro(NumberOfGlyphs, vtkIdType);
+  vtkGetMacro(NumberOfInvalidTensors, vtkIdType);
+  vtkGetMacro(NumberOfZeroTensors, vtkIdType);
+  vtkGetMacro(NumberOfMaskedPoints, vtkIdType);
+  ///@}
+
+  /**
+   * Number of times the tensors were uploaded to the GPU (for tests and
+   * benchmarks: parameter changes must not upload).
+   */
+  vtkGetMacro(UploadCount, int);
+
+  /**
+   * Bytes of GPU buffers per glyph of the last upload (positions, tensors
+   * and, when used, scalar colors).
+   */
+  int GetGPUBytesPerGlyph();
+
+  /// Maps the glyph index of a selection to the input point id.
+  vtkIdType GetInputPointId(vtkIdType glyphIndex);
+
+  void ReleaseGraphicsResources(vtkWindow*) override;
+
+protected:
+  vtkSuperquadricGlyphMapper();
+  ~vtkSuperquadricGlyphMapper() override;
+
+  void ComputeBounds() override;
+  void UpdatePreparer();
+  std::string GetColorKey();
+
+  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+
+  void GetShaderTemplate(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
+  void BuildBufferObjects(vtkRenderer* ren, vtkActor* act) override;
+  void ProcessSelectorPixelBuffers(
+    vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
+
+  char* TensorArrayName = nullptr;
+  int TensorLayout = 1;
+  char* MaskArrayName = nullptr;
+  double Gamma = 3.0;
+  double MinimumRoundness = 0.2;
+  double ScaleFactor = 1.0;
+  int ScaleMode = SCALE_BY_EIGENVALUES;
+  double MaximumScale = 1.0;
+  double MinimumThickness = 0.05;
+  double AnisotropyThreshold = 0.0;
+  double MinimumEigenvalue = -VTK_DOUBLE_MAX;
+  int NegativeEigenvaluePolicy = SKIP_NEGATIVE;
+  int GlyphColorMode = COLOR_BY_EIGENVECTOR;
+  int MaximumIterations = 10;
+
+  vtkIdType NumberOfGlyphs = 0;
+  vtkIdType NumberOfInvalidTensors = 0;
+  vtkIdType NumberOfZeroTensors = 0;
+  vtkIdType NumberOfMaskedPoints = 0;
+  int UploadCount = 0;
+
+  class Internals;
+  std::unique_ptr<Internals> Internal;
+
+private:
+  vtkSuperquadricGlyphMapper(const vtkSuperquadricGlyphMapper&) = delete;
+  void operator=(const vtkSuperquadricGlyphMapper&) = delete;
+};
+
+#endif

@@ -1,0 +1,34 @@
+/**
+ * @file   vtkSuperquadricGlyphMath.h
+ * @brief  The superquadric glyph math of glsl/vtkSuperquadricGlyphShared.glsl, compiled as C++.
+ *
+ * glsl/vtkSuperquadricGlyphShared.glsl is written in the common subset of GLSL
+ * and C++ (see Filters/glsl/vtkTensorMathShared.glsl). The glyph shaders of
+ * vtkSuperquadricGlyphMapper embed it; this header compiles the very same text
+ * in double precision with GLM, in the namespace vtkSuperquadricGlyphMath, for
+ * the unit tests (ray / superquadric intersection against brute force) and
+ * the CPU side of the mapper (bounds): semi-axes from eigenvalues and scale
+ * mode, the implicit function and its gradient, the unit-box clip and the
+ * robust first-root search (Hlawitschka et al. §3.3-3.4; Teem's echo/sqd.c).
+ *
+ * Not wrapped; header-only.
+ */
+#ifndef vtkSuperquadricGlyphMath_h
+#define vtkSuperquadricGlyphMath_h
+
+#include <glm/glm.hpp>
+
+namespace vtkSuperquadricGlyphMath
+{
+using namespace glm;
+using real = double;
+using vec3 = glm::dvec3;
+
+#define SV_OUT(T) T&
+#define SV_INOUT(T) T&
+#include "glsl/vtkSuperquadricGlyphShared.glsl"
+#undef SV_OUT
+#undef SV_INOUT
+}
+
+#endif

@@ -1,0 +1,270 @@
+// Unit tests of the superquadric glyph math shared with the shaders
+// (vtkSuperquadricGlyphMath.h, compiled from glsl/vtkSuperquadricGlyphShared.glsl):
+//  - q against the implicit formula written out here, its gradient against
+//    central differences;
+//  - the geometric facts the ray caster relies on: q <= 0 on the unit
+//    sphere, q >= 0 on the unit box surface, convexity of q along rays;
+//  - the unit-box clip against dense sampling;
+//  - the root finder against brute force (dense sampling of the ray plus
+//    bisection in double) on 84,000 rays over the whole (alpha, beta) range:
+//    same hit/miss decision except for rays that graze the glyph (chord
+//    inside the glyph shorter than 1e-2 of a semi-axis), the same first root
+//    within 2e-4 glyph units, and the number of evaluations used;
+//  - the semi-axes of the three scale modes.
+#include "vtkSuperquadricGlyphMath.h"
+
+#include "SplineVizTestUtilities.h"
+
+#include "vtkMinimalStandardRandomSequence.h"
+#include "vtkNew.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace SQ = vtkSuperquadricGlyphMath;
+
+namespace
+{
+/// The implicit function written independently of the shared code.
+double Q(double u, double v, double w, double alpha, double beta)
+{
+  return std::pow(std::pow(std::abs(u), 2.0 / alpha) + std::pow(std::abs(v), 2.0 / alpha),
+           alpha / beta) +
+    std::pow(std::abs(w), 2.0 / beta) - 1.0;
+}
+
+struct Random
+{
+  vtkNew<vtkMinimalStandardRandomSequence> Seq;
+  explicit Random(int seed) { this->Seq->SetSeed(seed); }
+  double Next(double lo, double hi)
+  {
+    this->Seq->Next();
+    return this->Seq->GetRangeValue(lo, hi);
+  }
+};
+
+/// Brute-force first root of Q along o + t d on [ta, tb]: dense samples,
+/// then bisection. Returns false when no sample is inside. `chord` receives
+/// the length (in glyph units) of the part of the sampled ray inside.
+bool BruteForce(const SQ::vec3& o, const SQ::vec3& d, double ta, double tb, double alpha,
+  double beta, double& tRoot, double& chord)
+{
+  const int n = 2000;
+  double prevT = ta;
+  double prevF = Q(o.x + ta * d.x, o.y + ta * d.y, o.z + ta * d.z, alpha, beta);
+  bool found = false;
+  double first = 0.0, last = 0.0;
+  for (int i = 1; i <= n; ++i)
+  {
+    const double t = ta + (tb - ta) * i / n;
+    const double f = Q(o.x + t * d.x, o.y + t * d.y, o.z + t * d.z, alpha, beta);
+    if (f <= 0.0)
+    {
+      if (!found)
+      {
+        double lo = prevT, hi = t;
+        for (int k = 0; k < 200; ++k)
+        {
+          const double m = 0.5 * (lo + hi);
+          const double fm = Q(o.x + m * d.x, o.y + m * d.y, o.z + m * d.z, alpha, beta);
+          (fm > 0.0 ? lo : hi) = m;
+        }
+        first = 0.5 * (lo + hi);
+        found = true;
+      }
+      last = t;
+    }
+    prevT = t;
+    prevF = f;
+  }
+  (void)prevF;
+  tRoot = first;
+  chord = found ? (last - first) * std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) : 0.0;
+  return found;
+}
+}
+
+int TestSuperquadricGlyphMath(int, char*[])
+{
+  SplineVizTestStatus status;
+  Random rnd(17);
+
+  //----------------------------------------------------------------------------
+  // Value and gradient.
+  {
+    double worstValue = 0.0, worstGrad = 0.0;
+    for (int n = 0; n < 5000; ++n)
+    {
+      const double alpha = rnd.Next(0.2, 1.0), beta = rnd.Next(0.2, 1.0);
+      const SQ::vec3 x(rnd.Next(-1.2, 1.2), rnd.Next(-1.2, 1.2), rnd.Next(-1.2, 1.2));
+      SQ::vec3 g;
+      const double f = SQ::svqValueGradient(x, alpha, beta, g);
+      worstValue = std::max(worstValue, std::abs(f - Q(x.x, x.y, x.z, alpha, beta)));
+      const double h = 1e-6;
+      for (int c = 0; c < 3; ++c)
+      {
+        SQ::vec3 xp = x, xm = x;
+        xp[c] += h;
+        xm[c] -= h;
+        const double fd = (Q(xp.x, xp.y, xp.z, alpha, beta) - Q(xm.x, xm.y, xm.z, alpha, beta)) /
+          (2.0 * h);
+        worstGrad = std::max(worstGrad, std::abs(fd - g[c]) / (1.0 + std::abs(fd)));
+      }
+    }
+    SV_CHECK_MSG(status, worstValue < 1e-12, "value " << worstValue);
+    SV_CHECK_MSG(status, worstGrad < 1e-5, "gradient " << worstGrad);
+    // On the axes and at the centre the gradient is finite.
+    SQ::vec3 g;
+    SQ::svqValueGradient(SQ::vec3(0.0, 0.0, 0.5), 0.3, 0.9, g);
+    SV_CHECK(status, std::isfinite(g.x) && std::isfinite(g.y) && g.x == 0.0 && g.y == 0.0);
+    SQ::svqValueGradient(SQ::vec3(0.0, 0.0, 0.0), 0.2, 1.0, g);
+    SV_CHECK(status, g.x == 0.0 && g.y == 0.0 && g.z == 0.0);
+  }
+
+  //----------------------------------------------------------------------------
+  // Inner sphere, outer box, convexity along rays.
+  {
+    double worstSphere = -1.0, worstBox = 1.0;
+    int nonConvex = 0;
+    for (int n = 0; n < 20000; ++n)
+    {
+      const double alpha = rnd.Next(0.2, 1.0), beta = rnd.Next(0.2, 1.0);
+      SQ::vec3 p(rnd.Next(-1, 1), rnd.Next(-1, 1), rnd.Next(-1, 1));
+      p = p / std::sqrt(dot(p, p));
+      worstSphere = std::max(worstSphere, Q(p.x, p.y, p.z, alpha, beta));
+      const double m = std::max({ std::abs(p.x), std::abs(p.y), std::abs(p.z) });
+      const SQ::vec3 b = p / m; // on the box surface
+      worstBox = std::min(worstBox, Q(b.x, b.y, b.z, alpha, beta));
+      // convexity: f(mid) <= (f(a) + f(b)) / 2 along a random chord
+      const SQ::vec3 a(rnd.Next(-1.5, 1.5), rnd.Next(-1.5, 1.5), rnd.Next(-1.5, 1.5));
+      const SQ::vec3 mid = 0.5 * (a + b);
+      if (Q(mid.x, mid.y, mid.z, alpha, beta) >
+        0.5 * (Q(a.x, a.y, a.z, alpha, beta) + Q(b.x, b.y, b.z, alpha, beta)) + 1e-12)
+      {
+        ++nonConvex;
+      }
+    }
+    SV_CHECK_MSG(status, worstSphere <= 1e-12, "q on the unit sphere " << worstSphere);
+    SV_CHECK_MSG(status, worstBox >= -1e-12, "q on the box " << worstBox);
+    SV_CHECK_MSG(status, nonConvex == 0, nonConvex << " non-convex chords");
+  }
+
+  //----------------------------------------------------------------------------
+  // Box clip.
+  {
+    int wrong = 0;
+    for (int n = 0; n < 5000; ++n)
+    {
+      const SQ::vec3 o(rnd.Next(-3, 3), rnd.Next(-3, 3), rnd.Next(-3, 3));
+      SQ::vec3 d(rnd.Next(-1, 1), rnd.Next(-1, 1), rnd.Next(-1, 1));
+      if (n % 10 == 0)
+      {
+        d[n % 3] = 0.0; // axis-parallel rays
+      }
+      double t0, t1;
+      const bool hit = SQ::svqClipUnitBox(o, d, t0, t1);
+      for (int k = 0; k <= 400; ++k)
+      {
+        const double t = -20.0 + 40.0 * k / 400;
+        const SQ::vec3 p = o + t * d;
+        const bool inside = std::abs(p.x) <= 1 && std::abs(p.y) <= 1 && std::abs(p.z) <= 1;
+        const bool claimed = hit && t >= t0 - 1e-12 && t <= t1 + 1e-12;
+        wrong += inside != claimed;
+      }
+    }
+    SV_CHECK_MSG(status, wrong == 0, wrong << " samples misclassified by the box clip");
+  }
+
+  //----------------------------------------------------------------------------
+  // Root finder against brute force.
+  {
+    const double shapes[][2] = { { 1.0, 1.0 }, { 0.2, 0.2 }, { 1.0, 0.2 }, { 0.2, 1.0 },
+      { 0.5, 0.3 }, { 0.8, 0.25 }, { -1, -1 } /* random */ };
+    int rays = 0, hits = 0, disagree = 0, worstEvals = 0, cappedHits = 0;
+    long totalEvals = 0;
+    double worstT = 0.0, worstChordMissed = 0.0;
+    for (const auto& shape : shapes)
+    {
+      for (int n = 0; n < 12000; ++n)
+      {
+        const double alpha = shape[0] > 0 ? shape[0] : rnd.Next(0.2, 1.0);
+        const double beta = shape[1] > 0 ? shape[1] : rnd.Next(0.2, 1.0);
+        // origin on a sphere of radius 4, aimed at a point near the glyph,
+        // direction not normalized (as in the shader: glyph-space rays)
+        SQ::vec3 o(rnd.Next(-1, 1), rnd.Next(-1, 1), rnd.Next(-1, 1));
+        o = 4.0 * o / std::sqrt(dot(o, o));
+        const SQ::vec3 target(rnd.Next(-1.2, 1.2), rnd.Next(-1.2, 1.2), rnd.Next(-1.2, 1.2));
+        const SQ::vec3 d = (target - o) * rnd.Next(0.3, 3.0);
+        double t0, t1;
+        if (!SQ::svqClipUnitBox(o, d, t0, t1))
+        {
+          continue;
+        }
+        ++rays;
+        double tRef, chord;
+        const bool ref = BruteForce(o, d, t0, t1, alpha, beta, tRef, chord);
+        double t;
+        int evals;
+        const bool hit = SQ::svqIntersect(o, d, alpha, beta, 10, t, evals);
+        worstEvals = std::max(worstEvals, evals);
+        totalEvals += evals;
+        if (hit != ref)
+        {
+          ++disagree;
+          if (ref)
+          {
+            worstChordMissed = std::max(worstChordMissed, chord);
+          }
+          else
+          {
+            // a reported hit must be real: the point is on the surface
+            const SQ::vec3 p = o + t * d;
+            SV_CHECK_MSG(status, std::abs(Q(p.x, p.y, p.z, alpha, beta)) < 1e-3,
+              "hit reported off the surface");
+          }
+        }
+        if (hit && ref)
+        {
+          ++hits;
+          cappedHits += evals >= 10;
+          worstT = std::max(worstT, std::abs(t - tRef) * std::sqrt(dot(d, d)));
+        }
+      }
+    }
+    std::cout << rays << " rays, " << hits << " hits, " << disagree
+              << " hit/miss disagreements (longest missed chord " << worstChordMissed
+              << " glyph units), worst root error " << worstT << " glyph units, evaluations: mean "
+              << double(totalEvals) / rays << ", max " << worstEvals << ", hits at the cap "
+              << cappedHits << std::endl;
+    SV_CHECK(status, rays > 60000 && hits > 40000);
+    SV_CHECK_MSG(status, worstChordMissed < 1e-2, "a ray through the glyph was missed");
+    SV_CHECK_MSG(status, disagree < rays / 1000, "too many disagreements " << disagree);
+    SV_CHECK_MSG(status, worstT < 2e-4, "root error " << worstT);
+    SV_CHECK(status, worstEvals <= 10);
+  }
+
+  //----------------------------------------------------------------------------
+  // Semi-axes.
+  {
+    const SQ::vec3 l(4.0, 2.0, 0.01);
+    SQ::vec3 s = SQ::svqSemiAxes(l, 0, 0.5, 1.0, 0.05);
+    SV_CHECK_NEAR(status, s.x, 2.0, 1e-15);
+    SV_CHECK_NEAR(status, s.y, 1.0, 1e-15);
+    SV_CHECK_NEAR(status, s.z, 0.1, 1e-15); // thickness floor 0.05 * 2
+    s = SQ::svqSemiAxes(l, 1, 0.5, 1.0, 0.0);
+    SV_CHECK_NEAR(status, s.x, 0.5, 1e-15);
+    SV_CHECK_NEAR(status, s.y, 0.25, 1e-15);
+    SV_CHECK_NEAR(status, s.z, 0.00125, 1e-15);
+    s = SQ::svqSemiAxes(l, 2, 0.5, 1.0, 0.0);
+    SV_CHECK_NEAR(status, s.x, 1.0, 1e-15);
+    SV_CHECK_NEAR(status, s.y, 0.5, 1e-15);
+    s = SQ::svqSemiAxes(l, 2, 0.1, 1.0, 0.0); // below the maximum: unchanged
+    SV_CHECK_NEAR(status, s.x, 0.4, 1e-15);
+    s = SQ::svqSemiAxes(SQ::vec3(0.0, 0.0, 0.0), 1, 0.5, 1.0, 0.05);
+    SV_CHECK(status, s.x == 0.0);
+  }
+
+  return status.Result();
+}
