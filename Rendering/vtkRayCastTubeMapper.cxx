@@ -246,10 +246,15 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
             encode);
         break;
       case vtkHardwareSelector::COMPOSITE_INDEX_PASS:
-        vtkShaderProgram::Substitute(
-          FSSource, "//VTK::Picking::Dec", "uniform isamplerBuffer tubeTubes;\n");
-        vtkShaderProgram::Substitute(FSSource, "//VTK::Picking::Impl",
-          std::string("  int idx = texelFetch(tubeTubes, tubeInfoVSOutput.z).y + 1;\n") + encode);
+        // The block's flat index (as vtkCompositePolyDataMapper2 reports it);
+        // a non-composite input keeps VTK's per-mapper index.
+        if (this->InputIsComposite)
+        {
+          vtkShaderProgram::Substitute(
+            FSSource, "//VTK::Picking::Dec", "uniform isamplerBuffer tubeTubes;\n");
+          vtkShaderProgram::Substitute(FSSource, "//VTK::Picking::Impl",
+            std::string("  int idx = texelFetch(tubeTubes, tubeInfoVSOutput.z).y;\n") + encode);
+        }
         break;
       case vtkHardwareSelector::POINT_ID_LOW24:
       case vtkHardwareSelector::POINT_ID_HIGH24:
@@ -345,14 +350,15 @@ void vtkRayCastTubeMapper::ReplaceShaderClip(
 bool vtkRayCastTubeMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
-  if (this->ShaderHasColors != this->HaveColors)
+  // Shader variants depend on scalar coloring and composite input too.
+  const int variant = (this->HaveColors ? 1 : 0) | (this->InputIsComposite ? 2 : 0);
+  const bool superclass = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  if (variant != this->ShaderVariant)
   {
-    this->ShaderHasColors = this->HaveColors;
-    // still let the superclass update its bookkeeping
-    this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+    this->ShaderVariant = variant;
     return true;
   }
-  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  return superclass;
 }
 
 //------------------------------------------------------------------------------

@@ -124,7 +124,7 @@ private:
   std::unique_ptr<vtkSplineVizGPUBuffer> Tubes;
   std::unique_ptr<vtkSplineVizGPUBuffer> Colors;
   std::unique_ptr<vtkSplineVizGPUBuffer> ColorDerivatives;
-  bool ShaderHasColors = false;
+  int ShaderVariant = -1;
 };
 
 #endif

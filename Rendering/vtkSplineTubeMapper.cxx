@@ -9,6 +9,9 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkHardwareSelector.h"
+#include "vtkIdTypeArray.h"
+#include "vtkPoints.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -22,6 +25,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -31,6 +35,8 @@ vtkSplineTubeMapper::vtkSplineTubeMapper()
   // The tube data is built per data change; the VBO shift/scale machinery of
   // the superclass does not apply (we shift positions ourselves).
   this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+  vtkNew<vtkPoints> noPoints;
+  this->EmptyInput->SetPoints(noPoints);
 }
 
 //------------------------------------------------------------------------------
@@ -91,13 +97,14 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
     this->RadiusArray && this->RadiusArray[0] ? this->RadiusArray : nullptr);
   this->Core->SetRadiusScale(this->RadiusScale);
 
-  // Forward the core's errors and warnings as this mapper's.
-  auto addLeaf = [this](vtkPolyData* pd, unsigned int blockId)
+  vtkIdType inputCells = 0;
+  auto addLeaf = [this, &inputCells](vtkPolyData* pd, unsigned int blockId)
   {
     if (!pd)
     {
       return;
     }
+    inputCells += pd->GetNumberOfCells();
     vtkSmartPointer<vtkUnsignedCharArray> colors;
     bool perCell = false;
     int cellFlag = 0;
@@ -147,13 +154,21 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
     }
   };
 
+  this->InputIsComposite = vtkCompositeDataSet::SafeDownCast(input) != nullptr;
   if (auto cd = vtkCompositeDataSet::SafeDownCast(input))
   {
     auto it = vtk::TakeSmartPointer(cd->NewIterator());
     it->SkipEmptyNodesOn();
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
-      addLeaf(vtkPolyData::SafeDownCast(it->GetCurrentDataObject()), it->GetCurrentFlatIndex());
+      vtkDataObject* leaf = it->GetCurrentDataObject();
+      if (!vtkPolyData::SafeDownCast(leaf))
+      {
+        vtkWarningMacro(<< "Block " << it->GetCurrentFlatIndex() << " is a " << leaf->GetClassName()
+                        << ", not a vtkPolyData: skipped (extract its lines or surface first).");
+        continue;
+      }
+      addLeaf(vtkPolyData::SafeDownCast(leaf), it->GetCurrentFlatIndex());
     }
   }
   else
@@ -162,6 +177,12 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
   }
   this->Core->Build();
   this->HaveColors = this->Core->HasColors();
+  if (this->Core->GetNumberOfTubes() == 0 && inputCells > 0 &&
+    this->Core->GetNumberOfSkippedLines() == 0)
+  {
+    vtkWarningMacro(<< "The input has " << inputCells
+                    << " cells but no polylines (line or polyline cells): no tubes to draw.");
+  }
 
   double bounds[6];
   this->Core->GetBounds(bounds);
@@ -233,6 +254,17 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   // an empty polydata keeps those paths neutral.
   this->CurrentInput = this->EmptyInput;
   this->RenderPieceStart(ren, actor);
+  if (vtkHardwareSelector* selector = ren->GetSelector())
+  {
+    // The largest cell id the shaders write (the polylines' cell ids).
+    vtkIdType maxCellId = 0;
+    vtkIdTypeArray* cellIds = this->Core->GetSegmentCellIds();
+    for (vtkIdType s = 0; s < cellIds->GetNumberOfTuples(); ++s)
+    {
+      maxCellId = std::max(maxCellId, cellIds->GetValue(s));
+    }
+    selector->UpdateMaximumCellId(maxCellId);
+  }
   this->RenderPieceDraw(ren, actor);
   this->RenderPieceFinish(ren, actor);
 }

@@ -146,7 +146,8 @@ protected:
   double Shift[3] = { 0.0, 0.0, 0.0 };
   vtkTimeStamp CoreBuildTime;
   vtkTimeStamp UploadTime;
-  bool HaveColors = false; ///< the tubes carry per-node colors (scalar coloring)
+  bool HaveColors = false;       ///< the tubes carry per-node colors (scalar coloring)
+  bool InputIsComposite = false; ///< block ids are flat indices of a composite input
 
 private:
   vtkSplineTubeMapper(const vtkSplineTubeMapper&) = delete;
