@@ -2,6 +2,19 @@
 # (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineTubeCore")
+list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkSplineTubeMapper"
+  "${SPLINEVIZ_FOLDER}/vtkRayCastTubeMapper")
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizGPUBuffer")
+list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkSplineTubeMath.h")
+list(APPEND splineviz_shaders
+  "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathPrelude.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathShared.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeVS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeGS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeFS.glsl")
 # Superquadric tensor glyphs: the glyph math shared with the shaders
 # (vtkSuperquadricGlyphMath.h compiles glsl/vtkSuperquadricGlyphShared.glsl as C++).
 list(APPEND splineviz_private_headers

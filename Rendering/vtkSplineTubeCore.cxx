@@ -165,7 +165,7 @@ vtkIdType vtkSplineTubeCore::GetNumberOfSegments() const
 
 //------------------------------------------------------------------------------
 bool vtkSplineTubeCore::AddPolyData(
-  vtkPolyData* input, vtkUnsignedCharArray* colors, unsigned int blockId)
+  vtkPolyData* input, vtkUnsignedCharArray* colors, unsigned int blockId, bool colorsPerCell)
 {
   if (!input || !input->GetPoints() || input->GetNumberOfPoints() == 0 ||
     input->GetNumberOfLines() == 0)
@@ -297,7 +297,7 @@ bool vtkSplineTubeCore::AddPolyData(
       this->MaximumRadius = std::max(this->MaximumRadius, rad[k]);
       if (colors)
       {
-        const unsigned char* c = colors->GetPointer(4 * ids[k]);
+        const unsigned char* c = colors->GetPointer(4 * (colorsPerCell ? cellId : ids[k]));
         this->NodeColors->InsertNextTuple4(c[0] / 255.0, c[1] / 255.0, c[2] / 255.0, c[3] / 255.0);
       }
       else

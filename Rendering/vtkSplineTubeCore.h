@@ -113,13 +113,16 @@ public:
   /**
    * Append the polylines (VTK_LINE and VTK_POLY_LINE cells of the line array)
    * of `input` as tubes. `colors`, if given, holds one RGBA color (4 unsigned
-   * char components, as made by vtkMapper::MapScalars) per point of `input`;
-   * without colors every node is white. `blockId` is stored with every
-   * segment (the flat index of the block of a composite data set).
+   * char components, as made by vtkScalarsToColors::MapScalars) per point of
+   * `input`, or per cell when `colorsPerCell` is true (then every node of a
+   * polyline gets the polyline's color); without colors every node is white.
+   * `blockId` is stored with every segment (the flat index of the block of a
+   * composite data set).
    * Returns false, with an error, when the input cannot be used at all.
    * Call Build() after the last AddPolyData().
    */
-  bool AddPolyData(vtkPolyData* input, vtkUnsignedCharArray* colors, unsigned int blockId = 0);
+  bool AddPolyData(vtkPolyData* input, vtkUnsignedCharArray* colors, unsigned int blockId = 0,
+    bool colorsPerCell = false);
 
   /**
    * Compute tangents, derivatives and frames of everything added (in

@@ -1,8 +1,8 @@
 /**
  * @file   vtkSplineTubeMath.h
- * @brief  The spline-tube math of glsl/vtkSplineTubeMath.glsl, compiled as C++.
+ * @brief  The spline-tube math of glsl/vtkSplineTubeMathShared.glsl, compiled as C++.
  *
- * glsl/vtkSplineTubeMath.glsl is written in the common subset of GLSL and C++
+ * glsl/vtkSplineTubeMathShared.glsl is written in the common subset of GLSL and C++
  * (see the rules at its top). The shaders embed it; this header compiles the
  * very same text in double precision with GLM, in the namespace
  * vtkSplineTubeMath, for the tube core, the CPU reference intersection and the
@@ -27,7 +27,11 @@ using vec4 = glm::dvec4;
 
 #define SV_OUT(T) T&
 #define SV_INOUT(T) T&
-#include "glsl/vtkSplineTubeMath.glsl"
+// Internal linkage: the GLSL source has no `inline`.
+namespace
+{
+#include "glsl/vtkSplineTubeMathShared.glsl"
+}
 #undef SV_OUT
 #undef SV_INOUT
 }

@@ -1,0 +1,130 @@
+/**
+ * @class   vtkRayCastTubeMapper
+ * @brief   Renders polylines as exact, smooth spline tubes by GPU ray casting.
+ *
+ * Implements the ray-casting approach of Salm, "Interactive Rendering of
+ * Spline Tubes", §3.2. Each polyline becomes a sphere-swept tube whose
+ * centre, radius and color follow cubic Hermite splines through the points
+ * (see vtkSplineTubeCore); each cubic segment is approximated by
+ * SubSegments quadratic sub-segments (C1 continuous, see
+ * vtkSplineTubeMath.h). Per sub-segment, a geometry shader rasterizes a tight
+ * oriented bounding box; per fragment, the view ray is intersected with the
+ * union of the spheres swept along the sub-segment in ray space: the real
+ * intervals from the roots of polyB (degree 4, bracketed through its
+ * derivatives, Salm eq. 6), then the minima of the entry distance f_t (eq. 4)
+ * on each interval, each root refined by RootIterations bisection steps. The
+ * nearest hit gives
+ * - the exact depth (gl_FragDepth), so tubes intersect each other and any
+ *   other geometry correctly, and parallel compositing (IceT) is exact;
+ * - the normal, from the sphere centre to the hit point;
+ * - the color, from the color spline at the hit's curve parameter;
+ * - rounded caps at the tube ends (the end spheres).
+ * Lighting, material, scalar coloring through lookup tables, opacity,
+ * clipping planes, depth peeling passes and hardware picking (cell = the
+ * polyline, composite block index) go through VTK's usual shader machinery.
+ *
+ * Proxy choice (measured on Mesa llvmpipe, see Benchmarks/): the box faces
+ * turned to the eye, emitted by a geometry shader once per sub-segment,
+ * generate each covered pixel exactly once and cover about the projected
+ * hexagon of the box; a screen-aligned quad over the box' projection covers
+ * up to twice the pixels for diagonal sub-segments and fragment work
+ * (root finding) dominates the frame time, so the box is used.
+ *
+ * Data on the GPU (uploaded once per data change): per node the position,
+ * radius, tangent and radius derivative (32 bytes) and, with scalar coloring,
+ * the color and its derivative (8 bytes); per segment the first node and flags
+ * (4 bytes) and the tube index (4 bytes); per tube its cell and block ids.
+ * See GetGPUMemorySize().
+ *
+ * Limitations: translucent tubes show their nearest surface only (the far
+ * wall of the same sub-segment is not drawn); point picking is not
+ * supported (cell and block picking are); non-uniform actor scaling is
+ * treated as the uniform scale with the same volume change.
+ *
+ * @sa vtkTessellatedTubeMapper vtkSplineTubeCore
+ */
+#ifndef vtkRayCastTubeMapper_h
+#define vtkRayCastTubeMapper_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkSplineTubeMapper.h"
+
+#include <memory> // for std::unique_ptr
+
+class vtkSplineVizGPUBuffer;
+
+class SPLINEVIZ_EXPORT vtkRayCastTubeMapper : public vtkSplineTubeMapper
+{
+public:
+  static vtkRayCastTubeMapper* New();
+  vtkTypeMacro(vtkRayCastTubeMapper, vtkSplineTubeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Number of quadratic sub-segments per cubic segment (Salm uses 2, more
+   * follow the cubic more closely). Even, from 2 to 16; odd values are
+   * rounded up. Default 2.
+   */
+  void SetSubSegments(int n);
+  vtkGetMacro(SubSegments, int);
+  ///@}
+
+  ///@{
+  /**
+   * Bisection steps per root in the fragment shader (Salm uses 10). Default 10.
+   */
+  vtkSetClampMacro(RootIterations, int, 1, 40);
+  vtkGetMacro(RootIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Samples of the entry-distance slope per real interval used to bracket
+   * its minima before bisection (at least 2). Default 6.
+   */
+  vtkSetClampMacro(RootSamples, int, 2, 64);
+  vtkGetMacro(RootSamples, int);
+  ///@}
+
+  size_t GetGPUMemorySize() override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkRayCastTubeMapper();
+  ~vtkRayCastTubeMapper() override;
+
+  void UploadTubes(vtkOpenGLRenderWindow* window) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+
+  void GetShaderTemplate(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderColor(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderClip(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void ProcessSelectorPixelBuffers(
+    vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
+
+  int SubSegments = 2;
+  int RootIterations = 10;
+  int RootSamples = 6;
+
+private:
+  vtkRayCastTubeMapper(const vtkRayCastTubeMapper&) = delete;
+  void operator=(const vtkRayCastTubeMapper&) = delete;
+
+  std::unique_ptr<vtkSplineVizGPUBuffer> Nodes;
+  std::unique_ptr<vtkSplineVizGPUBuffer> Segments;
+  std::unique_ptr<vtkSplineVizGPUBuffer> Tubes;
+  std::unique_ptr<vtkSplineVizGPUBuffer> Colors;
+  std::unique_ptr<vtkSplineVizGPUBuffer> ColorDerivatives;
+  int ShaderVariant = -1;
+};
+
+#endif

@@ -1,0 +1,163 @@
+/**
+ * @class   vtkSplineTubeMapper
+ * @brief   Base class of the SplineViz spline-tube mappers.
+ *
+ * What the tube mappers (vtkRayCastTubeMapper, Salm §3.2, and
+ * vtkTessellatedTubeMapper, Salm §3.1) share:
+ *
+ * - input: vtkPolyData or a composite data set (e.g. a vtkMultiBlockDataSet)
+ *   of vtkPolyData, as ParaView gives it; every polyline (VTK_LINE and
+ *   VTK_POLY_LINE cells) of every block becomes a tube, and all tubes are drawn
+ *   together (one buffer, one draw call);
+ * - radius: a constant Radius (world units), or the per-point RadiusArray
+ *   (world units) multiplied by RadiusScale;
+ * - color: the actor's property, or scalars mapped through the mapper's usual
+ *   settings (ScalarVisibility, ScalarMode, SelectColorArray, lookup table,
+ *   ScalarRange, ColorMode: the same as vtkPolyDataMapper). Mapped colors are
+ *   interpolated along the tubes by the color spline;
+ * - the per-data preparation by vtkSplineTubeCore (nodes, tangents, frames,
+ *   segment table), done only when the input, the radius settings or the
+ *   coloring change; the per-frame work stays on the GPU;
+ * - bounds that include the tubes' radii.
+ *
+ * Subclasses upload what their shaders need (UploadTubes()) and draw
+ * (RenderPieceDraw()).
+ */
+#ifndef vtkSplineTubeMapper_h
+#define vtkSplineTubeMapper_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkNew.h"          // for vtkNew
+#include "vtkOpenGLPolyDataMapper.h"
+
+#include <string> // for std::string
+
+class vtkMatrix4x4;
+class vtkOpenGLRenderWindow;
+class vtkSplineTubeCore;
+
+class SPLINEVIZ_EXPORT vtkSplineTubeMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  vtkTypeMacro(vtkSplineTubeMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Constant tube radius in world units, used when no RadiusArray is set.
+   * Default 0.01.
+   */
+  vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Radius, double);
+  ///@}
+
+  ///@{
+  /**
+   * Name of a one-component point array with the radius at each point, in
+   * world units (times RadiusScale). nullptr or "" (default): the constant
+   * Radius. Points with a zero, negative or NaN radius make their polyline
+   * skipped with a warning; a missing array is an error (nothing is drawn
+   * for that block).
+   */
+  vtkSetStringMacro(RadiusArray);
+  vtkGetStringMacro(RadiusArray);
+  ///@}
+
+  ///@{
+  /**
+   * Factor applied to the values of RadiusArray. Default 1.
+   */
+  vtkSetClampMacro(RadiusScale, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(RadiusScale, double);
+  ///@}
+
+  /**
+   * The tube data built from the last rendered input (nodes, frames, segments).
+   */
+  vtkSplineTubeCore* GetTubeCore();
+
+  /**
+   * Build the tube data for the current input now (normally done on the
+   * first render). Returns the number of segments.
+   */
+  vtkIdType UpdateTubes();
+
+  /**
+   * Bytes of tube data the mapper holds on the GPU (0 before the first render).
+   */
+  virtual size_t GetGPUMemorySize() { return 0; }
+
+  /**
+   * Bounds of the tubes, including their radii.
+   */
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->vtkMapper::GetBounds(bounds); }
+
+  void Render(vtkRenderer* ren, vtkActor* act) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+  /**
+   * Scalars are mapped per point (or per cell) to colors, then interpolated;
+   * no texture-map coloring.
+   */
+  int CanUseTextureMapForColoring(vtkDataObject*) override { return 0; }
+
+protected:
+  vtkSplineTubeMapper();
+  ~vtkSplineTubeMapper() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  vtkExecutive* CreateDefaultExecutive() override;
+  void ComputeBounds() override;
+
+  /// The composite-aware render entry: (re)builds the tube data, then draws.
+  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
+
+  /// Upload the tube data to the GPU (called after the core was rebuilt).
+  virtual void UploadTubes(vtkOpenGLRenderWindow* window) = 0;
+
+  /// True when the data on the GPU is older than the core.
+  bool NeedToUploadTubes() const { return this->UploadTime < this->CoreBuildTime; }
+
+  /// Rebuild the core if the input, settings or coloring changed. Returns
+  /// true when it was rebuilt.
+  bool UpdateTubeCore();
+
+  // The buffer objects are ours: the superclass' VBO/IBO path is not used.
+  bool GetNeedToRebuildBufferObjects(vtkRenderer*, vtkActor*) override { return false; }
+  void BuildBufferObjects(vtkRenderer*, vtkActor*) override {}
+
+  /**
+   * For the current camera and actor: the matrix from uploaded positions
+   * (model coordinates relative to `Shift`, the centre of the tubes, so that
+   * float precision is spent near the data) to view coordinates, the matrix
+   * from view to data coordinates (where clipping planes are given), and
+   * the scale of radii from model to view coordinates; column-major.
+   */
+  void ComputeTubeMatrices(
+    vtkRenderer* ren, vtkActor* act, float modelView[16], float viewModel[16], float& radiusScale);
+
+  double Radius = 0.01;
+  char* RadiusArray = nullptr;
+  double RadiusScale = 1.0;
+
+  vtkNew<vtkSplineTubeCore> Core;
+  vtkNew<vtkPolyData> EmptyInput; ///< stands in for CurrentInput in superclass code
+  double Shift[3] = { 0.0, 0.0, 0.0 };
+  vtkTimeStamp CoreBuildTime;
+  vtkTimeStamp UploadTime;
+  bool HaveColors = false;       ///< the tubes carry per-node colors (scalar coloring)
+  bool InputIsComposite = false; ///< block ids are flat indices of a composite input
+
+private:
+  vtkSplineTubeMapper(const vtkSplineTubeMapper&) = delete;
+  void operator=(const vtkSplineTubeMapper&) = delete;
+
+  /// Everything the tube data depends on besides the input's contents.
+  std::string BuildSignature();
+  std::string LastSignature;
+  vtkMTimeType LastInputMTime = 0;
+  vtkDataObject* LastInput = nullptr;
+};
+
+#endif

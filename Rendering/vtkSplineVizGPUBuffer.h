@@ -1,0 +1,62 @@
+/**
+ * @class   vtkSplineVizGPUBuffer
+ * @brief   A GPU buffer read by shaders as a buffer texture (texelFetch).
+ *
+ * The SplineViz mappers keep their per-data arrays (the tubes buffer of Salm
+ * §3, raw tensors) on the GPU in buffer objects bound as buffer textures
+ * (samplerBuffer / usamplerBuffer / isamplerBuffer in GLSL). This helper owns
+ * one vtkOpenGLBufferObject and the vtkTextureObject viewing it, uploads data
+ * once per data change and counts the bytes it holds on the GPU.
+ *
+ * Not wrapped (private to the module).
+ */
+#ifndef vtkSplineVizGPUBuffer_h
+#define vtkSplineVizGPUBuffer_h
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <cstddef>
+
+class vtkOpenGLBufferObject;
+class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkSplineVizGPUBuffer
+{
+public:
+  vtkSplineVizGPUBuffer();
+  ~vtkSplineVizGPUBuffer();
+
+  /**
+   * Upload `texels` texels of `components` components of VTK type `vtkType`
+   * (VTK_FLOAT, VTK_UNSIGNED_INT, VTK_INT, VTK_UNSIGNED_CHAR...) and view them
+   * with the GL internal format `glInternalFormat` (e.g. GL_RGBA32F,
+   * GL_RG32UI, GL_RGBA8). Returns false (with a VTK error) on failure.
+   */
+  bool Upload(vtkOpenGLRenderWindow* window, const void* data, size_t texels, int components,
+    int vtkType, unsigned int glInternalFormat);
+
+  /// Bind the texture to a free texture unit and set `uniform` of `program` to it.
+  void Activate(vtkShaderProgram* program, const char* uniform);
+  void Deactivate();
+
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+  /// Bytes held on the GPU (0 before the first upload).
+  size_t GetNumberOfBytes() const { return this->Bytes; }
+  size_t GetNumberOfTexels() const { return this->Texels; }
+
+private:
+  vtkSplineVizGPUBuffer(const vtkSplineVizGPUBuffer&) = delete;
+  void operator=(const vtkSplineVizGPUBuffer&) = delete;
+
+  vtkSmartPointer<vtkOpenGLBufferObject> Buffer;
+  vtkSmartPointer<vtkTextureObject> Texture;
+  size_t Bytes = 0;
+  size_t Texels = 0;
+};
+
+#endif
