@@ -136,8 +136,8 @@ void vtkSuperquadricGlyphMapper::UpdatePreparer()
   prep->SetTensorArrayName(this->TensorArrayName);
   prep->SetTensorLayout(this->TensorLayout);
   prep->SetMaskArrayName(this->MaskArrayName);
-  prep->SetColorArraySelection(this->ScalarVisibility != 0, this->ScalarMode,
-    this->ArrayAccessMode, this->ArrayId, this->ArrayName);
+  prep->SetColorArraySelection(this->ScalarVisibility != 0, this->ScalarMode, this->ArrayAccessMode,
+    this->ArrayId, this->ArrayName);
 }
 
 //------------------------------------------------------------------------------
@@ -495,10 +495,10 @@ void vtkSuperquadricGlyphMapper::ProcessSelectorPixelBuffers(
   {
     return;
   }
-  const int lowPass = pointPass ? vtkHardwareSelector::POINT_ID_LOW24
-                                : vtkHardwareSelector::CELL_ID_LOW24;
-  const int highPass = pointPass ? vtkHardwareSelector::POINT_ID_HIGH24
-                                 : vtkHardwareSelector::CELL_ID_HIGH24;
+  const int lowPass =
+    pointPass ? vtkHardwareSelector::POINT_ID_LOW24 : vtkHardwareSelector::CELL_ID_LOW24;
+  const int highPass =
+    pointPass ? vtkHardwareSelector::POINT_ID_HIGH24 : vtkHardwareSelector::CELL_ID_HIGH24;
   unsigned char* rawLow = sel->GetRawPixelBuffer(lowPass);
   unsigned char* rawHigh = sel->GetRawPixelBuffer(highPass);
   unsigned char* out = sel->GetPixelBuffer(pass);

@@ -154,7 +154,6 @@ struct FillWorker
 };
 }
 
-
 //------------------------------------------------------------------------------
 void vtkSuperquadricGlyphPreparer::SetTensorArrayName(const char* name)
 {
@@ -282,8 +281,8 @@ int vtkSuperquadricGlyphPreparer::RequestData(
       }
       else
       {
-        vtkErrorMacro("No active point tensors" << where
-                                                << " (set the tensor array name): no glyphs drawn.");
+        vtkErrorMacro(
+          "No active point tensors" << where << " (set the tensor array name): no glyphs drawn.");
       }
       ok = false;
       continue;
@@ -315,9 +314,9 @@ int vtkSuperquadricGlyphPreparer::RequestData(
     if (this->ColorVisible)
     {
       int cellFlag = 0;
-      scalars = vtkArrayDownCast<vtkDataArray>(vtkAbstractMapper::GetAbstractScalars(leaf,
-        this->ColorScalarMode, this->ColorAccessMode, this->ColorArrayId,
-        this->ColorArrayName.c_str(), cellFlag));
+      scalars = vtkArrayDownCast<vtkDataArray>(
+        vtkAbstractMapper::GetAbstractScalars(leaf, this->ColorScalarMode, this->ColorAccessMode,
+          this->ColorArrayId, this->ColorArrayName.c_str(), cellFlag));
       if (cellFlag != 0)
       {
         scalars = nullptr; // glyphs sit at points: cell scalars cannot color them

@@ -29,8 +29,8 @@ namespace
 /// The implicit function written independently of the shared code.
 double Q(double u, double v, double w, double alpha, double beta)
 {
-  return std::pow(std::pow(std::abs(u), 2.0 / alpha) + std::pow(std::abs(v), 2.0 / alpha),
-           alpha / beta) +
+  return std::pow(
+           std::pow(std::abs(u), 2.0 / alpha) + std::pow(std::abs(v), 2.0 / alpha), alpha / beta) +
     std::pow(std::abs(w), 2.0 / beta) - 1.0;
 }
 
@@ -108,8 +108,8 @@ int TestSuperquadricGlyphMath(int, char*[])
         SQ::vec3 xp = x, xm = x;
         xp[c] += h;
         xm[c] -= h;
-        const double fd = (Q(xp.x, xp.y, xp.z, alpha, beta) - Q(xm.x, xm.y, xm.z, alpha, beta)) /
-          (2.0 * h);
+        const double fd =
+          (Q(xp.x, xp.y, xp.z, alpha, beta) - Q(xm.x, xm.y, xm.z, alpha, beta)) / (2.0 * h);
         worstGrad = std::max(worstGrad, std::abs(fd - g[c]) / (1.0 + std::abs(fd)));
       }
     }
