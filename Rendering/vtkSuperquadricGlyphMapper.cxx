@@ -159,18 +159,22 @@ void vtkSuperquadricGlyphMapper::ComputeBounds()
   glyphs->GetBounds(this->Bounds);
   vtkDataArray* stats = glyphs->GetFieldData()->GetArray("sqStatistics");
   const double maxNorm = stats ? stats->GetTuple1(0) : 0.0;
-  // The largest semi-axis any glyph can have (|l| <= Frobenius norm), and
-  // the box around it.
-  double largest = this->ScaleFactor * maxNorm;
+  // Half extent of a glyph's box along any axis a: sum_i s_i |e_i . a| <=
+  // |s| (Cauchy-Schwarz, the e_i . a are a unit vector's coordinates), with
+  // |s| <= scale |T|_F (|l| <= Frobenius norm), at most sqrt(3) times the
+  // largest semi-axis, and the thickness floor adding at most a factor
+  // sqrt(1 + 3 m^2).
+  const double floorFactor = std::sqrt(1.0 + 3.0 * this->MinimumThickness * this->MinimumThickness);
+  double pad = this->ScaleFactor * maxNorm;
   if (this->ScaleMode == SCALE_NORMALIZED)
   {
-    largest = this->ScaleFactor;
+    pad = std::sqrt(3.0) * this->ScaleFactor;
   }
   else if (this->ScaleMode == SCALE_CLAMPED)
   {
-    largest = std::min(largest, this->MaximumScale);
+    pad = std::min(pad, std::sqrt(3.0) * this->MaximumScale);
   }
-  const double pad = std::sqrt(3.0) * largest;
+  pad *= floorFactor;
   for (int c = 0; c < 3; ++c)
   {
     this->Bounds[2 * c] -= pad;
