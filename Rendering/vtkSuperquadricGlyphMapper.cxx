@@ -11,6 +11,7 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
+#include "vtkExecutive.h"
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkInformation.h"
@@ -18,6 +19,7 @@
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkOpenGLActor.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLHelper.h"
@@ -76,10 +78,23 @@ public:
 
 namespace
 {
-// Re-emits the preparer's errors and warnings from the mapper.
+// Re-emits the preparer's (and its executive's) errors and warnings from the
+// mapper: to the mapper's observers if it has any, else to the output window.
 void ForwardEvent(vtkObject*, unsigned long event, void* clientData, void* callData)
 {
-  static_cast<vtkSuperquadricGlyphMapper*>(clientData)->InvokeEvent(event, callData);
+  auto* mapper = static_cast<vtkSuperquadricGlyphMapper*>(clientData);
+  if (mapper->HasObserver(event))
+  {
+    mapper->InvokeEvent(event, callData);
+  }
+  else if (event == vtkCommand::ErrorEvent)
+  {
+    vtkOutputWindowDisplayErrorText(static_cast<const char*>(callData));
+  }
+  else
+  {
+    vtkOutputWindowDisplayWarningText(static_cast<const char*>(callData));
+  }
 }
 }
 
@@ -93,6 +108,8 @@ vtkSuperquadricGlyphMapper::vtkSuperquadricGlyphMapper()
   this->Internal->Forwarder->SetCallback(ForwardEvent);
   this->Internal->Preparer->AddObserver(vtkCommand::ErrorEvent, this->Internal->Forwarder);
   this->Internal->Preparer->AddObserver(vtkCommand::WarningEvent, this->Internal->Forwarder);
+  this->Internal->Preparer->GetExecutive()->AddObserver(
+    vtkCommand::ErrorEvent, this->Internal->Forwarder);
 }
 
 //------------------------------------------------------------------------------

@@ -64,12 +64,13 @@ void main()
   {
     return; // the zero tensor
   }
-  float fa = svtFractionalAnisotropy(lambda);
-  if (fa < sqAnisotropyThreshold)
+  if (!svtApplySignPolicy(sqSignPolicy, lambda, e1, e2, e3))
   {
     return;
   }
-  if (!svtApplySignPolicy(sqSignPolicy, lambda, e1, e2, e3))
+  // FA of the eigenvalues drawn (after the sign policy, so in [0, 1])
+  float fa = svtFractionalAnisotropy(lambda);
+  if (fa < sqAnisotropyThreshold)
   {
     return;
   }
