@@ -5,6 +5,8 @@
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 
@@ -175,14 +177,24 @@ void vtkSuperquadricGlyphMapper::ComputeBounds()
   }
   glyphs->GetBounds(this->Bounds);
   vtkDataArray* stats = glyphs->GetFieldData()->GetArray("sqStatistics");
-  const double maxNorm = stats ? stats->GetTuple1(0) : 0.0;
+  const double pad = this->GetGlyphPadding(stats ? stats->GetTuple1(0) : 0.0);
+  for (int c = 0; c < 3; ++c)
+  {
+    this->Bounds[2 * c] -= pad;
+    this->Bounds[2 * c + 1] += pad;
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkSuperquadricGlyphMapper::GetGlyphPadding(double maxTensorNorm)
+{
   // Half extent of a glyph's box along any axis a: sum_i s_i |e_i . a| <=
   // |s| (Cauchy-Schwarz, the e_i . a are a unit vector's coordinates), with
   // |s| <= scale |T|_F (|l| <= Frobenius norm), at most sqrt(3) times the
   // largest semi-axis, and the thickness floor adding at most a factor
   // sqrt(1 + 3 m^2).
   const double floorFactor = std::sqrt(1.0 + 3.0 * this->MinimumThickness * this->MinimumThickness);
-  double pad = this->ScaleFactor * maxNorm;
+  double pad = this->ScaleFactor * maxTensorNorm;
   if (this->ScaleMode == SCALE_NORMALIZED)
   {
     pad = std::sqrt(3.0) * this->ScaleFactor;
@@ -191,12 +203,84 @@ void vtkSuperquadricGlyphMapper::ComputeBounds()
   {
     pad = std::min(pad, std::sqrt(3.0) * this->MaximumScale);
   }
-  pad *= floorFactor;
+  return pad * floorFactor;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSuperquadricGlyphMapper::ComputeGlyphBounds(vtkDataObject* data, double bounds[6])
+{
+  vtkMath::UninitializeBounds(bounds);
+  std::vector<vtkDataSet*> leaves;
+  if (auto* ds = vtkDataSet::SafeDownCast(data))
+  {
+    leaves.push_back(ds);
+  }
+  else if (auto* cd = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(cd->NewIterator());
+    it->SkipEmptyNodesOn();
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+      {
+        leaves.push_back(leaf);
+      }
+    }
+  }
+  double maxNorm = 0.0;
+  bool any = false;
+  for (vtkDataSet* leaf : leaves)
+  {
+    vtkPointData* pd = leaf->GetPointData();
+    vtkDataArray* tensors =
+      this->TensorArrayName ? pd->GetArray(this->TensorArrayName) : pd->GetTensors();
+    const int layout =
+      tensors ? TM::ResolveLayout(this->TensorLayout, tensors->GetNumberOfComponents()) : -1;
+    if (layout < 0 || leaf->GetNumberOfPoints() == 0)
+    {
+      continue;
+    }
+    vtkSMPThreadLocal<double> localMax;
+    vtkSMPTools::For(0, tensors->GetNumberOfTuples(),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        double& m = localMax.Local();
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          double t[6];
+          if (TM::ReadSymmetric(tensors, i, layout, t))
+          {
+            m = std::max(m,
+              std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2] +
+                2.0 * (t[3] * t[3] + t[4] * t[4] + t[5] * t[5])));
+          }
+        }
+      });
+    for (double m : localMax)
+    {
+      maxNorm = std::max(maxNorm, m);
+    }
+    double b[6];
+    leaf->GetBounds(b);
+    for (int c = 0; c < 3; ++c)
+    {
+      bounds[2 * c] = any ? std::min(bounds[2 * c], b[2 * c]) : b[2 * c];
+      bounds[2 * c + 1] = any ? std::max(bounds[2 * c + 1], b[2 * c + 1]) : b[2 * c + 1];
+    }
+    any = true;
+  }
+  if (!any)
+  {
+    return false;
+  }
+  const double pad = this->GetGlyphPadding(maxNorm);
   for (int c = 0; c < 3; ++c)
   {
-    this->Bounds[2 * c] -= pad;
-    this->Bounds[2 * c + 1] += pad;
+    bounds[2 * c] -= pad;
+    bounds[2 * c + 1] += pad;
   }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -270,10 +354,15 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
   in.HaveColors = false;
   if (pd->GetScalars() && this->ScalarVisibility)
   {
+    // one color per glyph: never through a texture (ParaView turns
+    // InterpolateScalarsBeforeMapping on)
     const int savedMode = this->ScalarMode;
+    const vtkTypeBool savedInterpolate = this->InterpolateScalarsBeforeMapping;
     this->ScalarMode = VTK_SCALAR_MODE_USE_POINT_DATA;
+    this->InterpolateScalarsBeforeMapping = 0;
     this->MapScalars(poly, 1.0);
     this->ScalarMode = savedMode;
+    this->InterpolateScalarsBeforeMapping = savedInterpolate;
     in.HaveColors = this->Colors != nullptr &&
       this->Colors->GetNumberOfTuples() == poly->GetNumberOfPoints() &&
       this->Colors->GetNumberOfComponents() == 4;

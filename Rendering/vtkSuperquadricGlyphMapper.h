@@ -267,6 +267,21 @@ public:
    */
   int GetGPUBytesPerGlyph();
 
+  /**
+   * Bounds that the glyphs of `data` (any data set or composite data set)
+   * would have with the current settings, without changing the input: the
+   * points' bounds padded by the largest glyph any tensor can give (from its
+   * Frobenius norm). Returns false when no block has a usable tensor array.
+   * (Used by the ParaView representation on the data server.)
+   */
+  bool ComputeGlyphBounds(vtkDataObject* data, double bounds[6]);
+
+  /**
+   * Padding of the points' bounds that contains every glyph whose tensor has
+   * at most the given Frobenius norm, with the current scale settings.
+   */
+  double GetGlyphPadding(double maxTensorNorm);
+
   /// Maps the glyph index of a selection to the input point id.
   vtkIdType GetInputPointId(vtkIdType glyphIndex);
 
