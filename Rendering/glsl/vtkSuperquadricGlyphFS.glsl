@@ -1,5 +1,12 @@
 //VTK::System::Dec
 
+// The ray-cast surface is never in front of the rasterized sprite, so the
+// depth test can run before the shader (early z) where supported.
+#ifdef GL_ARB_conservative_depth
+#extension GL_ARB_conservative_depth : enable
+layout(depth_greater) out float gl_FragDepth;
+#endif
+
 // Fragment shader of vtkSuperquadricGlyphMapper: casts the pixel's ray in
 // glyph space (Hlawitschka et al. §3.3-3.4): clip to the unit box, find the
 // first root of the superquadric function robustly (svqIntersect), write the

@@ -1,14 +1,16 @@
 //VTK::System::Dec
 
 // Geometry shader of vtkSuperquadricGlyphMapper: the sprite of one glyph
-// (Hlawitschka et al. §3.2). The worst case of any gamma is the glyph's box
-// (gamma = infinity); the sprite is the screen-space bounding rectangle of
-// that box, placed on the plane through the box corner nearest to the eye
-// (or on the near clipping plane when the box crosses it), so that every ray
-// starts in front of the glyph. The fragment shader casts the rays.
+// (Hlawitschka et al. §3.2-3.3). The worst case of any gamma is the glyph's
+// box (gamma = infinity); instead of the screen rectangle around the box,
+// the sprite is made of the box faces that face the eye (at most three
+// parallelograms covering exactly the box's projection, fewer fragments),
+// so each fragment lies where its ray enters the box. When the box crosses
+// the near clipping plane the sprite is the whole viewport on that plane.
+// The fragment shader casts the rays.
 
 layout(points) in;
-layout(triangle_strip, max_vertices = 4) out;
+layout(triangle_strip, max_vertices = 12) out;
 
 uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
@@ -28,9 +30,9 @@ flat out vec4 glyphColorGSOutput;
 
 //VTK::Picking::Dec
 
-void emitCorner(float x, float y, float z, mat3 inv)
+void emitCorner(vec3 p, mat3 inv)
 {
-  vertexVCGSOutput = vec4(x, y, z, 1.0);
+  vertexVCGSOutput = vec4(p, 1.0);
   gl_Position = VCDCMatrix * vertexVCGSOutput;
   glyphInverseGSOutput = inv;
   glyphCenterGSOutput = glyphCenterVSOut[0];
@@ -57,49 +59,59 @@ void main()
   {
     return; // entirely in front of the near plane (or behind the eye)
   }
-  float zp = min(zFront, nearPlaneVC);
   mat3 inv = inverse(G);
-  float xmin;
-  float xmax;
-  float ymin;
-  float ymax;
-  if (cameraParallel != 0)
+  if (zFront > nearPlaneVC)
   {
-    xmin = c.x - h.x;
-    xmax = c.x + h.x;
-    ymin = c.y - h.y;
-    ymax = c.y + h.y;
-  }
-  else if (zFront > nearPlaneVC)
-  {
-    // The box crosses the near plane: the whole viewport, on the near plane.
-    float w = VCDCMatrix[2][3] * zp + VCDCMatrix[3][3];
-    xmin = (-w - VCDCMatrix[2][0] * zp - VCDCMatrix[3][0]) / VCDCMatrix[0][0];
-    xmax = (w - VCDCMatrix[2][0] * zp - VCDCMatrix[3][0]) / VCDCMatrix[0][0];
-    ymin = (-w - VCDCMatrix[2][1] * zp - VCDCMatrix[3][1]) / VCDCMatrix[1][1];
-    ymax = (w - VCDCMatrix[2][1] * zp - VCDCMatrix[3][1]) / VCDCMatrix[1][1];
-  }
-  else
-  {
-    // Central projection of the 8 corners onto the plane z = zp.
-    xmin = 1e30;
-    xmax = -1e30;
-    ymin = 1e30;
-    ymax = -1e30;
-    for (int k = 0; k < 8; ++k)
+    // The box crosses the near plane: a rectangle on the near plane, the
+    // box's extent in parallel projection, the whole viewport in perspective.
+    float zp = nearPlaneVC;
+    float xmin = c.x - h.x;
+    float xmax = c.x + h.x;
+    float ymin = c.y - h.y;
+    float ymax = c.y + h.y;
+    if (cameraParallel == 0)
     {
-      vec3 sgn = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, (k & 4) != 0 ? 1.0 : -1.0);
-      vec3 p = c + G * sgn;
-      float f = zp / p.z;
-      xmin = min(xmin, p.x * f);
-      xmax = max(xmax, p.x * f);
-      ymin = min(ymin, p.y * f);
-      ymax = max(ymax, p.y * f);
+      float w = VCDCMatrix[2][3] * zp + VCDCMatrix[3][3];
+      xmin = (-w - VCDCMatrix[2][0] * zp - VCDCMatrix[3][0]) / VCDCMatrix[0][0];
+      xmax = (w - VCDCMatrix[2][0] * zp - VCDCMatrix[3][0]) / VCDCMatrix[0][0];
+      ymin = (-w - VCDCMatrix[2][1] * zp - VCDCMatrix[3][1]) / VCDCMatrix[1][1];
+      ymax = (w - VCDCMatrix[2][1] * zp - VCDCMatrix[3][1]) / VCDCMatrix[1][1];
+    }
+    emitCorner(vec3(xmin, ymin, zp), inv);
+    emitCorner(vec3(xmax, ymin, zp), inv);
+    emitCorner(vec3(xmin, ymax, zp), inv);
+    emitCorner(vec3(xmax, ymax, zp), inv);
+    EndPrimitive();
+    return;
+  }
+  // The 8 corners, computed once so that shared edges are identical (no
+  // cracks between the faces); corner k has the signs of bits 0, 1, 2 of k.
+  vec3 corners[8];
+  for (int k = 0; k < 8; ++k)
+  {
+    vec3 sgn = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, (k & 4) != 0 ? 1.0 : -1.0);
+    corners[k] = c + G * sgn;
+  }
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    // outward normal of the face +axis: row `axis` of G^-1
+    vec3 normal = vec3(inv[0][axis], inv[1][axis], inv[2][axis]);
+    int a = (axis + 1) % 3;
+    int b = (axis + 2) % 3;
+    for (int side = 0; side < 2; ++side)
+    {
+      float sigma = side == 0 ? -1.0 : 1.0;
+      vec3 faceCenter = c + sigma * G[axis];
+      vec3 toEye = cameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : -faceCenter;
+      if (sigma * dot(normal, toEye) > 0.0)
+      {
+        int base = side << axis;
+        emitCorner(corners[base], inv);
+        emitCorner(corners[base | (1 << a)], inv);
+        emitCorner(corners[base | (1 << b)], inv);
+        emitCorner(corners[base | (1 << a) | (1 << b)], inv);
+        EndPrimitive();
+      }
     }
   }
-  emitCorner(xmin, ymin, zp, inv);
-  emitCorner(xmax, ymin, zp, inv);
-  emitCorner(xmin, ymax, zp, inv);
-  emitCorner(xmax, ymax, zp, inv);
-  EndPrimitive();
 }

@@ -8,8 +8,12 @@
 //   q(u, v, w) = (|u|^(2/alpha) + |v|^(2/alpha))^(alpha/beta) + |w|^(2/beta) - 1 = 0
 // (symmetry axis w) under the glyph frame G = (s_u a_u, s_v a_v, s_w a_w).
 // For alpha, beta in (0, 1] the solid q <= 0 is convex, contains the unit
-// ball and lies in the unit box [-1, 1]^3 (Hlawitschka et al. §3.3). q itself
-// is a convex function, so along a ray f(t) = q(o + t d) is convex.
+// ball and lies in the unit box [-1, 1]^3 (Hlawitschka et al. §3.3), and in
+// the ball of radius 2^(1 - (alpha + beta)/2): with rho the L_(2/alpha) norm
+// of (u, v), the glyph is rho^(2/beta) + |w|^(2/beta) <= 1, and the power-mean
+// inequality a^2 + b^2 <= 2^(1 - 2/p) (a^p + b^p)^(2/p) (p >= 2) bounds
+// u^2 + v^2 + w^2 by 2^(1 - alpha) 2^(1 - beta). q itself is a convex
+// function, so along a ray f(t) = q(o + t d) is convex.
 //
 // Contents:
 //  - svqSemiAxes: semi-axis lengths from eigenvalues and the scale mode;
@@ -19,7 +23,6 @@
 //    §3.4 Newton iteration, made robust as in Teem's echo/sqd.c: a bracket
 //    from the inner unit sphere or from safe Newton steps on the convex f,
 //    then Newton on log(1 + f) with a bisection fallback inside the bracket).
-//    |f| < 1e-5 counts as on the surface (float rounding of f is ~1e-7).
 
 //------------------------------------------------------------------------------
 // Semi-axis lengths (s1 >= s2 >= s3, along e1, e2, e3) of the glyph of
@@ -121,7 +124,7 @@ bool svqClipUnitBox(vec3 o, vec3 d, SV_OUT(real) t0, SV_OUT(real) t1)
 // maxEvaluations evaluations of q. Returns true on a hit with its parameter
 // in tHit; `evaluations` receives the number of evaluations used.
 //
-// 1. Clip to the unit box: [t0, t1] (f(t0) >= 0 on the box surface).
+// 1. Clip to the unit box and to the outer ball: [t0, t1] (f(t0) >= 0).
 // 2. A bracket [lo, hi] with f(lo) >= 0 >= f(hi) and no root before lo:
 //    - if the ray enters the unit ball (inside the glyph) in [t0, t1], hi is
 //      that entry point: no evaluation needed;
@@ -132,13 +135,14 @@ bool svqClipUnitBox(vec3 o, vec3 d, SV_OUT(real) t0, SV_OUT(real) t1)
 //      step on log(1 + f) (Teem) is tried at each iteration: if it lands
 //      inside (f <= 0) it closes the bracket; if it lands outside while f is
 //      still decreasing it is also before the first root and is kept.
-//    f < 1e-5 or a Newton step shorter than the tolerance end the search
-//    with a hit (converged from outside). Running out of evaluations
+//    A Newton step shorter than the tolerance ends the search with a hit
+//    (converged from outside). Running out of evaluations
 //    without a bracket is reported as a miss
 //    (rays grazing the silhouette within the root-finding tolerance).
 // 3. Inside the bracket: Newton on log(1 + f) (plain Newton when |f| is
 //    small), replaced by bisection whenever the step leaves the bracket;
-//    stops when |f| < 1e-5 or the bracket is shorter than 1e-4 glyph units.
+//    stops when the Newton step or the bracket is shorter than 1e-4 glyph
+//    units.
 //    A bracket always yields a hit, so grazing rays do not speckle.
 bool svqIntersect(vec3 o, vec3 d, real alpha, real beta, int maxEvaluations, SV_OUT(real) tHit,
   SV_OUT(int) evaluations)
@@ -151,19 +155,32 @@ bool svqIntersect(vec3 o, vec3 d, real alpha, real beta, int maxEvaluations, SV_
   {
     return false;
   }
+  real dd = dot(d, d);
+  real b = dot(o, d);
+  real oo = dot(o, o);
+  // The glyph lies in the ball of radius 2^(1 - (alpha + beta)/2) (1 for
+  // ellipsoids, the box's corners only for alpha = beta -> 0): rays that miss
+  // it need no evaluation, and it shortens [t0, t1] for the others.
+  real outer2 = pow(2.0, 2.0 - alpha - beta);
+  real discOuter = b * b - dd * (oo - outer2);
+  if (!(discOuter > 0.0))
+  {
+    return false;
+  }
+  real rootOuter = sqrt(discOuter);
+  t0 = max(t0, (-b - rootOuter) / dd);
+  t1 = min(t1, (-b + rootOuter) / dd);
   t0 = max(t0, 0.0);
   if (t1 <= t0)
   {
     return false;
   }
-  real dd = dot(d, d);
   real tTol = 1e-4 / sqrt(dd);
 
   real lo = t0;
   real hi = -1.0;
-  // Entry into the unit ball.
-  real b = dot(o, d);
-  real c = dot(o, o) - 1.0;
+  // Entry into the unit ball (inside the glyph).
+  real c = oo - 1.0;
   real disc = b * b - dd * c;
   if (disc > 0.0)
   {
@@ -194,12 +211,6 @@ bool svqIntersect(vec3 o, vec3 d, real alpha, real beta, int maxEvaluations, SV_
         hi = t;
         haveValue = true; // f and g are those at hi
         searching = false;
-      }
-      else if (f < 1e-5)
-      {
-        // converged onto the surface from outside
-        tHit = t;
-        return true;
       }
       else
       {
@@ -254,7 +265,8 @@ bool svqIntersect(vec3 o, vec3 d, real alpha, real beta, int maxEvaluations, SV_
   }
   else
   {
-    t = hi;
+    // start outside: the outer-ball entry is usually close to the surface
+    t = lo;
   }
 
   // Refinement inside [lo, hi].
@@ -266,8 +278,11 @@ bool svqIntersect(vec3 o, vec3 d, real alpha, real beta, int maxEvaluations, SV_
       evaluations += 1;
     }
     haveValue = false;
-    if (abs(f) < 1e-5)
+    real fp = dot(g, d);
+    real tn = t - f / fp;
+    if (abs(tn - t) < tTol)
     {
+      // the Newton step vanished: at the surface
       tHit = t;
       return true;
     }
@@ -279,11 +294,15 @@ bool svqIntersect(vec3 o, vec3 d, real alpha, real beta, int maxEvaluations, SV_
     {
       hi = t;
     }
-    real fp = dot(g, d);
-    real tn = t - f / fp;
-    if (abs(f) >= 1e-3)
+    if (f >= 1e-3)
     {
-      tn = t - (1.0 + f) * log(1.0 + f) / fp;
+      // outside and far: Newton on log(1 + f) (Teem) when it stays in the
+      // bracket, else plain Newton (safe from outside on the convex f)
+      real tLog = t - (1.0 + f) * log(1.0 + f) / fp;
+      if (tLog > lo && tLog < hi)
+      {
+        tn = tLog;
+      }
     }
     if (!(tn > lo && tn < hi))
     {

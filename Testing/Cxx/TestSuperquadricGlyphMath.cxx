@@ -3,7 +3,8 @@
 //  - q against the implicit formula written out here, its gradient against
 //    central differences;
 //  - the geometric facts the ray caster relies on: q <= 0 on the unit
-//    sphere, q >= 0 on the unit box surface, convexity of q along rays;
+//    sphere, q >= 0 on the unit box surface and outside the ball of radius
+//    2^(1 - (alpha + beta)/2), convexity of q along rays;
 //  - the unit-box clip against dense sampling;
 //  - the root finder against brute force (dense sampling of the ray plus
 //    bisection in double) on 84,000 rays over the whole (alpha, beta) range:
@@ -126,7 +127,7 @@ int TestSuperquadricGlyphMath(int, char*[])
   //----------------------------------------------------------------------------
   // Inner sphere, outer box, convexity along rays.
   {
-    double worstSphere = -1.0, worstBox = 1.0;
+    double worstSphere = -1.0, worstBox = 1.0, worstOuter = 1.0;
     int nonConvex = 0;
     for (int n = 0; n < 20000; ++n)
     {
@@ -137,6 +138,10 @@ int TestSuperquadricGlyphMath(int, char*[])
       const double m = std::max({ std::abs(p.x), std::abs(p.y), std::abs(p.z) });
       const SQ::vec3 b = p / m; // on the box surface
       worstBox = std::min(worstBox, Q(b.x, b.y, b.z, alpha, beta));
+      // outside the outer ball of radius 2^(1 - (alpha + beta)/2): outside
+      const double outer = std::pow(2.0, 1.0 - 0.5 * (alpha + beta));
+      const SQ::vec3 po = p * (outer * (1.0 + 1e-9));
+      worstOuter = std::min(worstOuter, Q(po.x, po.y, po.z, alpha, beta));
       // convexity: f(mid) <= (f(a) + f(b)) / 2 along a random chord
       const SQ::vec3 a(rnd.Next(-1.5, 1.5), rnd.Next(-1.5, 1.5), rnd.Next(-1.5, 1.5));
       const SQ::vec3 mid = 0.5 * (a + b);
@@ -148,6 +153,7 @@ int TestSuperquadricGlyphMath(int, char*[])
     }
     SV_CHECK_MSG(status, worstSphere <= 1e-12, "q on the unit sphere " << worstSphere);
     SV_CHECK_MSG(status, worstBox >= -1e-12, "q on the box " << worstBox);
+    SV_CHECK_MSG(status, worstOuter >= -1e-12, "q on the outer ball " << worstOuter);
     SV_CHECK_MSG(status, nonConvex == 0, nonConvex << " non-convex chords");
   }
 
