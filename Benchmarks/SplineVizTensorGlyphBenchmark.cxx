@@ -349,6 +349,25 @@ Result Run(
   return r;
 }
 
+std::string LoadAverage()
+{
+  char buffer[128] = { 0 };
+  if (FILE* f = std::fopen("/proc/loadavg", "r"))
+  {
+    if (!std::fgets(buffer, sizeof(buffer), f))
+    {
+      buffer[0] = 0;
+    }
+    std::fclose(f);
+  }
+  std::string s(buffer);
+  if (!s.empty() && s.back() == '\n')
+  {
+    s.pop_back();
+  }
+  return s;
+}
+
 double AvailableGB()
 {
   double gb = 0.0;
@@ -426,7 +445,7 @@ int main(int argc, char* argv[])
       window->SetOffScreenRendering(1);
       window->SetSize(w, h);
       window->SetMultiSamples(0);
-      std::printf("-- %dx%d\n", w, h);
+      std::printf("-- %dx%d (load average before: %s)\n", w, h, LoadAverage().c_str());
       std::printf("  %-14s %14s %12s %16s %16s %7s\n", "renderer", "first frame s", "GPU B/glyph",
         "median frame ms", "gamma change ms", "frames");
       std::map<std::string, Result> results;
@@ -450,6 +469,7 @@ int main(int argc, char* argv[])
           r.Note.c_str());
         std::fflush(stdout);
       }
+      std::printf("  (load average after: %s)\n", LoadAverage().c_str());
       if (results.count("superquadric"))
       {
         const Result& s = results["superquadric"];

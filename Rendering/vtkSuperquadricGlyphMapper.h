@@ -20,11 +20,13 @@
  *   the trace-normalized Westin metrics cl, cp, Kindlmann's alpha and beta
  *   from Gamma with the symmetry axis x (along e1) when cl > cp and z (along
  *   e3) otherwise, the glyph frame and the color. The geometry shader emits
- *   the sprite: the screen rectangle of the glyph's box, the worst case of
- *   any gamma (paper §3.2). The fragment shader ray-casts the implicit
- *   surface in glyph space (paper §3.3-3.4): clip to the unit box, bracket
- *   the first root (entry into the inscribed unit ball, or safe Newton steps
- *   on the convex function, which also prove misses), refine by Newton on
+ *   the sprite: the faces of the glyph's box that face the eye (the box is
+ *   the worst case of any gamma, paper §3.2), so each fragment starts where
+ *   its ray enters the box. The fragment shader ray-casts the implicit
+ *   surface in glyph space (paper §3.3-3.4): clip to the unit box and to a
+ *   ball of radius 2^(1-(alpha+beta)/2) containing the glyph, bracket the
+ *   first root (entry into the inscribed unit ball, or safe Newton steps on
+ *   the convex function, which also prove misses), refine by Newton on
  *   log(1 + f) with a bisection fallback (Teem's echo/sqd.c approach), at
  *   most MaximumIterations evaluations; it writes the exact depth and shades
  *   with VTK's lights and the analytic normal.
@@ -204,7 +206,8 @@ public:
   ///@{
   /**
    * Glyphs of tensors with a fractional anisotropy below this value are not
-   * drawn. Default 0 (all).
+   * drawn (FA of the eigenvalues drawn, i.e. after the negative-eigenvalue
+   * policy, so in [0, 1]). Default 0 (all).
    */
   vtkSetClampMacro(AnisotropyThreshold, double, 0.0, 1.0);
   vtkGetMacro(AnisotropyThreshold, double);
