@@ -192,27 +192,53 @@ bool vtkLRSplinePatch::ComputeSupports(
   this->GetDomain(domain);
 
   // The elements must tile the domain: no two overlap, and the volumes add up.
-  std::atomic<vtkIdType> overlapping(-1);
+  // (the smallest overlapping element is reported, with the one it overlaps)
+  std::atomic<vtkIdType> overlapping(ne);
   vtkSMPThreadLocal<std::vector<vtkIdType>> tlHits;
   vtkSMPTools::For(0, ne,
     [&](vtkIdType begin, vtkIdType end)
     {
       std::vector<vtkIdType>& hits = tlHits.Local();
-      for (vtkIdType e = begin; e < end && overlapping.load() < 0; ++e)
+      for (vtkIdType e = begin; e < end && e < overlapping.load(); ++e)
       {
         tree.FindElementsIntersecting(this->ElementBoxes.data() + 6 * e, hits);
         if (hits.size() != 1)
         {
-          vtkIdType expected = -1;
-          overlapping.compare_exchange_strong(expected, e);
+          vtkIdType current = overlapping.load();
+          while (e < current && !overlapping.compare_exchange_weak(current, e))
+          {
+          }
         }
       }
     });
-  if (overlapping.load() >= 0)
+  if (overlapping.load() < ne)
   {
     const vtkIdType e = overlapping.load();
-    return fail(
-      Where(this->ElementLines, e) + "element " + std::to_string(e) + " overlaps another element");
+    std::vector<vtkIdType> hits;
+    tree.FindElementsIntersecting(this->ElementBoxes.data() + 6 * e, hits);
+    vtkIdType other = -1;
+    for (vtkIdType h : hits)
+    {
+      if (h != e)
+      {
+        other = h;
+        break;
+      }
+    }
+    std::string msg = Where(this->ElementLines, e) + "element " + std::to_string(e) + " overlaps";
+    if (other >= 0)
+    {
+      msg += " element " + std::to_string(other);
+      if (static_cast<std::size_t>(other) < this->ElementLines.size())
+      {
+        msg += " (line " + std::to_string(this->ElementLines[other]) + ")";
+      }
+    }
+    else
+    {
+      msg += " another element";
+    }
+    return fail(msg);
   }
   double volume = 0.0;
   for (vtkIdType e = 0; e < ne; ++e)
@@ -342,7 +368,12 @@ bool vtkLRSplinePatch::ComputeSupports(
           mine.begin(), mine.end(), theirs.begin(), theirs.end(), std::back_inserter(diff));
         if (!diff.empty())
         {
-          msg << " (basis function " << diff[0] << " differs)";
+          msg << " (basis function " << diff[0];
+          if (static_cast<std::size_t>(diff[0]) < this->BasisLines.size())
+          {
+            msg << " on line " << this->BasisLines[diff[0]];
+          }
+          msg << " differs)";
         }
         return fail(msg.str());
       }
@@ -532,6 +563,9 @@ bool vtkLRSplinePatch::ExtractBezier(vtkLRSplineBezierVolume& out, std::string* 
     const vtkIdType e = badElement.load();
     return fail(Where(this->ElementLines, e) + "element " + std::to_string(e) +
       " is not inside one knot interval of basis function " + std::to_string(badFunction.load()) +
+      (static_cast<std::size_t>(badFunction.load()) < this->BasisLines.size()
+          ? " on line " + std::to_string(this->BasisLines[badFunction.load()])
+          : std::string()) +
       " (the knot vectors do not match the mesh)");
   }
   if (warning)

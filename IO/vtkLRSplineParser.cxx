@@ -63,7 +63,8 @@ public:
     this->HavePeek = false;
     return t;
   }
-  int Line() const { return this->CurrentLine; }
+  /// The last line that had a token (the line to report at the end of the file).
+  int Line() const { return this->LastLine; }
 
 private:
   Token Read()
@@ -83,8 +84,10 @@ private:
       if (this->P >= this->E)
       {
         t.Type = Token::End;
+        t.Line = this->LastLine; // the last line with content
         return t;
       }
+      this->LastLine = this->CurrentLine;
       if (this->Comments && *this->P == '#')
       {
         const char* start = ++this->P;
@@ -127,6 +130,7 @@ private:
   const char* E;
   bool Comments;
   int CurrentLine = 1;
+  int LastLine = 1;
   Token Peeked;
   bool HavePeek = false;
 };
@@ -260,11 +264,16 @@ public:
             "this is an LR-spline SURFACE (\"# LRSPLINE SURFACE\"); the reader reads volumes "
             "(\"# LRSPLINE VOLUME\")" };
         }
-        if (w1 == "LRSPLINE")
+        if (w1 == "LRSPLINE" && w2.empty())
         {
           throw ParseError{ t.Line,
             "\"# LRSPLINE\" without VOLUME is the pre-2013 surface format; the reader reads "
             "volumes (\"# LRSPLINE VOLUME\")" };
+        }
+        if (w1 == "LRSPLINE")
+        {
+          throw ParseError{ t.Line,
+            "unknown header " + Describe(t) + ", expected \"# LRSPLINE VOLUME\"" };
         }
         if (patches.empty() &&
           (w1.find("LRSPLINE") != std::string::npos || text.find("LRSPLINE") != std::string::npos))
@@ -319,6 +328,12 @@ private:
         " (patch " + std::to_string(index) + ")";
       Token idTok = this->Data(bctx);
       patch.BasisLines.push_back(idTok.Line);
+      if (idTok.Text == "[")
+      {
+        throw ParseError{ idTok.Line,
+          "found a mesh rectangle where " + bctx +
+            " was expected (wrong basis function count in the header?)" };
+      }
       const long long id = ToInteger(idTok, bctx + ": id", 0, maxCount);
       if (id != i)
       {
@@ -385,8 +400,9 @@ private:
         {
           throw ParseError{ open.Line,
             "expected '[' in " + rctx + ", found " + Describe(open) +
-              (r == 0 && open.Type == Token::Word ? " (wrong basis function count in the header?)"
-                                                  : "") };
+              (open.Type == Token::Word ? (r == 0 ? " (wrong basis function count in the header?)"
+                                                  : " (wrong mesh rectangle count in the header?)")
+                                        : "") };
         }
         lo[d] = this->Number(rctx);
         this->Expect(",", rctx);
