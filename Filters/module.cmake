@@ -1,6 +1,8 @@
 # Filters/: VTK filters and sources of the SplineViz module, and the plain C++
 # numerical code they share (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineProbeFilter"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineResampleToImage"
   "${SPLINEVIZ_FOLDER}/vtkSyntheticFibersSource")
 # LR-spline volumes (Fuchs et al.): plain C++ shared by the filters, the
 # reader and the renderers.

@@ -4,11 +4,14 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace
 {
@@ -278,4 +281,77 @@ int vtkLRSplineField::EvaluateWithHint(
   }
   patch = this->Evaluate(x, value, gradient, &element);
   return patch;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkLRSplineField::EvaluatePoints(vtkIdType n,
+  const std::function<void(vtkIdType, double[3])>& point, double* values, double* gradients,
+  char* mask) const
+{
+  const int nc = this->NumberOfComponents;
+  vtkSMPThreadLocal<vtkIdType> inside(0);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      vtkIdType& count = inside.Local();
+      int patch = -1;
+      vtkIdType element = -1;
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        double x[3];
+        point(i, x);
+        double* v = values + i * nc;
+        double* g = gradients ? gradients + 3 * i * nc : nullptr;
+        const int p = this->EvaluateWithHint(x, v, g, patch, element);
+        if (p < 0)
+        {
+          std::fill(v, v + nc, 0.0);
+          if (g)
+          {
+            std::fill(g, g + 3 * nc, 0.0);
+          }
+        }
+        else
+        {
+          ++count;
+        }
+        if (mask)
+        {
+          mask[i] = p >= 0 ? 1 : 0;
+        }
+      }
+    });
+  vtkIdType total = 0;
+  for (vtkIdType c : inside)
+  {
+    total += c;
+  }
+  return total;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineField::BuildCached(std::unique_ptr<vtkLRSplineField>& field, std::string& key,
+  vtkDataObject* source, const char* arrayName, int locatorType, int resolution,
+  bool parameterSpace, std::string* error)
+{
+  std::ostringstream k;
+  k << static_cast<const void*>(source) << "/" << (source ? source->GetMTime() : 0) << "/"
+    << (arrayName ? arrayName : "") << "/" << locatorType << "/" << resolution << "/"
+    << parameterSpace;
+  if (field && key == k.str())
+  {
+    return true;
+  }
+  key.clear();
+  auto fresh = std::make_unique<vtkLRSplineField>();
+  const int blocks[3] = { resolution, resolution, resolution };
+  if (!fresh->Build(
+        source, arrayName, locatorType, resolution > 0 ? blocks : nullptr, parameterSpace, error))
+  {
+    field.reset();
+    return false;
+  }
+  field = std::move(fresh);
+  key = k.str();
+  return true;
 }

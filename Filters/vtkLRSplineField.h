@@ -21,6 +21,7 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkLRSplineEvaluator.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +38,15 @@ public:
    * is no usable patch.
    */
   bool Build(vtkDataObject* source, const char* arrayName, int locatorType, const int blocks[3],
+    bool parameterSpace, std::string* error);
+
+  /**
+   * Build `field` from `source` unless `key` shows it was built from the same
+   * source (pointer and modification time) with the same settings; the
+   * cache the filters keep between executions. `resolution` 0: automatic.
+   */
+  static bool BuildCached(std::unique_ptr<vtkLRSplineField>& field, std::string& key,
+    vtkDataObject* source, const char* arrayName, int locatorType, int resolution,
     bool parameterSpace, std::string* error);
 
   int GetNumberOfPatches() const { return static_cast<int>(this->Patches.size()); }
@@ -70,6 +80,15 @@ public:
     const double x[3], double* value, double* gradient, int& patch, vtkIdType& element) const;
   int EvaluateWithHint(
     const float x[3], float* value, float* gradient, int& patch, vtkIdType& element) const;
+
+  /**
+   * Evaluate at n points in parallel (vtkSMPTools); point(i, x) writes the
+   * i-th point. values: n * NumberOfComponents; gradients (may be null):
+   * n * 3 * NumberOfComponents; mask (may be null): 1 inside, 0 outside
+   * (outside points get zeros). Returns the number of points inside.
+   */
+  vtkIdType EvaluatePoints(vtkIdType n, const std::function<void(vtkIdType, double[3])>& point,
+    double* values, double* gradients, char* mask) const;
 
   /// Patch and element containing x (-1 when none).
   int FindPatch(const double x[3], vtkIdType* element = nullptr) const;
