@@ -15,6 +15,52 @@
 #include <limits>
 #include <sstream>
 
+//------------------------------------------------------------------------------
+template <typename Real>
+void vtkLRSplineBezierVolume::Bernstein(int n, Real s, Real* b, Real* d)
+{
+  const Real t = Real(1) - s;
+  // Degree n-1 first (needed for the derivative), then raise to degree n.
+  b[0] = Real(1);
+  for (int k = 1; k < n; ++k)
+  {
+    Real saved = Real(0);
+    for (int i = 0; i < k; ++i)
+    {
+      const Real tmp = b[i];
+      b[i] = saved + t * tmp;
+      saved = s * tmp;
+    }
+    b[k] = saved;
+  }
+  if (n == 0)
+  {
+    if (d)
+    {
+      d[0] = Real(0);
+    }
+    return;
+  }
+  if (d)
+  {
+    const Real rn = static_cast<Real>(n);
+    d[0] = -rn * b[0];
+    for (int i = 1; i < n; ++i)
+    {
+      d[i] = rn * (b[i - 1] - b[i]);
+    }
+    d[n] = rn * b[n - 1];
+  }
+  Real saved = Real(0);
+  for (int i = 0; i < n; ++i)
+  {
+    const Real tmp = b[i];
+    b[i] = saved + t * tmp;
+    saved = s * tmp;
+  }
+  b[n] = saved;
+}
+
 namespace
 {
 constexpr int MaxComponents = 64;
@@ -99,6 +145,85 @@ void EvaluateBlock(
   }
 }
 
+// The common cases with compile-time degrees and components: fully unrolled.
+template <typename Real, int NC, int DU, int DV, int DW, bool Grad>
+inline void EvaluateFixed(const Real* coeffs, const Real s[3], Real* value, Real* dlocal)
+{
+  Real bu[DU + 1], du[DU + 1], bv[DV + 1], dv[DV + 1], bw[DW + 1], dw[DW + 1];
+  vtkLRSplineBezierVolume::Bernstein<Real>(DU, s[0], bu, Grad ? du : nullptr);
+  vtkLRSplineBezierVolume::Bernstein<Real>(DV, s[1], bv, Grad ? dv : nullptr);
+  vtkLRSplineBezierVolume::Bernstein<Real>(DW, s[2], bw, Grad ? dw : nullptr);
+  Real val[NC] = {}, gu[NC] = {}, gv[NC] = {}, gw[NC] = {};
+  for (int k = 0; k <= DW; ++k)
+  {
+    Real A[NC] = {}, Au[NC] = {}, Av[NC] = {};
+    for (int j = 0; j <= DV; ++j)
+    {
+      const Real* row = coeffs + ((k * (DV + 1) + j) * (DU + 1)) * NC;
+      Real a[NC] = {}, au[NC] = {};
+      for (int i = 0; i <= DU; ++i)
+      {
+        for (int c = 0; c < NC; ++c)
+        {
+          a[c] += row[i * NC + c] * bu[i];
+          if (Grad)
+          {
+            au[c] += row[i * NC + c] * du[i];
+          }
+        }
+      }
+      for (int c = 0; c < NC; ++c)
+      {
+        A[c] += a[c] * bv[j];
+        if (Grad)
+        {
+          Au[c] += au[c] * bv[j];
+          Av[c] += a[c] * dv[j];
+        }
+      }
+    }
+    for (int c = 0; c < NC; ++c)
+    {
+      val[c] += A[c] * bw[k];
+      if (Grad)
+      {
+        gu[c] += Au[c] * bw[k];
+        gv[c] += Av[c] * bw[k];
+        gw[c] += A[c] * dw[k];
+      }
+    }
+  }
+  for (int c = 0; c < NC; ++c)
+  {
+    value[c] = val[c];
+    if (Grad)
+    {
+      dlocal[3 * c + 0] = gu[c];
+      dlocal[3 * c + 1] = gv[c];
+      dlocal[3 * c + 2] = gw[c];
+    }
+  }
+}
+
+template <typename Real, int NC, int D>
+inline bool TryFixed(
+  const Real* coeffs, const int deg[3], const Real s[3], Real* value, Real* dlocal)
+{
+  if (deg[0] != D || deg[1] != D || deg[2] != D)
+  {
+    return false;
+  }
+  if (dlocal)
+  {
+    EvaluateFixed<Real, NC, D, D, D, true>(coeffs, s, value, dlocal);
+  }
+  else
+  {
+    EvaluateFixed<Real, NC, D, D, D, false>(coeffs, s, value, nullptr);
+  }
+  return true;
+}
+
 template <typename Real>
 void Dispatch(
   const Real* coeffs, const int deg[3], int nc, const Real s[3], Real* value, Real* dlocal)
@@ -106,62 +231,25 @@ void Dispatch(
   switch (nc)
   {
     case 1:
-      EvaluateBlock<Real, 1>(coeffs, deg, nc, s, value, dlocal);
+      if (!TryFixed<Real, 1, 2>(coeffs, deg, s, value, dlocal) &&
+        !TryFixed<Real, 1, 3>(coeffs, deg, s, value, dlocal))
+      {
+        EvaluateBlock<Real, 1>(coeffs, deg, nc, s, value, dlocal);
+      }
       break;
     case 3:
-      EvaluateBlock<Real, 3>(coeffs, deg, nc, s, value, dlocal);
+      if (!TryFixed<Real, 3, 2>(coeffs, deg, s, value, dlocal) &&
+        !TryFixed<Real, 3, 3>(coeffs, deg, s, value, dlocal) &&
+        !TryFixed<Real, 3, 1>(coeffs, deg, s, value, dlocal))
+      {
+        EvaluateBlock<Real, 3>(coeffs, deg, nc, s, value, dlocal);
+      }
       break;
     default:
       EvaluateBlock<Real, 0>(coeffs, deg, nc, s, value, dlocal);
       break;
   }
 }
-}
-
-//------------------------------------------------------------------------------
-template <typename Real>
-void vtkLRSplineBezierVolume::Bernstein(int n, Real s, Real* b, Real* d)
-{
-  const Real t = Real(1) - s;
-  // Degree n-1 first (needed for the derivative), then raise to degree n.
-  b[0] = Real(1);
-  for (int k = 1; k < n; ++k)
-  {
-    Real saved = Real(0);
-    for (int i = 0; i < k; ++i)
-    {
-      const Real tmp = b[i];
-      b[i] = saved + t * tmp;
-      saved = s * tmp;
-    }
-    b[k] = saved;
-  }
-  if (n == 0)
-  {
-    if (d)
-    {
-      d[0] = Real(0);
-    }
-    return;
-  }
-  if (d)
-  {
-    const Real rn = static_cast<Real>(n);
-    d[0] = -rn * b[0];
-    for (int i = 1; i < n; ++i)
-    {
-      d[i] = rn * (b[i - 1] - b[i]);
-    }
-    d[n] = rn * b[n - 1];
-  }
-  Real saved = Real(0);
-  for (int i = 0; i < n; ++i)
-  {
-    const Real tmp = b[i];
-    b[i] = saved + t * tmp;
-    saved = s * tmp;
-  }
-  b[n] = saved;
 }
 
 template SPLINEVIZ_EXPORT void vtkLRSplineBezierVolume::Bernstein<double>(

@@ -147,14 +147,62 @@ void vtkLRSplineEvaluator::EvaluateInElement(
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// Value and physical gradient at parameter u inside element e.
+inline void AtParameter(const vtkLRSplineBezierVolume& volume, const double scale[3], vtkIdType e,
+  const double u[3], double* value, double* gradient)
+{
+  const double* b = volume.GetBox(e);
+  double s[3], w[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    w[d] = b[d + 3] - b[d];
+    s[d] = std::min(1.0, std::max(0.0, (u[d] - b[d]) / w[d]));
+  }
+  volume.EvaluateLocal(e, s, value, gradient);
+  if (gradient)
+  {
+    double inv[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      inv[d] = 1.0 / (w[d] * scale[d]);
+    }
+    const int nc = volume.NumberOfComponents;
+    for (int c = 0; c < nc; ++c)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        gradient[3 * c + d] *= inv[d];
+      }
+    }
+  }
+}
+}
+
 vtkIdType vtkLRSplineEvaluator::Evaluate(const double x[3], double* value, double* gradient) const
 {
-  const vtkIdType e = this->FindElement(x);
+  double u[3];
+  this->PhysicalToParameter(x, u);
+  const vtkIdType e = this->Locator.FindElement(u);
   if (e >= 0)
   {
-    this->EvaluateInElement(e, x, value, gradient);
+    AtParameter(this->Volume, this->Scale, e, u, value, gradient);
   }
   return e;
+}
+
+bool vtkLRSplineEvaluator::EvaluateIfInElement(
+  vtkIdType e, const double x[3], double* value, double* gradient) const
+{
+  double u[3];
+  this->PhysicalToParameter(x, u);
+  if (!this->Locator.Contains(e, u))
+  {
+    return false;
+  }
+  AtParameter(this->Volume, this->Scale, e, u, value, gradient);
+  return true;
 }
 
 vtkIdType vtkLRSplineEvaluator::Evaluate(const float x[3], float* value, float* gradient) const

@@ -77,6 +77,12 @@ public:
   void EvaluateInElement(vtkIdType e, const double x[3], double* value, double* gradient) const;
   void EvaluateInElement(vtkIdType e, const float x[3], float* value, float* gradient) const;
 
+  /**
+   * If element e contains physical point x, evaluate there and return true
+   * (one conversion to parameter space; the fast path of coherent queries).
+   */
+  bool EvaluateIfInElement(vtkIdType e, const double x[3], double* value, double* gradient) const;
+
   /// Evaluate at parameter point u; gradient with respect to u.
   vtkIdType EvaluateParameter(const double u[3], double* value, double* gradient = nullptr) const;
 

@@ -225,17 +225,23 @@ int vtkLRSplineField::FindPatch(const double x[3], vtkIdType* element) const
 int vtkLRSplineField::Evaluate(
   const double x[3], double* value, double* gradient, vtkIdType* element) const
 {
-  vtkIdType e;
-  const int p = this->FindPatch(x, &e);
-  if (p >= 0)
+  for (std::size_t p = 0; p < this->Patches.size(); ++p)
   {
-    this->Patches[p]->EvaluateInElement(e, x, value, gradient);
+    const vtkIdType e = this->Patches[p]->Evaluate(x, value, gradient);
+    if (e >= 0)
+    {
+      if (element)
+      {
+        *element = e;
+      }
+      return static_cast<int>(p);
+    }
   }
   if (element)
   {
-    *element = e;
+    *element = -1;
   }
-  return p;
+  return -1;
 }
 
 int vtkLRSplineField::Evaluate(
@@ -260,9 +266,9 @@ int vtkLRSplineField::EvaluateWithHint(
   const double x[3], double* value, double* gradient, int& patch, vtkIdType& element) const
 {
   if (patch >= 0 && element >= 0 && (!this->PatchesOverlap || patch == 0) &&
-    patch < this->GetNumberOfPatches() && this->Patches[patch]->ElementContains(element, x))
+    patch < this->GetNumberOfPatches() &&
+    this->Patches[patch]->EvaluateIfInElement(element, x, value, gradient))
   {
-    this->Patches[patch]->EvaluateInElement(element, x, value, gradient);
     return patch;
   }
   patch = this->Evaluate(x, value, gradient, &element);
