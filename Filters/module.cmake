@@ -3,6 +3,7 @@
 list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineProbeFilter"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineResampleToImage"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineStreamTracer"
   "${SPLINEVIZ_FOLDER}/vtkSyntheticFibersSource")
 # LR-spline volumes (Fuchs et al.): plain C++ shared by the filters, the
 # reader and the renderers.
