@@ -57,6 +57,39 @@ arr = iinfo.GetPointDataInformation().GetArrayInformation("Field")
 rng = arr.GetComponentRange(0)
 assert abs(rng[0]) < 1e-12 and abs(rng[1] - 1.0) < 1e-12, rng
 
+# Streamlines through patch 1 (the field v = (-y, x, z) in the unit cube,
+# placed in [0,2]^3 it is (-y, x, z)/2 in physical units per parameter).
+block = ExtractBlock(Input=reader)  # noqa: F405
+block.Selectors = ["/Root/Patch1"]
+tracer = LRSplineStreamTracer(Input=block, SeedType="Line")  # noqa: F405
+tracer.SeedType.Point1 = [0.4, 0.1, 0.1]
+tracer.SeedType.Point2 = [1.8, 0.1, 0.3]
+tracer.SeedType.Resolution = 9
+tracer.IntegratorType = "RKF45"
+tracer.StepMode = "Adaptive (embedded methods)"
+tracer.MaximumError = 1e-8
+tracer.UpdatePipeline()
+lines = servermanager.Fetch(tracer)
+print("stream tracer:", lines.GetNumberOfLines(), "lines,", lines.GetNumberOfPoints(), "points")
+assert lines.GetNumberOfLines() >= 10, lines.GetNumberOfLines()
+for name in ("Field", "Speed", "IntegrationTime"):
+    assert lines.GetPointData().GetArray(name) is not None, name
+for name in ("SeedIds", "ReasonForTermination"):
+    assert lines.GetCellData().GetArray(name) is not None, name
+# radius about the z axis (the corner of the box) is preserved
+worst = 0.0
+for c in range(lines.GetNumberOfLines()):
+    cell = lines.GetCell(c)
+    ids = [cell.GetPointId(k) for k in range(cell.GetNumberOfPoints() - 1)]
+    r0 = sum(v * v for v in lines.GetPoint(ids[0])[:2]) ** 0.5
+    for i in ids:
+        p = lines.GetPoint(i)
+        worst = max(worst, abs((p[0] ** 2 + p[1] ** 2) ** 0.5 - r0))
+print("stream tracer: largest change of the radius", worst)
+if worst > 1e-6:
+    print("ERROR: the streamlines are not the exact circles")
+    sys.exit(1)
+
 view = CreateRenderView()  # noqa: F405
 view.ViewSize = [400, 300]
 view.UseColorPaletteForBackground = 0
