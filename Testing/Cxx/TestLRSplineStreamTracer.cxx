@@ -35,12 +35,39 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkStreamTracer.h"
 #include "vtkTestErrorObserver.h"
 
 #include <cmath>
 #include <functional>
 #include <iomanip>
 #include <limits>
+
+// The termination codes and directions are vtkStreamTracer's.
+constexpr int Code(int c)
+{
+  return c;
+}
+static_assert(
+  Code(vtkLRSplineStreamTracer::OUT_OF_DOMAIN) == Code(vtkStreamTracer::OUT_OF_DOMAIN), "codes");
+static_assert(
+  Code(vtkLRSplineStreamTracer::NOT_INITIALIZED) == Code(vtkStreamTracer::NOT_INITIALIZED),
+  "codes");
+static_assert(
+  Code(vtkLRSplineStreamTracer::UNEXPECTED_VALUE) == Code(vtkStreamTracer::UNEXPECTED_VALUE),
+  "codes");
+static_assert(
+  Code(vtkLRSplineStreamTracer::OUT_OF_LENGTH) == Code(vtkStreamTracer::OUT_OF_LENGTH), "codes");
+static_assert(
+  Code(vtkLRSplineStreamTracer::OUT_OF_STEPS) == Code(vtkStreamTracer::OUT_OF_STEPS), "codes");
+static_assert(
+  Code(vtkLRSplineStreamTracer::STAGNATION) == Code(vtkStreamTracer::STAGNATION), "codes");
+static_assert(Code(vtkLRSplineStreamTracer::OUT_OF_TIME) ==
+    Code(vtkStreamTracer::FIXED_REASONS_FOR_TERMINATION_COUNT),
+  "the first custom code");
+static_assert(Code(vtkLRSplineStreamTracer::BOTH) == Code(vtkStreamTracer::BOTH) &&
+    Code(vtkLRSplineStreamTracer::BACKWARD) == Code(vtkStreamTracer::BACKWARD),
+  "directions");
 
 namespace
 {
