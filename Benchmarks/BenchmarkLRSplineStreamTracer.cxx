@@ -189,10 +189,6 @@ int main(int argc, char* argv[])
   r.Error = vtkLRSplineStreamTracer::ComputeErrorMetric(lines, reference, "velocity");
   Print("SplineViz RKF45, adaptive, tolerance 1e-6", r);
   const double oursRKF45 = r.Wall[1];
-  r = runOurs(
-    vtkLRSplineStreamTracer::RKF45, vtkLRSplineStreamTracer::ADAPTIVE, 0.01, D, 1e-3, lines);
-  r.Error = vtkLRSplineStreamTracer::ComputeErrorMetric(lines, reference, "velocity");
-  Print("SplineViz RKF45, adaptive, tolerance 1e-3", r);
 
   // The VTK way: resample to a 128^3 image, then vtkStreamTracer.
   vtkNew<vtkLRSplineResampleToImage> resample;
