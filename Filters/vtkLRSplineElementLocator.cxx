@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 
 namespace
@@ -19,6 +20,8 @@ struct SubtreeBuilder
   std::vector<double> Splits;
   // scratch
   std::vector<double> Lo, Hi, Candidates;
+  // left/right element lists per depth (a deque: growing it keeps references valid)
+  std::deque<std::vector<vtkIdType>> Pool;
 
   // Split choice (Fuchs §3.2.1): for each direction, every element boundary
   // strictly inside the region is a candidate; count the elements left
@@ -32,6 +35,57 @@ struct SubtreeBuilder
     bool found = false;
     int bestWeak = 2;
     std::size_t bestMax = 0, bestSum = 0;
+    auto consider = [&](int d, double s, std::size_t left, std::size_t right)
+    {
+      const int weak = (left < n && right < n) ? 0 : 1;
+      const std::size_t mx = std::max(left, right);
+      const std::size_t sum = left + right;
+      if (!found || weak < bestWeak ||
+        (weak == bestWeak && (mx < bestMax || (mx == bestMax && sum < bestSum))))
+      {
+        found = true;
+        bestWeak = weak;
+        bestMax = mx;
+        bestSum = sum;
+        dir = d;
+        split = s;
+      }
+    };
+    if (n <= 16)
+    {
+      // Few elements: count directly (same choice as the sorted path below,
+      // candidates visited in increasing order per direction).
+      double cand[32];
+      for (int d = 0; d < 3; ++d)
+      {
+        int nc = 0;
+        for (std::size_t k = 0; k < n; ++k)
+        {
+          const double* b = this->Boxes + 6 * elems[k];
+          for (const double v : { b[d], b[d + 3] })
+          {
+            if (v > region[d] && v < region[d + 3])
+            {
+              cand[nc++] = v;
+            }
+          }
+        }
+        std::sort(cand, cand + nc);
+        nc = static_cast<int>(std::unique(cand, cand + nc) - cand);
+        for (int c = 0; c < nc; ++c)
+        {
+          std::size_t left = 0, right = 0;
+          for (std::size_t k = 0; k < n; ++k)
+          {
+            const double* b = this->Boxes + 6 * elems[k];
+            left += b[d] < cand[c] ? 1 : 0;
+            right += b[d + 3] > cand[c] ? 1 : 0;
+          }
+          consider(d, cand[c], left, right);
+        }
+      }
+      return found;
+    }
     this->Lo.resize(n);
     this->Hi.resize(n);
     for (int d = 0; d < 3; ++d)
@@ -66,26 +120,14 @@ struct SubtreeBuilder
           std::lower_bound(this->Lo.begin(), this->Lo.end(), s) - this->Lo.begin());
         const std::size_t right = static_cast<std::size_t>(
           this->Hi.end() - std::upper_bound(this->Hi.begin(), this->Hi.end(), s));
-        const int weak = (left < n && right < n) ? 0 : 1;
-        const std::size_t mx = std::max(left, right);
-        const std::size_t sum = left + right;
-        if (!found || weak < bestWeak ||
-          (weak == bestWeak && (mx < bestMax || (mx == bestMax && sum < bestSum))))
-        {
-          found = true;
-          bestWeak = weak;
-          bestMax = mx;
-          bestSum = sum;
-          dir = d;
-          split = s;
-        }
+        consider(d, s, left, right);
       }
     }
     return found;
   }
 
   // Returns the depth of the subtree (0 for a leaf).
-  int Build(std::vector<vtkIdType>& elems, const double region[6])
+  int Build(const std::vector<vtkIdType>& elems, const double region[6], std::size_t depth = 0)
   {
     if (elems.size() <= 1)
     {
@@ -105,7 +147,15 @@ struct SubtreeBuilder
       this->Splits.push_back(0.0);
       return 0;
     }
-    std::vector<vtkIdType> left, right;
+    if (this->Pool.size() < 2 * depth + 2)
+    {
+      this->Pool.resize(2 * depth + 2);
+    }
+    // (the right subtree uses deeper buffers only, so `left` survives it)
+    std::vector<vtkIdType>& left = this->Pool[2 * depth];
+    std::vector<vtkIdType>& right = this->Pool[2 * depth + 1];
+    left.clear();
+    right.clear();
     for (vtkIdType e : elems)
     {
       const double* b = this->Boxes + 6 * e;
@@ -118,7 +168,6 @@ struct SubtreeBuilder
         right.push_back(e);
       }
     }
-    std::vector<vtkIdType>().swap(elems);
     const std::size_t index = this->Words.size();
     this->Words.push_back(static_cast<Word>(d) << 29);
     this->Splits.push_back(s);
@@ -127,9 +176,9 @@ struct SubtreeBuilder
     std::copy(region, region + 6, lr);
     rr[d] = s;
     lr[d + 3] = s;
-    const int dr = this->Build(right, rr); // right child: index + 1
+    const int dr = this->Build(this->Pool[2 * depth + 1], rr, depth + 1); // right child: index + 1
     this->Words[index] |= static_cast<Word>(this->Words.size());
-    const int dl = this->Build(left, lr);
+    const int dl = this->Build(this->Pool[2 * depth], lr, depth + 1);
     return 1 + std::max(dl, dr);
   }
 };
