@@ -10,6 +10,7 @@ expected = {
     "vtkSyntheticFibersSource",
     "vtkSplineTubeMapper",
     "vtkRayCastTubeMapper",
+    "vtkTensorAnalysisFilter",
 }
 abstract = {"vtkSplineTubeMapper"}
 missing = expected - set(splineviz.__all__)
