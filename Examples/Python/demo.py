@@ -40,30 +40,66 @@ def save(window, name):
     print("wrote", path)
 
 
+# --- Spline tubes (Salm) -----------------------------------------------------
+# The built-in data set: smooth random fibers the size of Salm's "Fibers"
+# (241 tubes, 3,530 segments), radius and color from point arrays.
 fibers = splineviz.vtkSyntheticFibersSource()
 fibers.SetPresetToFibers()
 fibers.Update()
 
-# The polylines as VTK's own tube filter draws them (the reference the
-# SplineViz renderers are compared with).
+
+def fiber_view(actor, name, camera_position=(0.25, 0.35, 1.9), focal=(0, 0, 0), size=(800, 600)):
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    renderer.SetBackground(0.08, 0.08, 0.1)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(*camera_position)
+    camera.SetFocalPoint(*focal)
+    camera.SetViewUp(0, 1, 0)
+    renderer.ResetCameraClippingRange()
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)
+    window.SetSize(*size)
+    window.AddRenderer(renderer)
+    save(window, name)
+
+
+# Ray-cast spline tubes: exact sphere-swept surfaces, per-point radius
+# (world units) and scalar colors following cubic splines, rounded caps.
+raycast = splineviz.vtkRayCastTubeMapper()
+raycast.SetInputConnection(fibers.GetOutputPort())
+raycast.SetRadiusArray("Radius")
+raycast.SetScalarRange(0, 1)
+raycast_actor = vtkActor()
+raycast_actor.SetMapper(raycast)
+raycast_actor.GetProperty().SetSpecular(0.4)
+raycast_actor.GetProperty().SetSpecularPower(40)
+fiber_view(raycast_actor, "fibers-raycast-tubes.png")
+# ... and a close-up among the tubes (the surfaces stay smooth and exact).
+fiber_view(raycast_actor, "fibers-raycast-tubes-closeup.png", camera_position=(0.08, 0.05, 0.32),
+           focal=(0.0, 0.0, 0.0))
+
+# The same polylines as VTK's own tube filter draws them (12 sides, radius by
+# the same array, straight segments): the way SplineViz is compared with.
+fibers.GetOutput().GetPointData().SetActiveScalars("Radius")
 tubes = vtkTubeFilter()
-tubes.SetInputConnection(fibers.GetOutputPort())
-tubes.SetRadius(0.006)
+tubes.SetInputData(fibers.GetOutput())
 tubes.SetNumberOfSides(12)
-mapper = vtkPolyDataMapper()
-mapper.SetInputConnection(tubes.GetOutputPort())
-mapper.SetScalarRange(0, 1)
-actor = vtkActor()
-actor.SetMapper(mapper)
-renderer = vtkRenderer()
-renderer.AddActor(actor)
-renderer.SetBackground(0.1, 0.1, 0.12)
-renderer.ResetCamera()
-window = vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetSize(800, 600)
-window.AddRenderer(renderer)
-save(window, "fibers-vtk-tube-filter.png")
+tubes.SetVaryRadiusToVaryRadiusByAbsoluteScalar()
+tubes.Update()
+fibers.GetOutput().GetPointData().SetActiveScalars("Scalar")
+tube_data = tubes.GetOutput()
+tube_data.GetPointData().SetActiveScalars("Scalar")
+tube_mapper = vtkPolyDataMapper()
+tube_mapper.SetInputData(tube_data)
+tube_mapper.SetScalarRange(0, 1)
+tube_actor = vtkActor()
+tube_actor.SetMapper(tube_mapper)
+tube_actor.GetProperty().SetSpecular(0.4)
+tube_actor.GetProperty().SetSpecularPower(40)
+fiber_view(tube_actor, "fibers-vtk-tube-filter-closeup.png", camera_position=(0.08, 0.05, 0.32),
+           focal=(0.0, 0.0, 0.0))
 
 # --- LR-spline volumes (Fuchs et al.) --------------------------------------
 # The real locally refined volume, read as exact Bezier hexahedra: its
@@ -144,9 +180,7 @@ if os.path.exists(lr_file):
 
     # Streamlines through the real spline: patch 1 of the file is the field
     # v = (-y, x, z) (helices about the z axis), traced on the exact spline
-    # and drawn as tubes whose radius and colour follow the speed.
-    # (vtkTubeFilter here; the SplineViz ray-cast tube mapper replaces it
-    # where available.)
+    # and drawn as ray-cast tubes whose radius and colour follow the speed.
     from vtkmodules.vtkFiltersSources import vtkLineSource  # noqa: E402
 
     seeds = vtkLineSource()
@@ -161,18 +195,14 @@ if os.path.exists(lr_file):
     tracer.SetMaximumError(1e-7)
     tracer.SetMaximumIntegrationStep(0.02)
     tracer.Update()
-    stream_tubes = vtkTubeFilter()
-    stream_tubes.SetInputConnection(tracer.GetOutputPort())
-    stream_tubes.SetInputArrayToProcess(0, 0, 0, 0, "Speed")
-    stream_tubes.SetVaryRadiusToVaryRadiusByScalar()
-    stream_tubes.SetRadius(0.006)
-    stream_tubes.SetRadiusFactor(2.5)
-    stream_tubes.SetNumberOfSides(16)
-    stream_mapper = vtkPolyDataMapper()
-    stream_mapper.SetInputConnection(stream_tubes.GetOutputPort())
+    speed_range = tracer.GetOutput().GetPointData().GetArray("Speed").GetRange()
+    stream_mapper = splineviz.vtkRayCastTubeMapper()
+    stream_mapper.SetInputConnection(tracer.GetOutputPort())
+    stream_mapper.SetRadiusArray("Speed")
+    stream_mapper.SetRadiusScale(0.018 / speed_range[1])
     stream_mapper.SetScalarModeToUsePointFieldData()
     stream_mapper.SelectColorArray("Speed")
-    stream_mapper.SetScalarRange(tracer.GetOutput().GetPointData().GetArray("Speed").GetRange())
+    stream_mapper.SetScalarRange(speed_range)
     stream_actor = vtkActor()
     stream_actor.SetMapper(stream_mapper)
     renderer = vtkRenderer()
