@@ -55,6 +55,8 @@ vtkRayCastTubeMapper::vtkRayCastTubeMapper()
   , Colors(new vtkSplineVizGPUBuffer)
   , ColorDerivatives(new vtkSplineVizGPUBuffer)
 {
+  // Sphere-swept tubes need no cross-section frames.
+  this->Core->ComputeFramesOff();
 }
 
 //------------------------------------------------------------------------------
