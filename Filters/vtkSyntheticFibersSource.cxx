@@ -117,11 +117,13 @@ void vtkSyntheticFibersSource::SetPreset(int preset)
                     << " (expected 0 = custom, 1 = Fibers, 2 = Fibers2, 3 = one million)");
       return;
   }
-  if (this->Preset != preset || tubes != this->NumberOfTubes || segments != this->NumberOfSegments)
+  if (this->Preset != preset || tubes != this->NumberOfTubes ||
+    segments != this->NumberOfSegments || box != this->BoxSize)
   {
     this->Preset = preset;
     this->NumberOfTubes = tubes;
     this->NumberOfSegments = segments;
+    this->BoxSize = box;
     this->Modified();
   }
 }

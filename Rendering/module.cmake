@@ -13,7 +13,6 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathPrelude.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathShared.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeVS.glsl"
-  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeGS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeFS.glsl")
 # Superquadric tensor glyphs: the glyph math shared with the shaders
 # (vtkSuperquadricGlyphMath.h compiles glsl/vtkSuperquadricGlyphShared.glsl as C++).

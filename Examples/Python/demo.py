@@ -40,30 +40,194 @@ def save(window, name):
     print("wrote", path)
 
 
+# --- Spline tubes (Salm) -----------------------------------------------------
+# The built-in data set: smooth random fibers the size of Salm's "Fibers"
+# (241 tubes, 3,530 segments), radius and color from point arrays.
 fibers = splineviz.vtkSyntheticFibersSource()
 fibers.SetPresetToFibers()
 fibers.Update()
 
-# The polylines as VTK's own tube filter draws them (the reference the
-# SplineViz renderers are compared with).
+
+def fiber_view(actor, name, camera_position=(0.25, 0.35, 1.9), focal=(0, 0, 0), size=(800, 600)):
+    renderer = vtkRenderer()
+    renderer.AddActor(actor)
+    renderer.SetBackground(0.08, 0.08, 0.1)
+    camera = renderer.GetActiveCamera()
+    camera.SetPosition(*camera_position)
+    camera.SetFocalPoint(*focal)
+    camera.SetViewUp(0, 1, 0)
+    renderer.ResetCameraClippingRange()
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetMultiSamples(0)
+    window.SetSize(*size)
+    window.AddRenderer(renderer)
+    save(window, name)
+
+
+# Ray-cast spline tubes: exact sphere-swept surfaces, per-point radius
+# (world units) and scalar colors following cubic splines, rounded caps.
+raycast = splineviz.vtkRayCastTubeMapper()
+raycast.SetInputConnection(fibers.GetOutputPort())
+raycast.SetRadiusArray("Radius")
+raycast.SetScalarRange(0, 1)
+raycast_actor = vtkActor()
+raycast_actor.SetMapper(raycast)
+raycast_actor.GetProperty().SetSpecular(0.4)
+raycast_actor.GetProperty().SetSpecularPower(40)
+fiber_view(raycast_actor, "fibers-raycast-tubes.png")
+# ... and a close-up among the tubes (the surfaces stay smooth and exact).
+fiber_view(raycast_actor, "fibers-raycast-tubes-closeup.png", camera_position=(0.08, 0.05, 0.32),
+           focal=(0.0, 0.0, 0.0))
+
+# The same polylines as VTK's own tube filter draws them (12 sides, radius by
+# the same array, straight segments): the way SplineViz is compared with.
+fibers.GetOutput().GetPointData().SetActiveScalars("Radius")
 tubes = vtkTubeFilter()
-tubes.SetInputConnection(fibers.GetOutputPort())
-tubes.SetRadius(0.006)
+tubes.SetInputData(fibers.GetOutput())
 tubes.SetNumberOfSides(12)
-mapper = vtkPolyDataMapper()
-mapper.SetInputConnection(tubes.GetOutputPort())
-mapper.SetScalarRange(0, 1)
-actor = vtkActor()
-actor.SetMapper(mapper)
-renderer = vtkRenderer()
-renderer.AddActor(actor)
-renderer.SetBackground(0.1, 0.1, 0.12)
-renderer.ResetCamera()
-window = vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetSize(800, 600)
-window.AddRenderer(renderer)
-save(window, "fibers-vtk-tube-filter.png")
+tubes.SetVaryRadiusToVaryRadiusByAbsoluteScalar()
+tubes.Update()
+fibers.GetOutput().GetPointData().SetActiveScalars("Scalar")
+tube_data = tubes.GetOutput()
+tube_data.GetPointData().SetActiveScalars("Scalar")
+tube_mapper = vtkPolyDataMapper()
+tube_mapper.SetInputData(tube_data)
+tube_mapper.SetScalarRange(0, 1)
+tube_actor = vtkActor()
+tube_actor.SetMapper(tube_mapper)
+tube_actor.GetProperty().SetSpecular(0.4)
+tube_actor.GetProperty().SetSpecularPower(40)
+fiber_view(tube_actor, "fibers-vtk-tube-filter-closeup.png", camera_position=(0.08, 0.05, 0.32),
+           focal=(0.0, 0.0, 0.0))
+
+# --- LR-spline volumes (Fuchs et al.) --------------------------------------
+# The real locally refined volume, read as exact Bezier hexahedra: its
+# surface with the element edges, coloured by the element size (the local
+# refinement, like the paper's Fig. 1), and the g2 tensor-product volume in
+# geometry mode (its real shape).
+from vtkmodules.vtkFiltersGeometry import vtkDataSetSurfaceFilter  # noqa: E402
+
+data_dir = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Testing",
+                        "Data", "External")
+lr_file = os.path.join(data_dir, "cube-3patch-refined.lr")
+if os.path.exists(lr_file):
+    lr = splineviz.vtkLRSplineReader()
+    lr.SetFileName(lr_file)
+    lr.Update()
+    patch = lr.GetOutput().GetBlock(0)
+    surface = vtkDataSetSurfaceFilter()
+    surface.SetInputData(patch)
+    surface.SetNonlinearSubdivisionLevel(2)
+    surface.Update()
+    size_mapper = vtkPolyDataMapper()
+    size_mapper.SetInputConnection(surface.GetOutputPort())
+    size_mapper.SetScalarModeToUseCellFieldData()
+    size_mapper.SelectColorArray("LRElementMinSide")
+    size_mapper.SetScalarRange(patch.GetCellData().GetArray("LRElementMinSide").GetRange())
+    size_actor = vtkActor()
+    size_actor.SetMapper(size_mapper)
+    edges = vtkDataSetSurfaceFilter()
+    edges.SetInputData(patch)
+    edges.SetNonlinearSubdivisionLevel(0)
+    edge_mapper = vtkPolyDataMapper()
+    edge_mapper.SetInputConnection(edges.GetOutputPort())
+    edge_mapper.ScalarVisibilityOff()
+    edge_actor = vtkActor()
+    edge_actor.SetMapper(edge_mapper)
+    edge_actor.GetProperty().SetRepresentationToWireframe()
+    edge_actor.GetProperty().SetColor(0.05, 0.05, 0.05)
+    renderer = vtkRenderer()
+    renderer.AddActor(size_actor)
+    renderer.AddActor(edge_actor)
+    renderer.SetBackground(1, 1, 1)
+    renderer.GetActiveCamera().SetPosition(2.6, -1.9, 2.4)
+    renderer.GetActiveCamera().SetFocalPoint(0.5, 0.5, 0.5)
+    renderer.GetActiveCamera().SetViewUp(0, 0, 1)
+    renderer.ResetCamera()
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(800, 600)
+    window.AddRenderer(renderer)
+    save(window, "lr-spline-elements.png")
+
+    g2 = splineviz.vtkLRSplineReader()
+    g2.SetFileName(os.path.join(data_dir, "tensor-product-volume.g2"))
+    g2.GeometryModeOn()
+    g2.Update()
+    shape = vtkDataSetSurfaceFilter()
+    shape.SetInputData(g2.GetOutput().GetBlock(0))
+    shape.SetNonlinearSubdivisionLevel(4)
+    shape_mapper = vtkPolyDataMapper()
+    shape_mapper.SetInputConnection(shape.GetOutputPort())
+    shape_mapper.SetScalarModeToUsePointFieldData()
+    shape_mapper.SelectColorArray("LRParameterCoordinates")
+    shape_mapper.ColorByArrayComponent("LRParameterCoordinates", 1)
+    shape_mapper.SetScalarRange(0, 1)
+    shape_actor = vtkActor()
+    shape_actor.SetMapper(shape_mapper)
+    renderer = vtkRenderer()
+    renderer.AddActor(shape_actor)
+    renderer.SetBackground(1, 1, 1)
+    renderer.GetActiveCamera().SetPosition(4, -6, 8)
+    renderer.GetActiveCamera().SetFocalPoint(0, -1, 2.5)
+    renderer.ResetCamera()
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(800, 600)
+    window.AddRenderer(renderer)
+    save(window, "lr-spline-g2-geometry.png")
+
+    # Streamlines through the real spline: patch 1 of the file is the field
+    # v = (-y, x, z) (helices about the z axis), traced on the exact spline
+    # and drawn as ray-cast tubes whose radius and colour follow the speed.
+    from vtkmodules.vtkFiltersSources import vtkLineSource  # noqa: E402
+
+    seeds = vtkLineSource()
+    seeds.SetPoint1(0.2, 0.03, 0.04)
+    seeds.SetPoint2(0.95, 0.03, 0.22)
+    seeds.SetResolution(15)
+    tracer = splineviz.vtkLRSplineStreamTracer()
+    tracer.SetInputData(lr.GetOutput().GetBlock(1))
+    tracer.SetSourceConnection(seeds.GetOutputPort())
+    tracer.SetIntegratorType(splineviz.vtkLRSplineStreamTracer.RKF45)
+    tracer.SetStepMode(splineviz.vtkLRSplineStreamTracer.ADAPTIVE)
+    tracer.SetMaximumError(1e-7)
+    tracer.SetMaximumIntegrationStep(0.02)
+    tracer.Update()
+    speed_range = tracer.GetOutput().GetPointData().GetArray("Speed").GetRange()
+    stream_mapper = splineviz.vtkRayCastTubeMapper()
+    stream_mapper.SetInputConnection(tracer.GetOutputPort())
+    stream_mapper.SetRadiusArray("Speed")
+    stream_mapper.SetRadiusScale(0.018 / speed_range[1])
+    stream_mapper.SetScalarModeToUsePointFieldData()
+    stream_mapper.SelectColorArray("Speed")
+    stream_mapper.SetScalarRange(speed_range)
+    stream_actor = vtkActor()
+    stream_actor.SetMapper(stream_mapper)
+    renderer = vtkRenderer()
+    renderer.AddActor(stream_actor)
+    mesh1 = vtkDataSetSurfaceFilter()
+    mesh1.SetInputData(lr.GetOutput().GetBlock(1))
+    mesh1_mapper = vtkPolyDataMapper()
+    mesh1_mapper.SetInputConnection(mesh1.GetOutputPort())
+    mesh1_mapper.ScalarVisibilityOff()
+    mesh1_actor = vtkActor()
+    mesh1_actor.SetMapper(mesh1_mapper)
+    mesh1_actor.GetProperty().SetRepresentationToWireframe()
+    mesh1_actor.GetProperty().SetColor(0.3, 0.3, 0.3)
+    mesh1_actor.GetProperty().SetOpacity(0.3)
+    renderer.AddActor(mesh1_actor)  # the LR mesh of the spline
+    renderer.SetBackground(1, 1, 1)
+    renderer.GetActiveCamera().SetPosition(2.4, -1.6, 1.9)
+    renderer.GetActiveCamera().SetFocalPoint(0.45, 0.45, 0.4)
+    renderer.GetActiveCamera().SetViewUp(0, 0, 1)
+    renderer.ResetCamera()
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(800, 600)
+    window.AddRenderer(renderer)
+    save(window, "lr-spline-streamlines.png")
 
 # -- Superquadric tensor glyphs (Hlawitschka et al.; Kindlmann 2004) ---------
 # A synthetic tensor volume whose principal direction winds around the z axis
