@@ -95,37 +95,39 @@ vtkSmartPointer<vtkImageData> MakeTensorVolume(int n)
   tensors->SetNumberOfComponents(9);
   tensors->SetNumberOfTuples(static_cast<vtkIdType>(n) * n * n);
   float* t = tensors->GetPointer(0);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n) * n * n, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType id = begin; id < end; ++id)
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n) * n * n,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      const int i = static_cast<int>(id % n), j = static_cast<int>((id / n) % n),
-                k = static_cast<int>(id / (static_cast<vtkIdType>(n) * n));
-      const double x = static_cast<double>(i) / n, y = static_cast<double>(j) / n,
-                   z = static_cast<double>(k) / n;
-      const double angle = 3.0 * z + 2.0 * x;
-      const double e1[3] = { std::cos(angle), std::sin(angle), 0.3 * std::sin(5.0 * y) };
-      double u1[3] = { e1[0], e1[1], e1[2] };
-      vtkMath::Normalize(u1);
-      double u2[3];
-      const double up[3] = { 0, 0, 1 };
-      vtkMath::Cross(up, u1, u2);
-      vtkMath::Normalize(u2);
-      double u3[3];
-      vtkMath::Cross(u1, u2, u3);
-      const double l1 = 1.0;
-      const double l2 = 0.15 + 0.8 * (0.5 + 0.5 * std::sin(6.0 * x + 4.0 * y));
-      const double l3 = l2 * (0.2 + 0.75 * (0.5 + 0.5 * std::cos(5.0 * z + 3.0 * x)));
-      float* out = t + 9 * id;
-      for (int r = 0; r < 3; ++r)
+      for (vtkIdType id = begin; id < end; ++id)
       {
-        for (int c = 0; c < 3; ++c)
+        const int i = static_cast<int>(id % n), j = static_cast<int>((id / n) % n),
+                  k = static_cast<int>(id / (static_cast<vtkIdType>(n) * n));
+        const double x = static_cast<double>(i) / n, y = static_cast<double>(j) / n,
+                     z = static_cast<double>(k) / n;
+        const double angle = 3.0 * z + 2.0 * x;
+        const double e1[3] = { std::cos(angle), std::sin(angle), 0.3 * std::sin(5.0 * y) };
+        double u1[3] = { e1[0], e1[1], e1[2] };
+        vtkMath::Normalize(u1);
+        double u2[3];
+        const double up[3] = { 0, 0, 1 };
+        vtkMath::Cross(up, u1, u2);
+        vtkMath::Normalize(u2);
+        double u3[3];
+        vtkMath::Cross(u1, u2, u3);
+        const double l1 = 1.0;
+        const double l2 = 0.15 + 0.8 * (0.5 + 0.5 * std::sin(6.0 * x + 4.0 * y));
+        const double l3 = l2 * (0.2 + 0.75 * (0.5 + 0.5 * std::cos(5.0 * z + 3.0 * x)));
+        float* out = t + 9 * id;
+        for (int r = 0; r < 3; ++r)
         {
-          out[3 * r + c] =
-            static_cast<float>(l1 * u1[r] * u1[c] + l2 * u2[r] * u2[c] + l3 * u3[r] * u3[c]);
+          for (int c = 0; c < 3; ++c)
+          {
+            out[3 * r + c] =
+              static_cast<float>(l1 * u1[r] * u1[c] + l2 * u2[r] * u2[c] + l3 * u3[r] * u3[c]);
+          }
         }
       }
-    }
-  });
+    });
   image->GetPointData()->SetTensors(tensors);
   return image;
 }
@@ -169,7 +171,8 @@ using Factory = std::function<Built(vtkImageData*)>;
 std::map<std::string, Factory> Renderers()
 {
   std::map<std::string, Factory> r;
-  r["superquadric"] = [](vtkImageData* data) {
+  r["superquadric"] = [](vtkImageData* data)
+  {
     auto mapper = vtkSmartPointer<vtkSuperquadricGlyphMapper>::New();
     mapper->SetInputData(data);
     mapper->SetScaleFactor(GlyphScale);
@@ -177,13 +180,13 @@ std::map<std::string, Factory> Renderers()
     Built b;
     b.Actor = vtkSmartPointer<vtkActor>::New();
     b.Actor->SetMapper(mapper);
-    b.GPUBytes = [mapper]() {
-      return static_cast<double>(mapper->GetGPUBytesPerGlyph()) * mapper->GetNumberOfGlyphs();
-    };
+    b.GPUBytes = [mapper]()
+    { return static_cast<double>(mapper->GetGPUBytesPerGlyph()) * mapper->GetNumberOfGlyphs(); };
     b.SetGamma = [mapper](double g) { mapper->SetGamma(g); };
     return b;
   };
-  r["tensorglyph"] = [](vtkImageData* data) {
+  r["tensorglyph"] = [](vtkImageData* data)
+  {
     auto source = MakeSource(0.3);
     auto glyphs = vtkSmartPointer<vtkTensorGlyph>::New();
     glyphs->SetInputData(data);
@@ -198,13 +201,12 @@ std::map<std::string, Factory> Renderers()
     Built b;
     b.Actor = vtkSmartPointer<vtkActor>::New();
     b.Actor->SetMapper(mapper);
-    b.GPUBytes = [glyphs, data]() {
-      return PolyDataGPUBytes(glyphs->GetOutput(), true);
-    };
+    b.GPUBytes = [glyphs, data]() { return PolyDataGPUBytes(glyphs->GetOutput(), true); };
     b.SetGamma = [source](double g) { source->SetThetaRoundness(std::pow(0.8, g)); };
     return b;
   };
-  r["glyph3dmapper"] = [](vtkImageData* data) {
+  r["glyph3dmapper"] = [](vtkImageData* data)
+  {
     // Per point: orientation (quaternion of the eigenvector frame) and
     // scale (eigenvalues), from SplineViz's eigen-decomposition.
     const vtkIdType n = data->GetNumberOfPoints();
@@ -217,30 +219,32 @@ std::map<std::string, Factory> Renderers()
     scale->SetName("Scale");
     scale->SetNumberOfComponents(3);
     scale->SetNumberOfTuples(n);
-    vtkSMPTools::For(0, n, [&](vtkIdType begin, vtkIdType end) {
-      for (vtkIdType i = begin; i < end; ++i)
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        double t[6], w[3], v[3][3], m[3][3], q[4];
-        TM::ReadSymmetric(tensors, i, TM::FULL_9, t);
-        TM::EigenDecomposition(t, w, v);
-        for (int r = 0; r < 3; ++r)
+        for (vtkIdType i = begin; i < end; ++i)
         {
+          double t[6], w[3], v[3][3], m[3][3], q[4];
+          TM::ReadSymmetric(tensors, i, TM::FULL_9, t);
+          TM::EigenDecomposition(t, w, v);
+          for (int r = 0; r < 3; ++r)
+          {
+            for (int c = 0; c < 3; ++c)
+            {
+              m[r][c] = v[c][r]; // columns: e1, e2, e3
+            }
+          }
+          vtkMath::Matrix3x3ToQuaternion(m, q);
+          for (int c = 0; c < 4; ++c)
+          {
+            orientation->SetTypedComponent(i, c, static_cast<float>(q[c]));
+          }
           for (int c = 0; c < 3; ++c)
           {
-            m[r][c] = v[c][r]; // columns: e1, e2, e3
+            scale->SetTypedComponent(i, c, static_cast<float>(std::max(w[c], 0.05 * w[0])));
           }
         }
-        vtkMath::Matrix3x3ToQuaternion(m, q);
-        for (int c = 0; c < 4; ++c)
-        {
-          orientation->SetTypedComponent(i, c, static_cast<float>(q[c]));
-        }
-        for (int c = 0; c < 3; ++c)
-        {
-          scale->SetTypedComponent(i, c, static_cast<float>(std::max(w[c], 0.05 * w[0])));
-        }
-      }
-    });
+      });
     auto points = vtkSmartPointer<vtkImageData>::New();
     points->ShallowCopy(data);
     points->GetPointData()->AddArray(orientation);
@@ -283,8 +287,8 @@ struct Result
   std::string Note;
 };
 
-Result Run(
-  const Factory& factory, vtkImageData* data, vtkRenderWindow* window, int frames, double maxSeconds)
+Result Run(const Factory& factory, vtkImageData* data, vtkRenderWindow* window, int frames,
+  double maxSeconds)
 {
   const int n = data->GetDimensions()[0];
   vtkNew<vtkRenderer> renderer;
