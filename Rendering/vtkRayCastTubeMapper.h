@@ -49,10 +49,6 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkSplineTubeMapper.h"
 
-#include <memory> // for std::unique_ptr
-
-class vtkSplineVizGPUBuffer;
-
 class SPLINEVIZ_EXPORT vtkRayCastTubeMapper : public vtkSplineTubeMapper
 {
 public:
@@ -88,7 +84,6 @@ public:
   ///@}
 
   size_t GetGPUMemorySize() override;
-  void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
   vtkRayCastTubeMapper();
@@ -101,15 +96,10 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderColor(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderClip(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  void ProcessSelectorPixelBuffers(
-    vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
 
   int SubSegments = 2;
   int RootIterations = 10;
@@ -118,13 +108,6 @@ protected:
 private:
   vtkRayCastTubeMapper(const vtkRayCastTubeMapper&) = delete;
   void operator=(const vtkRayCastTubeMapper&) = delete;
-
-  std::unique_ptr<vtkSplineVizGPUBuffer> Nodes;
-  std::unique_ptr<vtkSplineVizGPUBuffer> Segments;
-  std::unique_ptr<vtkSplineVizGPUBuffer> Tubes;
-  std::unique_ptr<vtkSplineVizGPUBuffer> Colors;
-  std::unique_ptr<vtkSplineVizGPUBuffer> ColorDerivatives;
-  bool ShaderHasColors = false;
 };
 
 #endif
