@@ -4,7 +4,8 @@ list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineTubeCore")
 list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineTubeMapper"
-  "${SPLINEVIZ_FOLDER}/vtkRayCastTubeMapper")
+  "${SPLINEVIZ_FOLDER}/vtkRayCastTubeMapper"
+  "${SPLINEVIZ_FOLDER}/vtkTessellatedTubeMapper")
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineVizGPUBuffer")
 list(APPEND splineviz_private_headers
@@ -14,4 +15,9 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathShared.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeGS.glsl"
-  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeFS.glsl")
+  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeFS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeCommon.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeVS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeTCS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeTES.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeFS.glsl")
