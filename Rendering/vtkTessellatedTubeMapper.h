@@ -37,8 +37,9 @@
  *   culling, then per edge the larger of a screen-space criterion (edges of
  *   at most MaxEdgeLength pixels, level at most MaxTessellationLevel) and the
  *   silhouette criterion (the edge's view-space length divided by the clip w
- *   of its midpoint, in pixels, weighted by how flat the angle between its
- *   normals and the rays to the eye is, for edges of at most
+ *   of its midpoint, in pixels, weighted by its closeness to the silhouette:
+ *   1 when its end normals face opposite ways, else the cube of how flat the
+ *   angle between its normals and the rays to the eye is, for edges of at most
  *   MaxSilhouetteEdgeLength pixels, level at most
  *   MaxSilhouetteTessellationLevel; Salm's fix for notchy silhouettes). Inner
  *   levels are the maxima of the opposite outer levels. Levels depend only on

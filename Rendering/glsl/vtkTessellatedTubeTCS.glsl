@@ -18,10 +18,12 @@
 //    - the silhouette criterion: the edge's length in view coordinates divided
 //      by the clip w of its midpoint and scaled to pixels (Salm's isotropic
 //      length, which keeps edges pointing at the eye refined and the
-//      silhouettes free of notches), weighted by the flatness of the angle
+//      silhouettes free of notches), weighted by how close the edge is to
+//      the silhouette: 1 when its end normals face opposite ways (it crosses
+//      the silhouette), else the cube of the larger flatness of the angles
 //      between the end normals and the rays to the eye (1 at the silhouette,
-//      0 facing the eye), divided by tubeSilhouetteEdgeLength, at most
-//      tubeMaxSilhouetteLevel;
+//      0 facing the eye; the cube keeps facing edges coarse), divided by
+//      tubeSilhouetteEdgeLength, at most tubeMaxSilhouetteLevel;
 //    and at least 1. Seam edges (the rim of a drawn cap) use the unweighted
 //    isotropic length with tubeSilhouetteEdgeLength (Salm's finer seams).
 // 3. Inner levels: the maximum of the two opposite outer levels.
@@ -116,10 +118,11 @@ float tubeEdgeLevel(vec3 a, vec3 b, vec3 na, vec3 nb)
   vec2 halfViewport = 0.5 * tubeViewport;
   float screen = length(ca.xy / ca.w * halfViewport - cb.xy / cb.w * halfViewport);
   float level = min(screen / tubeMaxEdgeLength, tubeMaxLevel);
-  float flatA = 1.0 - abs(dot(na, normalize(tubeToEye(a))));
-  float flatB = 1.0 - abs(dot(nb, normalize(tubeToEye(b))));
-  float silhouette =
-    min(max(flatA, flatB) * iso / tubeSilhouetteEdgeLength, tubeMaxSilhouetteLevel);
+  float facingA = dot(na, normalize(tubeToEye(a)));
+  float facingB = dot(nb, normalize(tubeToEye(b)));
+  float flatness = max(1.0 - abs(facingA), 1.0 - abs(facingB));
+  float weight = facingA * facingB <= 0.0 ? 1.0 : flatness * flatness * flatness;
+  float silhouette = min(weight * iso / tubeSilhouetteEdgeLength, tubeMaxSilhouetteLevel);
   return max(1.0, max(level, silhouette));
 }
 
