@@ -18,6 +18,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLVertexBufferObject.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -46,6 +47,9 @@ vtkSplineTubeMapper::vtkSplineTubeMapper()
   // The tube data is built per data change; the VBO shift/scale machinery of
   // the superclass does not apply (we shift positions ourselves).
   this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+  // Superclass code reads the points of CurrentInput (see RenderPiece).
+  vtkNew<vtkPoints> points;
+  this->EmptyInput->SetPoints(points);
 }
 
 //------------------------------------------------------------------------------
@@ -442,10 +446,13 @@ void vtkSplineTubeMapper::ReplaceShaderTubePicking(
         FSSource, "//VTK::Picking::Impl", "  int idx = (" + tubes + ".x >> 24) & 0xff;\n" + encode);
       break;
     case vtkHardwareSelector::COMPOSITE_INDEX_PASS:
+      // vtkHardwareSelector reports the value as the composite index: the
+      // block's flat index, or 1 for a non-composite input (block id 0), as
+      // VTK's polydata mappers write it.
       vtkShaderProgram::Substitute(
         FSSource, "//VTK::Picking::Dec", "uniform isamplerBuffer tubeTubes;\n");
       vtkShaderProgram::Substitute(
-        FSSource, "//VTK::Picking::Impl", "  int idx = " + tubes + ".y + 1;\n" + encode);
+        FSSource, "//VTK::Picking::Impl", "  int idx = max(" + tubes + ".y, 1);\n" + encode);
       break;
     case vtkHardwareSelector::POINT_ID_LOW24:
     case vtkHardwareSelector::POINT_ID_HIGH24:
@@ -510,6 +517,24 @@ void vtkSplineTubeMapper::SetMapperShaderParameters(
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   this->ActivateTubeBuffers(cellBO.Program);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::UpdateMaximumPointCellIds(vtkRenderer* ren, vtkActor*)
+{
+  vtkHardwareSelector* selector = ren->GetSelector();
+  if (!selector)
+  {
+    return;
+  }
+  vtkIdTypeArray* cells = this->Core->GetSegmentCellIds();
+  vtkIdType maxCell = 0;
+  for (vtkIdType i = 0; i < cells->GetNumberOfTuples(); ++i)
+  {
+    maxCell = std::max(maxCell, cells->GetValue(i));
+  }
+  selector->UpdateMaximumPointId(0);
+  selector->UpdateMaximumCellId(maxCell);
 }
 
 //------------------------------------------------------------------------------

@@ -158,7 +158,8 @@ protected:
   /**
    * Replace the picking tags of a fragment shader for the current selection
    * pass: the cell is the polyline of tube `tubeExpression` (an int
-   * expression), the composite index its block; tubes have no points to pick.
+   * expression), the composite index its block's flat index (1 for a
+   * non-composite input); tubes have no points to pick.
    */
   void ReplaceShaderTubePicking(std::string& FSSource, const char* tubeExpression);
 
@@ -172,6 +173,8 @@ protected:
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   /// Binds the tubes buffer (ActivateTubeBuffers()).
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /// The largest ids the selector will see: the polylines' cell ids (no points).
+  void UpdateMaximumPointCellIds(vtkRenderer* ren, vtkActor* act) override;
   /// The shaders wrote the final cell and block ids: nothing to convert.
   void ProcessSelectorPixelBuffers(
     vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
