@@ -1,4 +1,24 @@
 # Filters/: VTK filters and sources of the SplineViz module, and the plain C++
 # numerical code they share (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
-  "${SPLINEVIZ_FOLDER}/vtkSyntheticFibersSource")
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineProbeFilter"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineResampleToImage"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineStreamTracer"
+  "${SPLINEVIZ_FOLDER}/vtkSyntheticFibersSource"
+  "${SPLINEVIZ_FOLDER}/vtkTensorAnalysisFilter")
+# LR-spline volumes (Fuchs et al.): plain C++ shared by the filters, the
+# reader and the renderers.
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineBezierVolume"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineBuilder"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineElementLocator"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineEvaluator"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineField"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplinePatch")
+# Symmetric tensor math (layouts, eigen-decomposition, invariants, Kindlmann's
+# glyph shape): plain C++ shared by the tensor filters and mappers; its core is
+# glsl/vtkTensorMathShared.glsl, compiled as C++ and embedded in shaders.
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizTensorMath")
+list(APPEND splineviz_shaders
+  "${SPLINEVIZ_FOLDER}/glsl/vtkTensorMathShared.glsl")

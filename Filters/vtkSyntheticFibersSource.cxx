@@ -89,19 +89,26 @@ void vtkSyntheticFibersSource::SetPreset(int preset)
 {
   vtkIdType tubes = this->NumberOfTubes;
   vtkIdType segments = this->NumberOfSegments;
+  double box = this->BoxSize;
+  // The box grows with the data so that the tubes fill about 1.5% of its
+  // volume (with the default step and radii), like white-matter tracts in a
+  // brain: the papers' data sets are of that kind, not solid bundles.
   switch (preset)
   {
     case FIBERS:
       tubes = 241;
       segments = 3530;
+      box = 1.0;
       break;
     case FIBERS2:
       tubes = 1701;
       segments = 114489;
+      box = 3.1;
       break;
     case ONE_MILLION:
       tubes = 8000;
       segments = 1000000;
+      box = 6.4;
       break;
     case CUSTOM:
       break;
@@ -110,11 +117,13 @@ void vtkSyntheticFibersSource::SetPreset(int preset)
                     << " (expected 0 = custom, 1 = Fibers, 2 = Fibers2, 3 = one million)");
       return;
   }
-  if (this->Preset != preset || tubes != this->NumberOfTubes || segments != this->NumberOfSegments)
+  if (this->Preset != preset || tubes != this->NumberOfTubes ||
+    segments != this->NumberOfSegments || box != this->BoxSize)
   {
     this->Preset = preset;
     this->NumberOfTubes = tubes;
     this->NumberOfSegments = segments;
+    this->BoxSize = box;
     this->Modified();
   }
 }

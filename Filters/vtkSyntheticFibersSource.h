@@ -20,7 +20,9 @@
  *
  * Presets reproduce the sizes of the data sets of Salm, "Interactive Rendering
  * of Spline Tubes" (Fig. 19): Fibers (241 tubes, 3,530 segments), Fibers2
- * (1,701 tubes, 114,489 segments), and a larger 1 M segment set.
+ * (1,701 tubes, 114,489 segments), and a larger 1 M segment set; they also
+ * set BoxSize (1, 3.1, 6.4) so that the tubes fill about 1.5% of the box,
+ * the density of white-matter tracts in a brain.
  *
  * The output is deterministic for a given Seed, independent of the number of
  * threads, and honours piece requests: piece p of n generates a contiguous
@@ -51,9 +53,9 @@ public:
 
   ///@{
   /**
-   * Set NumberOfTubes and NumberOfSegments to those of a preset (see Presets).
-   * CUSTOM leaves them unchanged. Changing either count by hand makes the
-   * preset CUSTOM.
+   * Set NumberOfTubes, NumberOfSegments and BoxSize to those of a preset (see
+   * Presets). CUSTOM leaves them unchanged. Changing either count by hand
+   * makes the preset CUSTOM.
    */
   void SetPreset(int preset);
   vtkGetMacro(Preset, int);

@@ -14,7 +14,6 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathPrelude.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathShared.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeVS.glsl"
-  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeGS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeFS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeCommon.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeVS.glsl"

@@ -7,6 +7,7 @@
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLCamera.h"
@@ -21,7 +22,6 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "vtkRayCastTubeFS.h"
-#include "vtkRayCastTubeGS.h"
 #include "vtkRayCastTubeVS.h"
 #include "vtkSplineTubeMathPrelude.h"
 #include "vtkSplineTubeMathShared.h"
@@ -70,8 +70,30 @@ size_t vtkRayCastTubeMapper::GetGPUMemorySize()
 }
 
 //------------------------------------------------------------------------------
+void vtkRayCastTubeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->QuadIndices->ReleaseGraphicsResources();
+  this->QuadIndicesUploaded = false;
+  this->Superclass::ReleaseGraphicsResources(window);
+}
+
+//------------------------------------------------------------------------------
 void vtkRayCastTubeMapper::UploadTubes(vtkOpenGLRenderWindow* window)
 {
+  if (this->QuadIndices->GetHandle() == 0 || !this->QuadIndicesUploaded)
+  {
+    std::vector<unsigned short> indices(6 * QuadsPerDraw);
+    for (int q = 0; q < QuadsPerDraw; ++q)
+    {
+      const unsigned short v = static_cast<unsigned short>(4 * q);
+      const unsigned short pattern[6] = { v, static_cast<unsigned short>(v + 1),
+        static_cast<unsigned short>(v + 2), static_cast<unsigned short>(v + 2),
+        static_cast<unsigned short>(v + 1), static_cast<unsigned short>(v + 3) };
+      std::copy(pattern, pattern + 6, &indices[6 * q]);
+    }
+    this->QuadIndices->Upload(indices, vtkOpenGLBufferObject::ElementArrayBuffer);
+    this->QuadIndicesUploaded = true;
+  }
   // The shared tubes buffer holds everything the ray caster reads.
   this->UploadTubeBuffers(window);
 }
@@ -82,18 +104,18 @@ void vtkRayCastTubeMapper::GetShaderTemplate(
 {
   this->Superclass::GetShaderTemplate(shaders, ren, act);
   shaders[vtkShader::Vertex]->SetSource(vtkRayCastTubeVS);
-  shaders[vtkShader::Geometry]->SetSource(vtkRayCastTubeGS);
+  shaders[vtkShader::Geometry]->SetSource("");
 }
 
 //------------------------------------------------------------------------------
 void vtkRayCastTubeMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
-  std::string GSSource = shaders[vtkShader::Geometry]->GetSource();
+  std::string VSSource = shaders[vtkShader::Vertex]->GetSource();
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
   const std::string math = TubeMathSource();
 
-  vtkShaderProgram::Substitute(GSSource, "//VTK::SplineTubeMath::Dec", math);
+  vtkShaderProgram::Substitute(VSSource, "//VTK::SplineTubeMath::Dec", math);
 
   std::string declarations = vtkRayCastTubeFS;
   vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", math);
@@ -130,7 +152,7 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
   // Picking: the cell is the polyline, the composite index its block.
   this->ReplaceShaderTubePicking(FSSource, "tubeInfoVSOutput.z");
 
-  shaders[vtkShader::Geometry]->SetSource(GSSource);
+  shaders[vtkShader::Vertex]->SetSource(VSSource);
   shaders[vtkShader::Fragment]->SetSource(FSSource);
 
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
@@ -206,6 +228,9 @@ void vtkRayCastTubeMapper::SetCameraShaderParameters(
   static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
     ->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
   program->SetUniformMatrix("VCDCMatrix", vcdc);
+  double range[2];
+  ren->GetActiveCamera()->GetClippingRange(range);
+  program->SetUniformf("tubeNearPlane", static_cast<float>(range[0]));
   program->SetUniformf("tubeRadiusScale", radiusScale);
   if (program->IsUniformUsed("tubeVCMC"))
   {
@@ -231,12 +256,28 @@ void vtkRayCastTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   // UpdateShaders() may have released the VAO after binding it (new
   // program); the draw has no attributes but core profiles need a VAO bound.
   helper.VAO->Bind();
-  // Both faces of the boxes are rasterized on purpose (the geometry shader
-  // chooses which to emit).
+  // One rectangle (4-vertex strip) per sub-segment; either winding.
   vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
   vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
   state->vtkglDisable(GL_CULL_FACE);
-  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
+  // Rectangles as indexed triangles: one small, shared index pattern for
+  // QuadsPerDraw rectangles, drawn repeatedly with a base vertex (so that
+  // every corner is shaded once, without per-rectangle index memory and
+  // without the per-instance cost of instancing in software renderers).
+  this->QuadIndices->Bind();
+  const vtkIdType chunks = (count + QuadsPerDraw - 1) / QuadsPerDraw;
+  std::vector<GLsizei> counts(static_cast<size_t>(chunks));
+  std::vector<const void*> offsets(static_cast<size_t>(chunks), nullptr);
+  std::vector<GLint> baseVertices(static_cast<size_t>(chunks));
+  for (vtkIdType c = 0; c < chunks; ++c)
+  {
+    const vtkIdType quads = std::min<vtkIdType>(QuadsPerDraw, count - c * QuadsPerDraw);
+    counts[c] = static_cast<GLsizei>(6 * quads);
+    baseVertices[c] = static_cast<GLint>(4 * c * QuadsPerDraw);
+  }
+  glMultiDrawElementsBaseVertex(GL_TRIANGLES, counts.data(), GL_UNSIGNED_SHORT, offsets.data(),
+    static_cast<GLsizei>(chunks), baseVertices.data());
+  this->QuadIndices->Release();
 
   this->DeactivateTubeBuffers();
 }

@@ -23,12 +23,20 @@
  * clipping planes, depth peeling passes and hardware picking (cell = the
  * polyline, composite block index) go through VTK's usual shader machinery.
  *
- * Proxy choice (measured on Mesa llvmpipe, see Benchmarks/): the box faces
- * turned to the eye, emitted by a geometry shader once per sub-segment,
- * generate each covered pixel exactly once and cover about the projected
- * hexagon of the box; a screen-aligned quad over the box' projection covers
- * up to twice the pixels for diagonal sub-segments and fragment work
- * (root finding) dominates the frame time, so the box is used.
+ * Proxy choice, measured on this machine (Mesa llvmpipe, 2 cores) with
+ * Benchmarks/SplineVizTubeBenchmark: the paper's oriented box per
+ * sub-segment, rasterized from a geometry shader emitting only the faces
+ * turned to the eye, cost 2.4 times more per frame than a rectangle in the
+ * image plane (4.2 s against 1.8 s for Fibers2 without any fragment work):
+ * triangle setup and geometry-shader output dominate in a software
+ * rasterizer, and the box needs up to 6 triangles against 2. A rectangle
+ * emitted by a geometry shader costs the same as one built by the vertex
+ * stage (1.32 s against 1.36 s for a Fibers2 frame), and instancing adds a
+ * per-instance cost (0.86 s against 0.72 s), so the proxy is a rectangle
+ * oriented along the projected sub-segment, bounding the projection of the
+ * spheres at its control points (the sub-segment's convex hull; the oriented
+ * box clipped to the near plane when the camera is among the tubes), drawn
+ * as indexed triangles with a small shared index pattern.
  *
  * Data on the GPU (uploaded once per data change): per node the position,
  * radius, tangent and radius derivative (32 bytes) and, with scalar coloring,
@@ -47,7 +55,10 @@
 #define vtkRayCastTubeMapper_h
 
 #include "SplineVizModule.h" // for export macro
+#include "vtkNew.h"          // for vtkNew
 #include "vtkSplineTubeMapper.h"
+
+class vtkOpenGLBufferObject;
 
 class SPLINEVIZ_EXPORT vtkRayCastTubeMapper : public vtkSplineTubeMapper
 {
@@ -77,13 +88,15 @@ public:
   ///@{
   /**
    * Samples of the entry-distance slope per real interval used to bracket
-   * its minima before bisection (at least 2). Default 6.
+   * its minima before bisection (at least 2). Default 3 (enough to separate
+   * the two minima of a sharp bend, see TestRayCastTubeIntersection).
    */
   vtkSetClampMacro(RootSamples, int, 2, 64);
   vtkGetMacro(RootSamples, int);
   ///@}
 
   size_t GetGPUMemorySize() override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
   vtkRayCastTubeMapper();
@@ -103,11 +116,15 @@ protected:
 
   int SubSegments = 2;
   int RootIterations = 10;
-  int RootSamples = 6;
+  int RootSamples = 3;
 
 private:
   vtkRayCastTubeMapper(const vtkRayCastTubeMapper&) = delete;
   void operator=(const vtkRayCastTubeMapper&) = delete;
+
+  static constexpr int QuadsPerDraw = 16384; ///< 65536 vertices: 16-bit indices
+  vtkNew<vtkOpenGLBufferObject> QuadIndices;
+  bool QuadIndicesUploaded = false;
 };
 
 #endif

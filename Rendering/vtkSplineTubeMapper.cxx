@@ -13,12 +13,12 @@
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
+#include "vtkPoints.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLVertexBufferObject.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -48,8 +48,8 @@ vtkSplineTubeMapper::vtkSplineTubeMapper()
   // the superclass does not apply (we shift positions ourselves).
   this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
   // Superclass code reads the points of CurrentInput (see RenderPiece).
-  vtkNew<vtkPoints> points;
-  this->EmptyInput->SetPoints(points);
+  vtkNew<vtkPoints> noPoints;
+  this->EmptyInput->SetPoints(noPoints);
 }
 
 //------------------------------------------------------------------------------
@@ -110,13 +110,14 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
     this->RadiusArray && this->RadiusArray[0] ? this->RadiusArray : nullptr);
   this->Core->SetRadiusScale(this->RadiusScale);
 
-  // Forward the core's errors and warnings as this mapper's.
-  auto addLeaf = [this](vtkPolyData* pd, unsigned int blockId)
+  vtkIdType inputCells = 0;
+  auto addLeaf = [this, &inputCells](vtkPolyData* pd, unsigned int blockId)
   {
     if (!pd)
     {
       return;
     }
+    inputCells += pd->GetNumberOfCells();
     vtkSmartPointer<vtkUnsignedCharArray> colors;
     bool perCell = false;
     int cellFlag = 0;
@@ -166,13 +167,21 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
     }
   };
 
+  this->InputIsComposite = vtkCompositeDataSet::SafeDownCast(input) != nullptr;
   if (auto cd = vtkCompositeDataSet::SafeDownCast(input))
   {
     auto it = vtk::TakeSmartPointer(cd->NewIterator());
     it->SkipEmptyNodesOn();
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
-      addLeaf(vtkPolyData::SafeDownCast(it->GetCurrentDataObject()), it->GetCurrentFlatIndex());
+      vtkDataObject* leaf = it->GetCurrentDataObject();
+      if (!vtkPolyData::SafeDownCast(leaf))
+      {
+        vtkWarningMacro(<< "Block " << it->GetCurrentFlatIndex() << " is a " << leaf->GetClassName()
+                        << ", not a vtkPolyData: skipped (extract its lines or surface first).");
+        continue;
+      }
+      addLeaf(vtkPolyData::SafeDownCast(leaf), it->GetCurrentFlatIndex());
     }
   }
   else
@@ -181,6 +190,12 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
   }
   this->Core->Build();
   this->HaveColors = this->Core->HasColors();
+  if (this->Core->GetNumberOfTubes() == 0 && inputCells > 0 &&
+    this->Core->GetNumberOfSkippedLines() == 0)
+  {
+    vtkWarningMacro(<< "The input has " << inputCells
+                    << " cells but no polylines (line or polyline cells): no tubes to draw.");
+  }
 
   double bounds[6];
   this->Core->GetBounds(bounds);
@@ -252,6 +267,17 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   // an empty polydata keeps those paths neutral.
   this->CurrentInput = this->EmptyInput;
   this->RenderPieceStart(ren, actor);
+  if (vtkHardwareSelector* selector = ren->GetSelector())
+  {
+    // The largest cell id the shaders write (the polylines' cell ids).
+    vtkIdType maxCellId = 0;
+    vtkIdTypeArray* cellIds = this->Core->GetSegmentCellIds();
+    for (vtkIdType s = 0; s < cellIds->GetNumberOfTuples(); ++s)
+    {
+      maxCellId = std::max(maxCellId, cellIds->GetValue(s));
+    }
+    selector->UpdateMaximumCellId(maxCellId);
+  }
   this->RenderPieceDraw(ren, actor);
   this->RenderPieceFinish(ren, actor);
 }
@@ -446,13 +472,15 @@ void vtkSplineTubeMapper::ReplaceShaderTubePicking(
         FSSource, "//VTK::Picking::Impl", "  int idx = (" + tubes + ".x >> 24) & 0xff;\n" + encode);
       break;
     case vtkHardwareSelector::COMPOSITE_INDEX_PASS:
-      // vtkHardwareSelector reports the value as the composite index: the
-      // block's flat index, or 1 for a non-composite input (block id 0), as
-      // VTK's polydata mappers write it.
-      vtkShaderProgram::Substitute(
-        FSSource, "//VTK::Picking::Dec", "uniform isamplerBuffer tubeTubes;\n");
-      vtkShaderProgram::Substitute(
-        FSSource, "//VTK::Picking::Impl", "  int idx = max(" + tubes + ".y, 1);\n" + encode);
+      // The block's flat index (as vtkCompositePolyDataMapper2 reports it);
+      // a non-composite input keeps VTK's per-mapper index.
+      if (this->InputIsComposite)
+      {
+        vtkShaderProgram::Substitute(
+          FSSource, "//VTK::Picking::Dec", "uniform isamplerBuffer tubeTubes;\n");
+        vtkShaderProgram::Substitute(
+          FSSource, "//VTK::Picking::Impl", "  int idx = " + tubes + ".y;\n" + encode);
+      }
       break;
     case vtkHardwareSelector::POINT_ID_LOW24:
     case vtkHardwareSelector::POINT_ID_HIGH24:
@@ -501,14 +529,16 @@ void vtkSplineTubeMapper::ReplaceShaderColor(
 bool vtkSplineTubeMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
-  // Always let the superclass update its bookkeeping.
-  const bool superNeeds = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
-  if (this->ShaderHasColors != this->HaveColors)
+  // Shader variants depend on scalar coloring and composite input too;
+  // always let the superclass update its bookkeeping.
+  const int variant = (this->HaveColors ? 1 : 0) | (this->InputIsComposite ? 2 : 0);
+  const bool superclass = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  if (variant != this->ShaderVariant)
   {
-    this->ShaderHasColors = this->HaveColors;
+    this->ShaderVariant = variant;
     return true;
   }
-  return superNeeds;
+  return superclass;
 }
 
 //------------------------------------------------------------------------------
@@ -517,24 +547,6 @@ void vtkSplineTubeMapper::SetMapperShaderParameters(
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   this->ActivateTubeBuffers(cellBO.Program);
-}
-
-//------------------------------------------------------------------------------
-void vtkSplineTubeMapper::UpdateMaximumPointCellIds(vtkRenderer* ren, vtkActor*)
-{
-  vtkHardwareSelector* selector = ren->GetSelector();
-  if (!selector)
-  {
-    return;
-  }
-  vtkIdTypeArray* cells = this->Core->GetSegmentCellIds();
-  vtkIdType maxCell = 0;
-  for (vtkIdType i = 0; i < cells->GetNumberOfTuples(); ++i)
-  {
-    maxCell = std::max(maxCell, cells->GetValue(i));
-  }
-  selector->UpdateMaximumPointId(0);
-  selector->UpdateMaximumCellId(maxCell);
 }
 
 //------------------------------------------------------------------------------

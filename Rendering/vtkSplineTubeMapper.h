@@ -158,8 +158,8 @@ protected:
   /**
    * Replace the picking tags of a fragment shader for the current selection
    * pass: the cell is the polyline of tube `tubeExpression` (an int
-   * expression), the composite index its block's flat index (1 for a
-   * non-composite input); tubes have no points to pick.
+   * expression), the composite index its block's flat index (a non-composite
+   * input keeps VTK's per-mapper index); tubes have no points to pick.
    */
   void ReplaceShaderTubePicking(std::string& FSSource, const char* tubeExpression);
 
@@ -173,8 +173,6 @@ protected:
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   /// Binds the tubes buffer (ActivateTubeBuffers()).
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  /// The largest ids the selector will see: the polylines' cell ids (no points).
-  void UpdateMaximumPointCellIds(vtkRenderer* ren, vtkActor* act) override;
   /// The shaders wrote the final cell and block ids: nothing to convert.
   void ProcessSelectorPixelBuffers(
     vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
@@ -209,8 +207,9 @@ protected:
   double Shift[3] = { 0.0, 0.0, 0.0 };
   vtkTimeStamp CoreBuildTime;
   vtkTimeStamp UploadTime;
-  bool HaveColors = false; ///< the tubes carry per-node colors (scalar coloring)
-  bool ShaderHasColors = false;
+  bool HaveColors = false;       ///< the tubes carry per-node colors (scalar coloring)
+  bool InputIsComposite = false; ///< block ids are flat indices of a composite input
+  int ShaderVariant = -1;        ///< colors and composite input the shaders were made for
 
   std::unique_ptr<vtkSplineVizGPUBuffer> NodesBuffer;
   std::unique_ptr<vtkSplineVizGPUBuffer> SegmentsBuffer;

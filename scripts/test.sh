@@ -10,6 +10,8 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${SPLINEVIZ_BUILD_DIR:-$here/build}"
 "$here/scripts/setup.sh"
 cd "$build"
+# Exercise the threaded code paths (vtkSMPTools is sequential by default).
+export VTK_SMP_BACKEND_IN_USE="${VTK_SMP_BACKEND_IN_USE:-STDThread}"
 echo "== running the tests"
 "$here/scripts/xvfb-run-if-needed.sh" ctest --output-on-failure --timeout 900 "$@"
 echo "== test images (rendered and, for failures, differences): $build/Testing/Temporary"

@@ -1,12 +1,234 @@
 //VTK::System::Dec
 
-// Ray-cast spline tubes (Salm §3.2), vertex stage: a GL_POINTS draw with one
-// point per quadratic sub-segment and no vertex attributes; the geometry
-// stage reads the tubes buffer and builds the sub-segment's bounding box.
-flat out int subSegmentVSOutput;
+// Ray-cast spline tubes (Salm §3.2 'Rendering'), vertex stage.
+//
+// Indexed triangles, 4 vertices (gl_VertexID = 4 * sub-segment + corner) and
+// 2 triangles per quadratic sub-segment, no vertex attributes. Every vertex
+// reads its sub-segment's two
+// nodes from the tubes buffer, splits the cubic segment into its quadratic
+// sub-segments (svSplitSegment), takes the one it owns into view coordinates,
+// bounds it with its oriented box (svSubSegmentBox) and covers the box's
+// projection with a rectangle in the image plane, oriented along the
+// sub-segment's projected chord (a tight fit for the long, thin boxes of
+// tubes). Boxes crossing the near plane are clipped to it first; boxes
+// outside the view frustum produce a degenerate rectangle. The fragment
+// stage intersects the view ray with the sub-segment.
+//
+// Why a rectangle and not the box itself: on Mesa llvmpipe, rasterizing the
+// box faces (from a geometry shader or an instanced box mesh) costs about
+// 3 times more triangles per sub-segment and the triangle setup dominates the
+// frame time (see vtkRayCastTubeMapper.h for the measurements).
+
+uniform samplerBuffer tubeNodes;     // per node: (x, y, z, r), (dx, dy, dz, dr)
+uniform usamplerBuffer tubeSegments; // per segment: (first node | flags << 30, tube)
+uniform int subSegments;             // quadratic sub-segments per cubic segment
+uniform mat4 tubeMCVC;               // model (shifted) to view
+uniform float tubeRadiusScale;       // model to view scale of radii
+uniform float tubeNearPlane;         // distance of the near plane (view units)
+uniform mat4 VCDCMatrix;
+uniform int cameraParallel;
+
+out vec4 vertexVCVSOutput;       // position on the rectangle, view coordinates
+flat out vec4 tubeQ0VSOutput;    // quadratic sub-segment in view coordinates
+flat out vec4 tubeQ1VSOutput;    // (xyz: control point, w: radius)
+flat out vec4 tubeQ2VSOutput;
+flat out ivec4 tubeInfoVSOutput; // first node, sub-segment, tube, flags
+
+//VTK::SplineTubeMath::Dec
+
+// Projection of view-space point p onto the plane z = zp along the view ray.
+vec2 projectToPlane(vec3 p, float zp)
+{
+  if (cameraParallel != 0)
+  {
+    return p.xy;
+  }
+  return p.xy * (zp / p.z);
+}
 
 void main()
 {
-  subSegmentVSOutput = gl_VertexID;
-  gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
+  int id = gl_VertexID / 4;
+  int cornerId = gl_VertexID - 4 * id;
+  int segment = id / subSegments;
+  int k = id - segment * subSegments;
+  uvec2 s = texelFetch(tubeSegments, segment).xy;
+  int node = int(s.x & 0x3FFFFFFFu);
+  int flags = int(s.x >> 30u);
+
+  vec4 p0 = texelFetch(tubeNodes, 2 * node);
+  vec4 m0 = texelFetch(tubeNodes, 2 * node + 1);
+  vec4 p1 = texelFetch(tubeNodes, 2 * node + 2);
+  vec4 m1 = texelFetch(tubeNodes, 2 * node + 3);
+  vec4 q0;
+  vec4 q1;
+  vec4 q2;
+  svSplitSegment(p0, m0, p1, m1, subSegments, k, q0, q1, q2);
+  q0 = vec4((tubeMCVC * vec4(q0.xyz, 1.0)).xyz, q0.w * tubeRadiusScale);
+  q1 = vec4((tubeMCVC * vec4(q1.xyz, 1.0)).xyz, q1.w * tubeRadiusScale);
+  q2 = vec4((tubeMCVC * vec4(q2.xyz, 1.0)).xyz, q2.w * tubeRadiusScale);
+  tubeQ0VSOutput = q0;
+  tubeQ1VSOutput = q1;
+  tubeQ2VSOutput = q2;
+  tubeInfoVSOutput = ivec4(node, k, int(s.y), flags);
+
+  // Fast path: the sub-segment lies in the convex hull of its control points
+  // with the largest radius (Bernstein property, radii >= 0); bound the
+  // projections of those three spheres. A sphere (center p, radius r, in
+  // front of the eye) projects onto the plane z = zp inside the segment of
+  // its center's projections scaled by s in [s_min, s_max], thickened by
+  // r * s_max, with s = zp / z for z in [p.z - r, p.z + r].
+  float rMax = max(max(q0.w, q1.w), q2.w);
+  float zNear = max(max(q0.z, q1.z), q2.z) + rMax; // nearest depth reached
+  if (zNear < -tubeNearPlane)
+  {
+    float zp = zNear;
+    vec2 u = vec2(1.0, 0.0);
+    vec2 chord = cameraParallel != 0 ? q2.xy - q0.xy : q2.xy / q2.z - q0.xy / q0.z;
+    if (length(chord) > 1e-20)
+    {
+      u = normalize(chord);
+    }
+    vec2 v = vec2(-u.y, u.x);
+    vec2 lo = vec2(1e30);
+    vec2 hi = vec2(-1e30);
+    vec4 qs[3];
+    qs[0] = q0;
+    qs[1] = q1;
+    qs[2] = q2;
+    for (int i = 0; i < 3; ++i)
+    {
+      vec3 p = qs[i].xyz;
+      float sMin = 1.0;
+      float sMax = 1.0;
+      if (cameraParallel == 0)
+      {
+        sMin = zp / (p.z - rMax);
+        sMax = zp / (p.z + rMax);
+      }
+      vec2 uv = vec2(dot(p.xy, u), dot(p.xy, v));
+      float pad = rMax * sMax;
+      lo = min(lo, min(uv * sMin, uv * sMax) - vec2(pad));
+      hi = max(hi, max(uv * sMin, uv * sMax) + vec2(pad));
+    }
+    // Beyond the far plane: nothing (rectangles beside the viewport are
+    // clipped by the rasterizer at no fragment cost).
+    vec4 farClip = VCDCMatrix * vec4(0.0, 0.0, zNear, 1.0);
+    if (farClip.z > farClip.w)
+    {
+      gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+      vertexVCVSOutput = vec4(0.0, 0.0, -1.0, 1.0);
+      return;
+    }
+    int vertex = cornerId;
+    vec2 uv = vec2((vertex & 1) != 0 ? hi.x : lo.x, (vertex & 2) != 0 ? hi.y : lo.y);
+    vec3 p = vec3(uv.x * u + uv.y * v, zp);
+    vertexVCVSOutput = vec4(p, 1.0);
+    gl_Position = VCDCMatrix * vec4(p, 1.0);
+    return;
+  }
+
+  // The sub-segment may reach the near plane: bound its oriented box clipped
+  // to the near plane (rare: the camera is among the tubes).
+  SvBox box;
+  svSubSegmentBox(q0, q1, q2, box);
+  // Pad by a tiny fraction so that rounding never clips the surface.
+  vec3 h = box.halfSize * 1.001 + vec3(1e-6 * length(box.halfSize));
+  vec3 ax = box.axis0 * h.x;
+  vec3 ay = box.axis1 * h.y;
+  vec3 az = box.axis2 * h.z;
+  vec3 c = box.center;
+
+  // Corners (bit 0: +x, bit 1: +y, bit 2: +z); frustum culling in clip space.
+  vec3 corner[8];
+  bool allLeft = true;
+  bool allRight = true;
+  bool allBelow = true;
+  bool allAbove = true;
+  bool allFar = true;
+  bool allNear = true;
+  float zMax = -1e30; // nearest corner depth (view z is negative in front)
+  for (int i = 0; i < 8; ++i)
+  {
+    vec3 p = c + ((i & 1) != 0 ? ax : -ax) + ((i & 2) != 0 ? ay : -ay) + ((i & 4) != 0 ? az : -az);
+    corner[i] = p;
+    vec4 clip = VCDCMatrix * vec4(p, 1.0);
+    allLeft = allLeft && clip.x < -clip.w;
+    allRight = allRight && clip.x > clip.w;
+    allBelow = allBelow && clip.y < -clip.w;
+    allAbove = allAbove && clip.y > clip.w;
+    allFar = allFar && clip.z > clip.w;
+    allNear = allNear && p.z > -tubeNearPlane;
+    zMax = max(zMax, p.z);
+  }
+  if (allLeft || allRight || allBelow || allAbove || allFar || allNear)
+  {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // outside the frustum: nothing drawn
+    vertexVCVSOutput = vec4(0.0, 0.0, -1.0, 1.0);
+    return;
+  }
+
+  // The image plane the rectangle lies in: through the nearest corner, or
+  // the near plane when the box crosses it.
+  bool crossing = zMax > -tubeNearPlane;
+  float zp = crossing ? -tubeNearPlane : zMax;
+
+  // Orientation: the projected chord of the sub-segment (axis-aligned when
+  // the box crosses the near plane, where the chord may be behind the eye).
+  vec2 u = vec2(1.0, 0.0);
+  if (!crossing)
+  {
+    vec2 chord = projectToPlane(q2.xyz, zp) - projectToPlane(q0.xyz, zp);
+    if (length(chord) > 1e-20)
+    {
+      u = normalize(chord);
+    }
+  }
+  vec2 v = vec2(-u.y, u.x);
+
+  // Extents of the (near-clipped) box's projection along u and v.
+  vec2 lo = vec2(1e30);
+  vec2 hi = vec2(-1e30);
+  for (int i = 0; i < 8; ++i)
+  {
+    if (corner[i].z <= -tubeNearPlane)
+    {
+      vec2 q = projectToPlane(corner[i], zp);
+      vec2 uv = vec2(dot(q, u), dot(q, v));
+      lo = min(lo, uv);
+      hi = max(hi, uv);
+    }
+  }
+  if (crossing)
+  {
+    // where the box's edges cross the near plane
+    for (int i = 0; i < 8; ++i)
+    {
+      for (int bit = 1; bit <= 4; bit *= 2)
+      {
+        if ((i & bit) != 0)
+        {
+          continue;
+        }
+        vec3 e0 = corner[i];
+        vec3 e1 = corner[i | bit];
+        float d0 = e0.z + tubeNearPlane;
+        float d1 = e1.z + tubeNearPlane;
+        if ((d0 > 0.0) != (d1 > 0.0))
+        {
+          vec3 x = mix(e0, e1, d0 / (d0 - d1));
+          vec2 q = projectToPlane(vec3(x.xy, -tubeNearPlane), zp);
+          vec2 uv = vec2(dot(q, u), dot(q, v));
+          lo = min(lo, uv);
+          hi = max(hi, uv);
+        }
+      }
+    }
+  }
+
+  int vertex = cornerId;
+  vec2 uv = vec2((vertex & 1) != 0 ? hi.x : lo.x, (vertex & 2) != 0 ? hi.y : lo.y);
+  vec3 p = vec3(uv.x * u + uv.y * v, zp);
+  vertexVCVSOutput = vec4(p, 1.0);
+  gl_Position = VCDCMatrix * vec4(p, 1.0);
 }

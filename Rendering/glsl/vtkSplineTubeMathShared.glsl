@@ -60,12 +60,19 @@ void svSplitSegment(vec4 p0, vec4 m0, vec4 p1, vec4 m1, int count, int k, SV_OUT
   SV_OUT(vec4) q1, SV_OUT(vec4) q2)
 {
   int pairIndex = k / 2;
-  real a = 2.0 * real(pairIndex) / real(count);
-  real b = 2.0 * real(pairIndex + 1) / real(count);
-  vec4 ca = svHermite(p0, m0, p1, m1, a);
-  vec4 cb = svHermite(p0, m0, p1, m1, b);
-  vec4 da = (b - a) * svHermiteDerivative(p0, m0, p1, m1, a);
-  vec4 db = (b - a) * svHermiteDerivative(p0, m0, p1, m1, b);
+  vec4 ca = p0;
+  vec4 cb = p1;
+  vec4 da = m0;
+  vec4 db = m1;
+  if (count > 2) // two sub-segments: the pair is the whole segment
+  {
+    real a = 2.0 * real(pairIndex) / real(count);
+    real b = 2.0 * real(pairIndex + 1) / real(count);
+    ca = svHermite(p0, m0, p1, m1, a);
+    cb = svHermite(p0, m0, p1, m1, b);
+    da = (b - a) * svHermiteDerivative(p0, m0, p1, m1, a);
+    db = (b - a) * svHermiteDerivative(p0, m0, p1, m1, b);
+  }
   vec4 A = ca + 0.25 * da;
   vec4 B = cb - 0.25 * db;
   vec4 M = 0.5 * (A + B);
@@ -254,95 +261,59 @@ SvPoly svPolyDerivative(SvPoly p)
   return d;
 }
 
-// Sorted roots in [0, 1] (at most 4), with 0 and 1 always included as
-// bracket ends: v[0] = 0 < roots < v[n-1] = 1.
-struct SvBrackets
+// The root of p in [lo, hi] by `iterations` bisection steps when p changes
+// sign there; otherwise hi. Applied to consecutive brackets this yields a
+// sorted list of roots in which a missing root collapses onto its bracket's
+// end (an empty interval), so that every loop below has a fixed structure
+// and no array is indexed dynamically (which is slow in software renderers).
+real svBisectPoly(SvPoly p, real lo, real hi, int iterations)
 {
-  real v[6];
-  int n;
-};
-
-// Roots of p inside (0, 1) given brackets whose consecutive entries enclose
-// at most one root each (the roots of p' plus the ends). Bisection with
-// `iterations` steps when the ends differ in sign.
-SvBrackets svRootsBetween(SvPoly p, SvBrackets b, int iterations)
-{
-  SvBrackets r;
-  r.n = 1;
-  r.v[0] = 0.0;
-  for (int i = 0; i + 1 < b.n; ++i)
+  real flo = svPolyEval(p, lo);
+  real fhi = svPolyEval(p, hi);
+  if (!((flo < 0.0 && fhi > 0.0) || (flo > 0.0 && fhi < 0.0)))
   {
-    real lo = b.v[i];
-    real hi = b.v[i + 1];
-    real flo = svPolyEval(p, lo);
-    real fhi = svPolyEval(p, hi);
-    if ((flo < 0.0 && fhi > 0.0) || (flo > 0.0 && fhi < 0.0))
+    return hi;
+  }
+  for (int it = 0; it < iterations; ++it)
+  {
+    real mid = 0.5 * (lo + hi);
+    real fm = svPolyEval(p, mid);
+    if ((fm < 0.0) == (flo < 0.0))
     {
-      for (int it = 0; it < iterations; ++it)
-      {
-        real mid = 0.5 * (lo + hi);
-        real fm = svPolyEval(p, mid);
-        if ((fm < 0.0) == (flo < 0.0))
-        {
-          lo = mid;
-          flo = fm;
-        }
-        else
-        {
-          hi = mid;
-        }
-      }
-      r.v[r.n] = 0.5 * (lo + hi);
-      r.n = r.n + 1;
+      lo = mid;
+      flo = fm;
+    }
+    else
+    {
+      hi = mid;
     }
   }
-  r.v[r.n] = 1.0;
-  r.n = r.n + 1;
-  return r;
+  return 0.5 * (lo + hi);
 }
 
-// Brackets from the real roots in (0, 1) of a quadratic a l^2 + b l + c.
-SvBrackets svQuadraticBrackets(real a, real b, real c)
+// The real roots of a l^2 + b l + c clamped to [0, 1], sorted (x, y); a
+// missing root is 1.
+vec2 svQuadraticRoots01(real a, real b, real c)
 {
-  SvBrackets r;
-  r.n = 1;
-  r.v[0] = 0.0;
+  vec2 r = vec2(1.0, 1.0);
   real scale = max(max(abs(a), abs(b)), abs(c));
   if (abs(a) > 1e-12 * scale)
   {
     real disc = b * b - 4.0 * a * c;
     if (disc > 0.0)
     {
-      real s = sqrt(disc);
+      real sq = sqrt(disc);
       // Numerically stable pair of roots.
-      real q = -0.5 * (b + (b >= 0.0 ? s : -s));
+      real q = -0.5 * (b + (b >= 0.0 ? sq : -sq));
       real x0 = q / a;
       real x1 = abs(q) > 0.0 ? c / q : x0;
-      real lo = min(x0, x1);
-      real hi = max(x0, x1);
-      if (lo > 0.0 && lo < 1.0)
-      {
-        r.v[r.n] = lo;
-        r.n = r.n + 1;
-      }
-      if (hi > 0.0 && hi < 1.0 && hi > lo)
-      {
-        r.v[r.n] = hi;
-        r.n = r.n + 1;
-      }
+      r = vec2(clamp(min(x0, x1), 0.0, 1.0), clamp(max(x0, x1), 0.0, 1.0));
     }
   }
   else if (abs(b) > 1e-12 * scale)
   {
-    real x = -c / b;
-    if (x > 0.0 && x < 1.0)
-    {
-      r.v[r.n] = x;
-      r.n = r.n + 1;
-    }
+    r.x = clamp(-c / b, 0.0, 1.0);
   }
-  r.v[r.n] = 1.0;
-  r.n = r.n + 1;
   return r;
 }
 
@@ -360,6 +331,91 @@ struct SvHit
   real distance; // along the (unit) ray direction, from the ray origin
   real l;        // curve parameter of the sphere hit, in [0, 1]
 };
+
+// Running minimum of the entry distance f over candidates.
+struct SvBest
+{
+  real f;
+  real l;
+  bool found;
+};
+
+void svConsider(SV_INOUT(SvBest) best, real f, real l)
+{
+  if (f < best.f)
+  {
+    best.f = f;
+    best.l = l;
+    best.found = true;
+  }
+}
+
+// The minima of f = polyA - sqrt(polyB) on a piece [lo, hi] between two
+// consecutive roots of polyB where polyB > 0: the sub-segment ends (caps)
+// when the piece touches them, and the - to + changes of sign of g among
+// `samples` samples, refined by bisection.
+void svPieceMinima(SvPoly A, SvPoly dA, SvPoly B, SvPoly dB, real lo, real hi, int samples,
+  int iterations, SV_INOUT(SvBest) best)
+{
+  if (lo == 0.0)
+  {
+    svConsider(best, svPolyEval(A, 0.0) - sqrt(max(svPolyEval(B, 0.0), 0.0)), 0.0);
+  }
+  if (hi == 1.0)
+  {
+    svConsider(best, svPolyEval(A, 1.0) - sqrt(max(svPolyEval(B, 1.0), 0.0)), 1.0);
+  }
+  real dl = (hi - lo) / real(samples);
+  real prevL = lo;
+  real prevG = svEntrySlope(dA, B, dB, lo);
+  for (int s = 1; s <= samples; ++s)
+  {
+    real curL = (s == samples) ? hi : lo + real(s) * dl;
+    real curG = svEntrySlope(dA, B, dB, curL);
+    if (prevG < 0.0 && curG >= 0.0)
+    {
+      real a = prevL;
+      real b = curL;
+      for (int it = 0; it < iterations; ++it)
+      {
+        real m = 0.5 * (a + b);
+        if (svEntrySlope(dA, B, dB, m) < 0.0)
+        {
+          a = m;
+        }
+        else
+        {
+          b = m;
+        }
+      }
+      real lm = 0.5 * (a + b);
+      svConsider(best, svPolyEval(A, lm) - sqrt(max(svPolyEval(B, lm), 0.0)), lm);
+    }
+    prevL = curL;
+    prevG = curG;
+  }
+}
+
+// One step of the scan for the k-th run of positive pieces: piece [a, b]
+// with sign `on`; `previous` is the sign of the piece before.
+void svRunStep(bool on, SV_INOUT(bool) previous, real a, real b, int k, SV_INOUT(int) seen,
+  SV_INOUT(real) lo, SV_INOUT(real) hi, SV_INOUT(bool) picked)
+{
+  if (on && !previous)
+  {
+    if (seen == k)
+    {
+      lo = a;
+      picked = true;
+    }
+    seen = seen + 1;
+  }
+  if (on && seen - 1 == k)
+  {
+    hi = b;
+  }
+  previous = on;
+}
 
 // Intersect the ray origin + s * dir (dir of unit length, s >= 0) with the
 // spheres swept along the quadratic sub-segment (q0, q1, q2) (xyz center,
@@ -412,91 +468,70 @@ SvHit svIntersectSubSegment(
   B.c3 = 2.0 * (pr.z * pr.y - py.z * py.y - pz.z * pz.y);
   B.c4 = pr.z * pr.z - py.z * py.z - pz.z * pz.z;
 
-  // 1. Roots of polyB in (0, 1): B''' is linear, B'' quadratic (analytic),
-  //    B' and B by bisection between the roots of their derivatives.
-  SvPoly dB = svPolyDerivative(B);
-  SvPoly ddB = svPolyDerivative(dB);
-  SvBrackets rootsB2 = svQuadraticBrackets(ddB.c2, ddB.c1, ddB.c0);
-  SvBrackets rootsB1 = svRootsBetween(dB, rootsB2, rootIterations);
-  SvBrackets rootsB = svRootsBetween(B, rootsB1, rootIterations);
-
-  SvPoly dA = svPolyDerivative(A);
-  real best = 1e30;
-  real bestL = 0.0;
-  bool found = false;
-
-  // 2. Minima of f on every real interval [rootsB.v[i], rootsB.v[i+1]].
-  for (int i = 0; i + 1 < rootsB.n; ++i)
+  // Early miss: polyB < 0 on [0, 1] when all its Bernstein coefficients are.
+  real b1 = B.c0 + 0.25 * B.c1;
+  real b2 = B.c0 + 0.5 * B.c1 + B.c2 / 6.0;
+  real b3 = B.c0 + 0.75 * B.c1 + 0.5 * B.c2 + 0.25 * B.c3;
+  real b4 = B.c0 + B.c1 + B.c2 + B.c3 + B.c4;
+  if (max(max(max(B.c0, b1), max(b2, b3)), b4) < 0.0)
   {
-    real lo = rootsB.v[i];
-    real hi = rootsB.v[i + 1];
-    real mid = 0.5 * (lo + hi);
-    if (svPolyEval(B, mid) < 0.0)
-    {
-      continue; // the ray misses the spheres of this interval
-    }
-    // The ends of the sub-segment are candidates (the rounded caps).
-    if (lo == 0.0)
-    {
-      real f0 = svPolyEval(A, 0.0) - sqrt(max(svPolyEval(B, 0.0), 0.0));
-      if (f0 < best)
-      {
-        best = f0;
-        bestL = 0.0;
-        found = true;
-      }
-    }
-    if (hi == 1.0)
-    {
-      real f1 = svPolyEval(A, 1.0) - sqrt(max(svPolyEval(B, 1.0), 0.0));
-      if (f1 < best)
-      {
-        best = f1;
-        bestL = 1.0;
-        found = true;
-      }
-    }
-    // Bracket the minima of f by sampling the sign of g, then bisect.
-    real dl = (hi - lo) / real(samples);
-    real prevL = lo;
-    real prevG = svEntrySlope(dA, B, dB, lo);
-    for (int s = 1; s <= samples; ++s)
-    {
-      real curL = (s == samples) ? hi : lo + real(s) * dl;
-      real curG = svEntrySlope(dA, B, dB, curL);
-      if (prevG < 0.0 && curG >= 0.0)
-      {
-        real a = prevL;
-        real b = curL;
-        for (int it = 0; it < rootIterations; ++it)
-        {
-          real m = 0.5 * (a + b);
-          if (svEntrySlope(dA, B, dB, m) < 0.0)
-          {
-            a = m;
-          }
-          else
-          {
-            b = m;
-          }
-        }
-        real lm = 0.5 * (a + b);
-        real fm = svPolyEval(A, lm) - sqrt(max(svPolyEval(B, lm), 0.0));
-        if (fm < best)
-        {
-          best = fm;
-          bestL = lm;
-          found = true;
-        }
-      }
-      prevL = curL;
-      prevG = curG;
-    }
+    return result;
   }
 
-  if (found)
+  // 1. Roots of polyB in [0, 1] (Salm's bracketing): the third derivative is
+  //    linear and the second quadratic (roots analytic), then the first
+  //    derivative and polyB by bisection between the roots of their
+  //    derivatives.
+  SvPoly dB = svPolyDerivative(B);
+  SvPoly ddB = svPolyDerivative(dB);
+  vec2 e = svQuadraticRoots01(ddB.c2, ddB.c1, ddB.c0);
+  int coarse = max(4, rootIterations / 2);
+  real s1 = svBisectPoly(dB, 0.0, e.x, coarse);
+  real s2 = svBisectPoly(dB, e.x, e.y, coarse);
+  real s3 = svBisectPoly(dB, e.y, 1.0, coarse);
+  real t1 = svBisectPoly(B, 0.0, s1, rootIterations);
+  real t2 = svBisectPoly(B, s1, s2, rootIterations);
+  real t3 = svBisectPoly(B, s2, s3, rootIterations);
+  real t4 = svBisectPoly(B, s3, 1.0, rootIterations);
+
+  // 2. The minima of f on the pieces between consecutive roots of polyB
+  //    where polyB > 0, joined into the real intervals of polyB (at most 3,
+  //    usually 1; a missing root only split an interval at a root of polyB').
+  //    The k-th interval is picked by selects, so that the loop runs once per
+  //    real interval rather than once per piece (shaders run rays in lock step).
+  SvPoly dA = svPolyDerivative(A);
+  SvBest best;
+  best.f = 1e30;
+  best.l = 0.0;
+  best.found = false;
+  bool on0 = t1 > 0.0 && svPolyEval(B, 0.5 * t1) >= 0.0;
+  bool on1 = t2 > t1 && svPolyEval(B, 0.5 * (t1 + t2)) >= 0.0;
+  bool on2 = t3 > t2 && svPolyEval(B, 0.5 * (t2 + t3)) >= 0.0;
+  bool on3 = t4 > t3 && svPolyEval(B, 0.5 * (t3 + t4)) >= 0.0;
+  bool on4 = 1.0 > t4 && svPolyEval(B, 0.5 * (t4 + 1.0)) >= 0.0;
+  for (int k = 0; k < 3; ++k)
   {
-    real dist = best + shift;
+    // Runs of consecutive positive pieces form the real intervals of polyB.
+    int seen = 0;
+    real lo = 0.0;
+    real hi = 0.0;
+    bool picked = false;
+    bool previous = false;
+    svRunStep(on0, previous, 0.0, t1, k, seen, lo, hi, picked);
+    svRunStep(on1, previous, t1, t2, k, seen, lo, hi, picked);
+    svRunStep(on2, previous, t2, t3, k, seen, lo, hi, picked);
+    svRunStep(on3, previous, t3, t4, k, seen, lo, hi, picked);
+    svRunStep(on4, previous, t4, 1.0, k, seen, lo, hi, picked);
+    if (!picked)
+    {
+      break;
+    }
+    svPieceMinima(A, dA, B, dB, lo, hi, samples, rootIterations, best);
+  }
+
+  if (best.found)
+  {
+    real dist = best.f + shift;
     if (dist < 0.0)
     {
       result.inside = true;
@@ -505,7 +540,7 @@ SvHit svIntersectSubSegment(
     {
       result.hit = true;
       result.distance = dist;
-      result.l = bestL;
+      result.l = best.l;
     }
   }
   return result;

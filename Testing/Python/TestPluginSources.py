@@ -16,6 +16,7 @@ assert info.GetNumberOfPoints() == 3771, info.GetNumberOfPoints()
 
 view = CreateRenderView()  # noqa: F405
 view.ViewSize = [400, 300]
+view.UseColorPaletteForBackground = 0
 view.Background = [1, 1, 1]
 view.OrientationAxesVisibility = 0
 display = Show(fibers, view)  # noqa: F405

@@ -1,0 +1,332 @@
+// Tube rendering benchmark (Salm §3.3's protocol): renders a synthetic fiber
+// data set offscreen with the camera orbiting at a fixed distance, for each
+// renderer side by side in one process, and reports
+//  - time to first frame: from the polylines in memory to the first finished
+//    frame (tube building, upload, shader compilation, drawing),
+//  - median frame time over the orbit (each frame finished with glFinish),
+//  - bytes the renderer holds on the GPU, per segment,
+// and the ratios against VTK's own ways of drawing tubes:
+//  - "tubefilter": vtkTubeFilter (12 sides, radius by the Radius array) +
+//    vtkPolyDataMapper (the geometry VTK uploads: points, normals, colors,
+//    triangle indices),
+//  - "linesastubes": vtkProperty::RenderLinesAsTubes (screen-space width).
+//
+// Usage:
+//   SplineVizTubeBenchmark [--data fibers|fibers2|million] [--size WxH]
+//       [--frames N] [--renderers raycast,tubefilter,linesastubes]
+//       [--distance far|close] [--seconds S]
+// Several --data/--size values may be given (comma separated).
+#include "vtkRayCastTubeMapper.h"
+#include "vtkSplineTubeCore.h"
+#include "vtkSyntheticFibersSource.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkTimerLog.h"
+#include "vtkTubeFilter.h"
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+double Now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+/// CPU time of the whole process (all threads, including llvmpipe's): less
+/// sensitive than wall time to other processes sharing the machine.
+double CPUTime()
+{
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
+    1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+std::vector<std::string> Split(const std::string& s)
+{
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+  {
+    if (!item.empty())
+      out.push_back(item);
+  }
+  return out;
+}
+
+/// What a renderer builds for a data set: the actor, and after the first
+/// frame, the bytes it holds on the GPU.
+struct Built
+{
+  vtkSmartPointer<vtkActor> Actor;
+  std::function<double()> GPUBytes;
+};
+
+using Factory = std::function<Built(vtkPolyData*)>;
+
+std::map<std::string, Factory> Renderers()
+{
+  std::map<std::string, Factory> r;
+  r["raycast"] = [](vtkPolyData* data)
+  {
+    auto mapper = vtkSmartPointer<vtkRayCastTubeMapper>::New();
+    mapper->SetInputData(data);
+    mapper->SetRadiusArray("Radius");
+    mapper->SetScalarRange(0.0, 1.0);
+    Built b;
+    b.Actor = vtkSmartPointer<vtkActor>::New();
+    b.Actor->SetMapper(mapper);
+    b.GPUBytes = [mapper]() { return static_cast<double>(mapper->GetGPUMemorySize()); };
+    return b;
+  };
+  r["tubefilter"] = [](vtkPolyData* data)
+  {
+    auto tubes = vtkSmartPointer<vtkTubeFilter>::New();
+    tubes->SetInputData(data);
+    tubes->SetNumberOfSides(12);
+    tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
+    data->GetPointData()->SetActiveScalars("Radius");
+    tubes->Update();
+    auto tubeData = vtkSmartPointer<vtkPolyData>::New();
+    tubeData->ShallowCopy(tubes->GetOutput());
+    data->GetPointData()->SetActiveScalars("Scalar");
+    tubeData->GetPointData()->SetActiveScalars("Scalar");
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(tubeData);
+    mapper->SetScalarRange(0.0, 1.0);
+    Built b;
+    b.Actor = vtkSmartPointer<vtkActor>::New();
+    b.Actor->SetMapper(mapper);
+    // What vtkOpenGLPolyDataMapper uploads: float positions and normals,
+    // RGBA colors per point, and 3 indices per triangle of the strips.
+    b.GPUBytes = [tubeData]()
+    {
+      vtkIdType triangles = 0;
+      vtkCellArray* strips = tubeData->GetStrips();
+      triangles += strips->GetNumberOfConnectivityIds() - 2 * strips->GetNumberOfCells();
+      vtkCellArray* polys = tubeData->GetPolys();
+      triangles += polys->GetNumberOfConnectivityIds() - 2 * polys->GetNumberOfCells();
+      return static_cast<double>(tubeData->GetNumberOfPoints()) * (12 + 12 + 4) +
+        static_cast<double>(triangles) * 3 * 4;
+    };
+    return b;
+  };
+  r["linesastubes"] = [](vtkPolyData* data)
+  {
+    auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+    mapper->SetInputData(data);
+    mapper->SetScalarRange(0.0, 1.0);
+    Built b;
+    b.Actor = vtkSmartPointer<vtkActor>::New();
+    b.Actor->SetMapper(mapper);
+    b.Actor->GetProperty()->SetRenderLinesAsTubes(true);
+    b.Actor->GetProperty()->SetLineWidth(4);
+    // Positions and colors per point, 2 indices per line segment.
+    b.GPUBytes = [data]()
+    {
+      const vtkIdType segments = data->GetNumberOfPoints() - data->GetNumberOfLines();
+      return static_cast<double>(data->GetNumberOfPoints()) * (12 + 4) +
+        static_cast<double>(segments) * 2 * 4;
+    };
+    return b;
+  };
+  return r;
+}
+
+struct Result
+{
+  double FirstFrame = 0.0;
+  double MedianFrame = 0.0;
+  double MedianFrameCPU = 0.0;
+  double BestFrameCPU = 0.0;
+  double BytesPerSegment = 0.0;
+  int Frames = 0;
+};
+
+Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderWindow* window,
+  int frames, double maxSeconds, bool close)
+{
+  const vtkIdType segments = data->GetNumberOfPoints() - data->GetNumberOfLines();
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.1, 0.1, 0.12);
+  window->AddRenderer(renderer);
+  // Warm the context up (not part of the renderer's first frame).
+  window->Render();
+  window->WaitForCompletion();
+
+  Result r;
+  const double start = Now();
+  Built built = factory(data);
+  renderer->AddActor(built.Actor);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0, 0, 0);
+  // Far: the whole box in view (medium coverage); close: inside the box's
+  // front half (high coverage), as in Salm §3.3.
+  const double distance = (close ? 0.9 : 2.4) * boxSize;
+  const double nearPlane = 0.01 * boxSize, farPlane = distance + boxSize;
+  camera->SetPosition(0, 0, distance);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(30);
+  camera->SetClippingRange(nearPlane, farPlane);
+  window->Render();
+  window->WaitForCompletion();
+  r.FirstFrame = Now() - start;
+  r.BytesPerSegment = built.GPUBytes() / static_cast<double>(segments);
+
+  std::vector<double> times;
+  std::vector<double> cpuTimes;
+  const double orbitStart = Now();
+  for (int i = 0; i < frames; ++i)
+  {
+    camera->Azimuth(360.0 / frames);
+    camera->SetClippingRange(nearPlane, farPlane);
+    const double t0 = Now();
+    const double c0 = CPUTime();
+    window->Render();
+    window->WaitForCompletion();
+    times.push_back(Now() - t0);
+    cpuTimes.push_back(CPUTime() - c0);
+    if (Now() - orbitStart > maxSeconds && times.size() >= 5)
+    {
+      break;
+    }
+  }
+  std::sort(times.begin(), times.end());
+  std::sort(cpuTimes.begin(), cpuTimes.end());
+  r.Frames = static_cast<int>(times.size());
+  r.MedianFrame = times[times.size() / 2];
+  r.MedianFrameCPU = cpuTimes[cpuTimes.size() / 2];
+  r.BestFrameCPU = cpuTimes.front();
+  renderer->RemoveAllViewProps();
+  window->RemoveRenderer(renderer);
+  built.Actor->ReleaseGraphicsResources(window);
+  return r;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  std::vector<std::string> datasets = { "fibers2" };
+  std::vector<std::string> sizes = { "800x600", "1200x768" };
+  std::vector<std::string> renderers = { "raycast", "tubefilter", "linesastubes" };
+  int frames = 60;
+  double seconds = 30.0;
+  bool close = false;
+  for (int i = 1; i + 1 < argc; i += 2)
+  {
+    const std::string key = argv[i], value = argv[i + 1];
+    if (key == "--data")
+      datasets = Split(value);
+    else if (key == "--size")
+      sizes = Split(value);
+    else if (key == "--renderers")
+      renderers = Split(value);
+    else if (key == "--frames")
+      frames = std::max(5, std::atoi(value.c_str()));
+    else if (key == "--seconds")
+      seconds = std::atof(value.c_str());
+    else if (key == "--distance")
+      close = (value == "close");
+    else
+    {
+      std::fprintf(stderr, "unknown option %s\n", key.c_str());
+      return 2;
+    }
+  }
+  const auto factories = Renderers();
+  for (const auto& name : renderers)
+  {
+    if (!factories.count(name))
+    {
+      std::fprintf(stderr, "unknown renderer %s\n", name.c_str());
+      return 2;
+    }
+  }
+
+  for (const auto& dataset : datasets)
+  {
+    vtkNew<vtkSyntheticFibersSource> source;
+    if (dataset == "fibers")
+      source->SetPresetToFibers();
+    else if (dataset == "fibers2")
+      source->SetPresetToFibers2();
+    else if (dataset == "million")
+      source->SetPresetToOneMillion();
+    else
+    {
+      std::fprintf(stderr, "unknown data set %s\n", dataset.c_str());
+      return 2;
+    }
+    source->Update();
+    vtkPolyData* data = source->GetOutput();
+    data->GetPointData()->SetActiveScalars("Scalar");
+    const vtkIdType segments = data->GetNumberOfPoints() - data->GetNumberOfLines();
+    std::printf("\n== %s: %lld tubes, %lld segments, camera %s\n", dataset.c_str(),
+      static_cast<long long>(data->GetNumberOfLines()), static_cast<long long>(segments),
+      close ? "close" : "far");
+    for (const auto& size : sizes)
+    {
+      int w = 800, h = 600;
+      std::sscanf(size.c_str(), "%dx%d", &w, &h);
+      vtkNew<vtkRenderWindow> window;
+      window->SetOffScreenRendering(1);
+      window->SetSize(w, h);
+      window->SetMultiSamples(0);
+      std::printf("-- %dx%d\n", w, h);
+      std::printf("  %-14s %14s %16s %10s %10s %14s %8s\n", "renderer", "first frame s",
+        "median frame ms", "(CPU ms)", "(best CPU)", "GPU B/segment", "frames");
+      std::map<std::string, Result> results;
+      for (const auto& name : renderers)
+      {
+        const Result r =
+          Run(factories.at(name), data, source->GetBoxSize(), window, frames, seconds, close);
+        results[name] = r;
+        std::printf("  %-14s %14.3f %16.1f %10.1f %10.1f %14.1f %8d\n", name.c_str(), r.FirstFrame,
+          1000.0 * r.MedianFrame, 1000.0 * r.MedianFrameCPU, 1000.0 * r.BestFrameCPU,
+          r.BytesPerSegment, r.Frames);
+        std::fflush(stdout);
+      }
+      for (const auto& name : renderers)
+      {
+        if (name == "tubefilter" || name == "linesastubes" || !results.count("tubefilter"))
+          continue;
+        const Result& a = results[name];
+        const Result& t = results["tubefilter"];
+        std::printf("  %s vs tubefilter: first frame %.1fx shorter, GPU memory %.1fx smaller, "
+                    "frame time ratio %.2f (<1: faster)\n",
+          name.c_str(), t.FirstFrame / a.FirstFrame, t.BytesPerSegment / a.BytesPerSegment,
+          a.MedianFrame / t.MedianFrame);
+        if (results.count("linesastubes"))
+        {
+          const Result& l = results["linesastubes"];
+          std::printf("  %s vs linesastubes: frame time ratio %.2f, first frame ratio %.2f\n",
+            name.c_str(), a.MedianFrame / l.MedianFrame, a.FirstFrame / l.FirstFrame);
+        }
+      }
+    }
+  }
+  return 0;
+}

@@ -1,0 +1,525 @@
+#include "vtkLRSplineBezierVolume.h"
+
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkDataArray.h"
+#include "vtkHigherOrderHexahedron.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+//------------------------------------------------------------------------------
+template <typename Real>
+void vtkLRSplineBezierVolume::Bernstein(int n, Real s, Real* b, Real* d)
+{
+  const Real t = Real(1) - s;
+  // Degree n-1 first (needed for the derivative), then raise to degree n.
+  b[0] = Real(1);
+  for (int k = 1; k < n; ++k)
+  {
+    Real saved = Real(0);
+    for (int i = 0; i < k; ++i)
+    {
+      const Real tmp = b[i];
+      b[i] = saved + t * tmp;
+      saved = s * tmp;
+    }
+    b[k] = saved;
+  }
+  if (n == 0)
+  {
+    if (d)
+    {
+      d[0] = Real(0);
+    }
+    return;
+  }
+  if (d)
+  {
+    const Real rn = static_cast<Real>(n);
+    d[0] = -rn * b[0];
+    for (int i = 1; i < n; ++i)
+    {
+      d[i] = rn * (b[i - 1] - b[i]);
+    }
+    d[n] = rn * b[n - 1];
+  }
+  Real saved = Real(0);
+  for (int i = 0; i < n; ++i)
+  {
+    const Real tmp = b[i];
+    b[i] = saved + t * tmp;
+    saved = s * tmp;
+  }
+  b[n] = saved;
+}
+
+namespace
+{
+constexpr int MaxComponents = 64;
+
+// Value and local derivatives of one Bezier block: contraction along u, then v,
+// then w. NC > 0 fixes the number of components at compile time.
+template <typename Real, int NC>
+void EvaluateBlock(
+  const Real* coeffs, const int deg[3], int ncDynamic, const Real s[3], Real* value, Real* dlocal)
+{
+  const int nc = NC > 0 ? NC : ncDynamic;
+  constexpr int M = vtkLRSplineBezierVolume::MaximumDegree + 1;
+  Real bu[M], du[M], bv[M], dv[M], bw[M], dw[M];
+  vtkLRSplineBezierVolume::Bernstein<Real>(deg[0], s[0], bu, du);
+  vtkLRSplineBezierVolume::Bernstein<Real>(deg[1], s[1], bv, dv);
+  vtkLRSplineBezierVolume::Bernstein<Real>(deg[2], s[2], bw, dw);
+  const int nu = deg[0] + 1, nv = deg[1] + 1, nw = deg[2] + 1;
+
+  Real val[MaxComponents], gu[MaxComponents], gv[MaxComponents], gw[MaxComponents];
+  for (int c = 0; c < nc; ++c)
+  {
+    val[c] = gu[c] = gv[c] = gw[c] = Real(0);
+  }
+  const bool grad = dlocal != nullptr;
+  for (int k = 0; k < nw; ++k)
+  {
+    Real A[MaxComponents], Au[MaxComponents], Av[MaxComponents];
+    for (int c = 0; c < nc; ++c)
+    {
+      A[c] = Au[c] = Av[c] = Real(0);
+    }
+    for (int j = 0; j < nv; ++j)
+    {
+      const Real* row = coeffs + static_cast<std::size_t>((k * nv + j) * nu) * nc;
+      Real a[MaxComponents], au[MaxComponents];
+      for (int c = 0; c < nc; ++c)
+      {
+        a[c] = au[c] = Real(0);
+      }
+      for (int i = 0; i < nu; ++i)
+      {
+        const Real* cf = row + i * nc;
+        for (int c = 0; c < nc; ++c)
+        {
+          a[c] += cf[c] * bu[i];
+          if (grad)
+          {
+            au[c] += cf[c] * du[i];
+          }
+        }
+      }
+      for (int c = 0; c < nc; ++c)
+      {
+        A[c] += a[c] * bv[j];
+        if (grad)
+        {
+          Au[c] += au[c] * bv[j];
+          Av[c] += a[c] * dv[j];
+        }
+      }
+    }
+    for (int c = 0; c < nc; ++c)
+    {
+      val[c] += A[c] * bw[k];
+      if (grad)
+      {
+        gu[c] += Au[c] * bw[k];
+        gv[c] += Av[c] * bw[k];
+        gw[c] += A[c] * dw[k];
+      }
+    }
+  }
+  for (int c = 0; c < nc; ++c)
+  {
+    value[c] = val[c];
+    if (grad)
+    {
+      dlocal[3 * c + 0] = gu[c];
+      dlocal[3 * c + 1] = gv[c];
+      dlocal[3 * c + 2] = gw[c];
+    }
+  }
+}
+
+// The common cases with compile-time degrees and components: fully unrolled.
+template <typename Real, int NC, int DU, int DV, int DW, bool Grad>
+inline void EvaluateFixed(const Real* coeffs, const Real s[3], Real* value, Real* dlocal)
+{
+  Real bu[DU + 1], du[DU + 1], bv[DV + 1], dv[DV + 1], bw[DW + 1], dw[DW + 1];
+  vtkLRSplineBezierVolume::Bernstein<Real>(DU, s[0], bu, Grad ? du : nullptr);
+  vtkLRSplineBezierVolume::Bernstein<Real>(DV, s[1], bv, Grad ? dv : nullptr);
+  vtkLRSplineBezierVolume::Bernstein<Real>(DW, s[2], bw, Grad ? dw : nullptr);
+  Real val[NC] = {}, gu[NC] = {}, gv[NC] = {}, gw[NC] = {};
+  for (int k = 0; k <= DW; ++k)
+  {
+    Real A[NC] = {}, Au[NC] = {}, Av[NC] = {};
+    for (int j = 0; j <= DV; ++j)
+    {
+      const Real* row = coeffs + ((k * (DV + 1) + j) * (DU + 1)) * NC;
+      Real a[NC] = {}, au[NC] = {};
+      for (int i = 0; i <= DU; ++i)
+      {
+        for (int c = 0; c < NC; ++c)
+        {
+          a[c] += row[i * NC + c] * bu[i];
+          if (Grad)
+          {
+            au[c] += row[i * NC + c] * du[i];
+          }
+        }
+      }
+      for (int c = 0; c < NC; ++c)
+      {
+        A[c] += a[c] * bv[j];
+        if (Grad)
+        {
+          Au[c] += au[c] * bv[j];
+          Av[c] += a[c] * dv[j];
+        }
+      }
+    }
+    for (int c = 0; c < NC; ++c)
+    {
+      val[c] += A[c] * bw[k];
+      if (Grad)
+      {
+        gu[c] += Au[c] * bw[k];
+        gv[c] += Av[c] * bw[k];
+        gw[c] += A[c] * dw[k];
+      }
+    }
+  }
+  for (int c = 0; c < NC; ++c)
+  {
+    value[c] = val[c];
+    if (Grad)
+    {
+      dlocal[3 * c + 0] = gu[c];
+      dlocal[3 * c + 1] = gv[c];
+      dlocal[3 * c + 2] = gw[c];
+    }
+  }
+}
+
+template <typename Real, int NC, int D>
+inline bool TryFixed(
+  const Real* coeffs, const int deg[3], const Real s[3], Real* value, Real* dlocal)
+{
+  if (deg[0] != D || deg[1] != D || deg[2] != D)
+  {
+    return false;
+  }
+  if (dlocal)
+  {
+    EvaluateFixed<Real, NC, D, D, D, true>(coeffs, s, value, dlocal);
+  }
+  else
+  {
+    EvaluateFixed<Real, NC, D, D, D, false>(coeffs, s, value, nullptr);
+  }
+  return true;
+}
+
+template <typename Real>
+void Dispatch(
+  const Real* coeffs, const int deg[3], int nc, const Real s[3], Real* value, Real* dlocal)
+{
+  switch (nc)
+  {
+    case 1:
+      if (!TryFixed<Real, 1, 2>(coeffs, deg, s, value, dlocal) &&
+        !TryFixed<Real, 1, 3>(coeffs, deg, s, value, dlocal))
+      {
+        EvaluateBlock<Real, 1>(coeffs, deg, nc, s, value, dlocal);
+      }
+      break;
+    case 3:
+      if (!TryFixed<Real, 3, 2>(coeffs, deg, s, value, dlocal) &&
+        !TryFixed<Real, 3, 3>(coeffs, deg, s, value, dlocal) &&
+        !TryFixed<Real, 3, 1>(coeffs, deg, s, value, dlocal))
+      {
+        EvaluateBlock<Real, 3>(coeffs, deg, nc, s, value, dlocal);
+      }
+      break;
+    default:
+      EvaluateBlock<Real, 0>(coeffs, deg, nc, s, value, dlocal);
+      break;
+  }
+}
+}
+
+template SPLINEVIZ_EXPORT void vtkLRSplineBezierVolume::Bernstein<double>(
+  int, double, double*, double*);
+template SPLINEVIZ_EXPORT void vtkLRSplineBezierVolume::Bernstein<float>(
+  int, float, float*, float*);
+
+//------------------------------------------------------------------------------
+void vtkLRSplineBezierVolume::GetDomain(double domain[6]) const
+{
+  for (int d = 0; d < 3; ++d)
+  {
+    domain[d] = std::numeric_limits<double>::infinity();
+    domain[d + 3] = -std::numeric_limits<double>::infinity();
+  }
+  const vtkIdType n = this->GetNumberOfElements();
+  for (vtkIdType e = 0; e < n; ++e)
+  {
+    const double* b = this->GetBox(e);
+    for (int d = 0; d < 3; ++d)
+    {
+      domain[d] = std::min(domain[d], b[d]);
+      domain[d + 3] = std::max(domain[d + 3], b[d + 3]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineBezierVolume::MakeFloatCoefficients()
+{
+  this->CoefficientsFloat.assign(this->Coefficients.begin(), this->Coefficients.end());
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineBezierVolume::ElevateToAtLeastLinear()
+{
+  if (this->Degree[0] >= 1 && this->Degree[1] >= 1 && this->Degree[2] >= 1)
+  {
+    return;
+  }
+  const int nc = this->NumberOfComponents;
+  const int old[3] = { this->Degree[0] + 1, this->Degree[1] + 1, this->Degree[2] + 1 };
+  int neu[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    neu[d] = std::max(old[d], 2);
+  }
+  const vtkIdType ne = this->GetNumberOfElements();
+  const std::size_t oldPer = static_cast<std::size_t>(old[0] * old[1] * old[2] * nc);
+  const std::size_t newPer = static_cast<std::size_t>(neu[0] * neu[1] * neu[2] * nc);
+  std::vector<double> out(newPer * ne);
+  for (vtkIdType e = 0; e < ne; ++e)
+  {
+    const double* src = this->Coefficients.data() + oldPer * e;
+    double* dst = out.data() + newPer * e;
+    for (int k = 0; k < neu[2]; ++k)
+    {
+      for (int j = 0; j < neu[1]; ++j)
+      {
+        for (int i = 0; i < neu[0]; ++i)
+        {
+          // A constant direction (degree 0) has one coefficient, repeated.
+          const int si = old[0] == 1 ? 0 : i;
+          const int sj = old[1] == 1 ? 0 : j;
+          const int sk = old[2] == 1 ? 0 : k;
+          const double* c = src + ((sk * old[1] + sj) * old[0] + si) * nc;
+          std::copy(c, c + nc, dst + ((k * neu[1] + j) * neu[0] + i) * nc);
+        }
+      }
+    }
+  }
+  this->Coefficients.swap(out);
+  for (int d = 0; d < 3; ++d)
+  {
+    this->Degree[d] = neu[d] - 1;
+  }
+  if (!this->CoefficientsFloat.empty())
+  {
+    this->MakeFloatCoefficients();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineBezierVolume::EvaluateLocal(
+  vtkIdType e, const double s[3], double* value, double* dlocal) const
+{
+  Dispatch<double>(
+    this->GetElementCoefficients(e), this->Degree, this->NumberOfComponents, s, value, dlocal);
+}
+
+void vtkLRSplineBezierVolume::EvaluateLocal(
+  vtkIdType e, const float s[3], float* value, float* dlocal) const
+{
+  const float* c = this->CoefficientsFloat.data() +
+    e * this->GetCoefficientsPerElement() * this->NumberOfComponents;
+  Dispatch<float>(c, this->Degree, this->NumberOfComponents, s, value, dlocal);
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, const char* arrayName,
+  std::string* error, std::vector<vtkIdType>* cellIds, std::string* usedArrayName)
+{
+  auto fail = [error](const std::string& msg)
+  {
+    if (error)
+    {
+      *error = msg;
+    }
+    return false;
+  };
+  if (!grid)
+  {
+    return fail("no grid");
+  }
+  vtkPointData* pd = grid->GetPointData();
+  vtkDataArray* field = nullptr;
+  if (arrayName && *arrayName)
+  {
+    field = pd->GetArray(arrayName);
+    if (!field)
+    {
+      return fail(
+        std::string("the spline grid has no point-data array named \"") + arrayName + "\"");
+    }
+  }
+  else
+  {
+    field = pd->GetVectors() ? pd->GetVectors() : pd->GetScalars();
+    if (!field && pd->GetNumberOfArrays() > 0)
+    {
+      field = pd->GetArray(0);
+    }
+    if (!field)
+    {
+      return fail("the spline grid has no point-data array to evaluate");
+    }
+  }
+  if (usedArrayName)
+  {
+    *usedArrayName = field->GetName() ? field->GetName() : "";
+  }
+  const int nc = field->GetNumberOfComponents();
+  if (nc < 1 || nc > MaxComponents)
+  {
+    return fail("the field array has an unsupported number of components");
+  }
+  vtkCellData* cd = grid->GetCellData();
+  vtkDataArray* degrees = cd->GetHigherOrderDegrees();
+  if (!degrees)
+  {
+    degrees = cd->GetArray("HigherOrderDegrees");
+  }
+  vtkDataArray* boxes = cd->GetArray("LRParameterBox");
+  if (boxes && boxes->GetNumberOfComponents() != 6)
+  {
+    boxes = nullptr;
+  }
+
+  this->NumberOfComponents = nc;
+  this->Boxes.clear();
+  this->Coefficients.clear();
+  this->CoefficientsFloat.clear();
+  if (cellIds)
+  {
+    cellIds->clear();
+  }
+  const vtkIdType numCells = grid->GetNumberOfCells();
+  bool haveDegree = false;
+  vtkNew<vtkIdList> pts;
+  for (vtkIdType cell = 0; cell < numCells; ++cell)
+  {
+    if (grid->GetCellType(cell) != VTK_BEZIER_HEXAHEDRON)
+    {
+      std::ostringstream msg;
+      msg << "cell " << cell << " is not a VTK_BEZIER_HEXAHEDRON";
+      return fail(msg.str());
+    }
+    grid->GetCellPoints(cell, pts);
+    int deg[3];
+    if (degrees && degrees->GetNumberOfComponents() >= 3)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        deg[d] = static_cast<int>(degrees->GetComponent(cell, d));
+      }
+    }
+    else
+    {
+      // Like VTK: an isotropic degree from the number of points.
+      const int n =
+        static_cast<int>(std::lround(std::cbrt(static_cast<double>(pts->GetNumberOfIds()))));
+      deg[0] = deg[1] = deg[2] = n - 1;
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+      if (deg[d] < 1 || deg[d] > MaximumDegree)
+      {
+        return fail("unsupported Bezier degree in the spline grid");
+      }
+    }
+    if (!haveDegree)
+    {
+      std::copy(deg, deg + 3, this->Degree);
+      haveDegree = true;
+    }
+    else if (deg[0] != this->Degree[0] || deg[1] != this->Degree[1] || deg[2] != this->Degree[2])
+    {
+      return fail("the Bezier cells of one spline grid must all have the same degrees");
+    }
+    const int per = (deg[0] + 1) * (deg[1] + 1) * (deg[2] + 1);
+    if (pts->GetNumberOfIds() != per)
+    {
+      return fail("a Bezier cell has a number of points that does not match its degrees");
+    }
+    double box[6];
+    if (boxes)
+    {
+      boxes->GetTuple(cell, box);
+    }
+    else
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        box[d] = std::numeric_limits<double>::infinity();
+        box[d + 3] = -std::numeric_limits<double>::infinity();
+      }
+      for (int corner = 0; corner < 8; ++corner)
+      {
+        double x[3];
+        grid->GetPoint(pts->GetId(corner), x);
+        for (int d = 0; d < 3; ++d)
+        {
+          box[d] = std::min(box[d], x[d]);
+          box[d + 3] = std::max(box[d + 3], x[d]);
+        }
+      }
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+      if (!(box[d] < box[d + 3]) || !std::isfinite(box[d]) || !std::isfinite(box[d + 3]))
+      {
+        std::ostringstream msg;
+        msg << "cell " << cell << " has an empty or invalid parameter box";
+        return fail(msg.str());
+      }
+    }
+    this->Boxes.insert(this->Boxes.end(), box, box + 6);
+    const std::size_t base = this->Coefficients.size();
+    this->Coefficients.resize(base + static_cast<std::size_t>(per) * nc);
+    double* dst = this->Coefficients.data() + base;
+    for (int k = 0; k <= deg[2]; ++k)
+    {
+      for (int j = 0; j <= deg[1]; ++j)
+      {
+        for (int i = 0; i <= deg[0]; ++i)
+        {
+          const int local = vtkHigherOrderHexahedron::PointIndexFromIJK(i, j, k, deg);
+          const vtkIdType pid = pts->GetId(local);
+          double* c = dst + ((k * (deg[1] + 1) + j) * (deg[0] + 1) + i) * nc;
+          for (int comp = 0; comp < nc; ++comp)
+          {
+            c[comp] = field->GetComponent(pid, comp);
+          }
+        }
+      }
+    }
+    if (cellIds)
+    {
+      cellIds->push_back(cell);
+    }
+  }
+  return true;
+}

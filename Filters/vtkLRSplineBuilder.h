@@ -1,0 +1,107 @@
+/**
+ * @class   vtkLRSplineBuilder
+ * @brief   Generates LR-spline volumes by genuine local refinement (for tests, benchmarks and
+ * demos).
+ *
+ * Plain C++ (not a vtkObject). Starts from a tensor-product B-spline volume
+ * (open knot vectors) and refines it locally the LR-spline way (Dokken, Lyche
+ * and Pettersen 2013; Fuchs et al. §3.1): a mesh rectangle is inserted, every
+ * element it crosses is split, and every LR B-spline whose support the
+ * (union of the) mesh rectangles at that value traverses is split by knot
+ * insertion, B = a1 B1 + a2 B2, with the scaling weights gamma and the
+ * coefficients updated so that the spline function does not change (a
+ * function that appears twice is merged: gammas add, coefficients average
+ * with the gamma weights). So a field that is exact before refinement (e.g.
+ * a linear field from Greville coefficients) stays exact.
+ *
+ * RefineFunction() performs "structured mesh" refinement of one B-spline:
+ * through every knot interval of its support, in every direction, a
+ * rectangle at lo + ratio (hi - lo) spanning the support. A ratio other than
+ * 1/2 (e.g. the golden section) gives non-dyadic, irrational knots; repeated
+ * refinement near a point gives many refinement levels.
+ *
+ * GetPatch() gives the LR spline (vtkLRSplinePatch, which also writes the .lr
+ * text format).
+ */
+
+#ifndef vtkLRSplineBuilder_h
+#define vtkLRSplineBuilder_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkLRSplinePatch.h"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+class SPLINEVIZ_EXPORT vtkLRSplineBuilder
+{
+public:
+  /**
+   * A tensor-product spline of the given degrees whose distinct knots per
+   * direction are `breaks` (end knots repeated degree + 1 times), with
+   * `dimension` zero coefficients.
+   */
+  bool InitializeTensorProduct(
+    const int degree[3], const std::vector<double> breaks[3], int dimension, std::string* error);
+
+  /**
+   * Coefficient of each basis function = f(its Greville point) (the average
+   * of its interior knots per direction). Exact for linear f on a
+   * tensor-product spline; a quasi-interpolant otherwise.
+   */
+  void SetCoefficientsFromGreville(const std::function<void(const double g[3], double* c)>& f);
+
+  /**
+   * Coefficient = f(interior knots u (degree values), v, w): with f the
+   * blossom (polar form) of a polynomial of the spline's degree this
+   * reproduces the polynomial exactly on a tensor-product spline.
+   */
+  void SetCoefficientsFromKnots(
+    const std::function<void(const double* const interior[3], const int degree[3], double* c)>& f);
+
+  /**
+   * Insert a mesh rectangle (multiplicity 1): constant direction `dir` at
+   * `value`, spanning `box` (6 values, lo xyz then hi xyz; the `dir` entries
+   * are ignored) in the other two directions. Its edges must lie on existing
+   * mesh planes (false otherwise).
+   */
+  bool InsertMeshRectangle(int dir, double value, const double box[6], std::string* error);
+
+  /// Structured refinement of basis function i (see the class documentation).
+  bool RefineFunction(vtkIdType i, double ratio, std::string* error);
+
+  /// Refine the basis function with the smallest support containing p.
+  bool RefineAt(const double p[3], double ratio, std::string* error);
+
+  /// The current LR spline (dead functions removed).
+  const vtkLRSplinePatch& GetPatch();
+
+  vtkIdType GetNumberOfElements() const
+  {
+    return static_cast<vtkIdType>(this->Patch.ElementBoxes.size() / 6);
+  }
+  vtkIdType GetNumberOfBasisFunctions() const { return this->NumberAlive; }
+
+private:
+  struct Rect2
+  {
+    double A0, A1, B0, B1; // extents in the two other directions (ascending order)
+  };
+  bool Covered(int dir, double value, const double support[6]) const;
+  vtkIdType AddFunction(const double* knots, const double* coeff, double gamma);
+  void Split(std::vector<vtkIdType>& work);
+  void Compact();
+  std::string Key(const double* knots) const;
+
+  vtkLRSplinePatch Patch;
+  std::vector<char> Alive;
+  vtkIdType NumberAlive = 0;
+  std::unordered_map<std::string, vtkIdType> Index;
+  std::map<double, std::vector<Rect2>> Planes[3];
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkLRSplineBuilder.h

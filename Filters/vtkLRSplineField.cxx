@@ -1,0 +1,363 @@
+#include "vtkLRSplineField.h"
+
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnstructuredGrid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace
+{
+void CollectGrids(vtkDataObject* obj, std::vector<vtkUnstructuredGrid*>& grids)
+{
+  if (auto* ug = vtkUnstructuredGrid::SafeDownCast(obj))
+  {
+    if (ug->GetNumberOfCells() > 0)
+    {
+      grids.push_back(ug);
+    }
+    return;
+  }
+  if (auto* cds = vtkCompositeDataSet::SafeDownCast(obj))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(cds->NewIterator());
+    it->SkipEmptyNodesOn();
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      CollectGrids(it->GetCurrentDataObject(), grids);
+    }
+  }
+}
+
+int AutomaticBlocks(vtkIdType numElements)
+{
+  const double b = 2.0 * std::cbrt(static_cast<double>(numElements));
+  return std::max(1, std::min(64, static_cast<int>(std::ceil(b))));
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int locatorType,
+  const int blocks[3], bool parameterSpace, std::string* error)
+{
+  auto fail = [error](const std::string& msg)
+  {
+    if (error)
+    {
+      *error = msg;
+    }
+    return false;
+  };
+  this->Patches.clear();
+  this->NumberOfComponents = 0;
+  this->ArrayName.clear();
+  this->PatchesOverlap = false;
+  std::vector<vtkUnstructuredGrid*> grids;
+  CollectGrids(source, grids);
+  if (grids.empty())
+  {
+    return fail("the spline input has no non-empty vtkUnstructuredGrid (expected the output of "
+                "vtkLRSplineReader)");
+  }
+  std::string name = arrayName ? arrayName : "";
+  for (std::size_t g = 0; g < grids.size(); ++g)
+  {
+    vtkUnstructuredGrid* grid = grids[g];
+    vtkLRSplineBezierVolume volume;
+    std::string msg, used;
+    if (!volume.FromUnstructuredGrid(grid, name.c_str(), &msg, nullptr, &used))
+    {
+      return fail("patch " + std::to_string(g) + ": " + msg);
+    }
+    if (name.empty())
+    {
+      name = used; // the following patches must provide the same array
+    }
+    if (this->NumberOfComponents == 0)
+    {
+      this->NumberOfComponents = volume.NumberOfComponents;
+    }
+    else if (this->NumberOfComponents != volume.NumberOfComponents)
+    {
+      return fail("the patches' field arrays have different numbers of components");
+    }
+    double scale[3] = { 1, 1, 1 }, offset[3] = { 0, 0, 0 };
+    vtkFieldData* fd = grid->GetFieldData();
+    vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
+    if (mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1 && !parameterSpace)
+    {
+      return fail("patch " + std::to_string(g) +
+        " was read in geometry mode: its physical points are not an affine image of the "
+        "parameter domain, so it can only be evaluated in parameter space");
+    }
+    vtkDataArray* transform = fd ? fd->GetArray("LRPhysicalTransform") : nullptr;
+    if (transform && !parameterSpace && transform->GetNumberOfTuples() > 0 &&
+      transform->GetNumberOfComponents() * transform->GetNumberOfTuples() >= 6)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        const vtkIdType is = d, io = d + 3;
+        const int nc = transform->GetNumberOfComponents();
+        scale[d] = transform->GetComponent(is / nc, static_cast<int>(is % nc));
+        offset[d] = transform->GetComponent(io / nc, static_cast<int>(io % nc));
+      }
+      for (int d = 0; d < 3; ++d)
+      {
+        if (!(scale[d] > 0) || !std::isfinite(scale[d]) || !std::isfinite(offset[d]))
+        {
+          return fail("patch " + std::to_string(g) + " has an invalid LRPhysicalTransform");
+        }
+      }
+    }
+    int autoBlocks[3];
+    if (!blocks || blocks[0] < 1)
+    {
+      autoBlocks[0] = autoBlocks[1] = autoBlocks[2] = AutomaticBlocks(volume.GetNumberOfElements());
+      blocks = nullptr;
+    }
+    auto evaluator = std::make_unique<vtkLRSplineEvaluator>();
+    if (!evaluator->Initialize(std::move(volume), locatorType, blocks ? blocks : autoBlocks, &msg))
+    {
+      return fail("patch " + std::to_string(g) + ": " + msg);
+    }
+    evaluator->SetPhysicalTransform(scale, offset);
+    this->Patches.push_back(std::move(evaluator));
+  }
+  this->ArrayName = name;
+  // Do the patches' boxes overlap (then the hint must not skip the order rule)?
+  for (std::size_t a = 0; a < this->Patches.size(); ++a)
+  {
+    double ba[6];
+    this->Patches[a]->GetBounds(ba);
+    for (std::size_t b = a + 1; b < this->Patches.size(); ++b)
+    {
+      double bb[6];
+      this->Patches[b]->GetBounds(bb);
+      bool overlap = true;
+      for (int d = 0; d < 3; ++d)
+      {
+        overlap = overlap && ba[2 * d] < bb[2 * d + 1] && bb[2 * d] < ba[2 * d + 1];
+      }
+      this->PatchesOverlap = this->PatchesOverlap || overlap;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkLRSplineField::GetNumberOfElements() const
+{
+  vtkIdType n = 0;
+  for (const auto& p : this->Patches)
+  {
+    n += p->GetNumberOfElements();
+  }
+  return n;
+}
+
+void vtkLRSplineField::GetBounds(double bounds[6]) const
+{
+  for (int d = 0; d < 3; ++d)
+  {
+    bounds[2 * d] = VTK_DOUBLE_MAX;
+    bounds[2 * d + 1] = -VTK_DOUBLE_MAX;
+  }
+  for (const auto& p : this->Patches)
+  {
+    double b[6];
+    p->GetBounds(b);
+    for (int d = 0; d < 3; ++d)
+    {
+      bounds[2 * d] = std::min(bounds[2 * d], b[2 * d]);
+      bounds[2 * d + 1] = std::max(bounds[2 * d + 1], b[2 * d + 1]);
+    }
+  }
+}
+
+int vtkLRSplineField::GetMaximumDegree() const
+{
+  int m = 0;
+  for (const auto& p : this->Patches)
+  {
+    m = std::max(m, p->GetMaximumDegree());
+  }
+  return m;
+}
+
+void vtkLRSplineField::MakeFloat()
+{
+  for (auto& p : this->Patches)
+  {
+    p->MakeFloat();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineField::FindPatch(const double x[3], vtkIdType* element) const
+{
+  for (std::size_t p = 0; p < this->Patches.size(); ++p)
+  {
+    const vtkIdType e = this->Patches[p]->FindElement(x);
+    if (e >= 0)
+    {
+      if (element)
+      {
+        *element = e;
+      }
+      return static_cast<int>(p);
+    }
+  }
+  if (element)
+  {
+    *element = -1;
+  }
+  return -1;
+}
+
+int vtkLRSplineField::Evaluate(
+  const double x[3], double* value, double* gradient, vtkIdType* element) const
+{
+  for (std::size_t p = 0; p < this->Patches.size(); ++p)
+  {
+    const vtkIdType e = this->Patches[p]->Evaluate(x, value, gradient);
+    if (e >= 0)
+    {
+      if (element)
+      {
+        *element = e;
+      }
+      return static_cast<int>(p);
+    }
+  }
+  if (element)
+  {
+    *element = -1;
+  }
+  return -1;
+}
+
+int vtkLRSplineField::Evaluate(
+  const float x[3], float* value, float* gradient, vtkIdType* element) const
+{
+  const double xd[3] = { x[0], x[1], x[2] };
+  vtkIdType e;
+  const int p = this->FindPatch(xd, &e);
+  if (p >= 0)
+  {
+    this->Patches[p]->EvaluateInElement(e, x, value, gradient);
+  }
+  if (element)
+  {
+    *element = e;
+  }
+  return p;
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineField::EvaluateWithHint(
+  const double x[3], double* value, double* gradient, int& patch, vtkIdType& element) const
+{
+  if (patch >= 0 && element >= 0 && (!this->PatchesOverlap || patch == 0) &&
+    patch < this->GetNumberOfPatches() &&
+    this->Patches[patch]->EvaluateIfInElement(element, x, value, gradient))
+  {
+    return patch;
+  }
+  patch = this->Evaluate(x, value, gradient, &element);
+  return patch;
+}
+
+int vtkLRSplineField::EvaluateWithHint(
+  const float x[3], float* value, float* gradient, int& patch, vtkIdType& element) const
+{
+  const double xd[3] = { x[0], x[1], x[2] };
+  if (patch >= 0 && element >= 0 && (!this->PatchesOverlap || patch == 0) &&
+    patch < this->GetNumberOfPatches() && this->Patches[patch]->ElementContains(element, xd))
+  {
+    this->Patches[patch]->EvaluateInElement(element, x, value, gradient);
+    return patch;
+  }
+  patch = this->Evaluate(x, value, gradient, &element);
+  return patch;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkLRSplineField::EvaluatePoints(vtkIdType n,
+  const std::function<void(vtkIdType, double[3])>& point, double* values, double* gradients,
+  char* mask) const
+{
+  const int nc = this->NumberOfComponents;
+  vtkSMPThreadLocal<vtkIdType> inside(0);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      vtkIdType& count = inside.Local();
+      int patch = -1;
+      vtkIdType element = -1;
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        double x[3];
+        point(i, x);
+        double* v = values + i * nc;
+        double* g = gradients ? gradients + 3 * i * nc : nullptr;
+        const int p = this->EvaluateWithHint(x, v, g, patch, element);
+        if (p < 0)
+        {
+          std::fill(v, v + nc, 0.0);
+          if (g)
+          {
+            std::fill(g, g + 3 * nc, 0.0);
+          }
+        }
+        else
+        {
+          ++count;
+        }
+        if (mask)
+        {
+          mask[i] = p >= 0 ? 1 : 0;
+        }
+      }
+    });
+  vtkIdType total = 0;
+  for (vtkIdType c : inside)
+  {
+    total += c;
+  }
+  return total;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineField::BuildCached(std::unique_ptr<vtkLRSplineField>& field, std::string& key,
+  vtkDataObject* source, const char* arrayName, int locatorType, int resolution,
+  bool parameterSpace, std::string* error)
+{
+  std::ostringstream k;
+  k << static_cast<const void*>(source) << "/" << (source ? source->GetMTime() : 0) << "/"
+    << (arrayName ? arrayName : "") << "/" << locatorType << "/" << resolution << "/"
+    << parameterSpace;
+  if (field && key == k.str())
+  {
+    return true;
+  }
+  key.clear();
+  auto fresh = std::make_unique<vtkLRSplineField>();
+  const int blocks[3] = { resolution, resolution, resolution };
+  if (!fresh->Build(
+        source, arrayName, locatorType, resolution > 0 ? blocks : nullptr, parameterSpace, error))
+  {
+    field.reset();
+    return false;
+  }
+  field = std::move(fresh);
+  key = k.str();
+  return true;
+}

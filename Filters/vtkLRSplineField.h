@@ -1,0 +1,104 @@
+/**
+ * @class   vtkLRSplineField
+ * @brief   The LR-spline field of a reader output (one or several patches) ready for evaluation.
+ *
+ * Plain C++ (not a vtkObject). Collects the VTK_BEZIER_HEXAHEDRON grids of a
+ * vtkLRSplineReader output (a vtkUnstructuredGrid patch, or a
+ * vtkMultiBlockDataSet / any composite of them), builds one
+ * vtkLRSplineEvaluator per patch, and evaluates at physical points with the
+ * rule of vtkLRSplineProbeFilter: the first patch (in block order) that
+ * contains the point wins.
+ *
+ * The physical placement comes from the field data the reader writes
+ * ("LRPhysicalTransform": scale xyz then offset xyz; identity if absent).
+ * Patches read in geometry mode ("LRMode" = 1) can only be evaluated in
+ * parameter space (ParameterSpace = true).
+ */
+
+#ifndef vtkLRSplineField_h
+#define vtkLRSplineField_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkLRSplineEvaluator.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkDataObject;
+
+class SPLINEVIZ_EXPORT vtkLRSplineField
+{
+public:
+  /**
+   * Build from a data object. `arrayName` null or empty: the active vectors
+   * (else scalars) of the first patch; `blocks` the k-d forest resolution
+   * (null: 64^3 capped to the element count). False with a message when there
+   * is no usable patch.
+   */
+  bool Build(vtkDataObject* source, const char* arrayName, int locatorType, const int blocks[3],
+    bool parameterSpace, std::string* error);
+
+  /**
+   * Build `field` from `source` unless `key` shows it was built from the same
+   * source (pointer and modification time) with the same settings; the
+   * cache the filters keep between executions. `resolution` 0: automatic.
+   */
+  static bool BuildCached(std::unique_ptr<vtkLRSplineField>& field, std::string& key,
+    vtkDataObject* source, const char* arrayName, int locatorType, int resolution,
+    bool parameterSpace, std::string* error);
+
+  int GetNumberOfPatches() const { return static_cast<int>(this->Patches.size()); }
+  const vtkLRSplineEvaluator& GetPatch(int i) const { return *this->Patches[i]; }
+  int GetNumberOfComponents() const { return this->NumberOfComponents; }
+  const std::string& GetArrayName() const { return this->ArrayName; }
+  vtkIdType GetNumberOfElements() const;
+  /// Union of the patches' physical bounds (VTK order).
+  void GetBounds(double bounds[6]) const;
+  /// Largest degree over all patches.
+  int GetMaximumDegree() const;
+
+  /// Prepare single-precision evaluation.
+  void MakeFloat();
+
+  /**
+   * Evaluate at physical x: returns the patch index or -1. `element`
+   * (may be null) receives the element within that patch.
+   */
+  int Evaluate(
+    const double x[3], double* value, double* gradient, vtkIdType* element = nullptr) const;
+  int Evaluate(const float x[3], float* value, float* gradient, vtkIdType* element = nullptr) const;
+
+  /**
+   * Like Evaluate, but tries the element of the previous call first (patch
+   * and element are in/out; -1 for none). Equivalent to Evaluate when the
+   * patches do not overlap; with overlapping patches it falls back to the
+   * full search.
+   */
+  int EvaluateWithHint(
+    const double x[3], double* value, double* gradient, int& patch, vtkIdType& element) const;
+  int EvaluateWithHint(
+    const float x[3], float* value, float* gradient, int& patch, vtkIdType& element) const;
+
+  /**
+   * Evaluate at n points in parallel (vtkSMPTools); point(i, x) writes the
+   * i-th point. values: n * NumberOfComponents; gradients (may be null):
+   * n * 3 * NumberOfComponents; mask (may be null): 1 inside, 0 outside
+   * (outside points get zeros). Returns the number of points inside.
+   */
+  vtkIdType EvaluatePoints(vtkIdType n, const std::function<void(vtkIdType, double[3])>& point,
+    double* values, double* gradients, char* mask) const;
+
+  /// Patch and element containing x (-1 when none).
+  int FindPatch(const double x[3], vtkIdType* element = nullptr) const;
+
+private:
+  std::vector<std::unique_ptr<vtkLRSplineEvaluator>> Patches;
+  int NumberOfComponents = 0;
+  std::string ArrayName;
+  bool PatchesOverlap = false;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkLRSplineField.h

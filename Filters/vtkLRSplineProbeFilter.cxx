@@ -1,0 +1,179 @@
+#include "vtkLRSplineProbeFilter.h"
+
+#include "vtkLRSplineField.h"
+
+#include "vtkCellData.h"
+#include "vtkCharArray.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+vtkStandardNewMacro(vtkLRSplineProbeFilter);
+
+//------------------------------------------------------------------------------
+vtkLRSplineProbeFilter::vtkLRSplineProbeFilter()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetGradientArrayName("Gradient");
+  this->SetValidPointMaskArrayName("vtkValidPointMask");
+}
+
+vtkLRSplineProbeFilter::~vtkLRSplineProbeFilter()
+{
+  this->SetArrayName(nullptr);
+  this->SetGradientArrayName(nullptr);
+  this->SetValidPointMaskArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineProbeFilter::SetSourceConnection(vtkAlgorithmOutput* algOutput)
+{
+  this->SetInputConnection(1, algOutput);
+}
+
+void vtkLRSplineProbeFilter::SetSourceData(vtkDataObject* input)
+{
+  this->SetInputData(1, input);
+}
+
+vtkDataObject* vtkLRSplineProbeFilter::GetSource()
+{
+  if (this->GetNumberOfInputConnections(1) < 1)
+  {
+    return nullptr;
+  }
+  return this->GetExecutive()->GetInputData(1, 0);
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineProbeFilter::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+    return 1;
+  }
+  return this->Superclass::FillInputPortInformation(port, info);
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineProbeFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (inInfo)
+  {
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()));
+  }
+  vtkInformation* sourceInfo = inputVector[1]->GetInformationObject(0);
+  if (sourceInfo)
+  {
+    // The whole spline everywhere.
+    sourceInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    sourceInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    sourceInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineProbeFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataSet* input = vtkDataSet::GetData(inputVector[0], 0);
+  vtkDataObject* source = vtkDataObject::GetData(inputVector[1], 0);
+  vtkDataSet* output = vtkDataSet::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    vtkErrorMacro(<< "no input data set");
+    return 0;
+  }
+  if (!source)
+  {
+    vtkErrorMacro(<< "no spline source: connect the output of vtkLRSplineReader to port 1");
+    return 0;
+  }
+  std::string error;
+  if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, source, this->ArrayName,
+        this->LocatorType, this->ForestResolution, this->UseParameterCoordinates != 0, &error))
+  {
+    vtkErrorMacro(<< "cannot evaluate the spline source: " << error);
+    return 0;
+  }
+  output->CopyStructure(input);
+  output->GetPointData()->PassData(input->GetPointData());
+  output->GetCellData()->PassData(input->GetCellData());
+  output->GetFieldData()->PassData(input->GetFieldData());
+
+  const vtkIdType n = input->GetNumberOfPoints();
+  const int nc = this->Field->GetNumberOfComponents();
+  vtkNew<vtkDoubleArray> values;
+  values->SetName(this->Field->GetArrayName().c_str());
+  values->SetNumberOfComponents(nc);
+  values->SetNumberOfTuples(n);
+  vtkNew<vtkDoubleArray> gradients;
+  gradients->SetName(
+    this->GradientArrayName && *this->GradientArrayName ? this->GradientArrayName : "Gradient");
+  if (this->ComputeGradient)
+  {
+    gradients->SetNumberOfComponents(3 * nc);
+    gradients->SetNumberOfTuples(n);
+  }
+  vtkNew<vtkCharArray> mask;
+  mask->SetName(this->ValidPointMaskArrayName && *this->ValidPointMaskArrayName
+      ? this->ValidPointMaskArrayName
+      : "vtkValidPointMask");
+  mask->SetNumberOfTuples(n);
+  if (n > 0)
+  {
+    input->GetPoint(0); // build any internal point cache before the threads start
+    this->Field->EvaluatePoints(
+      n, [input](vtkIdType i, double x[3]) { input->GetPoint(i, x); }, values->GetPointer(0),
+      this->ComputeGradient ? gradients->GetPointer(0) : nullptr, mask->GetPointer(0));
+  }
+  vtkPointData* pd = output->GetPointData();
+  pd->AddArray(values);
+  if (nc == 3)
+  {
+    pd->SetActiveVectors(values->GetName());
+  }
+  else if (nc == 1)
+  {
+    pd->SetActiveScalars(values->GetName());
+  }
+  if (this->ComputeGradient)
+  {
+    pd->AddArray(gradients);
+  }
+  pd->AddArray(mask);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineProbeFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(active)") << "\n";
+  os << indent << "ComputeGradient: " << this->ComputeGradient << "\n";
+  os << indent
+     << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)")
+     << "\n";
+  os << indent << "ValidPointMaskArrayName: "
+     << (this->ValidPointMaskArrayName ? this->ValidPointMaskArrayName : "(none)") << "\n";
+  os << indent << "UseParameterCoordinates: " << this->UseParameterCoordinates << "\n";
+  os << indent << "LocatorType: " << this->LocatorType << "\n";
+  os << indent << "ForestResolution: " << this->ForestResolution << "\n";
+}

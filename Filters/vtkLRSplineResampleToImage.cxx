@@ -1,0 +1,215 @@
+#include "vtkLRSplineResampleToImage.h"
+
+#include "vtkLRSplineField.h"
+
+#include "vtkCharArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkLRSplineResampleToImage);
+
+//------------------------------------------------------------------------------
+vtkLRSplineResampleToImage::vtkLRSplineResampleToImage() = default;
+
+vtkLRSplineResampleToImage::~vtkLRSplineResampleToImage()
+{
+  this->SetArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineResampleToImage::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineResampleToImage::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  int extent[6];
+  for (int d = 0; d < 3; ++d)
+  {
+    extent[2 * d] = 0;
+    extent[2 * d + 1] = std::max(1, this->SamplingDimensions[d]) - 1;
+  }
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  if (!this->UseInputBounds)
+  {
+    double origin[3], spacing[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      origin[d] = this->SamplingBounds[2 * d];
+      spacing[d] = extent[2 * d + 1] > 0
+        ? (this->SamplingBounds[2 * d + 1] - this->SamplingBounds[2 * d]) / extent[2 * d + 1]
+        : 1.0;
+    }
+    outInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+    outInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  }
+  outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineResampleToImage::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  if (inInfo)
+  {
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineResampleToImage::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataObject* source = vtkDataObject::GetData(inputVector[0], 0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkImageData* output = vtkImageData::GetData(outInfo);
+  if (!source)
+  {
+    vtkErrorMacro(<< "no spline input: connect the output of vtkLRSplineReader");
+    return 0;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    if (this->SamplingDimensions[d] < 1)
+    {
+      vtkErrorMacro(<< "SamplingDimensions must be at least 1 in every direction");
+      return 0;
+    }
+  }
+  std::string error;
+  if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, source, this->ArrayName,
+        this->LocatorType, this->ForestResolution, false, &error))
+  {
+    vtkErrorMacro(<< "cannot evaluate the spline: " << error);
+    return 0;
+  }
+  double bounds[6];
+  if (this->UseInputBounds)
+  {
+    this->Field->GetBounds(bounds);
+  }
+  else
+  {
+    std::copy(this->SamplingBounds, this->SamplingBounds + 6, bounds);
+    for (int d = 0; d < 3; ++d)
+    {
+      if (!(bounds[2 * d + 1] >= bounds[2 * d]))
+      {
+        vtkErrorMacro(<< "SamplingBounds must have max >= min in every direction");
+        return 0;
+      }
+    }
+  }
+  const int* dims = this->SamplingDimensions;
+  double origin[3], spacing[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    origin[d] = bounds[2 * d];
+    spacing[d] = dims[d] > 1 ? (bounds[2 * d + 1] - bounds[2 * d]) / (dims[d] - 1) : 1.0;
+    if (!(spacing[d] > 0))
+    {
+      spacing[d] = 1.0;
+    }
+  }
+  int extent[6];
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+  }
+  else
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      extent[2 * d] = 0;
+      extent[2 * d + 1] = dims[d] - 1;
+    }
+  }
+  output->SetExtent(extent);
+  output->SetOrigin(origin);
+  output->SetSpacing(spacing);
+  const vtkIdType n = output->GetNumberOfPoints();
+  const int nc = this->Field->GetNumberOfComponents();
+  vtkNew<vtkDoubleArray> values;
+  values->SetName(this->Field->GetArrayName().c_str());
+  values->SetNumberOfComponents(nc);
+  values->SetNumberOfTuples(n);
+  vtkNew<vtkDoubleArray> gradients;
+  gradients->SetName("Gradient");
+  if (this->ComputeGradient)
+  {
+    gradients->SetNumberOfComponents(3 * nc);
+    gradients->SetNumberOfTuples(n);
+  }
+  vtkNew<vtkCharArray> mask;
+  mask->SetName("vtkValidPointMask");
+  mask->SetNumberOfTuples(n);
+  const int nx = extent[1] - extent[0] + 1, ny = extent[3] - extent[2] + 1;
+  auto coordinate = [&](int d, int i)
+  {
+    // the last sample sits exactly on the upper bound
+    return (dims[d] > 1 && i == dims[d] - 1) ? bounds[2 * d + 1] : origin[d] + i * spacing[d];
+  };
+  this->Field->EvaluatePoints(
+    n,
+    [&](vtkIdType id, double x[3])
+    {
+      const int i = extent[0] + static_cast<int>(id % nx);
+      const int j = extent[2] + static_cast<int>((id / nx) % ny);
+      const int k = extent[4] + static_cast<int>(id / (static_cast<vtkIdType>(nx) * ny));
+      x[0] = coordinate(0, i);
+      x[1] = coordinate(1, j);
+      x[2] = coordinate(2, k);
+    },
+    values->GetPointer(0), this->ComputeGradient ? gradients->GetPointer(0) : nullptr,
+    mask->GetPointer(0));
+  vtkPointData* pd = output->GetPointData();
+  pd->AddArray(values);
+  if (nc == 3)
+  {
+    pd->SetActiveVectors(values->GetName());
+  }
+  else if (nc == 1)
+  {
+    pd->SetActiveScalars(values->GetName());
+  }
+  if (this->ComputeGradient)
+  {
+    pd->AddArray(gradients);
+  }
+  pd->AddArray(mask);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineResampleToImage::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SamplingDimensions: " << this->SamplingDimensions[0] << " "
+     << this->SamplingDimensions[1] << " " << this->SamplingDimensions[2] << "\n";
+  os << indent << "UseInputBounds: " << this->UseInputBounds << "\n";
+  os << indent << "SamplingBounds: " << this->SamplingBounds[0] << " " << this->SamplingBounds[1]
+     << " " << this->SamplingBounds[2] << " " << this->SamplingBounds[3] << " "
+     << this->SamplingBounds[4] << " " << this->SamplingBounds[5] << "\n";
+  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(active)") << "\n";
+  os << indent << "ComputeGradient: " << this->ComputeGradient << "\n";
+  os << indent << "LocatorType: " << this->LocatorType << "\n";
+  os << indent << "ForestResolution: " << this->ForestResolution << "\n";
+}

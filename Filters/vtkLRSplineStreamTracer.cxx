@@ -1,0 +1,1047 @@
+#include "vtkLRSplineStreamTracer.h"
+
+#include "vtkLRSplineField.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataArray.h"
+#include "vtkDataSet.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <type_traits>
+#include <vector>
+
+vtkStandardNewMacro(vtkLRSplineStreamTracer);
+
+namespace
+{
+//------------------------------------------------------------------------------
+// Butcher tableaux (explicit). b: the propagated solution; e: b - b_hat, the
+// error estimate's weights (embedded pairs only).
+struct Tableau
+{
+  int Stages;
+  double A[6][6];
+  double B[6];
+  double E[6];
+  int Order;      // of the propagated solution
+  int ErrorOrder; // order of the lower solution (controller exponent 1/(q+1))
+  bool Embedded;
+};
+
+Tableau MakeTableau(int type)
+{
+  Tableau t{};
+  switch (type)
+  {
+    case vtkLRSplineStreamTracer::EULER:
+      t.Stages = 1;
+      t.B[0] = 1.0;
+      t.Order = 1;
+      break;
+    case vtkLRSplineStreamTracer::MIDPOINT:
+      t.Stages = 2;
+      t.A[1][0] = 0.5;
+      t.B[1] = 1.0;
+      t.Order = 2;
+      break;
+    case vtkLRSplineStreamTracer::KUTTA3:
+      t.Stages = 3;
+      t.A[1][0] = 0.5;
+      t.A[2][0] = -1.0;
+      t.A[2][1] = 2.0;
+      t.B[0] = 1.0 / 6.0;
+      t.B[1] = 2.0 / 3.0;
+      t.B[2] = 1.0 / 6.0;
+      t.Order = 3;
+      break;
+    case vtkLRSplineStreamTracer::RUNGE_KUTTA4:
+      t.Stages = 4;
+      t.A[1][0] = 0.5;
+      t.A[2][1] = 0.5;
+      t.A[3][2] = 1.0;
+      t.B[0] = t.B[3] = 1.0 / 6.0;
+      t.B[1] = t.B[2] = 1.0 / 3.0;
+      t.Order = 4;
+      break;
+    case vtkLRSplineStreamTracer::RUNGE_KUTTA4_38:
+      t.Stages = 4;
+      t.A[1][0] = 1.0 / 3.0;
+      t.A[2][0] = -1.0 / 3.0;
+      t.A[2][1] = 1.0;
+      t.A[3][0] = 1.0;
+      t.A[3][1] = -1.0;
+      t.A[3][2] = 1.0;
+      t.B[0] = t.B[3] = 1.0 / 8.0;
+      t.B[1] = t.B[2] = 3.0 / 8.0;
+      t.Order = 4;
+      break;
+    case vtkLRSplineStreamTracer::HEUN_EULER:
+      t.Stages = 2;
+      t.A[1][0] = 1.0;
+      t.B[0] = t.B[1] = 0.5;
+      // b_hat = (1, 0)
+      t.E[0] = 0.5 - 1.0;
+      t.E[1] = 0.5;
+      t.Order = 2;
+      t.ErrorOrder = 1;
+      t.Embedded = true;
+      break;
+    case vtkLRSplineStreamTracer::BOGACKI_SHAMPINE:
+    {
+      t.Stages = 4;
+      t.A[1][0] = 0.5;
+      t.A[2][1] = 0.75;
+      t.A[3][0] = 2.0 / 9.0;
+      t.A[3][1] = 1.0 / 3.0;
+      t.A[3][2] = 4.0 / 9.0;
+      const double b3[4] = { 2.0 / 9.0, 1.0 / 3.0, 4.0 / 9.0, 0.0 };
+      const double b2[4] = { 7.0 / 24.0, 1.0 / 4.0, 1.0 / 3.0, 1.0 / 8.0 };
+      for (int i = 0; i < 4; ++i)
+      {
+        t.B[i] = b3[i];
+        t.E[i] = b3[i] - b2[i];
+      }
+      t.Order = 3;
+      t.ErrorOrder = 2;
+      t.Embedded = true;
+      break;
+    }
+    case vtkLRSplineStreamTracer::RKF5:
+    case vtkLRSplineStreamTracer::RKF45:
+    default:
+    {
+      t.Stages = 6;
+      t.A[1][0] = 1.0 / 4.0;
+      t.A[2][0] = 3.0 / 32.0;
+      t.A[2][1] = 9.0 / 32.0;
+      t.A[3][0] = 1932.0 / 2197.0;
+      t.A[3][1] = -7200.0 / 2197.0;
+      t.A[3][2] = 7296.0 / 2197.0;
+      t.A[4][0] = 439.0 / 216.0;
+      t.A[4][1] = -8.0;
+      t.A[4][2] = 3680.0 / 513.0;
+      t.A[4][3] = -845.0 / 4104.0;
+      t.A[5][0] = -8.0 / 27.0;
+      t.A[5][1] = 2.0;
+      t.A[5][2] = -3544.0 / 2565.0;
+      t.A[5][3] = 1859.0 / 4104.0;
+      t.A[5][4] = -11.0 / 40.0;
+      const double b5[6] = { 16.0 / 135.0, 0.0, 6656.0 / 12825.0, 28561.0 / 56430.0, -9.0 / 50.0,
+        2.0 / 55.0 };
+      const double b4[6] = { 25.0 / 216.0, 0.0, 1408.0 / 2565.0, 2197.0 / 4104.0, -1.0 / 5.0, 0.0 };
+      for (int i = 0; i < 6; ++i)
+      {
+        t.B[i] = b5[i];
+        t.E[i] = b5[i] - b4[i];
+      }
+      t.Order = 5;
+      t.ErrorOrder = 4;
+      t.Embedded = (type == vtkLRSplineStreamTracer::RKF45);
+      break;
+    }
+  }
+  return t;
+}
+
+struct Params
+{
+  Tableau T;
+  int StepMode;
+  double Step, MinStep, MaxStep, Tolerance;
+  vtkIdType MaxSteps;
+  double MaxLength, MaxTime, TerminalSpeed;
+  bool Vorticity;
+};
+
+// One traced line.
+struct Line
+{
+  std::vector<double> Points, Velocity, Vorticity, Speed, Time;
+  int Reason = -1;
+};
+
+enum StepStatus
+{
+  STEP_OK,
+  STEP_OUTSIDE,
+  STEP_NAN
+};
+
+//------------------------------------------------------------------------------
+// The integrator for a state precision S and an evaluation precision E.
+template <typename S, typename E>
+class Integrator
+{
+public:
+  Integrator(const vtkLRSplineField& field, const Params& params)
+    : Field(field)
+    , P(params)
+  {
+  }
+
+  vtkIdType Evaluations = 0;
+
+  // v = f(x); false outside (or non-finite: NaN set).
+  bool Eval(const S x[3], S v[3], bool& nan)
+  {
+    ++this->Evaluations;
+    nan = false;
+    E xe[3] = { static_cast<E>(x[0]), static_cast<E>(x[1]), static_cast<E>(x[2]) };
+    E ve[3];
+    if (this->Field.EvaluateWithHint(xe, ve, nullptr, this->Patch, this->Element) < 0)
+    {
+      if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
+      {
+        nan = true;
+      }
+      return false;
+    }
+    for (int d = 0; d < 3; ++d)
+    {
+      v[d] = static_cast<S>(ve[d]);
+      if (!std::isfinite(v[d]))
+      {
+        nan = true;
+        return false;
+      }
+    }
+    return true;
+  }
+
+  // One step of size h (signed) from x with k1 = f(x).
+  StepStatus Step(const S x[3], const S k1[3], S h, S out[3], S& error)
+  {
+    const Tableau& T = this->P.T;
+    S k[6][3];
+    for (int d = 0; d < 3; ++d)
+    {
+      k[0][d] = k1[d];
+    }
+    for (int s = 1; s < T.Stages; ++s)
+    {
+      S xs[3];
+      for (int d = 0; d < 3; ++d)
+      {
+        S acc = S(0);
+        for (int j = 0; j < s; ++j)
+        {
+          acc += static_cast<S>(T.A[s][j]) * k[j][d];
+        }
+        xs[d] = x[d] + h * acc;
+      }
+      bool nan;
+      if (!this->Eval(xs, k[s], nan))
+      {
+        return nan ? STEP_NAN : STEP_OUTSIDE;
+      }
+    }
+    S err2 = S(0);
+    for (int d = 0; d < 3; ++d)
+    {
+      S acc = S(0), e = S(0);
+      for (int j = 0; j < T.Stages; ++j)
+      {
+        acc += static_cast<S>(T.B[j]) * k[j][d];
+        e += static_cast<S>(T.E[j]) * k[j][d];
+      }
+      out[d] = x[d] + h * acc;
+      err2 += (h * e) * (h * e);
+    }
+    error = std::sqrt(err2);
+    return STEP_OK;
+  }
+
+  void Append(Line& line, const S x[3], const S v[3], double t)
+  {
+    double speed = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+      line.Points.push_back(static_cast<double>(x[d]));
+      line.Velocity.push_back(static_cast<double>(v[d]));
+      speed += static_cast<double>(v[d]) * static_cast<double>(v[d]);
+    }
+    line.Speed.push_back(std::sqrt(speed));
+    line.Time.push_back(t);
+    if (this->P.Vorticity)
+    {
+      const double xd[3] = { static_cast<double>(x[0]), static_cast<double>(x[1]),
+        static_cast<double>(x[2]) };
+      double vd[3], J[9];
+      ++this->Evaluations;
+      if (this->Field.Evaluate(xd, vd, J) >= 0)
+      {
+        line.Vorticity.insert(line.Vorticity.end(), { J[7] - J[5], J[2] - J[6], J[3] - J[1] });
+      }
+      else
+      {
+        line.Vorticity.insert(line.Vorticity.end(), { 0.0, 0.0, 0.0 });
+      }
+    }
+  }
+
+  // The line leaves the domain during the step of size h from (x, v): find
+  // by bisection the largest step that stays inside, then go on along the
+  // velocity to the boundary of the current patch's box and end there.
+  void Exit(Line& line, const S x[3], const S v[3], S h, double t, S sign)
+  {
+    S lo = S(0), hi = h;
+    S xlo[3] = { x[0], x[1], x[2] }, vlo[3] = { v[0], v[1], v[2] };
+    for (int it = 0; it < 48 && hi - lo > std::abs(h) * S(1e-12); ++it)
+    {
+      const S mid = S(0.5) * (lo + hi);
+      if (!(mid > lo && mid < hi))
+      {
+        break;
+      }
+      S xm[3], vm[3], err;
+      bool nan = false;
+      if (this->Step(x, v, sign * mid, xm, err) == STEP_OK && this->Eval(xm, vm, nan))
+      {
+        lo = mid;
+        std::copy(xm, xm + 3, xlo);
+        std::copy(vm, vm + 3, vlo);
+      }
+      else
+      {
+        hi = mid;
+      }
+    }
+    // The box of the patch containing xlo.
+    const double xd[3] = { static_cast<double>(xlo[0]), static_cast<double>(xlo[1]),
+      static_cast<double>(xlo[2]) };
+    const int patch = this->Field.FindPatch(xd);
+    double bounds[6];
+    if (patch >= 0)
+    {
+      this->Field.GetPatch(patch).GetBounds(bounds);
+    }
+    else
+    {
+      this->Field.GetBounds(bounds);
+    }
+    double tExit = VTK_DOUBLE_MAX;
+    int exitAxis = -1;
+    double exitValue = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+      const double w = static_cast<double>(sign) * static_cast<double>(vlo[d]);
+      if (w > 0)
+      {
+        const double te = (bounds[2 * d + 1] - xd[d]) / w;
+        if (te < tExit)
+        {
+          tExit = te;
+          exitAxis = d;
+          exitValue = bounds[2 * d + 1];
+        }
+      }
+      else if (w < 0)
+      {
+        const double te = (bounds[2 * d] - xd[d]) / w;
+        if (te < tExit)
+        {
+          tExit = te;
+          exitAxis = d;
+          exitValue = bounds[2 * d];
+        }
+      }
+    }
+    line.Reason = vtkLRSplineStreamTracer::OUT_OF_DOMAIN;
+    if (exitAxis < 0)
+    {
+      return;
+    }
+    tExit = std::max(0.0, tExit);
+    S xe[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      double c = xd[d] + static_cast<double>(sign) * static_cast<double>(vlo[d]) * tExit;
+      c = std::min(bounds[2 * d + 1], std::max(bounds[2 * d], c));
+      xe[d] = static_cast<S>(c);
+    }
+    xe[exitAxis] = static_cast<S>(exitValue);
+    S ve[3];
+    bool nan;
+    if (!this->Eval(xe, ve, nan))
+    {
+      std::copy(vlo, vlo + 3, ve);
+    }
+    const double te = t + static_cast<double>(sign) * (static_cast<double>(lo) + tExit);
+    // Skip a boundary point that coincides with the last point.
+    const double* last = line.Points.data() + line.Points.size() - 3;
+    if (last[0] == static_cast<double>(xe[0]) && last[1] == static_cast<double>(xe[1]) &&
+      last[2] == static_cast<double>(xe[2]))
+    {
+      return;
+    }
+    this->Append(line, xe, ve, te);
+  }
+
+  void Trace(const double seed[3], S sign, Line& line)
+  {
+    this->Patch = -1;
+    this->Element = -1;
+    S x[3] = { static_cast<S>(seed[0]), static_cast<S>(seed[1]), static_cast<S>(seed[2]) };
+    S v[3];
+    bool nan = false;
+    if (!(std::isfinite(seed[0]) && std::isfinite(seed[1]) && std::isfinite(seed[2])))
+    {
+      line.Reason = vtkLRSplineStreamTracer::UNEXPECTED_VALUE;
+      return;
+    }
+    if (!this->Eval(x, v, nan))
+    {
+      line.Reason =
+        nan ? vtkLRSplineStreamTracer::UNEXPECTED_VALUE : vtkLRSplineStreamTracer::OUT_OF_DOMAIN;
+      return;
+    }
+    this->PatchOfX = this->Patch;
+    this->ElementOfX = this->Element;
+    double t = 0.0;
+    double length = 0.0;
+    this->Append(line, x, v, t);
+    const Params& P = this->P;
+    const int q = P.T.ErrorOrder;
+    S hAdaptive = static_cast<S>(std::min(P.MaxStep, std::max(P.MinStep, P.Step)));
+    for (vtkIdType step = 0;; ++step)
+    {
+      const double speed = std::sqrt(static_cast<double>(v[0]) * v[0] +
+        static_cast<double>(v[1]) * v[1] + static_cast<double>(v[2]) * v[2]);
+      if (!(speed > P.TerminalSpeed))
+      {
+        line.Reason = vtkLRSplineStreamTracer::STAGNATION;
+        return;
+      }
+      if (step >= P.MaxSteps)
+      {
+        line.Reason = vtkLRSplineStreamTracer::OUT_OF_STEPS;
+        return;
+      }
+      double remaining = VTK_DOUBLE_MAX;
+      if (P.MaxTime > 0)
+      {
+        remaining = P.MaxTime - std::abs(t);
+        if (remaining <= 1e-12 * P.MaxTime)
+        {
+          line.Reason = vtkLRSplineStreamTracer::OUT_OF_TIME;
+          return;
+        }
+      }
+      // Step size (positive, time units).
+      double h = P.Step;
+      switch (P.StepMode)
+      {
+        case vtkLRSplineStreamTracer::FIXED_LENGTH:
+          h = P.Step / speed;
+          break;
+        case vtkLRSplineStreamTracer::LR_HEURISTIC:
+        {
+          const vtkLRSplineEvaluator& patch = this->Field.GetPatch(this->PatchOfX);
+          h = P.Step * patch.GetElementMinimumSide(this->ElementOfX) /
+            std::ldexp(1.0, patch.GetMaximumDegree()) / speed;
+          break;
+        }
+        case vtkLRSplineStreamTracer::ADAPTIVE:
+          h = static_cast<double>(hAdaptive);
+          break;
+        default:
+          break;
+      }
+      bool lastByTime = false;
+      if (h >= remaining)
+      {
+        h = remaining;
+        lastByTime = true;
+      }
+      S xn[3], err = S(0);
+      S hs = static_cast<S>(h);
+      StepStatus status = STEP_OK;
+      for (int attempt = 0;; ++attempt)
+      {
+        status = this->Step(x, v, sign * hs, xn, err);
+        if (status != STEP_OK || P.StepMode != vtkLRSplineStreamTracer::ADAPTIVE)
+        {
+          break;
+        }
+        const double e = static_cast<double>(err);
+        const double factor = e > 0 ? 0.9 * std::pow(P.Tolerance / e, 1.0 / (q + 1)) : 5.0;
+        if (e <= P.Tolerance || static_cast<double>(hs) <= P.MinStep || attempt >= 60)
+        {
+          double next = static_cast<double>(hs) * std::min(5.0, std::max(0.2, factor));
+          hAdaptive = static_cast<S>(std::min(P.MaxStep, std::max(P.MinStep, next)));
+          break;
+        }
+        hs = static_cast<S>(std::max(P.MinStep, static_cast<double>(hs) * std::max(0.2, factor)));
+        lastByTime = false;
+      }
+      if (status == STEP_NAN)
+      {
+        line.Reason = vtkLRSplineStreamTracer::UNEXPECTED_VALUE;
+        return;
+      }
+      S vn[3];
+      bool nanEnd = false;
+      if (status == STEP_OUTSIDE || !this->Eval(xn, vn, nanEnd))
+      {
+        if (nanEnd)
+        {
+          line.Reason = vtkLRSplineStreamTracer::UNEXPECTED_VALUE;
+          return;
+        }
+        this->Exit(line, x, v, hs, t, sign);
+        return;
+      }
+      double dl = 0.0;
+      for (int d = 0; d < 3; ++d)
+      {
+        const double dd = static_cast<double>(xn[d]) - static_cast<double>(x[d]);
+        dl += dd * dd;
+      }
+      dl = std::sqrt(dl);
+      bool lastByLength = false;
+      if (P.MaxLength > 0 && length + dl > P.MaxLength)
+      {
+        // shorten the step to end at the maximal length
+        hs = static_cast<S>(static_cast<double>(hs) * (P.MaxLength - length) / dl);
+        if (this->Step(x, v, sign * hs, xn, err) != STEP_OK || !this->Eval(xn, vn, nanEnd))
+        {
+          this->Exit(line, x, v, hs, t, sign);
+          return;
+        }
+        dl = P.MaxLength - length;
+        lastByLength = true;
+        lastByTime = false;
+      }
+      this->PatchOfX = this->Patch;
+      this->ElementOfX = this->Element;
+      std::copy(xn, xn + 3, x);
+      std::copy(vn, vn + 3, v);
+      t += static_cast<double>(sign) * static_cast<double>(hs);
+      length += dl;
+      this->Append(line, x, v, t);
+      if (lastByLength)
+      {
+        line.Reason = vtkLRSplineStreamTracer::OUT_OF_LENGTH;
+        return;
+      }
+      if (lastByTime)
+      {
+        line.Reason = vtkLRSplineStreamTracer::OUT_OF_TIME;
+        return;
+      }
+    }
+  }
+
+private:
+  const vtkLRSplineField& Field;
+  const Params& P;
+  int Patch = -1;
+  vtkIdType Element = -1;
+
+  // patch and element of the current point (for the LR heuristic)
+  int PatchOfX = 0;
+  vtkIdType ElementOfX = 0;
+};
+
+// Trace all seeds with one precision combination.
+template <typename S, typename E>
+vtkIdType TraceAll(const vtkLRSplineField& field, const Params& P, const std::vector<double>& seeds,
+  int direction, std::vector<Line>& lines)
+{
+  const vtkIdType n = static_cast<vtkIdType>(seeds.size() / 3);
+  vtkSMPThreadLocal<vtkIdType> evaluations(0);
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      Integrator<S, E> integrator(field, P);
+      for (vtkIdType s = begin; s < end; ++s)
+      {
+        for (int dir = 0; dir < 2; ++dir)
+        {
+          if ((dir == 0 && direction == vtkLRSplineStreamTracer::BACKWARD) ||
+            (dir == 1 && direction == vtkLRSplineStreamTracer::FORWARD))
+          {
+            continue;
+          }
+          Line& line = lines[2 * s + dir];
+          integrator.Trace(seeds.data() + 3 * s, dir == 0 ? S(1) : S(-1), line);
+        }
+      }
+      evaluations.Local() += integrator.Evaluations;
+    });
+  vtkIdType total = 0;
+  for (vtkIdType e : evaluations)
+  {
+    total += e;
+  }
+  return total;
+}
+
+void CollectSeeds(vtkDataObject* obj, std::vector<double>& seeds)
+{
+  if (auto* ds = vtkDataSet::SafeDownCast(obj))
+  {
+    const vtkIdType n = ds->GetNumberOfPoints();
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double x[3];
+      ds->GetPoint(i, x);
+      seeds.insert(seeds.end(), x, x + 3);
+    }
+    return;
+  }
+  if (auto* cds = vtkCompositeDataSet::SafeDownCast(obj))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(cds->NewIterator());
+    it->SkipEmptyNodesOn();
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      CollectSeeds(it->GetCurrentDataObject(), seeds);
+    }
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+vtkLRSplineStreamTracer::vtkLRSplineStreamTracer()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+vtkLRSplineStreamTracer::~vtkLRSplineStreamTracer()
+{
+  this->SetArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineStreamTracer::GetIntegratorOrder(int integrator)
+{
+  return MakeTableau(integrator).Order;
+}
+
+bool vtkLRSplineStreamTracer::IsEmbedded(int integrator)
+{
+  return MakeTableau(integrator).Embedded;
+}
+
+const char* vtkLRSplineStreamTracer::GetIntegratorName(int integrator)
+{
+  switch (integrator)
+  {
+    case EULER:
+      return "RK1 (explicit Euler)";
+    case MIDPOINT:
+      return "RK2 (midpoint)";
+    case KUTTA3:
+      return "RK3 (Kutta)";
+    case RUNGE_KUTTA4:
+      return "RK4 (classic)";
+    case RUNGE_KUTTA4_38:
+      return "RK4 3/8 rule";
+    case RKF5:
+      return "RKF5 (Fehlberg, 5th order)";
+    case HEUN_EULER:
+      return "Heun-Euler 2(1)";
+    case BOGACKI_SHAMPINE:
+      return "Bogacki-Shampine 3(2)";
+    case RKF45:
+      return "RKF45 (Fehlberg 4(5))";
+    default:
+      return "unknown";
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineStreamTracer::SetSourceConnection(vtkAlgorithmOutput* algOutput)
+{
+  this->SetInputConnection(1, algOutput);
+}
+
+void vtkLRSplineStreamTracer::SetSourceData(vtkDataObject* source)
+{
+  this->SetInputData(1, source);
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineStreamTracer::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineStreamTracer::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkInformation* splineInfo = inputVector[0]->GetInformationObject(0);
+  if (splineInfo)
+  {
+    // The whole spline everywhere.
+    splineInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+    splineInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+    splineInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
+  vtkInformation* seedInfo = inputVector[1]->GetInformationObject(0);
+  if (seedInfo)
+  {
+    seedInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
+    seedInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
+      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+    seedInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineStreamTracer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkDataObject* spline = vtkDataObject::GetData(inputVector[0], 0);
+  vtkDataObject* source = inputVector[1]->GetNumberOfInformationObjects() > 0
+    ? vtkDataObject::GetData(inputVector[1], 0)
+    : nullptr;
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  this->NumberOfEvaluations = 0;
+  if (!spline)
+  {
+    vtkErrorMacro(<< "no vector field: connect the output of vtkLRSplineReader to port 0");
+    return 0;
+  }
+  if (!source)
+  {
+    vtkErrorMacro(<< "no seeds: connect a data set whose points are the seeds to the source "
+                     "port (port 1)");
+    return 0;
+  }
+  // Settings.
+  if (!(this->IntegrationStep > 0) || !std::isfinite(this->IntegrationStep))
+  {
+    vtkErrorMacro(<< "IntegrationStep must be a positive number");
+    return 0;
+  }
+  if (this->StepMode == ADAPTIVE && !IsEmbedded(this->IntegratorType))
+  {
+    vtkErrorMacro(<< "the ADAPTIVE step mode needs an embedded integrator (Heun-Euler, "
+                     "Bogacki-Shampine or RKF45), not "
+                  << GetIntegratorName(this->IntegratorType));
+    return 0;
+  }
+  if (this->StepMode == ADAPTIVE &&
+    (!(this->MaximumError > 0) || !(this->MinimumIntegrationStep > 0) ||
+      !(this->MaximumIntegrationStep >= this->MinimumIntegrationStep)))
+  {
+    vtkErrorMacro(<< "the ADAPTIVE step mode needs MaximumError > 0 and 0 < "
+                     "MinimumIntegrationStep <= MaximumIntegrationStep");
+    return 0;
+  }
+  if (this->MaximumNumberOfSteps < 0)
+  {
+    vtkErrorMacro(<< "MaximumNumberOfSteps must not be negative");
+    return 0;
+  }
+  std::string error;
+  if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, spline, this->ArrayName,
+        this->LocatorType, this->ForestResolution, false, &error))
+  {
+    vtkErrorMacro(<< "cannot evaluate the vector field: " << error);
+    return 0;
+  }
+  if (this->Field->GetNumberOfComponents() != 3)
+  {
+    vtkErrorMacro(<< "the field \"" << this->Field->GetArrayName() << "\" has "
+                  << this->Field->GetNumberOfComponents()
+                  << " components; streamlines need a 3-component vector field");
+    return 0;
+  }
+  if (this->Precision != DOUBLE_PRECISION)
+  {
+    this->Field->MakeFloat();
+  }
+
+  std::vector<double> seeds;
+  CollectSeeds(source, seeds);
+  const vtkIdType numSeeds = static_cast<vtkIdType>(seeds.size() / 3);
+  for (vtkIdType s = 0; s < numSeeds; ++s)
+  {
+    if (!std::isfinite(seeds[3 * s]) || !std::isfinite(seeds[3 * s + 1]) ||
+      !std::isfinite(seeds[3 * s + 2]))
+    {
+      vtkWarningMacro(<< "seed " << s << " has a coordinate that is not a finite number; it "
+                      << "gives no line (reason UNEXPECTED_VALUE)");
+    }
+  }
+
+  Params P;
+  P.T = MakeTableau(this->IntegratorType);
+  P.StepMode = this->StepMode;
+  P.Step = this->IntegrationStep;
+  P.MinStep = this->MinimumIntegrationStep;
+  P.MaxStep = this->MaximumIntegrationStep;
+  P.Tolerance = this->MaximumError;
+  P.MaxSteps = this->MaximumNumberOfSteps;
+  P.MaxLength = this->MaximumPropagation;
+  P.MaxTime = this->MaximumIntegrationTime;
+  P.TerminalSpeed = this->TerminalSpeed;
+  P.Vorticity = this->ComputeVorticity != 0;
+
+  std::vector<Line> lines(2 * numSeeds);
+  switch (this->Precision)
+  {
+    case MIXED_PRECISION:
+      this->NumberOfEvaluations =
+        TraceAll<double, float>(*this->Field, P, seeds, this->IntegrationDirection, lines);
+      break;
+    case SINGLE_PRECISION:
+      this->NumberOfEvaluations =
+        TraceAll<float, float>(*this->Field, P, seeds, this->IntegrationDirection, lines);
+      break;
+    default:
+      this->NumberOfEvaluations =
+        TraceAll<double, double>(*this->Field, P, seeds, this->IntegrationDirection, lines);
+      break;
+  }
+
+  // Assemble in seed order, forward before backward.
+  vtkIdType numPoints = 0, numLines = 0;
+  for (const Line& l : lines)
+  {
+    if (l.Time.size() >= 2)
+    {
+      numPoints += static_cast<vtkIdType>(l.Time.size());
+      ++numLines;
+    }
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numPoints);
+  vtkNew<vtkDoubleArray> velocity, speed, time, vorticity;
+  velocity->SetName(this->Field->GetArrayName().c_str());
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(numPoints);
+  speed->SetName("Speed");
+  speed->SetNumberOfTuples(numPoints);
+  time->SetName("IntegrationTime");
+  time->SetNumberOfTuples(numPoints);
+  vorticity->SetName("Vorticity");
+  vorticity->SetNumberOfComponents(3);
+  if (this->ComputeVorticity)
+  {
+    vorticity->SetNumberOfTuples(numPoints);
+  }
+  vtkNew<vtkIntArray> seedIds, reasons;
+  seedIds->SetName("SeedIds");
+  seedIds->SetNumberOfTuples(numLines);
+  reasons->SetName("ReasonForTermination");
+  reasons->SetNumberOfTuples(numLines);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(numLines + 1);
+  connectivity->SetNumberOfTuples(numPoints);
+  vtkNew<vtkIntArray> seedReasons;
+  seedReasons->SetName("SeedReasonForTermination");
+  seedReasons->SetNumberOfComponents(2);
+  seedReasons->SetNumberOfTuples(numSeeds);
+  vtkIdType p = 0, c = 0;
+  for (vtkIdType s = 0; s < numSeeds; ++s)
+  {
+    for (int dir = 0; dir < 2; ++dir)
+    {
+      const Line& l = lines[2 * s + dir];
+      seedReasons->SetTypedComponent(s, dir, l.Reason);
+      if (l.Time.size() < 2)
+      {
+        continue;
+      }
+      offsets->SetValue(c, p);
+      seedIds->SetValue(c, static_cast<int>(s));
+      reasons->SetValue(c, l.Reason);
+      for (std::size_t i = 0; i < l.Time.size(); ++i, ++p)
+      {
+        points->SetPoint(p, l.Points.data() + 3 * i);
+        velocity->SetTypedTuple(p, l.Velocity.data() + 3 * i);
+        speed->SetValue(p, l.Speed[i]);
+        time->SetValue(p, l.Time[i]);
+        if (this->ComputeVorticity)
+        {
+          vorticity->SetTypedTuple(p, l.Vorticity.data() + 3 * i);
+        }
+        connectivity->SetValue(p, p);
+      }
+      ++c;
+    }
+  }
+  offsets->SetValue(numLines, numPoints);
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, connectivity);
+  output->SetPoints(points);
+  output->SetLines(cells);
+  vtkPointData* pd = output->GetPointData();
+  pd->AddArray(velocity);
+  pd->SetActiveVectors(velocity->GetName());
+  pd->AddArray(speed);
+  pd->SetActiveScalars("Speed");
+  pd->AddArray(time);
+  if (this->ComputeVorticity)
+  {
+    pd->AddArray(vorticity);
+  }
+  output->GetCellData()->AddArray(seedIds);
+  output->GetCellData()->AddArray(reasons);
+  output->GetFieldData()->AddArray(seedReasons);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+double vtkLRSplineStreamTracer::ComputeErrorMetric(
+  vtkPolyData* approximation, vtkPolyData* reference, const char* velocityName)
+{
+  if (!approximation || !reference)
+  {
+    return -1.0;
+  }
+  auto arrays = [velocityName](
+                  vtkPolyData* pd, vtkDataArray*& vel, vtkDataArray*& t, vtkDataArray*& ids)
+  {
+    vel =
+      velocityName ? pd->GetPointData()->GetArray(velocityName) : pd->GetPointData()->GetVectors();
+    t = pd->GetPointData()->GetArray("IntegrationTime");
+    ids = pd->GetCellData()->GetArray("SeedIds");
+    return vel && t && ids && vel->GetNumberOfComponents() == 3;
+  };
+  vtkDataArray *av, *at, *aid, *rv, *rt, *rid;
+  if (!arrays(approximation, av, at, aid) || !arrays(reference, rv, rt, rid))
+  {
+    return -1.0;
+  }
+  // Reference lines by (seed, direction).
+  std::map<std::pair<int, int>, std::vector<vtkIdType>> refLines;
+  {
+    vtkCellArray* ls = reference->GetLines();
+    vtkIdType npts;
+    const vtkIdType* ids;
+    vtkIdType cell = 0;
+    for (ls->InitTraversal(); ls->GetNextCell(npts, ids); ++cell)
+    {
+      if (npts < 2)
+      {
+        continue;
+      }
+      const int dir = rt->GetComponent(ids[npts - 1], 0) < 0 ? 1 : 0;
+      refLines[{ static_cast<int>(rid->GetComponent(cell, 0)), dir }].assign(ids, ids + npts);
+    }
+  }
+  double worst = 0.0;
+  vtkCellArray* ls = approximation->GetLines();
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkIdType cell = 0;
+  for (ls->InitTraversal(); ls->GetNextCell(npts, ids); ++cell)
+  {
+    if (npts < 2)
+    {
+      continue;
+    }
+    const int dir = at->GetComponent(ids[npts - 1], 0) < 0 ? 1 : 0;
+    auto it = refLines.find({ static_cast<int>(aid->GetComponent(cell, 0)), dir });
+    if (it == refLines.end())
+    {
+      return -1.0;
+    }
+    const std::vector<vtkIdType>& ref = it->second;
+    // reference times as |t| (monotonically increasing)
+    std::vector<double> rtime(ref.size());
+    for (std::size_t k = 0; k < ref.size(); ++k)
+    {
+      rtime[k] = std::abs(rt->GetComponent(ref[k], 0));
+    }
+    double sum = 0.0;
+    for (vtkIdType i = 1; i < npts; ++i)
+    {
+      const double ti = std::abs(at->GetComponent(ids[i], 0));
+      const double dt = ti - std::abs(at->GetComponent(ids[i - 1], 0));
+      double y[3], x[3];
+      approximation->GetPoint(ids[i], y);
+      if (ti >= rtime.back())
+      {
+        reference->GetPoint(ref.back(), x);
+      }
+      else
+      {
+        const std::size_t k1 = static_cast<std::size_t>(
+          std::upper_bound(rtime.begin(), rtime.end(), ti) - rtime.begin());
+        const std::size_t k0 = k1 - 1;
+        const double h = rtime[k1] - rtime[k0];
+        const double s = h > 0 ? (ti - rtime[k0]) / h : 0.0;
+        // cubic Hermite with the velocities (d x / d|t| = +-v)
+        const double sgn = dir == 1 ? -1.0 : 1.0;
+        const double h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
+        const double h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
+        double p0[3], p1[3], v0[3], v1[3];
+        reference->GetPoint(ref[k0], p0);
+        reference->GetPoint(ref[k1], p1);
+        rv->GetTuple(ref[k0], v0);
+        rv->GetTuple(ref[k1], v1);
+        for (int d = 0; d < 3; ++d)
+        {
+          x[d] = h00 * p0[d] + h10 * h * sgn * v0[d] + h01 * p1[d] + h11 * h * sgn * v1[d];
+        }
+      }
+      double e = 0.0;
+      for (int d = 0; d < 3; ++d)
+      {
+        e += (x[d] - y[d]) * (x[d] - y[d]);
+      }
+      sum += std::abs(dt) * std::sqrt(e);
+    }
+    worst = std::max(worst, sum);
+  }
+  return worst;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineStreamTracer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(active vectors)") << "\n";
+  os << indent << "IntegratorType: " << GetIntegratorName(this->IntegratorType) << "\n";
+  os << indent << "StepMode: " << this->StepMode << "\n";
+  os << indent << "IntegrationStep: " << this->IntegrationStep << "\n";
+  os << indent << "MinimumIntegrationStep: " << this->MinimumIntegrationStep << "\n";
+  os << indent << "MaximumIntegrationStep: " << this->MaximumIntegrationStep << "\n";
+  os << indent << "MaximumError: " << this->MaximumError << "\n";
+  os << indent << "IntegrationDirection: " << this->IntegrationDirection << "\n";
+  os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
+  os << indent << "MaximumPropagation: " << this->MaximumPropagation << "\n";
+  os << indent << "MaximumIntegrationTime: " << this->MaximumIntegrationTime << "\n";
+  os << indent << "TerminalSpeed: " << this->TerminalSpeed << "\n";
+  os << indent << "Precision: " << this->Precision << "\n";
+  os << indent << "ComputeVorticity: " << this->ComputeVorticity << "\n";
+  os << indent << "LocatorType: " << this->LocatorType << "\n";
+  os << indent << "ForestResolution: " << this->ForestResolution << "\n";
+}

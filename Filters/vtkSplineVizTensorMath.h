@@ -1,0 +1,160 @@
+/**
+ * @file   vtkSplineVizTensorMath.h
+ * @brief  Symmetric second-order tensor math of SplineViz (plain C++, double).
+ *
+ * The one place for the tensor math used by the tensor-analysis filter
+ * (vtkTensorAnalysisFilter), the superquadric glyph mapper
+ * (vtkSuperquadricGlyphMapper, whose shaders embed the same algorithms from
+ * glsl/vtkTensorMathShared.glsl in float) and tensor fiber tracking.
+ *
+ * **Stable API** (other SplineViz code depends on it):
+ *
+ * - Component layouts of tensor arrays (TensorLayout) and their conversion to
+ *   the canonical symmetric form `t[6] = {xx, yy, zz, xy, yz, xz}` (VTK's
+ *   6-component order): ToSymmetric(), GetNumberOfComponents(), GuessLayout().
+ * - EigenDecomposition(): l1 >= l2 >= l3, orthonormal right-handed
+ *   eigenvectors, correct for repeated eigenvalues (see
+ *   glsl/vtkTensorMathShared.glsl for the method).
+ * - FractionalAnisotropy(), MeanDiffusivity(), WestinMetrics() (trace
+ *   normalized as Teem: cl = (l1-l2)/S, cp = 2(l2-l3)/S, cs = 3 l3/S,
+ *   S = l1+l2+l3, all 0 when S <= 0).
+ * - ApplySignPolicy(): negative eigenvalues (skip, or absolute values).
+ * - KindlmannShape(): superquadric exponents alpha, beta and symmetry axis
+ *   from cl, cp and the sharpness gamma (Kindlmann 2004; Hlawitschka et al.
+ *   §2; Teem's rule, see ../shared/docs/field-notes.md).
+ *
+ * All functions are thread-safe (no state). Not wrapped (a namespace of
+ * functions, exported for the tests and the other SplineViz classes).
+ */
+#ifndef vtkSplineVizTensorMath_h
+#define vtkSplineVizTensorMath_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkType.h"         // for vtkIdType
+
+class vtkDataArray;
+
+namespace vtkSplineVizTensorMath
+{
+/**
+ * Component layouts of tensor arrays.
+ *
+ * | layout            | comps | order                                   | used by            |
+ * |-------------------|-------|-----------------------------------------|--------------------|
+ * | FULL_9            | 9     | xx xy xz yx yy yz zx zy zz (row-major)  | VTK 9-comp tensors |
+ * | SYMMETRIC_VTK     | 6     | xx yy zz xy yz xz                       | VTK, ParaView      |
+ * | SYMMETRIC_LOWER   | 6     | xx xy yy xz yz zz (lower triangle)      | DIPY, FSL          |
+ * | SYMMETRIC_UPPER   | 6     | xx xy xz yy yz zz (upper triangle)      | MFEM               |
+ * | TEEM_7            | 7     | conf xx xy xz yy yz zz                  | Teem / NRRD        |
+ *
+ * A 9-component tensor is symmetrized, (A + A^T)/2.
+ */
+enum TensorLayout
+{
+  FULL_9 = 0,
+  SYMMETRIC_VTK = 1,
+  SYMMETRIC_LOWER = 2,
+  SYMMETRIC_UPPER = 3,
+  TEEM_7 = 4
+};
+
+/// Number of components of a layout (0 for an unknown layout).
+SPLINEVIZ_EXPORT int GetNumberOfComponents(int layout);
+
+/// Human-readable name of a layout ("unknown" for an unknown layout).
+SPLINEVIZ_EXPORT const char* GetLayoutName(int layout);
+
+/**
+ * The default layout for a number of components: 9 -> FULL_9,
+ * 6 -> SYMMETRIC_VTK, 7 -> TEEM_7, anything else -> -1.
+ */
+SPLINEVIZ_EXPORT int GuessLayout(int numberOfComponents);
+
+/**
+ * The layout to read an array of `numberOfComponents` components with, when
+ * the user asked for `requestedLayout`: 9 components are always FULL_9 and 7
+ * components always TEEM_7 (unambiguous); 6 components use requestedLayout
+ * when it is one of the 6-component layouts (SYMMETRIC_VTK, SYMMETRIC_LOWER,
+ * SYMMETRIC_UPPER) and SYMMETRIC_VTK when requestedLayout is -1 (automatic).
+ * Returns -1 when the array cannot be read that way (another component count,
+ * or a 6-component array with FULL_9 or TEEM_7 requested).
+ */
+SPLINEVIZ_EXPORT int ResolveLayout(int requestedLayout, int numberOfComponents);
+
+/**
+ * Converts one tuple in the given layout to `t = {xx, yy, zz, xy, yz, xz}`.
+ * Returns false (and leaves t unspecified) when the layout is unknown or a
+ * component is NaN or infinite. For TEEM_7, `confidence` (if given) receives
+ * the leading confidence value; for the other layouts it is set to 1.
+ */
+SPLINEVIZ_EXPORT bool ToSymmetric(
+  int layout, const double* components, double t[6], double* confidence = nullptr);
+
+/**
+ * Reads tuple `id` of `array` in the given layout (the array must have
+ * GetNumberOfComponents(layout) components; not checked here). Same return
+ * value as ToSymmetric(). Thread-safe for concurrent reads.
+ */
+SPLINEVIZ_EXPORT bool ReadSymmetric(
+  vtkDataArray* array, vtkIdType id, int layout, double t[6], double* confidence = nullptr);
+
+/// The full matrix of t.
+SPLINEVIZ_EXPORT void ToMatrix(const double t[6], double m[3][3]);
+
+/// y = T x.
+SPLINEVIZ_EXPORT void Multiply(const double t[6], const double x[3], double y[3]);
+
+/**
+ * Eigen-decomposition of the symmetric tensor t: values[0] >= values[1] >=
+ * values[2]; vectors[i] is the unit eigenvector of values[i]; the vectors are
+ * orthonormal and right-handed (vectors[2] = vectors[0] x vectors[1]). For
+ * repeated eigenvalues any orthonormal basis of the eigenspace is returned.
+ * Relative accuracy ~1e-14 of the largest |eigenvalue|. t must be finite.
+ */
+SPLINEVIZ_EXPORT void EigenDecomposition(const double t[6], double values[3], double vectors[3][3]);
+
+/// Fractional anisotropy from eigenvalues, in [0, 1]; 0 for the zero tensor.
+SPLINEVIZ_EXPORT double FractionalAnisotropy(const double values[3]);
+
+/// Mean diffusivity (l1 + l2 + l3) / 3.
+SPLINEVIZ_EXPORT double MeanDiffusivity(const double values[3]);
+
+/**
+ * Westin metrics from sorted eigenvalues (l1 >= l2 >= l3), trace-normalized
+ * as in Teem: cl = (l1-l2)/S, cp = 2 (l2-l3)/S, cs = 3 l3/S with
+ * S = l1 + l2 + l3; all three 0 when S <= 0. cl + cp + cs = 1 when S > 0;
+ * each is in [0, 1] for positive semi-definite tensors.
+ */
+SPLINEVIZ_EXPORT void WestinMetrics(const double values[3], double& cl, double& cp, double& cs);
+
+/// Policies for negative eigenvalues.
+enum SignPolicy
+{
+  /// Do not show tensors with a negative eigenvalue (l3 < -1e-5 max|l|;
+  /// slightly negative values from rounding are set to 0).
+  SIGN_SKIP = 0,
+  /// Use the absolute values of the eigenvalues, re-sorted with their vectors.
+  SIGN_ABSOLUTE = 1
+};
+
+/**
+ * Applies a SignPolicy to sorted eigenvalues and their vectors (as returned
+ * by EigenDecomposition()). Returns false when the tensor is not to be shown.
+ * The frame stays right-handed.
+ */
+SPLINEVIZ_EXPORT bool ApplySignPolicy(int policy, double values[3], double vectors[3][3]);
+
+/**
+ * Kindlmann's superquadric exponents. With cl, cp clamped to [0, 1]:
+ * cl > cp: returns true (symmetry axis x, along e1), alpha = (1-cp)^gamma,
+ * beta = (1-cl)^gamma; otherwise returns false (symmetry axis z, along e3),
+ * alpha = (1-cl)^gamma, beta = (1-cp)^gamma. alpha and beta are clamped to
+ * [minimumRoundness, 1]. The surface about the symmetry axis w (u, v the two
+ * other glyph axes, in their cyclic order) is
+ * (|u|^(2/alpha) + |v|^(2/alpha))^(alpha/beta) + |w|^(2/beta) = 1.
+ */
+SPLINEVIZ_EXPORT bool KindlmannShape(
+  double cl, double cp, double gamma, double minimumRoundness, double& alpha, double& beta);
+}
+
+#endif

@@ -1,0 +1,39 @@
+/**
+ * @class   vtkRayCastTubeRepresentation
+ * @brief   ParaView representation "Ray-Cast Tubes": polylines as ray-cast spline tubes.
+ *
+ * A vtkSplineTubeRepresentation backed by vtkRayCastTubeMapper (Salm,
+ * "Interactive Rendering of Spline Tubes", §3.2). Adds the ray-casting
+ * settings SubSegments and RootIterations.
+ */
+#ifndef vtkRayCastTubeRepresentation_h
+#define vtkRayCastTubeRepresentation_h
+
+#include "SplineVizParaViewModule.h" // for export macro
+#include "vtkSplineTubeRepresentation.h"
+
+class SPLINEVIZPARAVIEW_EXPORT vtkRayCastTubeRepresentation : public vtkSplineTubeRepresentation
+{
+public:
+  static vtkRayCastTubeRepresentation* New();
+  vtkTypeMacro(vtkRayCastTubeRepresentation, vtkSplineTubeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Forwarded to both vtkRayCastTubeMapper instances.
+   */
+  void SetSubSegments(int n);
+  void SetRootIterations(int n);
+  ///@}
+
+protected:
+  vtkRayCastTubeRepresentation();
+  ~vtkRayCastTubeRepresentation() override;
+
+private:
+  vtkRayCastTubeRepresentation(const vtkRayCastTubeRepresentation&) = delete;
+  void operator=(const vtkRayCastTubeRepresentation&) = delete;
+};
+
+#endif

@@ -1,0 +1,53 @@
+/**
+ * @class   vtkSplineTubeRepresentation
+ * @brief   ParaView geometry representation drawing polylines with a spline-tube mapper.
+ *
+ * Base of the SplineViz tube representations ("Ray-Cast Tubes",
+ * "Tessellated Tubes"): a geometry representation (with faces, so that it can
+ * stand in for ParaView's SurfaceRepresentation) whose mappers (full and LOD)
+ * are replaced by a vtkSplineTubeMapper subclass, with the radius
+ * settings every tube mapper shares forwarded to both. Everything else
+ * (coloring by arrays and lookup tables, opacity, lighting, block handling of
+ * composite data, parallel rendering) is the geometry representation's.
+ */
+#ifndef vtkSplineTubeRepresentation_h
+#define vtkSplineTubeRepresentation_h
+
+#include "SplineVizParaViewModule.h" // for export macro
+#include "vtkGeometryRepresentationWithFaces.h"
+
+class vtkSplineTubeMapper;
+
+class SPLINEVIZPARAVIEW_EXPORT vtkSplineTubeRepresentation
+  : public vtkGeometryRepresentationWithFaces
+{
+public:
+  vtkTypeMacro(vtkSplineTubeRepresentation, vtkGeometryRepresentationWithFaces);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Forwarded to the tube mappers (see vtkSplineTubeMapper). A radius array
+   * name that is empty or "None" selects the constant Radius.
+   */
+  void SetRadius(double radius);
+  void SetRadiusArray(const char* name);
+  void SetRadiusScale(double scale);
+  ///@}
+
+protected:
+  vtkSplineTubeRepresentation();
+  ~vtkSplineTubeRepresentation() override;
+
+  /// Replace the superclass' mappers by these (takes the references).
+  void SetTubeMappers(vtkSplineTubeMapper* mapper, vtkSplineTubeMapper* lodMapper);
+
+  vtkSplineTubeMapper* GetTubeMapper();
+  vtkSplineTubeMapper* GetLODTubeMapper();
+
+private:
+  vtkSplineTubeRepresentation(const vtkSplineTubeRepresentation&) = delete;
+  void operator=(const vtkSplineTubeRepresentation&) = delete;
+};
+
+#endif

@@ -1,0 +1,78 @@
+"""pvbatch: the "Ray-Cast Tubes" representation of the SplineViz plugin on a
+ParaView pipeline (the synthetic fibers source), with a radius array,
+scalar coloring and the ray-casting properties; checks that the tubes are
+drawn (coverage well above that of 1-pixel lines) and that the properties
+reach the mapper."""
+import os
+import sys
+
+from paraview.simple import *  # noqa: F401,F403
+
+import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
+
+LoadPlugin(sys.argv[1], remote=False, ns=globals())
+out_dir = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
+os.makedirs(out_dir, exist_ok=True)
+
+fibers = SyntheticFibers(Preset=1)  # noqa: F405
+view = CreateRenderView()  # noqa: F405
+view.ViewSize = [600, 450]
+view.UseColorPaletteForBackground = 0
+view.Background = [1, 1, 1]
+view.OrientationAxesVisibility = 0
+display = Show(fibers, view)  # noqa: F405
+ColorBy(display, ("POINTS", "Scalar"))  # noqa: F405
+ResetCamera(view)  # noqa: F405
+view.CameraPosition = [0.3, 0.2, 2.2]
+view.CameraFocalPoint = [0, 0, 0]
+
+
+def coverage(name):
+    png = os.path.join(out_dir, name)
+    SaveScreenshot(png, view, ImageResolution=[600, 450])  # noqa: F405
+    from paraview.vtk.vtkIOImage import vtkPNGReader
+
+    reader = vtkPNGReader()
+    reader.SetFileName(png)
+    reader.Update()
+    scalars = reader.GetOutput().GetPointData().GetScalars()
+    n = scalars.GetNumberOfTuples()
+    hit = sum(1 for i in range(0, n, 3) if scalars.GetTuple3(i) != (255.0, 255.0, 255.0))
+    return hit / float(len(range(0, n, 3)))
+
+
+display.SetRepresentationType("Surface")
+lines = coverage("TestPluginRayCastTubes-lines.png")
+
+display.SetRepresentationType("Ray-Cast Tubes")
+display.TubeRadiusArray = "Radius"
+display.TubeRadiusScale = 1.0
+display.SubSegments = 4
+display.RootIterations = 12
+tubes = coverage("TestPluginRayCastTubes.png")
+print("coverage: lines %.3f, ray-cast tubes %.3f" % (lines, tubes))
+if tubes < 2.0 * lines or tubes < 0.1:
+    print("ERROR: the ray-cast tubes did not render")
+    sys.exit(1)
+
+# The properties reached the mapper on the (local) server.
+sub = display.GetClientSideObject().GetActiveRepresentation()
+mapper = sub.GetActor().GetMapper()
+print("active representation", sub.GetClassName(), "mapper", mapper.GetClassName())
+if not mapper.IsA("vtkRayCastTubeMapper"):
+    print("ERROR: the representation does not use the ray-cast tube mapper")
+    sys.exit(1)
+if (mapper.GetSubSegments(), mapper.GetRootIterations(), mapper.GetRadiusArray()) != (4, 12, "Radius"):
+    print("ERROR: properties not forwarded:", mapper.GetSubSegments(), mapper.GetRootIterations(),
+          mapper.GetRadiusArray())
+    sys.exit(1)
+print("GPU bytes per segment: %.1f" % (mapper.GetGPUMemorySize() / 3530.0))
+
+# A constant radius twice as large covers more.
+display.TubeRadiusArray = "None"
+display.TubeRadius = 0.02
+thick = coverage("TestPluginRayCastTubes-constant.png")
+print("coverage: constant radius 0.02: %.3f" % thick)
+if thick <= tubes:
+    print("ERROR: the constant radius was not applied")
+    sys.exit(1)
