@@ -23,6 +23,7 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkLookupTable.h"
+#include "vtkSMPTools.h"
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
@@ -321,17 +322,22 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
   const float* P = core->GetNodePositions()->GetPointer(0);
   const float* M = core->GetNodeTangents()->GetPointer(0);
   const float* R = core->GetNodeRadii()->GetPointer(0);
-  for (vtkIdType i = 0; i < numNodes; ++i)
-  {
-    float* n = &nodes[8 * i];
-    for (int c = 0; c < 3; ++c)
+  const double shift[3] = { this->Shift[0], this->Shift[1], this->Shift[2] };
+  vtkSMPTools::For(0, numNodes,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      n[c] = static_cast<float>(P[3 * i + c] - this->Shift[c]);
-      n[4 + c] = M[3 * i + c];
-    }
-    n[3] = R[2 * i];
-    n[7] = R[2 * i + 1];
-  }
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        float* n = &nodes[8 * i];
+        for (int c = 0; c < 3; ++c)
+        {
+          n[c] = static_cast<float>(P[3 * i + c] - shift[c]);
+          n[4 + c] = M[3 * i + c];
+        }
+        n[3] = R[2 * i];
+        n[7] = R[2 * i + 1];
+      }
+    });
   bool ok = this->NodesBuffer->Upload(window, nodes.data(), 2 * numNodes, 4, VTK_FLOAT, GL_RGBA32F);
 
   // Segments: (first node | flags << 30, tube); tubes: (cell id, block id).
@@ -364,13 +370,17 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
     std::vector<signed char> derivatives(static_cast<size_t>(4 * numNodes));
     const float* C = core->GetNodeColors()->GetPointer(0);
     const float* D = core->GetNodeColorDerivatives()->GetPointer(0);
-    for (vtkIdType i = 0; i < 4 * numNodes; ++i)
-    {
-      colors[i] =
-        static_cast<unsigned char>(std::lround(255.0f * std::min(1.0f, std::max(0.0f, C[i]))));
-      derivatives[i] =
-        static_cast<signed char>(std::lround(127.0f * std::min(1.0f, std::max(-1.0f, D[i]))));
-    }
+    vtkSMPTools::For(0, 4 * numNodes,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          colors[i] =
+            static_cast<unsigned char>(std::lround(255.0f * std::min(1.0f, std::max(0.0f, C[i]))));
+          derivatives[i] =
+            static_cast<signed char>(std::lround(127.0f * std::min(1.0f, std::max(-1.0f, D[i]))));
+        }
+      });
     ok =
       this->ColorsBuffer->Upload(window, colors.data(), numNodes, 4, VTK_UNSIGNED_CHAR, GL_RGBA8) &&
       ok;

@@ -106,7 +106,9 @@ struct vtkTessellatedTubeMapper::vtkInternals
 {
   static constexpr vtkIdType ChunkSize = 16;
   static constexpr unsigned char Culled = 255;
-  static constexpr unsigned char WholeChunk = 254; // one patch for the chunk
+  static constexpr unsigned char WholeChunk = 254;  // one patch for the chunk
+  static constexpr int SinglePatchSides = 8;        // ring edges made by the tessellator at most
+  static constexpr double WholeChunkPixels = 256.0; // 4-pixel edges at level 64
 
   std::vector<vtkIdType> TubeFirstSegment;  // tubes + 1
   std::vector<vtkIdType> TubeFirstChunk;    // tubes + 1
@@ -286,13 +288,17 @@ void vtkTessellatedTubeMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   const vtkIdType numNodes = core->GetNumberOfNodes();
   const float* F = core->GetNodeFrames()->GetPointer(0);
   std::vector<vtkTypeInt16> frames(static_cast<size_t>(2 * numNodes));
-  for (vtkIdType i = 0; i < numNodes; ++i)
-  {
-    const vtkSplineTubeMath::vec2 e =
-      vtkSplineTubeMath::svOctEncode(vtkSplineTubeMath::vec3(F[3 * i], F[3 * i + 1], F[3 * i + 2]));
-    frames[2 * i] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.x));
-    frames[2 * i + 1] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.y));
-  }
+  vtkSMPTools::For(0, numNodes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const vtkSplineTubeMath::vec2 e = vtkSplineTubeMath::svOctEncode(
+          vtkSplineTubeMath::vec3(F[3 * i], F[3 * i + 1], F[3 * i + 2]));
+        frames[2 * i] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.x));
+        frames[2 * i + 1] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.y));
+      }
+    });
   if (!this->FramesBuffer->Upload(window, frames.data(), numNodes, 2, VTK_TYPE_INT16, GL_RG16I))
   {
     vtkErrorMacro(<< "Could not upload the orthogonal vectors to the GPU.");
@@ -611,18 +617,19 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
               }
             }
             in.ChunkRingBin[c] = static_cast<unsigned char>(ringBin);
-            chunkPixels.push_back(ringBin == ringBins - 1 ? lengthPixels : -1.0);
+            chunkPixels.push_back(lengthPixels);
             widest = std::max(widest, radiusPixels);
           }
-          // Sides: one patch around when at most 4 ring edges are needed
-          // (the tessellator makes them), else the fewest base vertices that
-          // the silhouette refinement can at least double to the need.
+          // Sides: one patch around when at most SinglePatchSides ring edges
+          // are needed (the tessellator makes them), else the fewest base
+          // vertices that the silhouette refinement can at least double to
+          // the need.
           int sideBin = vtkInternals::Culled;
           if (widest >= 0.0)
           {
             const double sides = twoPi * widest / sideTarget;
             sideBin = sideBins - 1;
-            if (sides > 4.0)
+            if (sides > vtkInternals::SinglePatchSides)
             {
               sideBin = sideBins - 2;
               while (sideBin > 0 && in.SideLadder[sideBin] < 0.5 * sides)
@@ -632,15 +639,14 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
             }
           }
           in.TubeSideBin[t] = static_cast<unsigned char>(sideBin);
-          // Thin tubes: a chunk whose segments all need a single ring
-          // interval becomes one patch when its length on screen fits
-          // the largest tessellation level with 4-pixel edges.
+          // Thin tubes: a chunk becomes one patch when its length on
+          // screen fits the largest tessellation level with 4-pixel edges.
           if (sideBin == sideBins - 1)
           {
             for (vtkIdType c = in.TubeFirstChunk[t]; c < in.TubeFirstChunk[t + 1]; ++c)
             {
               const double pixels = chunkPixels[c - in.TubeFirstChunk[t]];
-              if (pixels >= 0.0 && pixels <= 64.0 * 4.0 &&
+              if (pixels >= 0.0 && pixels <= vtkInternals::WholeChunkPixels &&
                 in.ChunkFirstSegment[c + 1] - in.ChunkFirstSegment[c] > 1)
               {
                 in.ChunkRingBin[c] = vtkInternals::WholeChunk;

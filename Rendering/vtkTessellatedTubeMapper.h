@@ -22,16 +22,24 @@
  *   same on a GPU). Per view, chunks of up to 16 consecutive segments are
  *   culled against the view frustum and given the fewest vertex rings (from
  *   BaseRings down to 2, halving the intervals) whose spacing stays below half
- *   MaxEdgeLength on screen; each tube gets the fewest vertices per ring (from
- *   BaseSides down to 3) that keep its widest visible part's circumference
- *   steps below twice MaxSilhouetteEdgeLength. The side count is chosen per
- *   tube so that the rings at the junctions always match (no cracks). One
- *   instanced draw per (rings, sides) bin reads its segments from an
- *   instance list; caps are drawn for the tubes' end segments only. The
- *   classification is O(chunks + segments) CPU work per view change
- *   (vtkSMPTools), skipped when the view did not change. With
- *   LevelOfDetail off, every segment is drawn with the full base mesh, as
- *   in the paper.
+ *   MaxEdgeLength on screen. Per tube, from its widest visible part, the
+ *   circumference in steps of twice MaxSilhouetteEdgeLength gives the
+ *   vertices needed per ring: up to 8, the wall is one patch around the
+ *   segment whose ring levels (from the node rings alone, so neighbours
+ *   agree) make those vertices, its offsets scaled so that the polygonal
+ *   cross-section keeps the circle's mean width, and the rasterizer culls
+ *   its back faces; a whole chunk is then one patch if it is at most 256
+ *   pixels long on screen (the evaluation stage finds each vertex's segment;
+ *   the level along follows the screen-space curvature of the node chain);
+ *   more than 8, the base mesh has at least half the needed vertices per ring
+ *   (BaseSides halved down to 4) and Salm's refinement does the rest. The
+ *   side count is chosen per tube so that the rings at the junctions always
+ *   match (no cracks). One instanced draw per (rings, sides) bin reads its
+ *   segments from an instance list; caps are drawn for the tubes' end
+ *   segments only. The classification is O(chunks + segments) CPU work per
+ *   view change (vtkSMPTools), skipped when the view did not change. With
+ *   LevelOfDetail off, every segment is drawn with the full base mesh, as in
+ *   the paper.
  * - **Refinement** (tessellation control stage): back-patch culling (a patch
  *   is dropped when all its vertex normals face away from the eye), frustum
  *   culling, then per edge the larger of a screen-space criterion (edges of

@@ -170,7 +170,7 @@ float tubeRingLevel(vec4 p)
     return tubeMaxSilhouetteLevel;
   }
   float circumference = 6.283185307179586 * p.w / w * tubePixelScale();
-  return clamp(ceil(circumference / tubeSideLength), 3.0, max(3.0, tubeMaxSilhouetteLevel));
+  return clamp(ceil(circumference / tubeSideLength), 3.0, 64.0);
 }
 
 float tubeScreenLength(vec3 a, vec3 b)

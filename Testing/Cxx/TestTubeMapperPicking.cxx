@@ -70,8 +70,8 @@ vtkSmartPointer<vtkPolyData> MakeBlock(
   return pd;
 }
 
-void CheckPicks(SplineVizTestStatus& status, vtkSplineTubeMapper* mapper, vtkDataObject* input,
-  const std::vector<Target>& targets, const char* what)
+void CheckPicks(SplineVizTestStatus& status, vtkRenderWindow* window, vtkSplineTubeMapper* mapper,
+  vtkDataObject* input, const std::vector<Target>& targets, const char* what)
 {
   mapper->SetInputDataObject(input);
   mapper->SetRadius(0.12);
@@ -79,10 +79,6 @@ void CheckPicks(SplineVizTestStatus& status, vtkSplineTubeMapper* mapper, vtkDat
   actor->SetMapper(mapper);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(300, 300);
   window->AddRenderer(renderer);
   renderer->GetActiveCamera()->SetPosition(0.2, 0.3, 8.0);
   renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.3, 0.0);
@@ -116,6 +112,7 @@ void CheckPicks(SplineVizTestStatus& status, vtkSplineTubeMapper* mapper, vtkDat
   unsigned int out[2];
   SV_CHECK_MSG(status, !selector->GetPixelInformation(corner, 0, out).Valid,
     what << ": the background was picked");
+  window->RemoveRenderer(renderer);
 }
 }
 
@@ -142,13 +139,18 @@ int TestTubeMapperPicking(int, char*[])
   std::vector<Target> plainTargets;
   vtkSmartPointer<vtkPolyData> plain = MakeBlock(3, 0.0, true, 1, plainTargets);
 
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(300, 300);
   vtkNew<vtkTessellatedTubeMapper> tessellated;
-  CheckPicks(status, tessellated, blocks, compositeTargets, "tessellated, multiblock");
+  CheckPicks(status, window, tessellated, blocks, compositeTargets, "tessellated, multiblock");
   vtkNew<vtkTessellatedTubeMapper> tessellatedPlain;
-  CheckPicks(status, tessellatedPlain, plain, plainTargets, "tessellated, polydata");
+  CheckPicks(status, window, tessellatedPlain, plain, plainTargets, "tessellated, polydata");
   vtkNew<vtkRayCastTubeMapper> rayCast;
-  CheckPicks(status, rayCast, blocks, compositeTargets, "ray cast, multiblock");
+  CheckPicks(status, window, rayCast, blocks, compositeTargets, "ray cast, multiblock");
   vtkNew<vtkRayCastTubeMapper> rayCastPlain;
-  CheckPicks(status, rayCastPlain, plain, plainTargets, "ray cast, polydata");
+  CheckPicks(status, window, rayCastPlain, plain, plainTargets, "ray cast, polydata");
+  window->Finalize();
   return status.Result();
 }
