@@ -962,20 +962,13 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
 
   std::string declarations = vtkTessellatedTubeFS;
   vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", math);
-  if (this->HaveColors)
-  {
-    declarations += GetTubeColorDeclarations();
-  }
   vtkShaderProgram::Substitute(FSSource, "//VTK::Normal::Dec", declarations);
   vtkShaderProgram::Substitute(FSSource, "//VTK::PositionVC::Dec", "in vec4 vertexVCVSOutput;");
   std::string position = "  vec4 vertexVC = vertexVCVSOutput;\n";
   if (this->HaveColors)
   {
-    // The curve parameter counts from the patch's first node (patches may
-    // span a run of segments).
-    position += "  int tubeColorSegment = max(int(ceil(tubeTVSOutput)) - 1, 0);\n"
-                "  float tubeColorT = tubeTVSOutput - float(tubeColorSegment);\n";
-    position += GetTubeColorImplementation("tubeInfoVSOutput.x + tubeColorSegment", "tubeColorT");
+    // The color spline, evaluated per vertex by the evaluation stage.
+    position += "  vec4 tubeColor = tubeColorVSOutput;\n";
   }
   vtkShaderProgram::Substitute(FSSource, "//VTK::PositionVC::Impl", position);
   // The start caps are wound clockwise (seen from outside): flip their sense
@@ -1040,6 +1033,7 @@ void vtkTessellatedTubeMapper::SetMapperShaderParameters(
   program->SetUniformf(
     "tubeMaxSilhouetteLevel", static_cast<float>(this->MaxSilhouetteTessellationLevel));
   program->SetUniformi("tubeCaps", this->Capping ? 1 : 0);
+  program->SetUniformi("tubeHaveColors", this->HaveColors ? 1 : 0);
   program->SetUniformf("tubeSideLength", static_cast<float>(2.0 * this->MaxSilhouetteEdgeLength));
   this->FramesBuffer->Activate(program, "tubeFrames");
   this->Internals->InstancesBuffer.Activate(program, "tubeInstances");

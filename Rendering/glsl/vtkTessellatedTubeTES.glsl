@@ -6,6 +6,10 @@
 // and normalized (svInterpolateFrame); the wall normal is the offset vector
 // projected onto the plane of the numerically determined surface tangent
 // (Salm Fig. 7, svTubeWallNormal); the caps' normal is the axis direction.
+// The color spline (scalar coloring) is evaluated per vertex here and
+// interpolated per pixel (the refined edges are at most tubeMaxEdgeLength
+// pixels long, much shorter near the silhouettes; per pixel it cost a
+// quarter of the frame time on llvmpipe).
 // Shared edges get bit-identical vertices: every position is computed by the
 // same code from parameters that are exact at the patch borders.
 // A patch spanning a run of segments (count > 1) finds the segment of each
@@ -27,11 +31,15 @@ patch in ivec4 tubePatchInfo;
 
 uniform mat4 VCDCMatrix;
 uniform int tubeSides;
+uniform int tubeHaveColors;
+uniform samplerBuffer tubeColors;           // per node: RGBA
+uniform isamplerBuffer tubeColorDerivatives; // per node: derivative * 127
 
 out vec4 vertexVCVSOutput;
 out vec3 tubeNormalVCVSOutput;
 out float tubeTVSOutput;
 flat out ivec4 tubeInfoVSOutput;
+out vec4 tubeColorVSOutput;
 
 //VTK::SplineTubeMath::Dec
 
@@ -65,9 +73,10 @@ void main()
 
   TubeSegment seg;
   float t = tGlobal;
+  int k = 0;
   if (count > 1)
   {
-    int k = tubeSegmentOf(tGlobal, count);
+    k = tubeSegmentOf(tGlobal, count);
     seg = tubeLoadSegment(tubePatchInfo.x + k);
     t = tGlobal - float(k);
   }
@@ -98,8 +107,20 @@ void main()
     normal = kind == 1 ? -axis : axis;
   }
 
+  vec4 color = vec4(1.0);
+  if (tubeHaveColors != 0)
+  {
+    int node = tubePatchInfo.x + k;
+    color = clamp(svHermite(texelFetch(tubeColors, node),
+                    vec4(texelFetch(tubeColorDerivatives, node)) / 127.0,
+                    texelFetch(tubeColors, node + 1),
+                    vec4(texelFetch(tubeColorDerivatives, node + 1)) / 127.0, t),
+      0.0, 1.0);
+  }
+
   vertexVCVSOutput = vec4(position, 1.0);
   tubeNormalVCVSOutput = normal;
+  tubeColorVSOutput = color;
   tubeTVSOutput = tGlobal;
   tubeInfoVSOutput = tubePatchInfo;
   gl_Position = VCDCMatrix * vec4(position, 1.0);

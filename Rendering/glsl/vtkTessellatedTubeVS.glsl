@@ -30,6 +30,7 @@ out vec4 vertexVCVSOutput;       // position, view coordinates
 out vec3 tubeNormalVCVSOutput;   // normal, view coordinates
 out float tubeTVSOutput;         // curve parameter
 flat out ivec4 tubeInfoVSOutput; // first node, segment, tube, flags | kind << 2 | count << 4
+out vec4 tubeColorVSOutput;      // (made by the evaluation stage)
 out vec4 tubeAxisVSOutput;       // unit tangent (view coordinates), s
 
 //VTK::SplineTubeMath::Dec
@@ -69,6 +70,7 @@ void main()
     tubeTVSOutput = capKind == 0 ? float(ring) / float(tubeRings - 1) : float(capKind - 1);
     tubeInfoVSOutput = ivec4(node, segment, int(sd.y), flags | (capKind << 2) | (count << 4));
     tubeAxisVSOutput = vec4(0.0);
+    tubeColorVSOutput = vec4(1.0);
     gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
     return;
   }
@@ -119,5 +121,6 @@ void main()
   tubeTVSOutput = t;
   tubeInfoVSOutput = ivec4(node, segment, int(sd.y), flags | (kind << 2) | (1 << 4));
   tubeAxisVSOutput = vec4(unitTangent, s);
+  tubeColorVSOutput = vec4(1.0);
   gl_Position = vec4(position, 1.0);
 }
