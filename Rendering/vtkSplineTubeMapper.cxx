@@ -569,8 +569,15 @@ void vtkSplineTubeMapper::ProcessSelectorPixelBuffers(
 //------------------------------------------------------------------------------
 void vtkSplineTubeMapper::ComputeBounds()
 {
+  // The renderer asks every frame; the bounds (a pass over all segments)
+  // change only when the core is rebuilt.
   this->UpdateTubeCore();
-  this->Core->GetBounds(this->Bounds);
+  if (this->BoundsTime.GetMTime() < this->CoreBuildTime.GetMTime())
+  {
+    this->Core->GetBounds(this->CoreBounds);
+    this->BoundsTime.Modified();
+  }
+  std::copy(this->CoreBounds, this->CoreBounds + 6, this->Bounds);
 }
 
 //------------------------------------------------------------------------------
