@@ -47,7 +47,11 @@ std::string TubeMathSource()
 }
 
 //------------------------------------------------------------------------------
-vtkRayCastTubeMapper::vtkRayCastTubeMapper() = default;
+vtkRayCastTubeMapper::vtkRayCastTubeMapper()
+{
+  // Sphere-swept tubes need no cross-section frames.
+  this->Core->ComputeFramesOff();
+}
 
 //------------------------------------------------------------------------------
 vtkRayCastTubeMapper::~vtkRayCastTubeMapper() = default;

@@ -36,7 +36,10 @@
  * oriented along the projected sub-segment, bounding the projection of the
  * spheres at its control points (the sub-segment's convex hull; the oriented
  * box clipped to the near plane when the camera is among the tubes), drawn
- * as indexed triangles with a small shared index pattern.
+ * as indexed triangles with a small shared index pattern. (One rectangle
+ * per cubic segment for segments small on screen, the fragment stage
+ * testing both sub-segments, was measured too: no faster, since the
+ * per-fragment root finding, not the rectangles, dominates.)
  *
  * Data on the GPU (uploaded once per data change): per node the position,
  * radius, tangent and radius derivative (32 bytes) and, with scalar coloring,

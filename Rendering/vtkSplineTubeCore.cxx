@@ -215,6 +215,20 @@ bool vtkSplineTubeCore::AddPolyData(
     this->ColorsMissing = true;
   }
 
+  // Room for every point of the input (growing by InsertNext* is slow).
+  const vtkIdType nodesBefore = this->NodePositions->GetNumberOfTuples();
+  const vtkIdType segmentsBefore = this->SegmentFirstNodes->GetNumberOfTuples();
+  const vtkIdType tubesBefore = this->TubeFirstNodes->GetNumberOfTuples();
+  this->NodePositions->Resize(nodesBefore + numPoints);
+  this->NodeRadii->Resize(nodesBefore + numPoints);
+  this->NodeColors->Resize(nodesBefore + numPoints);
+  this->SegmentFirstNodes->Resize(segmentsBefore + numPoints);
+  this->SegmentFlags->Resize(segmentsBefore + numPoints);
+  this->SegmentCellIds->Resize(segmentsBefore + numPoints);
+  this->SegmentBlockIds->Resize(segmentsBefore + numPoints);
+  this->TubeFirstNodes->Resize(tubesBefore + input->GetNumberOfLines());
+  this->TubeNumberOfNodes->Resize(tubesBefore + input->GetNumberOfLines());
+
   vtkPoints* points = input->GetPoints();
   std::vector<vtkIdType> ids;
   std::vector<double> pos;
@@ -345,7 +359,7 @@ void vtkSplineTubeCore::Build()
   const vtkIdType numTubes = this->TubeFirstNodes->GetNumberOfTuples();
   this->NodeTangents->SetNumberOfTuples(numNodes);
   this->NodeColorDerivatives->SetNumberOfTuples(numNodes);
-  this->NodeFrames->SetNumberOfTuples(numNodes);
+  this->NodeFrames->SetNumberOfTuples(this->ComputeFrames ? numNodes : 0);
 
   float* positions = this->NodePositions->GetPointer(0);
   float* tangents = this->NodeTangents->GetPointer(0);
@@ -375,7 +389,10 @@ void vtkSplineTubeCore::Build()
         {
           radii[2 * (first + k) + 1] = dr[k];
         }
-        this->PropagateFrames(t);
+        if (this->ComputeFrames)
+        {
+          this->PropagateFrames(t);
+        }
       }
     });
   this->Modified();

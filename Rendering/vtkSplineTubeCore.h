@@ -105,6 +105,17 @@ public:
   vtkGetMacro(MaximumFrameStepAngle, double);
   ///@}
 
+  ///@{
+  /**
+   * Whether Build() propagates the rotation-minimizing frames (needed by
+   * the tessellated tubes; the ray-cast tubes, sphere-swept, do not use
+   * them). Default on. Without frames, GetNodeFrames() is empty.
+   */
+  vtkSetMacro(ComputeFrames, bool);
+  vtkGetMacro(ComputeFrames, bool);
+  vtkBooleanMacro(ComputeFrames, bool);
+  ///@}
+
   /**
    * Forget all tubes (the settings are kept).
    */
@@ -217,6 +228,7 @@ protected:
   char* RadiusArrayName = nullptr;
   double RadiusScale = 1.0;
   double MaximumFrameStepAngle = 0.1;
+  bool ComputeFrames = true;
 
   vtkNew<vtkFloatArray> NodePositions;
   vtkNew<vtkFloatArray> NodeTangents;

@@ -17,7 +17,9 @@ packages=(
   paraview-dev python3-paraview
   qtbase5-dev libqt5svg5-dev qttools5-dev qtxmlpatterns5-dev-tools
   mpi-default-dev libhdf5-dev libdouble-conversion-dev libutfcpp-dev
-  libglew-dev liblz4-dev libtiff-dev
+  libglew-dev liblz4-dev libtiff-dev libexpat1-dev libeigen3-dev
+  libfreetype-dev libjpeg-dev liblzma-dev libpng-dev zlib1g-dev libx11-dev
+  libgl-dev libopengl-dev libglx-dev python3-dev python3-numpy
   libglm-dev
   xvfb xauth x11-utils
   python3-dipy

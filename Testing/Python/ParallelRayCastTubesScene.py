@@ -1,0 +1,33 @@
+"""Scene of TestParallelRayCastTubes (run by pvbatch, serially or under
+mpiexec): the synthetic fibers, split into pieces across the ranks, drawn as
+ray-cast tubes and composited by IceT; saves a screenshot.
+
+    pvbatch ParallelRayCastTubesScene.py OUTPUT.png [color-by-rank]
+"""
+import sys
+
+from paraview.simple import *  # noqa: F401,F403
+
+# The plugin is on PV_PLUGIN_PATH: every rank loads it at start-up.
+fibers = SyntheticFibers(Preset=1)  # noqa: F405
+view = CreateRenderView()  # noqa: F405
+view.ViewSize = [500, 400]
+view.UseColorPaletteForBackground = 0
+view.Background = [1, 1, 1]
+view.OrientationAxesVisibility = 0
+display = Show(fibers, view)  # noqa: F405
+display.SetRepresentationType("Ray-Cast Tubes")
+display.TubeRadiusArray = "Radius"
+if len(sys.argv) > 2:
+    ColorBy(display, ("POINTS", "vtkProcessId"))  # noqa: F405
+else:
+    ColorBy(display, ("POINTS", "Scalar"))  # noqa: F405
+    GetColorTransferFunction("Scalar").RescaleTransferFunction(0.0, 1.0)  # noqa: F405
+Render(view)  # noqa: F405
+# The same camera whatever the number of ranks.
+view.CameraPosition = [0.3, 0.2, 2.0]
+view.CameraFocalPoint = [0, 0, 0]
+view.CameraViewUp = [0, 1, 0]
+view.CameraViewAngle = 30
+Render(view)  # noqa: F405
+SaveScreenshot(sys.argv[1], view, ImageResolution=[500, 400])  # noqa: F405

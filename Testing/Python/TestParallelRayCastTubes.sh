@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# ParaView's parallel pipeline with ray-cast tubes: renders the scene with
+# one pvbatch process and with two MPI ranks (IceT compositing), then
+# compares the images (TestParallelRayCastTubes.py).
+#   TestParallelRayCastTubes.sh PVBATCH MPIEXEC PVPYTHON OUTPUT_DIR
+set -euo pipefail
+pvbatch="$1" mpiexec="$2" pvpython="$3" out="$4"
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
+scene="$here/ParallelRayCastTubesScene.py"
+mkdir -p "$out"
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+"$pvbatch" --force-offscreen-rendering "$scene" "$out/TestParallelRayCastTubes-1rank.png"
+"$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering "$scene" \
+  "$out/TestParallelRayCastTubes-2ranks.png" < /dev/null
+"$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering "$scene" \
+  "$out/TestParallelRayCastTubes-2ranks-by-rank.png" by-rank < /dev/null
+"$pvpython" "$here/TestParallelRayCastTubes.py" "$out"
