@@ -207,7 +207,7 @@ protected:
   double Shift[3] = { 0.0, 0.0, 0.0 };
   vtkTimeStamp CoreBuildTime;
   vtkTimeStamp UploadTime;
-  vtkTimeStamp BoundsTime;    ///< when CoreBounds were computed from the core
+  vtkTimeStamp BoundsTime; ///< when CoreBounds were computed from the core
   double CoreBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   bool HaveColors = false;       ///< the tubes carry per-node colors (scalar coloring)
   bool InputIsComposite = false; ///< block ids are flat indices of a composite input
