@@ -5,6 +5,12 @@
 //    frame (tube building, upload, shader compilation, drawing),
 //  - median frame time over the orbit (each frame finished with glFinish),
 //  - bytes the renderer holds on the GPU, per segment,
+// Renderers: "raycast" (vtkRayCastTubeMapper), the tessellated tubes
+// (vtkTessellatedTubeMapper, Salm §3.1) as "tessellated" (defaults: level
+// of detail, adaptive refinement), "tessellated-base" (level of detail,
+// tessellation levels 1), "tessellated-paper" (the paper's fixed 16 x 8 base
+// mesh for every segment, adaptive refinement: Salm Fig. 22 "complete") and
+// "tessellated-paper-base" (fixed base mesh, levels 1: Fig. 22 "unrefined"),
 // and the ratios against VTK's own ways of drawing tubes:
 //  - "tubefilter": vtkTubeFilter (12 sides, radius by the Radius array) +
 //    vtkPolyDataMapper (the geometry VTK uploads: points, normals, colors,
@@ -14,11 +20,12 @@
 // Usage:
 //   SplineVizTubeBenchmark [--data fibers|fibers2|million] [--size WxH]
 //       [--frames N] [--renderers raycast,tubefilter,linesastubes]
-//       [--distance far|close] [--seconds S]
+//       [--distance far|close] [--seconds S] [--samples N]
 // Several --data/--size values may be given (comma separated).
 #include "vtkRayCastTubeMapper.h"
 #include "vtkSplineTubeCore.h"
 #include "vtkSyntheticFibersSource.h"
+#include "vtkTessellatedTubeMapper.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -103,6 +110,32 @@ std::map<std::string, Factory> Renderers()
     b.GPUBytes = [mapper]() { return static_cast<double>(mapper->GetGPUMemorySize()); };
     return b;
   };
+  // Tessellated tubes: level of detail on/off, adaptive or levels 1.
+  auto tessellated = [](bool lod, bool refine)
+  {
+    return [lod, refine](vtkPolyData* data)
+    {
+      auto mapper = vtkSmartPointer<vtkTessellatedTubeMapper>::New();
+      mapper->SetInputData(data);
+      mapper->SetRadiusArray("Radius");
+      mapper->SetScalarRange(0.0, 1.0);
+      mapper->SetLevelOfDetail(lod);
+      if (!refine)
+      {
+        mapper->SetMaxTessellationLevel(1);
+        mapper->SetMaxSilhouetteTessellationLevel(1);
+      }
+      Built b;
+      b.Actor = vtkSmartPointer<vtkActor>::New();
+      b.Actor->SetMapper(mapper);
+      b.GPUBytes = [mapper]() { return static_cast<double>(mapper->GetGPUMemorySize()); };
+      return b;
+    };
+  };
+  r["tessellated"] = tessellated(true, true);
+  r["tessellated-base"] = tessellated(true, false);
+  r["tessellated-paper"] = tessellated(false, true);
+  r["tessellated-paper-base"] = tessellated(false, false);
   r["tubefilter"] = [](vtkPolyData* data)
   {
     auto tubes = vtkSmartPointer<vtkTubeFilter>::New();
@@ -238,6 +271,7 @@ int main(int argc, char* argv[])
   int frames = 60;
   double seconds = 30.0;
   bool close = false;
+  int samples = 0;
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string key = argv[i], value = argv[i + 1];
@@ -253,6 +287,8 @@ int main(int argc, char* argv[])
       seconds = std::atof(value.c_str());
     else if (key == "--distance")
       close = (value == "close");
+    else if (key == "--samples")
+      samples = std::max(0, std::atoi(value.c_str()));
     else
     {
       std::fprintf(stderr, "unknown option %s\n", key.c_str());
@@ -297,8 +333,9 @@ int main(int argc, char* argv[])
       vtkNew<vtkRenderWindow> window;
       window->SetOffScreenRendering(1);
       window->SetSize(w, h);
-      window->SetMultiSamples(0);
-      std::printf("-- %dx%d\n", w, h);
+      window->SetMultiSamples(samples);
+      std::printf("-- %dx%d%s\n", w, h,
+        samples ? (", " + std::to_string(samples) + "x multisampling").c_str() : "");
       std::printf("  %-14s %14s %16s %10s %10s %14s %8s\n", "renderer", "first frame s",
         "median frame ms", "(CPU ms)", "(best CPU)", "GPU B/segment", "frames");
       std::map<std::string, Result> results;

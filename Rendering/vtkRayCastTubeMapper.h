@@ -61,10 +61,7 @@
 #include "vtkNew.h"          // for vtkNew
 #include "vtkSplineTubeMapper.h"
 
-#include <memory> // for std::unique_ptr
-
 class vtkOpenGLBufferObject;
-class vtkSplineVizGPUBuffer;
 
 class SPLINEVIZ_EXPORT vtkRayCastTubeMapper : public vtkSplineTubeMapper
 {
@@ -115,15 +112,10 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  void ReplaceShaderColor(
-    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderClip(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
-  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
-  void ProcessSelectorPixelBuffers(
-    vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
 
   int SubSegments = 2;
   int RootIterations = 10;
@@ -133,15 +125,9 @@ private:
   vtkRayCastTubeMapper(const vtkRayCastTubeMapper&) = delete;
   void operator=(const vtkRayCastTubeMapper&) = delete;
 
-  std::unique_ptr<vtkSplineVizGPUBuffer> Nodes;
-  std::unique_ptr<vtkSplineVizGPUBuffer> Segments;
-  std::unique_ptr<vtkSplineVizGPUBuffer> Tubes;
-  std::unique_ptr<vtkSplineVizGPUBuffer> Colors;
-  std::unique_ptr<vtkSplineVizGPUBuffer> ColorDerivatives;
   static constexpr int QuadsPerDraw = 16384; ///< 65536 vertices: 16-bit indices
   vtkNew<vtkOpenGLBufferObject> QuadIndices;
   bool QuadIndicesUploaded = false;
-  int ShaderVariant = -1;
 };
 
 #endif

@@ -1,6 +1,7 @@
 #include "vtkSplineTubeMapper.h"
 
 #include "vtkSplineTubeCore.h"
+#include "vtkSplineVizGPUBuffer.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -9,6 +10,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
 #include "vtkPoints.h"
@@ -21,20 +23,32 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkLookupTable.h"
+#include "vtkSMPTools.h"
 #include "vtkScalarsToColors.h"
+#include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
+#include "vtkTypeUInt32Array.h"
 #include "vtkUnsignedCharArray.h"
+
+#include <vtk_glew.h>
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 //------------------------------------------------------------------------------
 vtkSplineTubeMapper::vtkSplineTubeMapper()
+  : NodesBuffer(new vtkSplineVizGPUBuffer)
+  , SegmentsBuffer(new vtkSplineVizGPUBuffer)
+  , TubesBuffer(new vtkSplineVizGPUBuffer)
+  , ColorsBuffer(new vtkSplineVizGPUBuffer)
+  , ColorDerivativesBuffer(new vtkSplineVizGPUBuffer)
 {
   // The tube data is built per data change; the VBO shift/scale machinery of
   // the superclass does not apply (we shift positions ourselves).
   this->SetVBOShiftScaleMethod(vtkOpenGLVertexBufferObject::DISABLE_SHIFT_SCALE);
+  // Superclass code reads the points of CurrentInput (see RenderPiece).
   vtkNew<vtkPoints> noPoints;
   this->EmptyInput->SetPoints(noPoints);
 }
@@ -281,15 +295,289 @@ void vtkSplineTubeMapper::ReleaseGraphicsResources(vtkWindow* window)
     this->Primitives[i].ReleaseGraphicsResources(window);
     this->SelectionPrimitives[i].ReleaseGraphicsResources(window);
   }
+  this->NodesBuffer->ReleaseGraphicsResources(window);
+  this->SegmentsBuffer->ReleaseGraphicsResources(window);
+  this->TubesBuffer->ReleaseGraphicsResources(window);
+  this->ColorsBuffer->ReleaseGraphicsResources(window);
+  this->ColorDerivativesBuffer->ReleaseGraphicsResources(window);
   this->UploadTime = vtkTimeStamp();
   this->Modified();
 }
 
 //------------------------------------------------------------------------------
+bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
+{
+  vtkSplineTubeCore* core = this->Core;
+  const vtkIdType numNodes = core->GetNumberOfNodes();
+  const vtkIdType numSegments = core->GetNumberOfSegments();
+  const vtkIdType numTubes = core->GetNumberOfTubes();
+  if (numNodes >= (vtkIdType(1) << 30))
+  {
+    vtkErrorMacro(<< "Too many nodes (" << numNodes << "); at most 2^30 are supported.");
+    return false;
+  }
+
+  // Nodes: (x, y, z, r), (dx, dy, dz, dr), positions relative to Shift.
+  std::vector<float> nodes(static_cast<size_t>(8 * numNodes));
+  const float* P = core->GetNodePositions()->GetPointer(0);
+  const float* M = core->GetNodeTangents()->GetPointer(0);
+  const float* R = core->GetNodeRadii()->GetPointer(0);
+  const double shift[3] = { this->Shift[0], this->Shift[1], this->Shift[2] };
+  vtkSMPTools::For(0, numNodes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        float* n = &nodes[8 * i];
+        for (int c = 0; c < 3; ++c)
+        {
+          n[c] = static_cast<float>(P[3 * i + c] - shift[c]);
+          n[4 + c] = M[3 * i + c];
+        }
+        n[3] = R[2 * i];
+        n[7] = R[2 * i + 1];
+      }
+    });
+  bool ok = this->NodesBuffer->Upload(window, nodes.data(), 2 * numNodes, 4, VTK_FLOAT, GL_RGBA32F);
+
+  // Segments: (first node | flags << 30, tube); tubes: (cell id, block id).
+  std::vector<vtkTypeUInt32> segments(static_cast<size_t>(2 * numSegments));
+  std::vector<vtkTypeInt32> tubes(static_cast<size_t>(2 * std::max<vtkIdType>(numTubes, 1)));
+  const vtkTypeUInt32* first = core->GetSegmentFirstNodes()->GetPointer(0);
+  const unsigned char* flags = core->GetSegmentFlags()->GetPointer(0);
+  vtkIdType s = 0;
+  for (vtkIdType t = 0; t < numTubes; ++t)
+  {
+    const vtkIdType n = core->GetTubeNumberOfNodes()->GetValue(t);
+    tubes[2 * t] = static_cast<vtkTypeInt32>(core->GetSegmentCellIds()->GetValue(s));
+    tubes[2 * t + 1] = static_cast<vtkTypeInt32>(core->GetSegmentBlockIds()->GetValue(s));
+    for (vtkIdType k = 0; k + 1 < n; ++k, ++s)
+    {
+      segments[2 * s] = first[s] | (static_cast<vtkTypeUInt32>(flags[s]) << 30);
+      segments[2 * s + 1] = static_cast<vtkTypeUInt32>(t);
+    }
+  }
+  ok = this->SegmentsBuffer->Upload(
+         window, segments.data(), numSegments, 2, VTK_TYPE_UINT32, GL_RG32UI) &&
+    ok;
+  ok = this->TubesBuffer->Upload(window, tubes.data(), numTubes, 2, VTK_TYPE_INT32, GL_RG32I) && ok;
+
+  // Colors (RGBA8) and their derivatives (signed, scaled by 127, clamped to
+  // [-1, 1]: a full color change per segment), only with scalar coloring.
+  if (this->HaveColors)
+  {
+    std::vector<unsigned char> colors(static_cast<size_t>(4 * numNodes));
+    std::vector<signed char> derivatives(static_cast<size_t>(4 * numNodes));
+    const float* C = core->GetNodeColors()->GetPointer(0);
+    const float* D = core->GetNodeColorDerivatives()->GetPointer(0);
+    vtkSMPTools::For(0, 4 * numNodes,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          colors[i] =
+            static_cast<unsigned char>(std::lround(255.0f * std::min(1.0f, std::max(0.0f, C[i]))));
+          derivatives[i] =
+            static_cast<signed char>(std::lround(127.0f * std::min(1.0f, std::max(-1.0f, D[i]))));
+        }
+      });
+    ok =
+      this->ColorsBuffer->Upload(window, colors.data(), numNodes, 4, VTK_UNSIGNED_CHAR, GL_RGBA8) &&
+      ok;
+    ok = this->ColorDerivativesBuffer->Upload(
+           window, derivatives.data(), numNodes, 4, VTK_SIGNED_CHAR, GL_RGBA8I) &&
+      ok;
+  }
+  else
+  {
+    this->ColorsBuffer->ReleaseGraphicsResources(window);
+    this->ColorDerivativesBuffer->ReleaseGraphicsResources(window);
+  }
+  if (!ok)
+  {
+    vtkErrorMacro(<< "Could not upload the tubes buffer to the GPU.");
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::ActivateTubeBuffers(vtkShaderProgram* program)
+{
+  this->NodesBuffer->Activate(program, "tubeNodes");
+  this->SegmentsBuffer->Activate(program, "tubeSegments");
+  if (program->IsUniformUsed("tubeTubes"))
+  {
+    this->TubesBuffer->Activate(program, "tubeTubes");
+  }
+  if (this->HaveColors)
+  {
+    this->ColorsBuffer->Activate(program, "tubeColors");
+    this->ColorDerivativesBuffer->Activate(program, "tubeColorDerivatives");
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::DeactivateTubeBuffers()
+{
+  this->NodesBuffer->Deactivate();
+  this->SegmentsBuffer->Deactivate();
+  this->TubesBuffer->Deactivate();
+  this->ColorsBuffer->Deactivate();
+  this->ColorDerivativesBuffer->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+size_t vtkSplineTubeMapper::GetTubeBuffersSize()
+{
+  return this->NodesBuffer->GetNumberOfBytes() + this->SegmentsBuffer->GetNumberOfBytes() +
+    this->TubesBuffer->GetNumberOfBytes() + this->ColorsBuffer->GetNumberOfBytes() +
+    this->ColorDerivativesBuffer->GetNumberOfBytes();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSplineTubeMapper::GetTubeColorDeclarations()
+{
+  return "uniform samplerBuffer tubeColors;\n"
+         "uniform isamplerBuffer tubeColorDerivatives;\n";
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSplineTubeMapper::GetTubeColorImplementation(
+  const char* nodeExpression, const char* tExpression)
+{
+  std::ostringstream s;
+  s << "  int tubeColorNode = " << nodeExpression << ";\n"
+    << "  vec4 tubeColor = clamp(svHermite(texelFetch(tubeColors, tubeColorNode),\n"
+    << "    vec4(texelFetch(tubeColorDerivatives, tubeColorNode)) / 127.0,\n"
+    << "    texelFetch(tubeColors, tubeColorNode + 1),\n"
+    << "    vec4(texelFetch(tubeColorDerivatives, tubeColorNode + 1)) / 127.0, " << tExpression
+    << "), 0.0, 1.0);\n";
+  return s.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::ReplaceShaderTubePicking(
+  std::string& FSSource, const char* tubeExpression)
+{
+  if (this->LastSelectionState < vtkHardwareSelector::MIN_KNOWN_PASS)
+  {
+    return;
+  }
+  const std::string encode =
+    "  gl_FragData[0] = vec4(float(idx % 256) / 255.0, float((idx / 256) % 256) / 255.0,\n"
+    "    float((idx / 65536) % 256) / 255.0, 1.0);\n";
+  const std::string tubes = std::string("texelFetch(tubeTubes, ") + tubeExpression + ")";
+  switch (this->LastSelectionState)
+  {
+    case vtkHardwareSelector::CELL_ID_LOW24:
+      vtkShaderProgram::Substitute(
+        FSSource, "//VTK::Picking::Dec", "uniform isamplerBuffer tubeTubes;\n");
+      vtkShaderProgram::Substitute(
+        FSSource, "//VTK::Picking::Impl", "  int idx = " + tubes + ".x;\n" + encode);
+      break;
+    case vtkHardwareSelector::CELL_ID_HIGH24:
+      vtkShaderProgram::Substitute(
+        FSSource, "//VTK::Picking::Dec", "uniform isamplerBuffer tubeTubes;\n");
+      vtkShaderProgram::Substitute(
+        FSSource, "//VTK::Picking::Impl", "  int idx = (" + tubes + ".x >> 24) & 0xff;\n" + encode);
+      break;
+    case vtkHardwareSelector::COMPOSITE_INDEX_PASS:
+      // The block's flat index (as vtkCompositePolyDataMapper2 reports it);
+      // a non-composite input keeps VTK's per-mapper index.
+      if (this->InputIsComposite)
+      {
+        vtkShaderProgram::Substitute(
+          FSSource, "//VTK::Picking::Dec", "uniform isamplerBuffer tubeTubes;\n");
+        vtkShaderProgram::Substitute(
+          FSSource, "//VTK::Picking::Impl", "  int idx = " + tubes + ".y;\n" + encode);
+      }
+      break;
+    case vtkHardwareSelector::POINT_ID_LOW24:
+    case vtkHardwareSelector::POINT_ID_HIGH24:
+      // Tubes have no points to pick.
+      vtkShaderProgram::Substitute(FSSource, "//VTK::Picking::Impl", "  discard;\n");
+      break;
+    default:
+      break; // actor and process passes: VTK's mapperIndex
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::ReplaceShaderColor(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  if (!this->HaveColors)
+  {
+    this->Superclass::ReplaceShaderColor(shaders, ren, act);
+    return;
+  }
+  // As VTK does for interpolated point colors, with the color spline's value.
+  std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
+  std::string colorDec = "uniform float ambientIntensity;\n"
+                         "uniform float diffuseIntensity;\n"
+                         "uniform float opacityUniform;\n"
+                         "uniform vec3 ambientColorUniform;\n"
+                         "uniform vec3 diffuseColorUniform;\n";
+  std::string colorImpl;
+  if (this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity)
+  {
+    colorDec += "uniform float specularIntensity;\n"
+                "uniform vec3 specularColorUniform;\n"
+                "uniform float specularPowerUniform;\n";
+    colorImpl += "  vec3 specularColor = specularIntensity * specularColorUniform;\n"
+                 "  float specularPower = specularPowerUniform;\n";
+  }
+  colorImpl += "  vec3 ambientColor = ambientIntensity * tubeColor.rgb;\n"
+               "  vec3 diffuseColor = diffuseIntensity * tubeColor.rgb;\n"
+               "  float opacity = opacityUniform * tubeColor.a;\n";
+  vtkShaderProgram::Substitute(FSSource, "//VTK::Color::Dec", colorDec);
+  vtkShaderProgram::Substitute(FSSource, "//VTK::Color::Impl", colorImpl);
+  shaders[vtkShader::Fragment]->SetSource(FSSource);
+}
+
+//------------------------------------------------------------------------------
+bool vtkSplineTubeMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  // Shader variants depend on scalar coloring and composite input too;
+  // always let the superclass update its bookkeeping.
+  const int variant = (this->HaveColors ? 1 : 0) | (this->InputIsComposite ? 2 : 0);
+  const bool superclass = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  if (variant != this->ShaderVariant)
+  {
+    this->ShaderVariant = variant;
+    return true;
+  }
+  return superclass;
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  this->ActivateTubeBuffers(cellBO.Program);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::ProcessSelectorPixelBuffers(
+  vtkHardwareSelector*, std::vector<unsigned int>&, vtkProp*)
+{
+  // The shader wrote the final cell and block ids; nothing to convert.
+}
+
+//------------------------------------------------------------------------------
 void vtkSplineTubeMapper::ComputeBounds()
 {
+  // The renderer asks every frame; the bounds (a pass over all segments)
+  // change only when the core is rebuilt.
   this->UpdateTubeCore();
-  this->Core->GetBounds(this->Bounds);
+  if (this->BoundsTime.GetMTime() < this->CoreBuildTime.GetMTime())
+  {
+    this->Core->GetBounds(this->CoreBounds);
+    this->BoundsTime.Modified();
+  }
+  std::copy(this->CoreBounds, this->CoreBounds + 6, this->Bounds);
 }
 
 //------------------------------------------------------------------------------

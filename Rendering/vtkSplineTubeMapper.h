@@ -20,8 +20,18 @@
  *   coloring change; the per-frame work stays on the GPU;
  * - bounds that include the tubes' radii.
  *
- * Subclasses upload what their shaders need (UploadTubes()) and draw
- * (RenderPieceDraw()).
+ * - the tubes buffer on the GPU (Salm §3, Fig. 3), as buffer textures read by
+ *   the shaders with texelFetch: per node the position and radius, the
+ *   tangent and radius derivative (`tubeNodes`, 2 RGBA32F texels), per segment
+ *   its first node, the TUBE_START/TUBE_END flags and its tube (`tubeSegments`,
+ *   RG32UI), per tube the cell and block ids for picking (`tubeTubes`, RG32I)
+ *   and, with scalar coloring, per node the color (`tubeColors`, RGBA8) and
+ *   its derivative (`tubeColorDerivatives`, RGBA8I, scaled by 127);
+ * - the fragment-shader code for the color spline and for hardware picking
+ *   (cell = polyline, composite index = block).
+ *
+ * Subclasses upload what their shaders need (UploadTubes(), usually through
+ * UploadTubeBuffers()) and draw (RenderPieceDraw()).
  */
 #ifndef vtkSplineTubeMapper_h
 #define vtkSplineTubeMapper_h
@@ -30,11 +40,14 @@
 #include "vtkNew.h"          // for vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 
+#include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
 class vtkMatrix4x4;
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
 class vtkSplineTubeCore;
+class vtkSplineVizGPUBuffer;
 
 class SPLINEVIZ_EXPORT vtkSplineTubeMapper : public vtkOpenGLPolyDataMapper
 {
@@ -116,6 +129,54 @@ protected:
   /// Upload the tube data to the GPU (called after the core was rebuilt).
   virtual void UploadTubes(vtkOpenGLRenderWindow* window) = 0;
 
+  ///@{
+  /**
+   * The tubes buffer shared by the tube mappers (see the class comment).
+   * UploadTubeBuffers() uploads it from the core (positions relative to
+   * Shift); ActivateTubeBuffers() binds it to the uniforms tubeNodes,
+   * tubeSegments, tubeTubes, tubeColors and tubeColorDerivatives (those the
+   * program uses); GetTubeBuffersSize() counts its bytes.
+   */
+  bool UploadTubeBuffers(vtkOpenGLRenderWindow* window);
+  void ActivateTubeBuffers(vtkShaderProgram* program);
+  void DeactivateTubeBuffers();
+  size_t GetTubeBuffersSize();
+  ///@}
+
+  /**
+   * Fragment-shader declarations of the color spline (with scalar coloring).
+   */
+  static std::string GetTubeColorDeclarations();
+
+  /**
+   * Fragment-shader code declaring `vec4 tubeColor`, the color spline of node
+   * `nodeExpression` (and the next node) at the curve parameter `tExpression`.
+   */
+  static std::string GetTubeColorImplementation(
+    const char* nodeExpression, const char* tExpression);
+
+  /**
+   * Replace the picking tags of a fragment shader for the current selection
+   * pass: the cell is the polyline of tube `tubeExpression` (an int
+   * expression), the composite index its block's flat index (a non-composite
+   * input keeps VTK's per-mapper index); tubes have no points to pick.
+   */
+  void ReplaceShaderTubePicking(std::string& FSSource, const char* tubeExpression);
+
+  /**
+   * With scalar coloring, the fragment color is the color spline's value
+   * `tubeColor` (declared by the subclass' shader code, see
+   * GetTubeColorImplementation()); otherwise the actor's color as usual.
+   */
+  void ReplaceShaderColor(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /// Binds the tubes buffer (ActivateTubeBuffers()).
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /// The shaders wrote the final cell and block ids: nothing to convert.
+  void ProcessSelectorPixelBuffers(
+    vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
+
   /// True when the data on the GPU is older than the core.
   bool NeedToUploadTubes() const { return this->UploadTime < this->CoreBuildTime; }
 
@@ -146,8 +207,17 @@ protected:
   double Shift[3] = { 0.0, 0.0, 0.0 };
   vtkTimeStamp CoreBuildTime;
   vtkTimeStamp UploadTime;
+  vtkTimeStamp BoundsTime; ///< when CoreBounds were computed from the core
+  double CoreBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   bool HaveColors = false;       ///< the tubes carry per-node colors (scalar coloring)
   bool InputIsComposite = false; ///< block ids are flat indices of a composite input
+  int ShaderVariant = -1;        ///< colors and composite input the shaders were made for
+
+  std::unique_ptr<vtkSplineVizGPUBuffer> NodesBuffer;
+  std::unique_ptr<vtkSplineVizGPUBuffer> SegmentsBuffer;
+  std::unique_ptr<vtkSplineVizGPUBuffer> TubesBuffer;
+  std::unique_ptr<vtkSplineVizGPUBuffer> ColorsBuffer;
+  std::unique_ptr<vtkSplineVizGPUBuffer> ColorDerivativesBuffer;
 
 private:
   vtkSplineTubeMapper(const vtkSplineTubeMapper&) = delete;

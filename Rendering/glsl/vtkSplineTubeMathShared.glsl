@@ -561,3 +561,131 @@ vec3 svInterpolateFrame(vec3 n0, vec3 n1, real t, vec3 tangent)
   }
   return normalize(n);
 }
+
+//------------------------------------------------------------------------------
+// Tessellated tubes (Salm §3.1): the disk-swept tube surface.
+//
+// A point of the surface is S(t, a) = c(t) + rho r(t) o(t, a), with c and r the
+// position and radius splines, o the unit offset vector at angle a (radians)
+// around the axis in the cross-section plane spanned by the orthogonal vector
+// n(t) and b = T x n (T the unit tangent), rho = 1 on the wall and in [0, 1]
+// on the flat end caps.
+
+// Second derivative with respect to t of svHermite.
+vec4 svHermiteSecondDerivative(vec4 p0, vec4 m0, vec4 p1, vec4 m1, real t)
+{
+  real e00 = 12.0 * t - 6.0;
+  real e10 = 6.0 * t - 4.0;
+  real e01 = 6.0 - 12.0 * t;
+  real e11 = 6.0 * t - 2.0;
+  return e00 * p0 + e10 * m0 + e01 * p1 + e11 * m1;
+}
+
+// Octahedral encoding of a unit vector into [-1, 1]^2 (the compact format of
+// the orthogonal vectors in the tubes buffer, as Salm §5 suggests) and back.
+vec2 svOctEncode(vec3 n)
+{
+  real s = abs(n.x) + abs(n.y) + abs(n.z);
+  real x = n.x / s;
+  real y = n.y / s;
+  if (n.z < 0.0)
+  {
+    real ox = (1.0 - abs(y)) * (x >= 0.0 ? 1.0 : -1.0);
+    real oy = (1.0 - abs(x)) * (y >= 0.0 ? 1.0 : -1.0);
+    x = ox;
+    y = oy;
+  }
+  return vec2(x, y);
+}
+
+vec3 svOctDecode(vec2 e)
+{
+  real x = e.x;
+  real y = e.y;
+  real z = 1.0 - abs(x) - abs(y);
+  if (z < 0.0)
+  {
+    real ox = (1.0 - abs(y)) * (x >= 0.0 ? 1.0 : -1.0);
+    real oy = (1.0 - abs(x)) * (y >= 0.0 ? 1.0 : -1.0);
+    x = ox;
+    y = oy;
+  }
+  return normalize(vec3(x, y, z));
+}
+
+// Unit offset vector at angle `angle` around the unit tangent `unitTangent`,
+// from the unit orthogonal vector `n` (angle 0).
+vec3 svTubeOffset(vec3 n, vec3 unitTangent, real angle)
+{
+  vec3 b = cross(unitTangent, n);
+  return cos(angle) * n + sin(angle) * b;
+}
+
+// Angle of the base-mesh coordinate s in [0, 1] (one turn); s = 1 gives
+// exactly the angle of s = 0, so that the mesh closes without a seam.
+real svTubeAngle(real s)
+{
+  return 6.283185307179586 * fract(s);
+}
+
+// Point of the tube surface of the segment (p0, m0) -> (p1, m1) (xyz: position
+// and its derivative, w: radius and its derivative) with the orthogonal
+// vectors f0, f1 at its nodes: curve parameter t, angle `angle`, relative
+// radius rho. Also returns the unit offset vector.
+vec3 svTubeSurfacePoint(vec4 p0, vec4 m0, vec4 p1, vec4 m1, vec3 f0, vec3 f1, real t, real angle,
+  real rho, SV_OUT(vec3) offset)
+{
+  vec4 c = svHermite(p0, m0, p1, m1, t);
+  vec3 d = vec3(svHermiteDerivative(p0, m0, p1, m1, t));
+  vec3 tangent = normalize(d);
+  vec3 n = svInterpolateFrame(f0, f1, t, d);
+  offset = svTubeOffset(n, tangent, angle);
+  return vec3(c) + (rho * c.w) * offset;
+}
+
+// Normal of the tube wall (Salm Fig. 7): the offset vector projected onto the
+// plane of the surface tangent `surfaceTangent` (the derivative of the
+// surface point along the curve), normalized.
+vec3 svTubeNormal(vec3 offset, vec3 surfaceTangent)
+{
+  real len = length(surfaceTangent);
+  if (len <= 0.0)
+  {
+    return offset;
+  }
+  vec3 s = surfaceTangent / len;
+  return normalize(offset - dot(offset, s) * s);
+}
+
+// Surface tangent of the wall along the curve, analytically, up to a
+// component along the angular direction: o stays orthogonal to T, so the part
+// of o' along T is -(o . T') T and dS/dt = c' + r' o - r (o . T') T + (twist),
+// T' = (c'' - (c'' . T) T) / |c'|. The twist part is orthogonal to the offset
+// and to this vector, so svTubeNormal(o, svTubeSurfaceTangent(...)) is the
+// exact normal for any frame.
+// d, dd: first and second derivative of the position spline; r, dr: radius
+// and its derivative; o: unit offset vector.
+vec3 svTubeSurfaceTangent(vec3 d, vec3 dd, real r, real dr, vec3 o)
+{
+  real speed = length(d);
+  vec3 tangent = d / speed;
+  vec3 dT = (dd - dot(dd, tangent) * tangent) / speed;
+  return d + dr * o - (r * dot(o, dT)) * tangent;
+}
+
+// Normal of the tube wall at (t, angle) as Salm computes it (Fig. 7): the
+// surface tangent along the curve by a central difference of
+// svTubeSurfacePoint (step 1/64 of the segment; the cubic is extended beyond
+// [0, 1] at the ends), then svTubeNormal. `offset` is the unit offset vector
+// at (t, angle). Pass positions relative to a point near the segment (e.g.
+// p1 - p0 and a zero p0) so that the difference keeps its precision.
+vec3 svTubeWallNormal(
+  vec4 p0, vec4 m0, vec4 p1, vec4 m1, vec3 f0, vec3 f1, real t, real angle, vec3 offset)
+{
+  real h = 0.015625;
+  vec3 oa;
+  vec3 ob;
+  vec3 a = svTubeSurfacePoint(p0, m0, p1, m1, f0, f1, t + h, angle, 1.0, oa);
+  vec3 b = svTubeSurfacePoint(p0, m0, p1, m1, f0, f1, t - h, angle, 1.0, ob);
+  return svTubeNormal(offset, a - b);
+}

@@ -10,6 +10,7 @@ expected = {
     "vtkSyntheticFibersSource",
     "vtkSplineTubeMapper",
     "vtkRayCastTubeMapper",
+    "vtkTessellatedTubeMapper",
     "vtkTensorAnalysisFilter",
     "vtkSuperquadricGlyphMapper",
 }

@@ -1,0 +1,127 @@
+// Tessellated spline tubes (Salm §3.1), tessellation-evaluation stage: every
+// vertex of the refined patch is bent onto the tube again, from its patch
+// coordinates: angle parameter s along u, curve parameter t along v (wall) or
+// relative radius 1 - v (caps). The orthogonal vector is interpolated between
+// the segment's pre-computed ones, re-projected onto the cross-section plane
+// and normalized (svInterpolateFrame); the wall normal is the offset vector
+// projected onto the plane of the numerically determined surface tangent
+// (Salm Fig. 7, svTubeWallNormal); the caps' normal is the axis direction.
+// The color spline (scalar coloring) is evaluated per vertex here and
+// interpolated per pixel (the refined edges are at most tubeMaxEdgeLength
+// pixels long, much shorter near the silhouettes; per pixel it cost a
+// quarter of the frame time on llvmpipe).
+// Shared edges get bit-identical vertices: every position is computed by the
+// same code from parameters that are exact at the patch borders.
+// A patch spanning a run of segments (count > 1) finds the segment of each
+// vertex from its curve parameter t in [0, count] and reads its nodes. In the
+// single-patch mode (tubeSides == 1, thin tubes drawn with few vertices per
+// ring) the offsets are scaled so that the polygonal cross-section of L
+// vertices has the mean width of the circle (factor pi / (L sin(pi / L))).
+
+layout(quads, equal_spacing, ccw) in;
+
+patch in vec4 tubePatchP0;
+patch in vec4 tubePatchM0;
+patch in vec4 tubePatchP1;
+patch in vec4 tubePatchM1;
+patch in vec3 tubePatchF0;
+patch in vec3 tubePatchF1;
+patch in vec4 tubePatchParams;
+patch in ivec4 tubePatchInfo;
+
+uniform mat4 VCDCMatrix;
+uniform int tubeSides;
+uniform int tubeHaveColors;
+uniform samplerBuffer tubeColors;           // per node: RGBA
+uniform isamplerBuffer tubeColorDerivatives; // per node: derivative * 127
+
+out vec4 vertexVCVSOutput;
+out vec3 tubeNormalVCVSOutput;
+out float tubeTVSOutput;
+flat out ivec4 tubeInfoVSOutput;
+out vec4 tubeColorVSOutput;
+
+//VTK::SplineTubeMath::Dec
+
+//VTK::TessellatedTubeCommon::Dec
+
+// Segment and local parameter of curve parameter t in [0, count] (a
+// vertex at a node belongs to the segment before it, t = 0 to the first).
+int tubeSegmentOf(float t, int count)
+{
+  return clamp(int(ceil(t)) - 1, 0, count - 1);
+}
+
+void main()
+{
+  float u = gl_TessCoord.x;
+  float v = gl_TessCoord.y;
+  int kind = (tubePatchInfo.w >> 2) & 3;
+  int count = tubePatchInfo.w >> 4;
+  float s = mix(tubePatchParams.x, tubePatchParams.y, u);
+  float angle = svTubeAngle(s);
+  float tGlobal = kind == 0 ? mix(tubePatchParams.z, tubePatchParams.w, v) : tubePatchParams.z;
+  float rho = kind == 0 ? 1.0 : 1.0 - v;
+  if (tubeSides == 1)
+  {
+    // Mean width of the polygonal cross-section = the circle's diameter.
+    float L = v == 0.0 ? gl_TessLevelOuter[1]
+                       : (v == 1.0 && kind == 0 ? gl_TessLevelOuter[3] : gl_TessLevelInner[0]);
+    L = max(ceil(L), 3.0);
+    rho *= 3.141592653589793 / (L * sin(3.141592653589793 / L));
+  }
+
+  TubeSegment seg;
+  float t = tGlobal;
+  int k = 0;
+  if (count > 1)
+  {
+    k = tubeSegmentOf(tGlobal, count);
+    seg = tubeLoadSegment(tubePatchInfo.x + k);
+    t = tGlobal - float(k);
+  }
+  else
+  {
+    seg.p0 = tubePatchP0;
+    seg.m0 = tubePatchM0;
+    seg.p1 = tubePatchP1;
+    seg.m1 = tubePatchM1;
+    seg.f0 = tubePatchF0;
+    seg.f1 = tubePatchF1;
+  }
+
+  vec3 offset;
+  vec3 position =
+    svTubeSurfacePoint(seg.p0, seg.m0, seg.p1, seg.m1, seg.f0, seg.f1, t, angle, rho, offset);
+  vec3 normal;
+  if (kind == 0)
+  {
+    // Relative to the first node for the difference's precision.
+    vec4 p1 = vec4(seg.p1.xyz - seg.p0.xyz, seg.p1.w);
+    normal = svTubeWallNormal(
+      vec4(0.0, 0.0, 0.0, seg.p0.w), seg.m0, p1, seg.m1, seg.f0, seg.f1, t, angle, offset);
+  }
+  else
+  {
+    vec3 axis = normalize(svHermiteDerivative(seg.p0, seg.m0, seg.p1, seg.m1, t).xyz);
+    normal = kind == 1 ? -axis : axis;
+  }
+
+  vec4 color = vec4(1.0);
+  if (tubeHaveColors != 0)
+  {
+    int node = tubePatchInfo.x + k;
+    color = clamp(svHermite(texelFetch(tubeColors, node),
+                    vec4(texelFetch(tubeColorDerivatives, node)) / 127.0,
+                    texelFetch(tubeColors, node + 1),
+                    vec4(texelFetch(tubeColorDerivatives, node + 1)) / 127.0, t),
+      0.0, 1.0);
+  }
+
+  vertexVCVSOutput = vec4(position, 1.0);
+  tubeNormalVCVSOutput = normal;
+  tubeColorVSOutput = color;
+  tubeTVSOutput = tGlobal;
+  tubeInfoVSOutput = tubePatchInfo;
+  gl_Position = VCDCMatrix * vec4(position, 1.0);
+}

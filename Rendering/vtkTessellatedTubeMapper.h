@@ -1,0 +1,299 @@
+/**
+ * @class   vtkTessellatedTubeMapper
+ * @brief   Renders polylines as smooth spline tubes with the GPU tessellation unit.
+ *
+ * Implements the tessellation-based approach of Salm, "Interactive Rendering
+ * of Spline Tubes", §3.1. Each polyline becomes a tube whose axis, radius and
+ * color follow cubic Hermite splines through the points (see
+ * vtkSplineTubeCore); its cross-sections are disks orthogonal to the axis
+ * (the disk model), closed by flat end caps.
+ *
+ * - **Base tessellation**: one cylinder mesh of quad patches, BaseRings vertex
+ *   rings of BaseSides vertices plus the two cap centers, drawn instanced, one
+ *   instance per segment of all tubes (a single draw call). The vertex stage
+ *   reads the segment's nodes from the tubes buffer and bends the mesh along
+ *   the position spline: the offset from the axis is built from the
+ *   orthogonal vectors the CPU propagated along each tube (rotation-minimizing
+ *   frames, vtkSplineTubeCore), interpolated, re-projected onto the
+ *   cross-section plane and normalized, and scaled by the radius spline.
+ * - **Level of detail** (LevelOfDetail, on by default; beyond the paper,
+ *   which proposes it as future work): on llvmpipe and for large data the
+ *   base geometry itself dominates the frame time (Salm §3.3 observes the
+ *   same on a GPU). Per view, chunks of up to 16 consecutive segments are
+ *   culled against the view frustum and given the fewest vertex rings (from
+ *   BaseRings down to 2, halving the intervals) whose spacing stays below half
+ *   MaxEdgeLength on screen. Per tube, from its widest visible part, the
+ *   circumference in steps of twice MaxSilhouetteEdgeLength gives the
+ *   vertices needed per ring: up to 8, the wall is one patch around the
+ *   segment whose ring levels (from the node rings alone, so neighbours
+ *   agree) make those vertices, its offsets scaled so that the polygonal
+ *   cross-section keeps the circle's mean width, and the rasterizer culls
+ *   its back faces; a whole chunk is then one patch if it is at most 256
+ *   pixels long on screen (the evaluation stage finds each vertex's segment;
+ *   the level along follows the screen-space curvature of the node chain);
+ *   more than 8, the base mesh has at least half the needed vertices per ring
+ *   (BaseSides halved down to 4) and Salm's refinement does the rest. The
+ *   side count is chosen per tube so that the rings at the junctions always
+ *   match (no cracks). One instanced draw per (rings, sides) bin reads its
+ *   segments from an instance list; caps are drawn for the tubes' end
+ *   segments only. The classification is O(chunks + segments) CPU work per
+ *   view change (vtkSMPTools), skipped when the view did not change. With
+ *   LevelOfDetail off, every segment is drawn with the full base mesh, as in
+ *   the paper.
+ * - **Refinement** (tessellation control stage): back-patch culling (a patch
+ *   is dropped when all its vertex normals face away from the eye), frustum
+ *   culling, then per edge the larger of a screen-space criterion (edges of
+ *   at most MaxEdgeLength pixels, level at most MaxTessellationLevel) and the
+ *   silhouette criterion (the edge's view-space length divided by the clip w
+ *   of its midpoint, in pixels, weighted by its closeness to the silhouette:
+ *   1 when its end normals face opposite ways, else the cube of how flat the
+ *   angle between its normals and the rays to the eye is, for edges of at most
+ *   MaxSilhouetteEdgeLength pixels, level at most
+ *   MaxSilhouetteTessellationLevel; Salm's fix for notchy silhouettes). Inner
+ *   levels are the maxima of the opposite outer levels. Levels depend only on
+ *   the edge's two vertices, so patches sharing an edge (also across
+ *   segments) agree and the tubes stay watertight.
+ * - **Evaluation stage**: the refined vertices are bent onto the tube again;
+ *   the wall normal is the offset vector projected onto the plane of the
+ *   numerically determined surface tangent (Salm Fig. 7).
+ * - **End caps** (Capping): flat disks at the ends of each tube, with the seam
+ *   (the cap's rim) refined like a silhouette (Salm Fig. 11); caps between
+ *   the segments of a tube are culled.
+ * - **Fragment stage**: per-pixel normal, VTK's lighting, opacity, clipping
+ *   planes, depth peeling and hardware picking (cell = the polyline,
+ *   composite block index). The color spline of mapped scalars is evaluated
+ *   per refined vertex by the evaluation stage and interpolated per pixel
+ *   (Salm evaluates it per pixel; at the refined edge lengths the result is
+ *   the same, and per pixel it cost a quarter of the frame on llvmpipe).
+ * - Multisampling works when the render window has samples; the actor's
+ *   wireframe representation shows the tessellated triangles.
+ *
+ * Data on the GPU (uploaded once per data change): the tubes buffer of
+ * vtkSplineTubeMapper (per node 32 bytes, 8 more with scalar coloring; per
+ * segment 8 bytes; per tube 8 bytes) plus the orthogonal vectors, octahedral
+ * encoded in 4 bytes per node (Salm's suggested compact format), and the base
+ * mesh's index buffer (once). See GetGPUMemorySize().
+ *
+ * VTK 9.2's vtkShader has no tessellation stages: the mapper lets VTK build
+ * and link the vertex and fragment stages (with all of VTK's shader
+ * replacements), then compiles its control and evaluation stages with raw
+ * OpenGL, attaches them to the same program and links it again before any
+ * uniform is looked up. Without tessellation shaders (OpenGL < 4.0 and no
+ * GL_ARB_tessellation_shader), the mapper warns once and draws the tubes
+ * with a vtkRayCastTubeMapper with the same settings instead.
+ *
+ * Limitations: translucent tubes show their front walls only (back patches
+ * are culled); bulbs (self-intersections of the disk model where the radius
+ * is large compared to the curvature radius) are not removed (Salm Fig. 9);
+ * point picking is not supported (cell and block picking are); non-uniform
+ * actor scaling is treated as the uniform scale with the same volume change.
+ *
+ * @sa vtkRayCastTubeMapper vtkSplineTubeCore vtkSplineTubeMapper
+ */
+#ifndef vtkTessellatedTubeMapper_h
+#define vtkTessellatedTubeMapper_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkSmartPointer.h" // for vtkSmartPointer
+#include "vtkSplineTubeMapper.h"
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class vtkOpenGLBufferObject;
+class vtkRayCastTubeMapper;
+class vtkRenderWindow;
+
+class SPLINEVIZ_EXPORT vtkTessellatedTubeMapper : public vtkSplineTubeMapper
+{
+public:
+  static vtkTessellatedTubeMapper* New();
+  vtkTypeMacro(vtkTessellatedTubeMapper, vtkSplineTubeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Largest screen-space edge length (pixels) the refinement aims at
+   * (Salm's first criterion). Default 16.
+   */
+  vtkSetClampMacro(MaxEdgeLength, double, 0.5, 1e6);
+  vtkGetMacro(MaxEdgeLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Largest edge length (pixels) near the silhouettes and along the rims of
+   * the caps (Salm's silhouette criterion and finer seams). Default 4.
+   */
+  vtkSetClampMacro(MaxSilhouetteEdgeLength, double, 0.5, 1e6);
+  vtkGetMacro(MaxSilhouetteEdgeLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Upper bound of the tessellation level from the screen-space criterion.
+   * 1 with MaxSilhouetteTessellationLevel 1 draws the base mesh only.
+   * Default 5 (Salm). At most 64.
+   */
+  vtkSetClampMacro(MaxTessellationLevel, int, 1, 64);
+  vtkGetMacro(MaxTessellationLevel, int);
+  ///@}
+
+  ///@{
+  /**
+   * Upper bound of the tessellation level from the silhouette criterion and
+   * of the caps' seams. Default 7 (Salm). At most 64.
+   */
+  vtkSetClampMacro(MaxSilhouetteTessellationLevel, int, 1, 64);
+  vtkGetMacro(MaxSilhouetteTessellationLevel, int);
+  ///@}
+
+  ///@{
+  /**
+   * Number of vertex rings of the base mesh along each segment (at least 2).
+   * Default 16 (Salm).
+   */
+  vtkSetClampMacro(BaseRings, int, 2, 1024);
+  vtkGetMacro(BaseRings, int);
+  ///@}
+
+  ///@{
+  /**
+   * Number of vertices per ring of the base mesh (at least 3). Default 8 (Salm).
+   */
+  vtkSetClampMacro(BaseSides, int, 3, 1024);
+  vtkGetMacro(BaseSides, int);
+  ///@}
+
+  ///@{
+  /**
+   * Choose the base mesh per view (see the class comment). Default on.
+   */
+  vtkSetMacro(LevelOfDetail, bool);
+  vtkGetMacro(LevelOfDetail, bool);
+  vtkBooleanMacro(LevelOfDetail, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Close the tubes with flat caps at their ends. Default on.
+   */
+  vtkSetMacro(Capping, bool);
+  vtkGetMacro(Capping, bool);
+  vtkBooleanMacro(Capping, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Count the triangles the tessellation generates (a GL_PRIMITIVES_GENERATED
+   * query around the draw; it waits for the draw to finish, so leave it off
+   * for interactive rendering). Default off.
+   */
+  vtkSetMacro(CountPrimitives, bool);
+  vtkGetMacro(CountPrimitives, bool);
+  vtkBooleanMacro(CountPrimitives, bool);
+  ///@}
+
+  /**
+   * Triangles generated by the last render (with CountPrimitives on; 0 otherwise).
+   */
+  vtkGetMacro(NumberOfPrimitivesGenerated, vtkTypeUInt64);
+
+  /**
+   * Whether the OpenGL context of `window` has tessellation shaders (makes
+   * the context current). Without them the mapper draws with a
+   * vtkRayCastTubeMapper.
+   */
+  static bool IsTessellationSupported(vtkRenderWindow* window);
+
+  /**
+   * True when the last render fell back to the ray-cast mapper.
+   */
+  vtkGetMacro(UsingFallback, bool);
+
+  /**
+   * Segments drawn by the last render with each number of vertex rings and
+   * sides (level-of-detail statistics): a string "rings x sides: segments"
+   * per bin, and the number of segments culled on the CPU.
+   */
+  std::string GetLevelOfDetailSummary();
+
+  /**
+   * Bytes of tube data on the GPU: the tubes buffer, the orthogonal vectors,
+   * the instance list and the base meshes.
+   */
+  size_t GetGPUMemorySize() override;
+
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+
+protected:
+  vtkTessellatedTubeMapper();
+  ~vtkTessellatedTubeMapper() override;
+
+  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
+  void UploadTubes(vtkOpenGLRenderWindow* window) override;
+  void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+
+  void UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void GetShaderTemplate(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderClip(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  ///@{
+  /**
+   * The GLSL of the tessellation stages (without the #version line), with
+   * the shared math substituted. Tests override them to check that broken
+   * shaders are caught.
+   */
+  virtual std::string GetTessellationControlShaderSource();
+  virtual std::string GetTessellationEvaluationShaderSource();
+  ///@}
+
+  double MaxEdgeLength = 16.0;
+  double MaxSilhouetteEdgeLength = 4.0;
+  int MaxTessellationLevel = 5;
+  int MaxSilhouetteTessellationLevel = 7;
+  int BaseRings = 16;
+  int BaseSides = 8;
+  bool LevelOfDetail = true;
+  bool Capping = true;
+  bool CountPrimitives = false;
+  vtkTypeUInt64 NumberOfPrimitivesGenerated = 0;
+  bool UsingFallback = false;
+
+private:
+  vtkTessellatedTubeMapper(const vtkTessellatedTubeMapper&) = delete;
+  void operator=(const vtkTessellatedTubeMapper&) = delete;
+
+  /// Compile our stages (once per context), attach them to `program` and
+  /// link it again, unless it already has them. False (with an error) on failure.
+  bool LinkTessellationStages(vtkShaderProgram* program, vtkOpenGLRenderWindow* window);
+  void ReleaseTessellationStages();
+  /// The base meshes of every (rings, sides) level of detail, in one index buffer.
+  bool BuildBaseMeshes();
+  /// Per-data level-of-detail preparation (chunks, bounding spheres).
+  void BuildChunks();
+  /// Per-view level-of-detail bins and the instance list; false without any draw.
+  bool UpdateDraws(vtkRenderer* ren, vtkActor* act);
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+  std::unique_ptr<vtkSplineVizGPUBuffer> FramesBuffer;
+  vtkSmartPointer<vtkOpenGLBufferObject> BaseMeshes;
+
+  unsigned int ControlShader = 0;
+  unsigned int EvaluationShader = 0;
+  std::string StagesVersion; ///< #version line the stages were compiled with
+  bool StagesFailed = false;
+  unsigned int PrimitivesQuery = 0;
+
+  vtkSmartPointer<vtkRayCastTubeMapper> Fallback;
+  bool FallbackWarned = false;
+};
+
+#endif

@@ -1,0 +1,59 @@
+// Image regression test of vtkTessellatedTubeMapper far away: the synthetic
+// "Fibers" data set (241 tubes, 3,530 segments) in a small window, where the
+// level of detail draws thin tubes with one patch around, far thin tubes with
+// one patch per chunk of segments. Also checks that those levels are used.
+#include "vtkTessellatedTubeMapper.h"
+
+#include "SplineVizTestUtilities.h"
+#include "vtkSyntheticFibersSource.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkRegressionTestImage.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
+
+#include <string>
+
+int TestTessellatedTubeMapperFar(int argc, char* argv[])
+{
+  vtkNew<vtkSyntheticFibersSource> fibers;
+  fibers->SetPresetToFibers();
+  vtkNew<vtkTessellatedTubeMapper> mapper;
+  mapper->SetInputConnection(fibers->GetOutputPort());
+  mapper->SetRadiusArray("Radius");
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray("Scalar");
+  mapper->SetScalarRange(0.0, 1.0);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.1, 0.1, 0.12);
+  vtkNew<vtkRenderWindow> window;
+  window->SetMultiSamples(0);
+  window->SetSize(300, 300);
+  window->AddRenderer(renderer);
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Azimuth(30);
+  renderer->GetActiveCamera()->Elevation(20);
+  renderer->ResetCameraClippingRange();
+  window->Render();
+
+  SplineVizTestStatus status;
+  const std::string summary = mapper->GetLevelOfDetailSummary();
+  std::cout << "levels of detail: " << summary << std::endl;
+  SV_CHECK_MSG(status, summary.find("chunks") != std::string::npos, "no chunk patches far away");
+  SV_CHECK_MSG(status, summary.find(" x 1:") != std::string::npos, "no single patches around");
+
+  int result = vtkRegressionTestImage(window);
+  if (result == vtkRegressionTester::DO_INTERACTOR)
+  {
+    vtkNew<vtkRenderWindowInteractor> interactor;
+    interactor->SetRenderWindow(window);
+    interactor->Start();
+  }
+  return (!result || status.Result()) ? EXIT_FAILURE : EXIT_SUCCESS;
+}
