@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -272,5 +273,71 @@ bool KindlmannShape(
   double cl, double cp, double gamma, double minimumRoundness, double& alpha, double& beta)
 {
   return shared::svtKindlmannShape(cl, cp, gamma, minimumRoundness, alpha, beta);
+}
+
+//------------------------------------------------------------------------------
+void FromEigenSystem(const double values[3], const double vectors[3][3], double t[6])
+{
+  for (int i = 0; i < 6; ++i)
+  {
+    t[i] = 0.0;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    const double l = values[k];
+    const double* e = vectors[k];
+    t[0] += l * e[0] * e[0];
+    t[1] += l * e[1] * e[1];
+    t[2] += l * e[2] * e[2];
+    t[3] += l * e[0] * e[1];
+    t[4] += l * e[1] * e[2];
+    t[5] += l * e[0] * e[2];
+  }
+}
+
+//------------------------------------------------------------------------------
+bool Log(const double t[6], double minimumEigenvalue, double logT[6])
+{
+  if (!AllFinite(t, 6) || !(minimumEigenvalue > 0.0) || !std::isfinite(minimumEigenvalue))
+  {
+    return false;
+  }
+  double values[3], vectors[3][3];
+  EigenDecomposition(t, values, vectors);
+  for (double& l : values)
+  {
+    l = std::log(std::max(l, minimumEigenvalue));
+  }
+  FromEigenSystem(values, vectors, logT);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void Exp(const double t[6], double expT[6], double values[3], double vectors[3][3])
+{
+  double l[3], e[3][3];
+  EigenDecomposition(t, l, e);
+  for (double& v : l)
+  {
+    v = std::exp(v);
+  }
+  FromEigenSystem(l, e, expT);
+  if (values)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      values[i] = l[i];
+    }
+  }
+  if (vectors)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        vectors[i][j] = e[i][j];
+      }
+    }
+  }
 }
 }
