@@ -463,6 +463,14 @@ public:
   }
 
 private:
+  // A stage without a direction (zero tensor): its FA is 0, so it is below
+  // a positive threshold.
+  int NoDirection(const Sample& s) const
+  {
+    return s.FA < this->P.StopFA ? vtkTensorLineTracer::LOW_ANISOTROPY
+                                 : vtkTensorLineTracer::STAGNATION;
+  }
+
   // One direction from the seed; returns the reason for termination.
   int Half(const double seed[3], const Sample& s0, double sign, std::vector<PointRecord>& out,
     double& length)
@@ -512,7 +520,7 @@ private:
         }
         if (!this->Direction(stage, in, k2))
         {
-          return vtkTensorLineTracer::STAGNATION;
+          return NoDirection(stage);
         }
         for (int d = 0; d < 3; ++d)
         {
@@ -531,7 +539,7 @@ private:
         }
         if (!this->Direction(stage, in, k2))
         {
-          return vtkTensorLineTracer::STAGNATION;
+          return NoDirection(stage);
         }
         for (int d = 0; d < 3; ++d)
         {
@@ -543,7 +551,7 @@ private:
         }
         if (!this->Direction(stage, in, k3))
         {
-          return vtkTensorLineTracer::STAGNATION;
+          return NoDirection(stage);
         }
         for (int d = 0; d < 3; ++d)
         {
@@ -555,7 +563,7 @@ private:
         }
         if (!this->Direction(stage, in, k4))
         {
-          return vtkTensorLineTracer::STAGNATION;
+          return NoDirection(stage);
         }
         for (int d = 0; d < 3; ++d)
         {

@@ -59,14 +59,14 @@
  * domain (OUT_OF_DOMAIN, also when a Runge-Kutta stage leaves it), a tensor
  * with a non-finite component among the interpolated ones (UNEXPECTED_VALUE),
  * MaximumPropagation arc length per half (OUT_OF_LENGTH; the last step is
- * shortened to the remaining length, its chord is shorter by O(h^3)), MaximumNumberOfSteps
- * (OUT_OF_STEPS), no direction (STAGNATION: zero tensor with a zero FA threshold), FA below
- * StoppingFAThreshold (LOW_ANISOTROPY = 8), a turning angle between two
- * consecutive steps above MaximumAngle degrees (HIGH_CURVATURE = 9), leaving
- * the mask (OUT_OF_MASK = 10), a tensor with a negative eigenvalue under the
- * NEGATIVE_EIGENVALUES_STOP policy (NEGATIVE_EIGENVALUE = 11; with
- * NEGATIVE_EIGENVALUES_ABSOLUTE the absolute eigenvalues are used). The point
- * that fails a criterion is not added: every output point has FA >=
+ * shortened to the remaining length, its chord is shorter by O(h^3)),
+ * MaximumNumberOfSteps (OUT_OF_STEPS), no direction (STAGNATION: a zero
+ * tensor with a zero FA threshold; with a positive threshold a zero tensor
+ * stops the line as LOW_ANISOTROPY), FA below StoppingFAThreshold (LOW_ANISOTROPY = 8), a turning
+ * angle between two consecutive steps above MaximumAngle degrees (HIGH_CURVATURE = 9), leaving the
+ * mask (OUT_OF_MASK = 10), a tensor with a negative eigenvalue under the NEGATIVE_EIGENVALUES_STOP
+ * policy (NEGATIVE_EIGENVALUE = 11; with NEGATIVE_EIGENVALUES_ABSOLUTE the absolute eigenvalues are
+ * used). The point that fails a criterion is not added: every output point has FA >=
  * StoppingFAThreshold and lies inside the mask and the domain, and every
  * turn between consecutive steps of a half is at most MaximumAngle. Lines
  * shorter than MinimumLength (total arc length), or of a single point, are
