@@ -289,7 +289,7 @@ public:
    * tensors, double otherwise), SINGLE_PRECISION or DOUBLE_PRECISION, for the
    * points and the floating-point arrays.
    */
-  vtkSetClampMacro(OutputPointsPrecision, int, DEFAULT_PRECISION, DOUBLE_PRECISION);
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
   vtkGetMacro(OutputPointsPrecision, int);
   ///@}
 
