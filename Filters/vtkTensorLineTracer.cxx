@@ -366,16 +366,20 @@ public:
     return Analyze(this->F, t, mask, s) ? 0 : vtkTensorLineTracer::NEGATIVE_EIGENVALUE;
   }
 
-  // The direction at a sample given the incoming direction: the principal
-  // eigenvector turned to agree with it, or the tensorline blend.
-  bool Direction(const Sample& s, const double in[3], double out[3]) const
+  // The direction at a sample: the principal eigenvector turned to agree
+  // with `ref`, or the tensorline blend with the incoming direction `in`.
+  // The first stage of a step uses ref = in (the previous step); the others
+  // use ref = the first stage's direction, so that the stages of one step
+  // never cancel each other (which they could when the field has turned
+  // away from the previous step).
+  bool Direction(const Sample& s, const double in[3], const double ref[3], double out[3]) const
   {
     if (!(s.L[0] > 0.0))
     {
       return false;
     }
     const double* e = s.E[0];
-    const double sign = (e[0] * in[0] + e[1] * in[1] + e[2] * in[2]) < 0.0 ? -1.0 : 1.0;
+    const double sign = (e[0] * ref[0] + e[1] * ref[1] + e[2] * ref[2]) < 0.0 ? -1.0 : 1.0;
     if (!this->P.Tensorlines)
     {
       for (int d = 0; d < 3; ++d)
@@ -503,7 +507,7 @@ private:
         }
       }
       double k1[3], k2[3], k3[3], k4[3], xs[3], xn[3];
-      if (!this->Direction(s, in, k1))
+      if (!this->Direction(s, in, in, k1))
       {
         return vtkTensorLineTracer::STAGNATION;
       }
@@ -518,7 +522,7 @@ private:
         {
           return r;
         }
-        if (!this->Direction(stage, in, k2))
+        if (!this->Direction(stage, in, k1, k2))
         {
           return NoDirection(stage);
         }
@@ -537,7 +541,7 @@ private:
         {
           return r;
         }
-        if (!this->Direction(stage, in, k2))
+        if (!this->Direction(stage, in, k1, k2))
         {
           return NoDirection(stage);
         }
@@ -549,7 +553,7 @@ private:
         {
           return r;
         }
-        if (!this->Direction(stage, in, k3))
+        if (!this->Direction(stage, in, k1, k3))
         {
           return NoDirection(stage);
         }
@@ -561,7 +565,7 @@ private:
         {
           return r;
         }
-        if (!this->Direction(stage, in, k4))
+        if (!this->Direction(stage, in, k1, k4))
         {
           return NoDirection(stage);
         }
@@ -596,8 +600,10 @@ private:
       {
         c /= len;
       }
-      if (chord[0] * in[0] + chord[1] * in[1] + chord[2] * in[2] < P.CosMaxAngle)
+      if (chord[0] * in[0] + chord[1] * in[1] + chord[2] * in[2] < P.CosMaxAngle || len < 0.5 * h)
       {
+        // (a chord shorter than half the step: the direction turns by more
+        // than about 120 degrees within the step)
         return vtkTensorLineTracer::HIGH_CURVATURE;
       }
       // accept

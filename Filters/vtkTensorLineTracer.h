@@ -38,9 +38,10 @@
  * logarithms of the point tensors are interpolated and mapped back with the
  * matrix exponential; eigenvalues below 1e-6 of the largest eigenvalue in
  * the data set, zero tensors included, are raised to that floor first).
- * Eigenvectors have no sign: at every Runge-Kutta stage the principal
- * eigenvector is flipped to agree with the incoming direction (the previous
- * step), so lines never U-turn where the eigen-solver's sign changes. RK2
+ * Eigenvectors have no sign: the principal eigenvector is flipped to agree
+ * with the incoming direction (the previous step) at the first Runge-Kutta
+ * stage and with the first stage's direction at the others, so lines never
+ * U-turn where the eigen-solver's sign changes. RK2
  * (midpoint) or RK4 in arc length with a fixed step IntegrationStep, in world
  * units (LENGTH_UNIT) or in multiples of the cell size (CELL_LENGTH_UNIT: the
  * smallest voxel spacing of an image; for other data sets the cube root of
@@ -62,15 +63,18 @@
  * shortened to the remaining length, its chord is shorter by O(h^3)),
  * MaximumNumberOfSteps (OUT_OF_STEPS), no direction (STAGNATION: a zero
  * tensor with a zero FA threshold; with a positive threshold a zero tensor
- * stops the line as LOW_ANISOTROPY), FA below StoppingFAThreshold (LOW_ANISOTROPY = 8), a turning
- * angle between two consecutive steps above MaximumAngle degrees (HIGH_CURVATURE = 9), leaving the
- * mask (OUT_OF_MASK = 10), a tensor with a negative eigenvalue under the NEGATIVE_EIGENVALUES_STOP
- * policy (NEGATIVE_EIGENVALUE = 11; with NEGATIVE_EIGENVALUES_ABSOLUTE the absolute eigenvalues are
- * used). The point that fails a criterion is not added: every output point has FA >=
- * StoppingFAThreshold and lies inside the mask and the domain, and every
- * turn between consecutive steps of a half is at most MaximumAngle. Lines
- * shorter than MinimumLength (total arc length), or of a single point, are
- * left out (GetNumberOfShortLines()).
+ * stops the line as LOW_ANISOTROPY), FA below StoppingFAThreshold
+ * (LOW_ANISOTROPY = 8), a turning angle between two consecutive steps above
+ * MaximumAngle degrees or a step whose chord is shorter than half the step
+ * (the direction turns by more than about 120 degrees within it)
+ * (HIGH_CURVATURE = 9), leaving the mask (OUT_OF_MASK = 10), a tensor with a
+ * negative eigenvalue under the NEGATIVE_EIGENVALUES_STOP policy
+ * (NEGATIVE_EIGENVALUE = 11; with NEGATIVE_EIGENVALUES_ABSOLUTE the absolute
+ * eigenvalues are used). The point that fails a criterion is not added:
+ * every output point has FA >= StoppingFAThreshold and lies inside the mask
+ * and the domain, and every turn between consecutive steps of a half is at
+ * most MaximumAngle. Lines shorter than MinimumLength (total arc length), or
+ * of a single point, are left out (GetNumberOfShortLines()).
  *
  * **Output**: one polyline per seed, in seed order. Point data:
  * `FractionalAnisotropy` (active scalars), `Tensors` (the interpolated
