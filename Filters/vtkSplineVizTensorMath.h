@@ -22,6 +22,8 @@
  * - KindlmannShape(): superquadric exponents alpha, beta and symmetry axis
  *   from cl, cp and the sharpness gamma (Kindlmann 2004; Hlawitschka et al.
  *   §2; Teem's rule, see ../shared/docs/field-notes.md).
+ * - PrincipalEigen(): the eigenvalues and the principal eigenvector only
+ *   (faster than EigenDecomposition(); for fiber tracking).
  * - FromEigenSystem(), Log(), Exp(): tensors from eigen-systems and the
  *   matrix logarithm and exponential through the eigen-decomposition, for
  *   log-Euclidean interpolation (Arsigny et al. 2006: interpolate log T
@@ -116,6 +118,20 @@ SPLINEVIZ_EXPORT void Multiply(const double t[6], const double x[3], double y[3]
  * Relative accuracy ~1e-14 of the largest |eigenvalue|. t must be finite.
  */
 SPLINEVIZ_EXPORT void EigenDecomposition(const double t[6], double values[3], double vectors[3][3]);
+
+/**
+ * The eigenvalues (values[0] >= values[1] >= values[2]) and the unit
+ * principal eigenvector e1 (of values[0]) of the symmetric tensor t, about
+ * three times faster than EigenDecomposition() because the other two
+ * eigenvectors are not built. The same method (the isolated eigenvalue's
+ * vector as a cross product of two rows, then the 2x2 restriction to the
+ * plane orthogonal to it), with the 2x2 problem solved in closed form
+ * without trigonometric functions; the same accuracy for the values, e1 up
+ * to its sign and to rounding divided by the gap l1 - l2 (any unit vector of
+ * the eigenspace when l1 is repeated; (1, 0, 0) for multiples of the
+ * identity). For tracking along e1 (vtkTensorLineTracer). t must be finite.
+ */
+SPLINEVIZ_EXPORT void PrincipalEigen(const double t[6], double values[3], double e1[3]);
 
 /// Fractional anisotropy from eigenvalues, in [0, 1]; 0 for the zero tensor.
 SPLINEVIZ_EXPORT double FractionalAnisotropy(const double values[3]);

@@ -99,6 +99,7 @@ public:
   bool LogEuclidean = false;
   int SignPolicy = TM::SIGN_SKIP;
   bool HasMask = false;
+  bool NeedLinearAnisotropy = false; // tensorlines with f = cl
   int MaxCellSize = 8;
 
   // Interpolates the (log) tensor and the mask at x.
@@ -307,6 +308,19 @@ struct Params
 };
 
 //------------------------------------------------------------------------------
+// Sylvester's criterion: true when the leading principal minors are positive
+// (then every eigenvalue is positive). A quick test that spares the
+// eigen-decomposition of most point tensors during the setup.
+bool PositiveDefinite(const double t[6])
+{
+  // t = {xx, yy, zz, xy, yz, xz}
+  const double m2 = t[0] * t[1] - t[3] * t[3];
+  const double det = t[0] * (t[1] * t[2] - t[4] * t[4]) - t[3] * (t[3] * t[2] - t[4] * t[5]) +
+    t[5] * (t[3] * t[4] - t[1] * t[5]);
+  return t[0] > 0.0 && m2 > 0.0 && det > 0.0;
+}
+
+//------------------------------------------------------------------------------
 // Converts a (log) tensor to a Sample; false for an indefinite tensor under
 // the STOP policy.
 bool Analyze(const Field& field, const double t[6], double mask, Sample& s)
@@ -321,16 +335,33 @@ bool Analyze(const Field& field, const double t[6], double mask, Sample& s)
     {
       s.T[i] = t[i];
     }
-    TM::EigenDecomposition(s.T, s.L, s.E);
+    // Only e1 is needed (E[1] and E[2] are not used): the faster solver,
+    // unless the absolute values make another eigenvector the principal one.
+    TM::PrincipalEigen(s.T, s.L, s.E[0]);
+    if (field.SignPolicy == TM::SIGN_ABSOLUTE && std::abs(s.L[2]) > s.L[0])
+    {
+      TM::EigenDecomposition(s.T, s.L, s.E);
+    }
+    else
+    {
+      for (int k = 1; k < 3; ++k)
+      {
+        s.E[k][0] = s.E[k][1] = s.E[k][2] = 0.0;
+      }
+    }
+    // (the policy keeps E[0] first here; it only changes the values)
     if (!TM::ApplySignPolicy(field.SignPolicy, s.L, s.E))
     {
       return false;
     }
   }
   s.FA = TM::FractionalAnisotropy(s.L);
-  double cl, cp, cs;
-  TM::WestinMetrics(s.L, cl, cp, cs);
-  s.CL = std::min(std::max(cl, 0.0), 1.0);
+  if (field.NeedLinearAnisotropy)
+  {
+    double cl, cp, cs;
+    TM::WestinMetrics(s.L, cl, cp, cs);
+    s.CL = std::min(std::max(cl, 0.0), 1.0);
+  }
   s.Mask = mask;
   return true;
 }
@@ -955,12 +986,15 @@ int vtkTensorLineTracer::RequestData(
                      "point tensor array to port 0");
     return 0;
   }
-  const bool useMask = this->MaskArrayName && this->MaskArrayName[0];
+  // "None" is ParaView's no-array choice (unless an array has that name).
+  const bool useMask = this->MaskArrayName && this->MaskArrayName[0] &&
+    !(std::string(this->MaskArrayName) == "None" && !dataSets[0]->GetPointData()->GetArray("None"));
   Field field;
   field.LogEuclidean = this->Interpolation == LOG_EUCLIDEAN_INTERPOLATION;
   field.SignPolicy =
     this->NegativeEigenvalues == NEGATIVE_EIGENVALUES_ABSOLUTE ? TM::SIGN_ABSOLUTE : TM::SIGN_SKIP;
   field.HasMask = useMask;
+  field.NeedLinearAnisotropy = this->UseTensorlines && this->TensorlineWeightFromLinearAnisotropy;
   field.Blocks.resize(dataSets.size());
   std::vector<vtkDataArray*> tensorArrays(dataSets.size());
   std::vector<vtkDataArray*> maskArrays(dataSets.size(), nullptr);
@@ -1034,6 +1068,7 @@ int vtkTensorLineTracer::RequestData(
       vtkDataArray* mask = maskArrays[b];
       const int layout = layouts[b];
       const int policy = field.SignPolicy;
+      const bool logEuclidean = field.LogEuclidean;
       vtkSMPTools::For(0, n,
         [&](vtkIdType begin, vtkIdType end)
         {
@@ -1052,6 +1087,10 @@ int vtkTensorLineTracer::RequestData(
               std::fill(t, t + 6, 0.0);
               ++nInvalid;
               continue;
+            }
+            if (!logEuclidean && PositiveDefinite(t))
+            {
+              continue; // nothing to count or flag (the common case: no eigen-decomposition)
             }
             double l[3], e[3][3], ls[3], es[3][3];
             TM::EigenDecomposition(t, l, e);

@@ -176,7 +176,9 @@ public:
   ///@{
   /**
    * Name of a 1-component point array restricting the tracking to where its
-   * interpolated value is >= 0.5. Empty or nullptr (default): no mask.
+   * interpolated value is >= 0.5. Empty, nullptr (default) or "None"
+   * (ParaView's choice of no array, unless a point array has that name): no
+   * mask.
    */
   vtkSetStringMacro(MaskArrayName);
   vtkGetStringMacro(MaskArrayName);
