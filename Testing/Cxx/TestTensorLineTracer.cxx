@@ -1,9 +1,11 @@
 // Accuracy tests of vtkTensorLineTracer against analytic curves
 // (TensorLineTestFields.h):
-//  - convergence at the integrator's order: the helix field T = a I + t t^T,
-//    t = (-y, x, c), on tri-quadratic hexahedra (exact representation, the
-//    generic data-set path): the deviation from the exact helix shrinks like
-//    h^2 (RK2) and h^4 (RK4);
+//  - convergence at the integrator's order: the field T = a I + t t^T,
+//    t = (-y, x, c), whose principal direction is a known circle (c = 0) or
+//    helix (c = 0.5) about z, on tri-quadratic hexahedra (exact
+//    representation, the generic data-set path): the deviation from the
+//    exact helices shrinks like h^2 (RK2) and h^4 (RK4), from the circles
+//    one order faster (radial symmetry: h^3 and h^5);
 //  - the image path: a twisting helical bundle like Teem's `tend helix`,
 //    seeded on its core: the line follows the core helix with an error that
 //    shrinks like the grid spacing squared (trilinear interpolation);
@@ -109,9 +111,10 @@ double HelixError(vtkPolyData* pd, const std::vector<Vec3>& seeds, double c)
   return worst;
 }
 
-void TestConvergenceOrder(SplineVizTestStatus& status)
+// c = 0: circles about z; c = 0.5: helices.
+void TestConvergenceOrder(SplineVizTestStatus& status, double c)
 {
-  const double c = 0.5, a = 0.2;
+  const double a = 0.2;
   const int cells[3] = { 8, 8, 12 };
   const double bounds[6] = { -1.7, 1.7, -1.7, 1.7, -2.5, 2.5 };
   auto grid = MakeTriQuadraticGrid(
@@ -144,11 +147,16 @@ void TestConvergenceOrder(SplineVizTestStatus& status)
       err[k] = HelixError(lines, seeds, c);
     }
     const double order1 = std::log2(err[0] / err[1]), order2 = std::log2(err[1] / err[2]);
-    std::cout << (cs.Order == 2 ? "RK2" : "RK4") << " on tri-quadratic hexahedra: errors " << err[0]
-              << " " << err[1] << " " << err[2] << ", observed orders " << order1 << " " << order2
-              << std::endl;
-    SV_CHECK(status, order1 > cs.Order - 0.3 && order1 < cs.Order + 0.6);
-    SV_CHECK(status, order2 > cs.Order - 0.3 && order2 < cs.Order + 0.6);
+    std::cout << (cs.Order == 2 ? "RK2" : "RK4") << (c == 0.0 ? ", circles" : ", helices")
+              << " on tri-quadratic hexahedra: errors " << err[0] << " " << err[1] << " " << err[2]
+              << ", observed orders " << order1 << " " << order2 << std::endl;
+    // On circles only the radial error counts (the phase error moves points
+    // along the curve), and by symmetry each step's radial error is one
+    // order higher than the local error (midpoint: r^2 grows by h^4 / 8r^2
+    // per step): the observed order is the integrator's plus one.
+    const int expected = c == 0.0 ? cs.Order + 1 : cs.Order;
+    SV_CHECK(status, order1 > expected - 0.3 && order1 < expected + 0.6);
+    SV_CHECK(status, order2 > expected - 0.3 && order2 < expected + 0.6);
     SV_CHECK(status, err[2] < cs.Largest);
   }
 }
@@ -631,7 +639,8 @@ void TestDeterminism(SplineVizTestStatus& status)
 int TestTensorLineTracer(int, char*[])
 {
   SplineVizTestStatus status;
-  TestConvergenceOrder(status);
+  TestConvergenceOrder(status, 0.0);
+  TestConvergenceOrder(status, 0.5);
   TestImageInterpolationOrder(status);
   TestSignContinuity(status);
   TestJoinedLines(status);
