@@ -122,8 +122,8 @@ SPLINEVIZ_EXPORT void EigenDecomposition(const double t[6], double values[3], do
 /**
  * The eigenvalues (values[0] >= values[1] >= values[2]) and the unit
  * principal eigenvector e1 (of values[0]) of the symmetric tensor t, about
- * three times faster than EigenDecomposition() because the other two
- * eigenvectors are not built. The same method (the isolated eigenvalue's
+ * 1.5 times faster than EigenDecomposition() (175 vs 265 ns here) because
+ * the other two eigenvectors are not built. The same method (the isolated eigenvalue's
  * vector as a cross product of two rows, then the 2x2 restriction to the
  * plane orthogonal to it), with the 2x2 problem solved in closed form
  * without trigonometric functions; the same accuracy for the values, e1 up
