@@ -5,7 +5,8 @@ list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineResampleToImage"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineStreamTracer"
   "${SPLINEVIZ_FOLDER}/vtkSyntheticFibersSource"
-  "${SPLINEVIZ_FOLDER}/vtkTensorAnalysisFilter")
+  "${SPLINEVIZ_FOLDER}/vtkTensorAnalysisFilter"
+  "${SPLINEVIZ_FOLDER}/vtkTensorLineTracer")
 # LR-spline volumes (Fuchs et al.): plain C++ shared by the filters, the
 # reader and the renderers.
 list(APPEND splineviz_private_classes

@@ -4,6 +4,7 @@
 
 #include <glm/glm.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -229,6 +230,101 @@ void EigenDecomposition(const double t[6], double values[3], double vectors[3][3
 }
 
 //------------------------------------------------------------------------------
+void PrincipalEigen(const double t[6], double values[3], double e1[3])
+{
+  // The first steps are those of svtSymmetricEigen (glsl/vtkTensorMathShared.glsl):
+  // scaling, the traceless normalized C, the isolated eigenvalue's vector u.
+  using glm::dvec3;
+  e1[0] = 1.0;
+  e1[1] = e1[2] = 0.0;
+  const double m = std::max(std::max(std::max(std::abs(t[0]), std::abs(t[1])), std::abs(t[2])),
+    std::max(std::max(std::abs(t[3]), std::abs(t[4])), std::abs(t[5])));
+  if (!(m > 0.0))
+  {
+    values[0] = values[1] = values[2] = 0.0;
+    return;
+  }
+  const dvec3 d = dvec3(t[0], t[1], t[2]) / m;
+  const dvec3 o = dvec3(t[3], t[4], t[5]) / m;
+  const double q = (d.x + d.y + d.z) / 3.0;
+  const dvec3 b = d - dvec3(q, q, q);
+  const double p2 = (glm::dot(b, b) + 2.0 * glm::dot(o, o)) / 6.0;
+  if (p2 < 1e-30)
+  {
+    values[0] = values[1] = values[2] = m * q;
+    return;
+  }
+  const double p = std::sqrt(p2);
+  const dvec3 cd = b / p;
+  const dvec3 co = o / p;
+  const double detC = cd.x * (cd.y * cd.z - co.y * co.y) - co.x * (co.x * cd.z - co.y * co.z) +
+    co.z * (co.x * co.y - cd.y * co.z);
+  const double r = std::min(1.0, std::max(-1.0, 0.5 * detC));
+  const double phi = std::acos(r) / 3.0;
+  const double beta = r < 0.0 ? 2.0 * std::cos(phi + 2.0943951023931957) : 2.0 * std::cos(phi);
+  const dvec3 r0(cd.x - beta, co.x, co.z);
+  const dvec3 r1(co.x, cd.y - beta, co.y);
+  const dvec3 r2(co.z, co.y, cd.z - beta);
+  const dvec3 x01 = glm::cross(r0, r1), x02 = glm::cross(r0, r2), x12 = glm::cross(r1, r2);
+  const double n01 = glm::dot(x01, x01), n02 = glm::dot(x02, x02), n12 = glm::dot(x12, x12);
+  dvec3 u = x01;
+  double nu = n01;
+  if (n02 > nu)
+  {
+    u = x02;
+    nu = n02;
+  }
+  if (n12 > nu)
+  {
+    u = x12;
+    nu = n12;
+  }
+  u /= std::sqrt(nu);
+  // The 2x2 restriction to the plane orthogonal to u, in closed form.
+  const dvec3 v = shared::svtAnyOrthogonal(u);
+  const dvec3 w = glm::cross(u, v);
+  const dvec3 cv = shared::svtSymMul(cd, co, v);
+  const dvec3 cw = shared::svtSymMul(cd, co, w);
+  const double m00 = glm::dot(v, cv), m11 = glm::dot(w, cw);
+  const double m01 = 0.5 * (glm::dot(v, cw) + glm::dot(w, cv));
+  const double mean = 0.5 * (m00 + m11), half = 0.5 * (m00 - m11);
+  const double radius = std::sqrt(half * half + m01 * m01);
+  const double la = mean + radius, lb = mean - radius;
+  const double lu = glm::dot(u, shared::svtSymMul(cd, co, u));
+  double l[3];
+  dvec3 e;
+  if (lu >= la)
+  {
+    l[0] = lu;
+    l[1] = la;
+    l[2] = lb;
+    e = u;
+  }
+  else
+  {
+    // the larger eigenvector of [[m00, m01], [m01, m11]]: the better of
+    // (m01, la - m00) and (la - m11, m01)
+    const double a0 = m01, a1 = la - m00, c0 = la - m11, c1 = m01;
+    double s0 = a0, s1 = a1;
+    if (c0 * c0 + c1 * c1 > a0 * a0 + a1 * a1)
+    {
+      s0 = c0;
+      s1 = c1;
+    }
+    const double ns = std::sqrt(s0 * s0 + s1 * s1);
+    e = ns > 0.0 ? (s0 * v + s1 * w) / ns : v;
+    l[0] = la;
+    l[1] = std::max(lu, lb);
+    l[2] = std::min(lu, lb);
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    values[i] = m * (q + p * l[i]);
+    e1[i] = e[i];
+  }
+}
+
+//------------------------------------------------------------------------------
 double FractionalAnisotropy(const double values[3])
 {
   return shared::svtFractionalAnisotropy(glm::dvec3(values[0], values[1], values[2]));
@@ -272,5 +368,71 @@ bool KindlmannShape(
   double cl, double cp, double gamma, double minimumRoundness, double& alpha, double& beta)
 {
   return shared::svtKindlmannShape(cl, cp, gamma, minimumRoundness, alpha, beta);
+}
+
+//------------------------------------------------------------------------------
+void FromEigenSystem(const double values[3], const double vectors[3][3], double t[6])
+{
+  for (int i = 0; i < 6; ++i)
+  {
+    t[i] = 0.0;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    const double l = values[k];
+    const double* e = vectors[k];
+    t[0] += l * e[0] * e[0];
+    t[1] += l * e[1] * e[1];
+    t[2] += l * e[2] * e[2];
+    t[3] += l * e[0] * e[1];
+    t[4] += l * e[1] * e[2];
+    t[5] += l * e[0] * e[2];
+  }
+}
+
+//------------------------------------------------------------------------------
+bool Log(const double t[6], double minimumEigenvalue, double logT[6])
+{
+  if (!AllFinite(t, 6) || !(minimumEigenvalue > 0.0) || !std::isfinite(minimumEigenvalue))
+  {
+    return false;
+  }
+  double values[3], vectors[3][3];
+  EigenDecomposition(t, values, vectors);
+  for (double& l : values)
+  {
+    l = std::log(std::max(l, minimumEigenvalue));
+  }
+  FromEigenSystem(values, vectors, logT);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void Exp(const double t[6], double expT[6], double values[3], double vectors[3][3])
+{
+  double l[3], e[3][3];
+  EigenDecomposition(t, l, e);
+  for (double& v : l)
+  {
+    v = std::exp(v);
+  }
+  FromEigenSystem(l, e, expT);
+  if (values)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      values[i] = l[i];
+    }
+  }
+  if (vectors)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        vectors[i][j] = e[i][j];
+      }
+    }
+  }
 }
 }

@@ -22,6 +22,12 @@
  * - KindlmannShape(): superquadric exponents alpha, beta and symmetry axis
  *   from cl, cp and the sharpness gamma (Kindlmann 2004; Hlawitschka et al.
  *   §2; Teem's rule, see ../shared/docs/field-notes.md).
+ * - PrincipalEigen(): the eigenvalues and the principal eigenvector only
+ *   (faster than EigenDecomposition(); for fiber tracking).
+ * - FromEigenSystem(), Log(), Exp(): tensors from eigen-systems and the
+ *   matrix logarithm and exponential through the eigen-decomposition, for
+ *   log-Euclidean interpolation (Arsigny et al. 2006: interpolate log T
+ *   linearly, map back with exp), used by the tensor line tracer.
  *
  * All functions are thread-safe (no state). Not wrapped (a namespace of
  * functions, exported for the tests and the other SplineViz classes).
@@ -113,6 +119,20 @@ SPLINEVIZ_EXPORT void Multiply(const double t[6], const double x[3], double y[3]
  */
 SPLINEVIZ_EXPORT void EigenDecomposition(const double t[6], double values[3], double vectors[3][3]);
 
+/**
+ * The eigenvalues (values[0] >= values[1] >= values[2]) and the unit
+ * principal eigenvector e1 (of values[0]) of the symmetric tensor t, about
+ * 1.5 times faster than EigenDecomposition() (175 vs 265 ns here) because
+ * the other two eigenvectors are not built. The same method (the isolated eigenvalue's
+ * vector as a cross product of two rows, then the 2x2 restriction to the
+ * plane orthogonal to it), with the 2x2 problem solved in closed form
+ * without trigonometric functions; the same accuracy for the values, e1 up
+ * to its sign and to rounding divided by the gap l1 - l2 (any unit vector of
+ * the eigenspace when l1 is repeated; (1, 0, 0) for multiples of the
+ * identity). For tracking along e1 (vtkTensorLineTracer). t must be finite.
+ */
+SPLINEVIZ_EXPORT void PrincipalEigen(const double t[6], double values[3], double e1[3]);
+
 /// Fractional anisotropy from eigenvalues, in [0, 1]; 0 for the zero tensor.
 SPLINEVIZ_EXPORT double FractionalAnisotropy(const double values[3]);
 
@@ -155,6 +175,32 @@ SPLINEVIZ_EXPORT bool ApplySignPolicy(int policy, double values[3], double vecto
  */
 SPLINEVIZ_EXPORT bool KindlmannShape(
   double cl, double cp, double gamma, double minimumRoundness, double& alpha, double& beta);
+
+/**
+ * t = sum_i values[i] vectors[i] vectors[i]^T (vectors[i] the unit
+ * eigenvector of values[i], as returned by EigenDecomposition()).
+ */
+SPLINEVIZ_EXPORT void FromEigenSystem(
+  const double values[3], const double vectors[3][3], double t[6]);
+
+/**
+ * Matrix logarithm of the symmetric tensor t through its eigen-decomposition:
+ * logT = R diag(log max(l_i, minimumEigenvalue)) R^T. Eigenvalues below
+ * minimumEigenvalue (zero or negative ones included) are raised to it, so the
+ * result is the logarithm of the nearest tensor whose eigenvalues are at
+ * least minimumEigenvalue. Returns false (logT unspecified) when t has a
+ * non-finite component or minimumEigenvalue is not a positive number.
+ */
+SPLINEVIZ_EXPORT bool Log(const double t[6], double minimumEigenvalue, double logT[6]);
+
+/**
+ * Matrix exponential of the symmetric tensor t (finite components):
+ * expT = R diag(exp l_i) R^T. If given, `values` and `vectors` receive its
+ * eigen-decomposition (exp l1 >= exp l2 >= exp l3 and the eigenvectors of t,
+ * the same order and handedness as EigenDecomposition()).
+ */
+SPLINEVIZ_EXPORT void Exp(
+  const double t[6], double expT[6], double values[3] = nullptr, double vectors[3][3] = nullptr);
 }
 
 #endif

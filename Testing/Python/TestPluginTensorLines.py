@@ -1,0 +1,98 @@
+"""pvbatch: the SplineViz plugin's "Tensor Line Tracer" proxy on the real
+DIPY tensors (read through ParaView's reader factory): voxel seeding and a
+point-cloud seed source, documented properties reaching the filter, and the
+lines shown with the "Ray-Cast Tubes" representation (radius from FA, direct
+RGB direction colors); the picture must be covered by tubes."""
+import os
+import sys
+
+from paraview.simple import *  # noqa: F401,F403
+from paraview import servermanager
+
+import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
+
+LoadPlugin(sys.argv[1], remote=False, ns=globals())
+out_dir = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
+os.makedirs(out_dir, exist_ok=True)
+path = os.path.join(os.environ["SPLINEVIZ_SOURCE_DIR"], "Testing", "Data", "DIPY",
+                    "small_64D_dti.vti")
+dti = OpenDataFile(path)  # noqa: F405
+
+tracer = TensorLineTracer(Input=dti)  # noqa: F405
+tracer.Tensors = ["POINTS", "DTI"]
+tracer.TensorLayout = "XX XY YY XZ YZ ZZ (DIPY, FSL)"
+tracer.Seeding = "Voxels above the seed FA threshold"
+tracer.SeedFAThreshold = 0.3
+tracer.StoppingFAThreshold = 0.15
+tracer.MinimumLength = 4.0
+tracer.UpdatePipeline()
+lines = servermanager.Fetch(tracer)
+server = tracer.GetClientSideObject()
+print("voxel seeding: %d seeds, %d lines, %d points" % (server.GetNumberOfSeeds(),
+                                                       lines.GetNumberOfLines(),
+                                                       lines.GetNumberOfPoints()))
+if server.GetTensorLayout() != 2 or server.GetNumberOfSeeds() != 595:
+    print("ERROR: properties not forwarded or wrong seeds:", server.GetTensorLayout(),
+          server.GetNumberOfSeeds())
+    sys.exit(1)
+if lines.GetNumberOfLines() < 300:
+    print("ERROR: too few lines")
+    sys.exit(1)
+for name in ("FractionalAnisotropy", "Tensors", "PrincipalDirection", "DirectionColors",
+             "ArcLength"):
+    if lines.GetPointData().GetArray(name) is None:
+        print("ERROR: missing point array", name)
+        sys.exit(1)
+
+# Seeds from a point cloud in the middle of the volume.
+cloud = TensorLineTracer(Input=dti, SeedType="Point Cloud")  # noqa: F405
+cloud.Tensors = ["POINTS", "DTI"]
+cloud.TensorLayout = "XX XY YY XZ YZ ZZ (DIPY, FSL)"
+cloud.Seeding = "Seed source"
+cloud.SeedType.Center = [9, 9, 9]
+cloud.SeedType.Radius = 4
+cloud.SeedType.NumberOfPoints = 50
+cloud.IntegratorType = "Runge-Kutta 2 (midpoint)"
+cloud.Interpolation = "Log-Euclidean"
+cloud.UpdatePipeline()
+cloud_lines = servermanager.Fetch(cloud)
+print("point cloud: %d lines" % cloud_lines.GetNumberOfLines())
+if not 10 <= cloud_lines.GetNumberOfLines() <= 50:
+    print("ERROR: unexpected number of lines from the point cloud")
+    sys.exit(1)
+
+view = CreateRenderView()  # noqa: F405
+view.ViewSize = [500, 400]
+view.UseColorPaletteForBackground = 0
+view.Background = [1, 1, 1]
+view.OrientationAxesVisibility = 0
+display = Show(tracer, view)  # noqa: F405
+display.SetRepresentationType("Ray-Cast Tubes")
+display.TubeRadiusArray = "FractionalAnisotropy"
+display.TubeRadiusScale = 0.15
+ColorBy(display, ("POINTS", "DirectionColors"))  # noqa: F405
+display.MapScalars = 0
+view.CameraPosition = [40, -30, 40]
+view.CameraFocalPoint = [9, 9, 9]
+view.CameraViewUp = [0, 0, 1]
+ResetCamera(view)  # noqa: F405
+png = os.path.join(out_dir, "TestPluginTensorLines.png")
+SaveScreenshot(png, view, ImageResolution=[500, 400])  # noqa: F405
+from paraview.vtk.vtkIOImage import vtkPNGReader  # noqa: E402
+
+reader = vtkPNGReader()
+reader.SetFileName(png)
+reader.Update()
+scalars = reader.GetOutput().GetPointData().GetScalars()
+n = scalars.GetNumberOfTuples()
+pixels = [scalars.GetTuple3(i) for i in range(0, n, 3)]
+cover = sum(1 for p in pixels if p != (255.0, 255.0, 255.0)) / float(len(pixels))
+colored = sum(1 for p in pixels if max(p) - min(p) > 60) / float(len(pixels))
+print("coverage %.3f, strongly colored %.3f" % (cover, colored))
+sub = display.GetClientSideObject().GetActiveRepresentation()
+if not sub.GetActor().GetMapper().IsA("vtkRayCastTubeMapper"):
+    print("ERROR: not drawn with the ray-cast tube mapper")
+    sys.exit(1)
+if cover < 0.15 or colored < 0.05:
+    print("ERROR: the tubes did not render with direction colors")
+    sys.exit(1)
