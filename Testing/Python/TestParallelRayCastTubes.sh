@@ -9,9 +9,22 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 scene="$here/ParallelRayCastTubesScene.py"
 mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-"$pvbatch" --force-offscreen-rendering "$scene" "$out/TestParallelRayCastTubes-1rank.png"
-"$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering "$scene" \
-  "$out/TestParallelRayCastTubes-2ranks.png" < /dev/null
-"$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering "$scene" \
-  "$out/TestParallelRayCastTubes-2ranks-by-rank.png" by-rank < /dev/null
+
+# A run that cannot start (an X connection refused under load, an MPI
+# start-up hang) is retried once; the images are compared only when made.
+attempt() {
+  for try in 1 2; do
+    if timeout --kill-after=10 240 "$@" < /dev/null; then
+      return 0
+    fi
+    echo "run failed or timed out (try $try): $*"
+  done
+  echo "ERROR: could not render: $*"
+  return 1
+}
+attempt "$pvbatch" --force-offscreen-rendering "$scene" "$out/TestParallelRayCastTubes-1rank.png"
+attempt "$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering "$scene" \
+  "$out/TestParallelRayCastTubes-2ranks.png"
+attempt "$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering "$scene" \
+  "$out/TestParallelRayCastTubes-2ranks-by-rank.png" by-rank
 "$pvpython" "$here/TestParallelRayCastTubes.py" "$out"
