@@ -16,6 +16,7 @@
 //    ratio and the largest difference of the values.
 //
 //   BenchmarkLRSplineEvaluation [path/to/cube-3patch-refined.lr]
+#include "BenchmarkUsage.h"
 #include "vtkLRSplineBuilder.h"
 #include "vtkLRSplineEvaluator.h"
 #include "vtkLRSplineField.h"
@@ -356,8 +357,18 @@ void BenchmarkEvaluation(const std::string& label, vtkMultiBlockDataSet* spline,
 }
 }
 
+const char* const Usage =
+  "Usage: BenchmarkLRSplineEvaluation [path/to/file.lr]\n"
+  "Element look-up and evaluation rates of the LR-spline search structures on\n"
+  "the given file (default: the external cube-3patch-refined.lr) and on\n"
+  "generated volumes of >= 30,000 elements, against vtkProbeFilter.\n";
+
 int main(int argc, char* argv[])
 {
+  if (splineviz_benchmark::HelpRequested(argc, argv, Usage))
+  {
+    return 0;
+  }
   vtkSMPTools::SetBackend("STDThread");
   std::cout << "LR-spline look-up and evaluation benchmark; vtkSMPTools backend "
             << vtkSMPTools::GetBackend() << ", " << vtkSMPTools::GetEstimatedNumberOfThreads()

@@ -12,6 +12,7 @@
 // ten times smaller step.
 //
 //   BenchmarkLRSplineStreamTracer [numberOfSeeds]
+#include "BenchmarkUsage.h"
 #include "vtkLRSplineBuilder.h"
 #include "vtkLRSplineReader.h"
 #include "vtkLRSplineResampleToImage.h"
@@ -67,9 +68,23 @@ void Print(const char* name, const Result& r)
 }
 }
 
+const char* const Usage =
+  "Usage: BenchmarkLRSplineStreamTracer [numberOfSeeds, default 250]\n"
+  "vtkLRSplineStreamTracer's integrators against vtkStreamTracer on the field\n"
+  "resampled to 128^3, with Fuchs et al.'s error metric.\n";
+
 int main(int argc, char* argv[])
 {
+  if (splineviz_benchmark::HelpRequested(argc, argv, Usage))
+  {
+    return 0;
+  }
   const int numSeeds = argc > 1 ? std::atoi(argv[1]) : 250;
+  if (numSeeds <= 0)
+  {
+    std::fprintf(stderr, "the number of seeds must be a positive integer\n%s", Usage);
+    return 2;
+  }
   const double step = 0.002; // arc length per step
   const vtkIdType maxSteps = 2000;
   const double tolerance = 1e-6; // adaptive methods

@@ -23,6 +23,7 @@
 // SPLINEVIZ_BENCHMARK_SUBSET_ONLY=1 skips the whole-volume table,
 // SPLINEVIZ_BENCHMARK_DEBUG=1 prints where vtkHyperStreamline's lines and
 // ours part by more than half a voxel.
+#include "BenchmarkUsage.h"
 #include "vtkTensorAnalysisFilter.h"
 #include "vtkTensorLineTracer.h"
 
@@ -165,9 +166,24 @@ std::vector<std::vector<Vec3>> CentreLines(vtkPolyData* tubes, int sides)
 }
 }
 
+const char* const Usage =
+  "Usage: BenchmarkTensorLineTracer [hyperstreamline subset size, default 2000] [profile]\n"
+  "Whole-volume seeding on a 128^3 helix tensor field (1 and 2 cores) and\n"
+  "vtkHyperStreamline on a subset of the seeds. Environment:\n"
+  "SPLINEVIZ_BENCHMARK_SUBSET_ONLY=1, SPLINEVIZ_BENCHMARK_DEBUG=1.\n";
+
 int main(int argc, char* argv[])
 {
+  if (splineviz_benchmark::HelpRequested(argc, argv, Usage))
+  {
+    return 0;
+  }
   const int subset = argc > 1 ? std::atoi(argv[1]) : 2000;
+  if (subset <= 0)
+  {
+    std::fprintf(stderr, "the subset size must be a positive integer\n%s", Usage);
+    return 2;
+  }
   const int cores = std::max(2, vtkSMPTools::GetEstimatedNumberOfThreads());
 
   // The field.

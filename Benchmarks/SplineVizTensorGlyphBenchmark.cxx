@@ -25,6 +25,7 @@
 //   SplineVizTensorGlyphBenchmark [--glyphs 100k,1m] [--size 800x600,1200x768]
 //       [--renderers superquadric,tensorglyph,glyph3dmapper] [--frames N]
 //       [--seconds S] [--memory GB]
+#include "BenchmarkUsage.h"
 #include "vtkSplineVizTensorMath.h"
 #include "vtkSuperquadricGlyphMapper.h"
 
@@ -394,8 +395,23 @@ double AvailableGB()
 }
 }
 
+const char* const Usage =
+  "Usage: SplineVizTensorGlyphBenchmark [--glyphs 100k,1m] [--size 800x600,1200x768]\n"
+  "    [--renderers superquadric,tensorglyph,glyph3dmapper] [--frames N]\n"
+  "    [--seconds S] [--memory GB]\n"
+  "Polygonal renderers are skipped when their estimated memory exceeds --memory\n"
+  "(default 16 GB).\n";
+
 int main(int argc, char* argv[])
 {
+  if (splineviz_benchmark::HelpRequested(argc, argv, Usage))
+  {
+    return 0;
+  }
+  if (splineviz_benchmark::MissingOptionValue(argc, argv, Usage))
+  {
+    return 2;
+  }
   std::vector<std::string> counts = { "100k", "1m" };
   std::vector<std::string> sizes = { "800x600", "1200x768" };
   std::vector<std::string> renderers = { "superquadric", "tensorglyph", "glyph3dmapper" };

@@ -22,6 +22,7 @@
 //       [--frames N] [--renderers raycast,tubefilter,linesastubes]
 //       [--distance far|close] [--seconds S] [--samples N]
 // Several --data/--size values may be given (comma separated).
+#include "BenchmarkUsage.h"
 #include "vtkRayCastTubeMapper.h"
 #include "vtkSplineTubeCore.h"
 #include "vtkSyntheticFibersSource.h"
@@ -261,8 +262,23 @@ Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderW
 }
 }
 
+const char* const Usage =
+  "Usage: SplineVizTubeBenchmark [--data fibers|fibers2|million] [--size WxH]\n"
+  "    [--frames N] [--renderers raycast,tubefilter,linesastubes,tessellated,...]\n"
+  "    [--distance far|close] [--seconds S] [--samples N]\n"
+  "Several --data/--size/--renderers values may be given, comma separated.\n"
+  "Defaults: --data fibers2 --size 800x600,1200x768 --frames 60 --seconds 30.\n";
+
 int main(int argc, char* argv[])
 {
+  if (splineviz_benchmark::HelpRequested(argc, argv, Usage))
+  {
+    return 0;
+  }
+  if (splineviz_benchmark::MissingOptionValue(argc, argv, Usage))
+  {
+    return 2;
+  }
   // Both cores for the CPU work (VTK's default SMP backend is sequential).
   vtkSMPTools::SetBackend("STDThread");
   std::vector<std::string> datasets = { "fibers2" };
