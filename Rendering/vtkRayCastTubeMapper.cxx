@@ -172,34 +172,17 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
     FSSource = FSSource.substr(0, marker) + tail;
     shaders[vtkShader::Fragment]->SetSource(FSSource);
   }
-  if (getenv("SPLINEVIZ_DUMP_SHADERS"))
-  {
-    cout << "=== VS\n"
-         << shaders[vtkShader::Vertex]->GetSource() << "\n=== GS\n"
-         << shaders[vtkShader::Geometry]->GetSource() << "\n=== FS\n"
-         << shaders[vtkShader::Fragment]->GetSource() << endl;
-  }
+  DumpShaderSources({ { "VS", shaders[vtkShader::Vertex]->GetSource() },
+    { "FS", shaders[vtkShader::Fragment]->GetSource() } });
 }
 
 //------------------------------------------------------------------------------
 void vtkRayCastTubeMapper::ReplaceShaderClip(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer*, vtkActor*)
 {
-  // Clip the hit point (not the proxy box): planes are in data coordinates.
+  // Clip the hit point (not the proxy rectangle).
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
-  if (this->GetNumberOfClippingPlanes())
-  {
-    vtkShaderProgram::Substitute(FSSource, "//VTK::Clip::Dec",
-      "uniform int numClipPlanes;\n"
-      "uniform vec4 clipPlanes[6];\n"
-      "uniform mat4 tubeVCMC;\n");
-    vtkShaderProgram::Substitute(FSSource, "//VTK::TubeClip::Impl",
-      "  vec4 tubeHitMC = tubeVCMC * vertexVC;\n"
-      "  for (int planeNum = 0; planeNum < numClipPlanes; planeNum++)\n"
-      "  {\n"
-      "    if (dot(clipPlanes[planeNum], tubeHitMC) < 0.0) discard;\n"
-      "  }\n");
-  }
+  this->ReplaceShaderTubeClip(FSSource, "//VTK::TubeClip::Impl");
   shaders[vtkShader::Fragment]->SetSource(FSSource);
 }
 
@@ -219,27 +202,9 @@ void vtkRayCastTubeMapper::SetCameraShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::SetCameraShaderParameters(cellBO, ren, act);
-  vtkShaderProgram* program = cellBO.Program;
-  float modelView[16];
-  float viewModel[16];
-  float radiusScale = 1.0f;
-  this->ComputeTubeMatrices(ren, act, modelView, viewModel, radiusScale);
-  program->SetUniformMatrix4x4("tubeMCVC", modelView);
-  vtkMatrix4x4* wcdc;
-  vtkMatrix4x4* wcvc;
-  vtkMatrix3x3* normals;
-  vtkMatrix4x4* vcdc;
-  static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
-    ->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
-  program->SetUniformMatrix("VCDCMatrix", vcdc);
   double range[2];
   ren->GetActiveCamera()->GetClippingRange(range);
-  program->SetUniformf("tubeNearPlane", static_cast<float>(range[0]));
-  program->SetUniformf("tubeRadiusScale", radiusScale);
-  if (program->IsUniformUsed("tubeVCMC"))
-  {
-    program->SetUniformMatrix4x4("tubeVCMC", viewModel);
-  }
+  cellBO.Program->SetUniformf("tubeNearPlane", static_cast<float>(range[0]));
 }
 
 //------------------------------------------------------------------------------

@@ -17,6 +17,7 @@
 #include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
+#include "vtkOpenGLCamera.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkPolyData.h"
@@ -557,6 +558,66 @@ void vtkSplineTubeMapper::SetMapperShaderParameters(
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   this->ActivateTubeBuffers(cellBO.Program);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::SetCameraShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetCameraShaderParameters(cellBO, ren, act);
+  vtkShaderProgram* program = cellBO.Program;
+  float modelView[16];
+  float viewModel[16];
+  float radiusScale = 1.0f;
+  this->ComputeTubeMatrices(ren, act, modelView, viewModel, radiusScale);
+  program->SetUniformMatrix4x4("tubeMCVC", modelView);
+  program->SetUniformf("tubeRadiusScale", radiusScale);
+  if (program->IsUniformUsed("tubeVCMC"))
+  {
+    program->SetUniformMatrix4x4("tubeVCMC", viewModel);
+  }
+  vtkMatrix4x4* wcdc;
+  vtkMatrix4x4* wcvc;
+  vtkMatrix3x3* normals;
+  vtkMatrix4x4* vcdc;
+  static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
+    ->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
+  program->SetUniformMatrix("VCDCMatrix", vcdc);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::ReplaceShaderTubeClip(
+  std::string& FSSource, const char* implementationTag)
+{
+  if (!this->GetNumberOfClippingPlanes())
+  {
+    return;
+  }
+  vtkShaderProgram::Substitute(FSSource, "//VTK::Clip::Dec",
+    "uniform int numClipPlanes;\n"
+    "uniform vec4 clipPlanes[6];\n"
+    "uniform mat4 tubeVCMC;\n");
+  vtkShaderProgram::Substitute(FSSource, implementationTag,
+    "  vec4 tubeClipMC = tubeVCMC * vertexVC;\n"
+    "  for (int planeNum = 0; planeNum < numClipPlanes; planeNum++)\n"
+    "  {\n"
+    "    if (dot(clipPlanes[planeNum], tubeClipMC) < 0.0) discard;\n"
+    "  }\n");
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::DumpShaderSources(
+  const std::vector<std::pair<std::string, std::string>>& stages)
+{
+  if (!getenv("SPLINEVIZ_DUMP_SHADERS"))
+  {
+    return;
+  }
+  for (const auto& stage : stages)
+  {
+    cout << "=== " << stage.first << "\n" << stage.second << "\n";
+  }
+  cout.flush();
 }
 
 //------------------------------------------------------------------------------

@@ -40,8 +40,10 @@
 #include "vtkNew.h"          // for vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 
-#include <memory> // for std::unique_ptr
-#include <string> // for std::string
+#include <memory>  // for std::unique_ptr
+#include <string>  // for std::string
+#include <utility> // for std::pair
+#include <vector>  // for std::vector
 
 class vtkMatrix4x4;
 class vtkOpenGLRenderWindow;
@@ -173,6 +175,27 @@ protected:
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   /// Binds the tubes buffer (ActivateTubeBuffers()).
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /**
+   * The camera uniforms every tube shader uses: tubeMCVC (uploaded positions
+   * to view coordinates, see ComputeTubeMatrices()), tubeRadiusScale,
+   * VCDCMatrix and, when the program clips, tubeVCMC.
+   */
+  void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  /**
+   * Per-fragment clipping by the mapper's clipping planes (data
+   * coordinates): with planes, declares the uniforms at //VTK::Clip::Dec
+   * and replaces `implementationTag` with a test of the view-coordinate
+   * point `vertexVC` (the ray-cast hit, or the interpolated surface point).
+   */
+  void ReplaceShaderTubeClip(std::string& FSSource, const char* implementationTag);
+
+  /**
+   * With the environment variable SPLINEVIZ_DUMP_SHADERS set, print the
+   * final sources of a program, stage by stage (name, source), for
+   * debugging shader replacements.
+   */
+  static void DumpShaderSources(const std::vector<std::pair<std::string, std::string>>& stages);
   /// The shaders wrote the final cell and block ids: nothing to convert.
   void ProcessSelectorPixelBuffers(
     vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;

@@ -988,35 +988,19 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
 
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
 
-  if (getenv("SPLINEVIZ_DUMP_SHADERS"))
-  {
-    cout << "=== VS\n"
-         << shaders[vtkShader::Vertex]->GetSource() << "\n=== TCS\n"
-         << this->GetTessellationControlShaderSource() << "\n=== TES\n"
-         << this->GetTessellationEvaluationShaderSource() << "\n=== FS\n"
-         << shaders[vtkShader::Fragment]->GetSource() << endl;
-  }
+  DumpShaderSources({ { "VS", shaders[vtkShader::Vertex]->GetSource() },
+    { "TCS", this->GetTessellationControlShaderSource() },
+    { "TES", this->GetTessellationEvaluationShaderSource() },
+    { "FS", shaders[vtkShader::Fragment]->GetSource() } });
 }
 
 //------------------------------------------------------------------------------
 void vtkTessellatedTubeMapper::ReplaceShaderClip(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer*, vtkActor*)
 {
-  // Clip per fragment (planes in data coordinates).
+  // Clip per fragment.
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
-  if (this->GetNumberOfClippingPlanes())
-  {
-    vtkShaderProgram::Substitute(FSSource, "//VTK::Clip::Dec",
-      "uniform int numClipPlanes;\n"
-      "uniform vec4 clipPlanes[6];\n"
-      "uniform mat4 tubeVCMC;\n");
-    vtkShaderProgram::Substitute(FSSource, "//VTK::Clip::Impl",
-      "  vec4 tubeClipMC = tubeVCMC * vertexVC;\n"
-      "  for (int planeNum = 0; planeNum < numClipPlanes; planeNum++)\n"
-      "  {\n"
-      "    if (dot(clipPlanes[planeNum], tubeClipMC) < 0.0) discard;\n"
-      "  }\n");
-  }
+  this->ReplaceShaderTubeClip(FSSource, "//VTK::Clip::Impl");
   shaders[vtkShader::Fragment]->SetSource(FSSource);
 }
 
@@ -1045,23 +1029,12 @@ void vtkTessellatedTubeMapper::SetCameraShaderParameters(
 {
   this->Superclass::SetCameraShaderParameters(cellBO, ren, act);
   vtkShaderProgram* program = cellBO.Program;
-  float modelView[16];
-  float viewModel[16];
-  float radiusScale = 1.0f;
-  this->ComputeTubeMatrices(ren, act, modelView, viewModel, radiusScale);
-  program->SetUniformMatrix4x4("tubeMCVC", modelView);
-  program->SetUniformf("tubeRadiusScale", radiusScale);
-  if (program->IsUniformUsed("tubeVCMC"))
-  {
-    program->SetUniformMatrix4x4("tubeVCMC", viewModel);
-  }
   vtkMatrix4x4* wcdc;
   vtkMatrix4x4* wcvc;
   vtkMatrix3x3* normals;
   vtkMatrix4x4* vcdc;
   static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
     ->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
-  program->SetUniformMatrix("VCDCMatrix", vcdc);
 
   int width = 1;
   int height = 1;
