@@ -10,8 +10,10 @@ scene="$here/ParallelRayCastTubesScene.py"
 mkdir -p "$out"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
-# A run that cannot start (an X connection refused under load, an MPI
-# start-up hang) is retried once; the images are compared only when made.
+# A run that cannot start is retried once: an MPI start-up hang, or an X
+# connection reset because an X server without -noreset (a user's display;
+# scripts/xvfb-run-if-needed.sh passes it) reset when one rank's probe
+# connection closed. The images are compared only when made.
 attempt() {
   for try in 1 2; do
     if timeout --kill-after=10 240 "$@" < /dev/null; then
