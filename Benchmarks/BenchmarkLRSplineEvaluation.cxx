@@ -412,11 +412,13 @@ int main(int argc, char* argv[])
 
   // Evaluation through the reader's output (the path every filter takes).
   BenchmarkEvaluation("cube-3patch-refined.lr, patch 0", reader->GetOutput(), 0);
-  const std::string path = "LRSplineBenchmark-generated.lr";
+  const lrbench::TemporaryLRFile generatedFile(nonDyadic, "LRSplineBenchmark-generated.lr");
+  if (!generatedFile.IsOk())
   {
-    std::ofstream out(path);
-    nonDyadic.GetPatch().Write(out);
+    std::cerr << "cannot write " << generatedFile.GetPath() << "\n";
+    return 1;
   }
+  const std::string& path = generatedFile.GetPath();
   vtkNew<vtkLRSplineReader> generated;
   generated->SetFileName(path.c_str());
   const auto t1 = Clock::now();

@@ -97,11 +97,13 @@ int main(int argc, char* argv[])
   {
     return 1;
   }
-  const std::string path = "LRSplineBenchmark-tracer.lr";
+  const lrbench::TemporaryLRFile file(builder, "LRSplineBenchmark-tracer.lr");
+  if (!file.IsOk())
   {
-    std::ofstream out(path);
-    builder.GetPatch().Write(out);
+    std::cerr << "cannot write " << file.GetPath() << "\n";
+    return 1;
   }
+  const std::string& path = file.GetPath();
   vtkNew<vtkLRSplineReader> reader;
   reader->SetFileName(path.c_str());
   reader->SetFieldName("velocity");

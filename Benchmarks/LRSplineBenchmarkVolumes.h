@@ -11,6 +11,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -93,6 +95,41 @@ inline bool MakeVolume(
   }
   return true;
 }
+
+// A generated volume written as an .lr file in the system's temporary
+// directory (so the benchmarks go through the reader like a user would) and
+// removed again when the benchmark ends; nothing is left in the working
+// directory.
+class TemporaryLRFile
+{
+public:
+  TemporaryLRFile(vtkLRSplineBuilder& builder, const std::string& name)
+  {
+    std::error_code ec;
+    std::filesystem::path dir = std::filesystem::temp_directory_path(ec);
+    if (ec)
+    {
+      dir = ".";
+    }
+    this->Path = (dir / name).string();
+    std::ofstream out(this->Path);
+    builder.GetPatch().Write(out);
+    this->Ok = static_cast<bool>(out);
+  }
+  ~TemporaryLRFile()
+  {
+    std::error_code ec;
+    std::filesystem::remove(this->Path, ec);
+  }
+  TemporaryLRFile(const TemporaryLRFile&) = delete;
+  TemporaryLRFile& operator=(const TemporaryLRFile&) = delete;
+  const std::string& GetPath() const { return this->Path; }
+  bool IsOk() const { return this->Ok; }
+
+private:
+  std::string Path;
+  bool Ok = false;
+};
 }
 
 #endif
