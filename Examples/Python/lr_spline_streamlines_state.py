@@ -16,9 +16,13 @@ import sys
 
 from paraview.simple import *  # noqa: F401,F403
 
-plugin = os.environ.get("SPLINEVIZ_PLUGIN")
-if plugin:
-    LoadPlugin(plugin, remote=False, ns=globals())  # noqa: F405
+try:
+    # Loads SplineVizPlugin unless ParaView did at start-up (PV_PLUGIN_PATH).
+    from splineviz.plugin import load_plugin
+
+    load_plugin(globals())
+except (ImportError, RuntimeError) as error:
+    print("SplineViz plugin not loaded (%s): ParaView's own filters only" % error)
 
 here = os.path.dirname(os.path.abspath(__file__))
 data = os.path.join(here, "..", "..", "Testing", "Data", "External", "cube-3patch-refined.lr")

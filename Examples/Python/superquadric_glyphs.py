@@ -126,8 +126,9 @@ if not plugin or not os.path.exists(plugin):
     sys.exit(0)
 
 from paraview import simple  # noqa: E402
+from splineviz.plugin import load_plugin  # noqa: E402
 
-simple.LoadPlugin(plugin, remote=False, ns=globals())
+load_plugin(globals(), plugin)  # unless ParaView loaded it at start-up
 source = simple.TrivialProducer()
 source.GetClientSideObject().SetOutput(volume)
 analysis = simple.TensorAnalysis(Input=source)

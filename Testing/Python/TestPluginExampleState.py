@@ -1,0 +1,53 @@
+"""pvbatch: run one of the ParaView state examples (Examples/Python/*_state.py)
+the way the README tells users to: with build/splineviz-env.sh's
+PV_PLUGIN_PATH, so ParaView loads the plugin at start-up and the example's
+splineviz.plugin.load_plugin must not load it a second time. The example must
+use the SplineViz representations (not its fallback) and draw its picture.
+
+    pvbatch TestPluginExampleState.py <example name without .py>
+"""
+import os
+import runpy
+import sys
+
+from paraview.simple import *  # noqa: F401,F403
+from splineviz.plugin import is_loaded
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+name = sys.argv[1]
+source = os.environ["SPLINEVIZ_SOURCE_DIR"]
+out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
+os.makedirs(out, exist_ok=True)
+if not is_loaded():
+    print("ERROR: SplineVizPlugin was not loaded at start-up from PV_PLUGIN_PATH=%s"
+          % os.environ.get("PV_PLUGIN_PATH"))
+    sys.exit(1)
+
+png = os.path.join(out, "TestExampleState-%s.png" % name)
+if os.path.exists(png):
+    os.remove(png)
+sys.argv = [name + ".py", png]
+state = runpy.run_path(os.path.join(source, "Examples", "Python", name + ".py"),
+                       run_name="__main__")
+
+expected = {"lines": "Ray-Cast Tubes"}
+if name == "tensor_lines_state":
+    expected["glyph_display"] = "Superquadric Glyphs"
+for display, representation in expected.items():
+    used = state[display].Representation
+    print("%s: %s" % (display, used))
+    if used != representation:
+        print("ERROR: %s shows '%s', expected the plugin's '%s'" % (display, used, representation))
+        sys.exit(1)
+
+reader = vtkPNGReader()
+reader.SetFileName(png)
+reader.Update()
+rgb = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+background = rgb[0]
+drawn = (abs(rgb - background).max(axis=1) > 30).mean()
+print("fraction of the picture that is not background: %.3f" % drawn)
+if drawn < 0.05:
+    print("ERROR: the example drew (almost) nothing")
+    sys.exit(1)
