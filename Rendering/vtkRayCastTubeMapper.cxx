@@ -128,6 +128,18 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
     declarations += GetTubeColorDeclarations();
   }
   vtkShaderProgram::Substitute(FSSource, "//VTK::Normal::Dec", declarations);
+  // The proxy rectangle lies in the plane of the sub-segment's nearest depth,
+  // so the exact depth written is never in front of the rasterized one: with
+  // depth_greater a GPU may run the depth test before the shader. (llvmpipe
+  // ignores it: Fibers2 frame times were the same within noise, 0.70 s with
+  // and 0.81 s without.)
+  vtkShaderProgram::Substitute(FSSource, "//VTK::System::Dec",
+    "//VTK::System::Dec\n"
+    "#ifdef GL_ARB_conservative_depth\n"
+    "#extension GL_ARB_conservative_depth : enable\n"
+    "layout(depth_greater) out float gl_FragDepth;\n"
+    "#endif\n",
+    false);
   vtkShaderProgram::Substitute(FSSource, "//VTK::PositionVC::Dec", "in vec4 vertexVCVSOutput;");
   vtkShaderProgram::Substitute(
     FSSource, "//VTK::PositionVC::Impl", "vec4 vertexVC = vertexVCVSOutput;\n");
