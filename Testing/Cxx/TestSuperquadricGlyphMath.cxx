@@ -15,8 +15,8 @@
 #include "vtkSuperquadricGlyphMath.h"
 
 #include "SplineVizTestUtilities.h"
+#include "TensorTestUtilities.h"
 
-#include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 
 #include <algorithm>
@@ -35,16 +35,7 @@ double Q(double u, double v, double w, double alpha, double beta)
     std::pow(std::abs(w), 2.0 / beta) - 1.0;
 }
 
-struct Random
-{
-  vtkNew<vtkMinimalStandardRandomSequence> Seq;
-  explicit Random(int seed) { this->Seq->SetSeed(seed); }
-  double Next(double lo, double hi)
-  {
-    this->Seq->Next();
-    return this->Seq->GetRangeValue(lo, hi);
-  }
-};
+using tensortest::Random;
 
 /// Brute-force first root of Q along o + t d on [ta, tb]: dense samples,
 /// then bisection. Returns false when no sample is inside. `chord` receives
