@@ -16,7 +16,7 @@
 //    ratio and the largest difference of the values.
 //
 //   BenchmarkLRSplineEvaluation [path/to/cube-3patch-refined.lr]
-#include "BenchmarkUsage.h"
+#include "BenchmarkCommon.h"
 #include "vtkLRSplineBuilder.h"
 #include "vtkLRSplineEvaluator.h"
 #include "vtkLRSplineField.h"

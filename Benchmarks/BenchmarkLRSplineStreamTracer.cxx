@@ -12,7 +12,7 @@
 // ten times smaller step.
 //
 //   BenchmarkLRSplineStreamTracer [numberOfSeeds]
-#include "BenchmarkUsage.h"
+#include "BenchmarkCommon.h"
 #include "vtkLRSplineBuilder.h"
 #include "vtkLRSplineReader.h"
 #include "vtkLRSplineResampleToImage.h"

@@ -23,7 +23,7 @@
 // SPLINEVIZ_BENCHMARK_SUBSET_ONLY=1 skips the whole-volume table,
 // SPLINEVIZ_BENCHMARK_DEBUG=1 prints where vtkHyperStreamline's lines and
 // ours part by more than half a voxel.
-#include "BenchmarkUsage.h"
+#include "BenchmarkCommon.h"
 #include "vtkTensorAnalysisFilter.h"
 #include "vtkTensorLineTracer.h"
 

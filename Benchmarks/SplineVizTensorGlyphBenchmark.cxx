@@ -25,7 +25,7 @@
 //   SplineVizTensorGlyphBenchmark [--glyphs 100k,1m] [--size 800x600,1200x768]
 //       [--renderers superquadric,tensorglyph,glyph3dmapper] [--frames N]
 //       [--seconds S] [--memory GB]
-#include "BenchmarkUsage.h"
+#include "BenchmarkCommon.h"
 #include "vtkSplineVizTensorMath.h"
 #include "vtkSuperquadricGlyphMapper.h"
 
@@ -62,25 +62,11 @@
 
 namespace
 {
+using splineviz_benchmark::CPUTime;
+using splineviz_benchmark::Now;
+using splineviz_benchmark::PolyDataGPUBytes;
+using splineviz_benchmark::Split;
 namespace TM = vtkSplineVizTensorMath;
-
-double Now()
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-std::vector<std::string> Split(const std::string& s)
-{
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-  {
-    if (!item.empty())
-      out.push_back(item);
-  }
-  return out;
-}
 
 constexpr double GlyphScale = 0.45; // semi-axis of the largest eigenvalue, voxel spacing 1
 
@@ -143,19 +129,6 @@ vtkSmartPointer<vtkSuperquadricSource> MakeSource(double roundness)
   source->SetSize(1.0); // unit semi-axes: scaled by the eigenvalues
   source->SetZAxisOfSymmetry();
   return source;
-}
-
-/// What vtkOpenGLPolyDataMapper uploads for a polydata: float positions and
-/// normals, RGBA colors when scalars are colored, 3 indices per triangle.
-double PolyDataGPUBytes(vtkPolyData* pd, bool colors)
-{
-  vtkIdType triangles = 0;
-  vtkCellArray* strips = pd->GetStrips();
-  triangles += strips->GetNumberOfConnectivityIds() - 2 * strips->GetNumberOfCells();
-  vtkCellArray* polys = pd->GetPolys();
-  triangles += polys->GetNumberOfConnectivityIds() - 2 * polys->GetNumberOfCells();
-  return static_cast<double>(pd->GetNumberOfPoints()) * (12 + 12 + (colors ? 4 : 0)) +
-    static_cast<double>(triangles) * 3 * 4;
 }
 
 /// A renderer under test: its actor, and how to change gamma.
@@ -396,7 +369,7 @@ double AvailableGB()
 }
 
 const char* const Usage =
-  "Usage: SplineVizTensorGlyphBenchmark [--glyphs 100k,1m] [--size 800x600,1200x768]\n"
+  "Usage: SplineVizTensorGlyphBenchmark [--glyphs 10k,100k,1m] [--size 800x600,1200x768]\n"
   "    [--renderers superquadric,tensorglyph,glyph3dmapper] [--frames N]\n"
   "    [--seconds S] [--memory GB]\n"
   "Polygonal renderers are skipped when their estimated memory exceeds --memory\n"
@@ -448,6 +421,23 @@ int main(int argc, char* argv[])
       return 2;
     }
   }
+  for (const auto& count : counts)
+  {
+    if (count != "10k" && count != "100k" && count != "1m")
+    {
+      std::fprintf(stderr, "unknown glyph count %s (10k, 100k or 1m)\n%s", count.c_str(), Usage);
+      return 2;
+    }
+  }
+  for (const auto& size : sizes)
+  {
+    int w = 0, h = 0;
+    if (!splineviz_benchmark::ParseSize(size, w, h))
+    {
+      std::fprintf(stderr, "bad window size %s (WxH)\n%s", size.c_str(), Usage);
+      return 2;
+    }
+  }
   memoryGB = std::min(memoryGB, AvailableGB() > 0 ? 0.8 * AvailableGB() : memoryGB);
 
   for (const auto& count : counts)
@@ -459,7 +449,7 @@ int main(int argc, char* argv[])
     for (const auto& size : sizes)
     {
       int w = 800, h = 600;
-      std::sscanf(size.c_str(), "%dx%d", &w, &h);
+      splineviz_benchmark::ParseSize(size, w, h);
       // one window (and GL context) per size, shared by the renderers in turn
       vtkNew<vtkRenderWindow> window;
       window->SetOffScreenRendering(1);

@@ -22,7 +22,7 @@
 //       [--frames N] [--renderers raycast,tubefilter,linesastubes]
 //       [--distance far|close] [--seconds S] [--samples N]
 // Several --data/--size values may be given (comma separated).
-#include "BenchmarkUsage.h"
+#include "BenchmarkCommon.h"
 #include "vtkRayCastTubeMapper.h"
 #include "vtkSplineTubeCore.h"
 #include "vtkSyntheticFibersSource.h"
@@ -58,33 +58,10 @@
 
 namespace
 {
-double Now()
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-/// CPU time of the whole process (all threads, including llvmpipe's): less
-/// sensitive than wall time to other processes sharing the machine.
-double CPUTime()
-{
-  struct rusage usage;
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
-    1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
-}
-
-std::vector<std::string> Split(const std::string& s)
-{
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, ','))
-  {
-    if (!item.empty())
-      out.push_back(item);
-  }
-  return out;
-}
+using splineviz_benchmark::CPUTime;
+using splineviz_benchmark::Now;
+using splineviz_benchmark::PolyDataGPUBytes;
+using splineviz_benchmark::Split;
 
 /// What a renderer builds for a data set: the actor, and after the first
 /// frame, the bytes it holds on the GPU.
@@ -155,18 +132,8 @@ std::map<std::string, Factory> Renderers()
     Built b;
     b.Actor = vtkSmartPointer<vtkActor>::New();
     b.Actor->SetMapper(mapper);
-    // What vtkOpenGLPolyDataMapper uploads: float positions and normals,
-    // RGBA colors per point, and 3 indices per triangle of the strips.
-    b.GPUBytes = [tubeData]()
-    {
-      vtkIdType triangles = 0;
-      vtkCellArray* strips = tubeData->GetStrips();
-      triangles += strips->GetNumberOfConnectivityIds() - 2 * strips->GetNumberOfCells();
-      vtkCellArray* polys = tubeData->GetPolys();
-      triangles += polys->GetNumberOfConnectivityIds() - 2 * polys->GetNumberOfCells();
-      return static_cast<double>(tubeData->GetNumberOfPoints()) * (12 + 12 + 4) +
-        static_cast<double>(triangles) * 3 * 4;
-    };
+    // Float positions and normals, RGBA colors per point, triangle indices.
+    b.GPUBytes = [tubeData]() { return PolyDataGPUBytes(tubeData, true); };
     return b;
   };
   r["linesastubes"] = [](vtkPolyData* data)
@@ -320,6 +287,23 @@ int main(int argc, char* argv[])
       return 2;
     }
   }
+  for (const auto& dataset : datasets)
+  {
+    if (dataset != "fibers" && dataset != "fibers2" && dataset != "million")
+    {
+      std::fprintf(stderr, "unknown data set %s\n%s", dataset.c_str(), Usage);
+      return 2;
+    }
+  }
+  for (const auto& size : sizes)
+  {
+    int w = 0, h = 0;
+    if (!splineviz_benchmark::ParseSize(size, w, h))
+    {
+      std::fprintf(stderr, "bad window size %s (WxH)\n%s", size.c_str(), Usage);
+      return 2;
+    }
+  }
 
   for (const auto& dataset : datasets)
   {
@@ -345,7 +329,7 @@ int main(int argc, char* argv[])
     for (const auto& size : sizes)
     {
       int w = 800, h = 600;
-      std::sscanf(size.c_str(), "%dx%d", &w, &h);
+      splineviz_benchmark::ParseSize(size, w, h);
       vtkNew<vtkRenderWindow> window;
       window->SetOffScreenRendering(1);
       window->SetSize(w, h);

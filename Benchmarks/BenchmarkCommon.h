@@ -1,0 +1,103 @@
+// What the benchmark programs share: command-line help (each program passes
+// its usage text; `-h` or `--help` anywhere on the command line prints it and
+// ends the program before any work starts), "--key value" checks and
+// comma-separated lists, wall and process CPU clocks, and the bytes
+// vtkOpenGLPolyDataMapper keeps on the GPU for a polygonal data set (the
+// VTK paths the SplineViz renderers are compared with).
+#ifndef BenchmarkCommon_h
+#define BenchmarkCommon_h
+
+#include "vtkCellArray.h"
+#include "vtkPolyData.h"
+
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace splineviz_benchmark
+{
+/// True (after printing `usage` to stdout) when -h or --help was given.
+inline bool HelpRequested(int argc, char* argv[], const char* usage)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    if (!std::strcmp(argv[i], "-h") || !std::strcmp(argv[i], "--help"))
+    {
+      std::fputs(usage, stdout);
+      return true;
+    }
+  }
+  return false;
+}
+
+/// For "--key value" parsers: an option without its value is an error.
+inline bool MissingOptionValue(int argc, char* argv[], const char* usage)
+{
+  if (argc % 2 == 0)
+  {
+    std::fprintf(stderr, "option %s needs a value\n%s", argv[argc - 1], usage);
+    return true;
+  }
+  return false;
+}
+
+/// "a,b,c" -> {"a", "b", "c"} (empty items dropped).
+inline std::vector<std::string> Split(const std::string& s)
+{
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  std::string item;
+  while (std::getline(ss, item, ','))
+  {
+    if (!item.empty())
+    {
+      out.push_back(item);
+    }
+  }
+  return out;
+}
+
+/// "800x600" -> w = 800, h = 600; false for anything else.
+inline bool ParseSize(const std::string& size, int& w, int& h)
+{
+  char rest = 0;
+  return std::sscanf(size.c_str(), "%dx%d%c", &w, &h, &rest) == 2 && w > 0 && h > 0;
+}
+
+/// Wall-clock seconds (monotonic).
+inline double Now()
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+/// CPU time of the whole process (all threads, including llvmpipe's): less
+/// sensitive than wall time to other processes sharing the machine.
+inline double CPUTime()
+{
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
+    1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+/// What vtkOpenGLPolyDataMapper uploads for a polygonal data set: float
+/// positions and normals, RGBA colors when scalars are colored, 3 indices
+/// per triangle of the strips and polygons.
+inline double PolyDataGPUBytes(vtkPolyData* pd, bool colors)
+{
+  vtkIdType triangles = 0;
+  vtkCellArray* strips = pd->GetStrips();
+  triangles += strips->GetNumberOfConnectivityIds() - 2 * strips->GetNumberOfCells();
+  vtkCellArray* polys = pd->GetPolys();
+  triangles += polys->GetNumberOfConnectivityIds() - 2 * polys->GetNumberOfCells();
+  return static_cast<double>(pd->GetNumberOfPoints()) * (12 + 12 + (colors ? 4 : 0)) +
+    static_cast<double>(triangles) * 3 * 4;
+}
+}
+
+#endif
