@@ -1,9 +1,13 @@
 #include "vtkLRSplineField.h"
 
+#include "vtkCharArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
@@ -333,6 +337,49 @@ vtkIdType vtkLRSplineField::EvaluatePoints(vtkIdType n,
     total += c;
   }
   return total;
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkLRSplineField::EvaluateIntoPointData(vtkPointData* pd, vtkIdType n,
+  const std::function<void(vtkIdType, double[3])>& point, const char* gradientName,
+  const char* maskName) const
+{
+  const int nc = this->NumberOfComponents;
+  vtkNew<vtkDoubleArray> values;
+  values->SetName(this->ArrayName.c_str());
+  values->SetNumberOfComponents(nc);
+  values->SetNumberOfTuples(n);
+  vtkNew<vtkDoubleArray> gradients;
+  if (gradientName)
+  {
+    gradients->SetName(gradientName);
+    gradients->SetNumberOfComponents(3 * nc);
+    gradients->SetNumberOfTuples(n);
+  }
+  vtkNew<vtkCharArray> mask;
+  mask->SetName(maskName);
+  mask->SetNumberOfTuples(n);
+  vtkIdType inside = 0;
+  if (n > 0)
+  {
+    inside = this->EvaluatePoints(n, point, values->GetPointer(0),
+      gradientName ? gradients->GetPointer(0) : nullptr, mask->GetPointer(0));
+  }
+  pd->AddArray(values);
+  if (nc == 3)
+  {
+    pd->SetActiveVectors(values->GetName());
+  }
+  else if (nc == 1)
+  {
+    pd->SetActiveScalars(values->GetName());
+  }
+  if (gradientName)
+  {
+    pd->AddArray(gradients);
+  }
+  pd->AddArray(mask);
+  return inside;
 }
 
 //------------------------------------------------------------------------------

@@ -27,6 +27,7 @@
 #include <vector>
 
 class vtkDataObject;
+class vtkPointData;
 
 class SPLINEVIZ_EXPORT vtkLRSplineField
 {
@@ -89,6 +90,19 @@ public:
    */
   vtkIdType EvaluatePoints(vtkIdType n, const std::function<void(vtkIdType, double[3])>& point,
     double* values, double* gradients, char* mask) const;
+
+  /**
+   * EvaluatePoints into new arrays added to `pd`, the output convention of
+   * the probe and resampling filters: the values as doubles named like the
+   * field (the active vectors with 3 components, the active scalars with
+   * 1), with `gradientName` (null: no gradient) the gradient with 3 *
+   * components (d/dx, d/dy, d/dz per component), and the char array
+   * `maskName` (1 where a patch contains the point). Returns the number of
+   * points inside.
+   */
+  vtkIdType EvaluateIntoPointData(vtkPointData* pd, vtkIdType n,
+    const std::function<void(vtkIdType, double[3])>& point, const char* gradientName,
+    const char* maskName) const;
 
   /// Patch and element containing x (-1 when none).
   int FindPatch(const double x[3], vtkIdType* element = nullptr) const;

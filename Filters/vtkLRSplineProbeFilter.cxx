@@ -3,9 +3,7 @@
 #include "vtkLRSplineField.h"
 
 #include "vtkCellData.h"
-#include "vtkCharArray.h"
 #include "vtkDataSet.h"
-#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -119,46 +117,17 @@ int vtkLRSplineProbeFilter::RequestData(
   output->GetFieldData()->PassData(input->GetFieldData());
 
   const vtkIdType n = input->GetNumberOfPoints();
-  const int nc = this->Field->GetNumberOfComponents();
-  vtkNew<vtkDoubleArray> values;
-  values->SetName(this->Field->GetArrayName().c_str());
-  values->SetNumberOfComponents(nc);
-  values->SetNumberOfTuples(n);
-  vtkNew<vtkDoubleArray> gradients;
-  gradients->SetName(
-    this->GradientArrayName && *this->GradientArrayName ? this->GradientArrayName : "Gradient");
-  if (this->ComputeGradient)
-  {
-    gradients->SetNumberOfComponents(3 * nc);
-    gradients->SetNumberOfTuples(n);
-  }
-  vtkNew<vtkCharArray> mask;
-  mask->SetName(this->ValidPointMaskArrayName && *this->ValidPointMaskArrayName
-      ? this->ValidPointMaskArrayName
-      : "vtkValidPointMask");
-  mask->SetNumberOfTuples(n);
   if (n > 0)
   {
     input->GetPoint(0); // build any internal point cache before the threads start
-    this->Field->EvaluatePoints(
-      n, [input](vtkIdType i, double x[3]) { input->GetPoint(i, x); }, values->GetPointer(0),
-      this->ComputeGradient ? gradients->GetPointer(0) : nullptr, mask->GetPointer(0));
   }
-  vtkPointData* pd = output->GetPointData();
-  pd->AddArray(values);
-  if (nc == 3)
-  {
-    pd->SetActiveVectors(values->GetName());
-  }
-  else if (nc == 1)
-  {
-    pd->SetActiveScalars(values->GetName());
-  }
-  if (this->ComputeGradient)
-  {
-    pd->AddArray(gradients);
-  }
-  pd->AddArray(mask);
+  this->Field->EvaluateIntoPointData(
+    output->GetPointData(), n, [input](vtkIdType i, double x[3]) { input->GetPoint(i, x); },
+    this->ComputeGradient
+      ? (this->GradientArrayName && *this->GradientArrayName ? this->GradientArrayName : "Gradient")
+      : nullptr,
+    this->ValidPointMaskArrayName && *this->ValidPointMaskArrayName ? this->ValidPointMaskArrayName
+                                                                    : "vtkValidPointMask");
   return 1;
 }
 

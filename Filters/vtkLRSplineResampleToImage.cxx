@@ -2,8 +2,6 @@
 
 #include "vtkLRSplineField.h"
 
-#include "vtkCharArray.h"
-#include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -146,29 +144,14 @@ int vtkLRSplineResampleToImage::RequestData(
   output->SetOrigin(origin);
   output->SetSpacing(spacing);
   const vtkIdType n = output->GetNumberOfPoints();
-  const int nc = this->Field->GetNumberOfComponents();
-  vtkNew<vtkDoubleArray> values;
-  values->SetName(this->Field->GetArrayName().c_str());
-  values->SetNumberOfComponents(nc);
-  values->SetNumberOfTuples(n);
-  vtkNew<vtkDoubleArray> gradients;
-  gradients->SetName("Gradient");
-  if (this->ComputeGradient)
-  {
-    gradients->SetNumberOfComponents(3 * nc);
-    gradients->SetNumberOfTuples(n);
-  }
-  vtkNew<vtkCharArray> mask;
-  mask->SetName("vtkValidPointMask");
-  mask->SetNumberOfTuples(n);
   const int nx = extent[1] - extent[0] + 1, ny = extent[3] - extent[2] + 1;
   auto coordinate = [&](int d, int i)
   {
     // the last sample sits exactly on the upper bound
     return (dims[d] > 1 && i == dims[d] - 1) ? bounds[2 * d + 1] : origin[d] + i * spacing[d];
   };
-  this->Field->EvaluatePoints(
-    n,
+  this->Field->EvaluateIntoPointData(
+    output->GetPointData(), n,
     [&](vtkIdType id, double x[3])
     {
       const int i = extent[0] + static_cast<int>(id % nx);
@@ -178,23 +161,7 @@ int vtkLRSplineResampleToImage::RequestData(
       x[1] = coordinate(1, j);
       x[2] = coordinate(2, k);
     },
-    values->GetPointer(0), this->ComputeGradient ? gradients->GetPointer(0) : nullptr,
-    mask->GetPointer(0));
-  vtkPointData* pd = output->GetPointData();
-  pd->AddArray(values);
-  if (nc == 3)
-  {
-    pd->SetActiveVectors(values->GetName());
-  }
-  else if (nc == 1)
-  {
-    pd->SetActiveScalars(values->GetName());
-  }
-  if (this->ComputeGradient)
-  {
-    pd->AddArray(gradients);
-  }
-  pd->AddArray(mask);
+    this->ComputeGradient ? "Gradient" : nullptr, "vtkValidPointMask");
   return 1;
 }
 
