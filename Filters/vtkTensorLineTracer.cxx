@@ -5,7 +5,6 @@
 #include "vtkAOSDataArrayTemplate.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
@@ -819,28 +818,6 @@ struct Output
   }
 };
 
-//------------------------------------------------------------------------------
-void CollectDataSets(vtkDataObject* obj, std::vector<vtkDataSet*>& out)
-{
-  if (auto* ds = vtkDataSet::SafeDownCast(obj))
-  {
-    out.push_back(ds);
-    return;
-  }
-  if (auto* cds = vtkCompositeDataSet::SafeDownCast(obj))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(cds->NewIterator());
-    it->SkipEmptyNodesOn();
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      if (auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
-      {
-        out.push_back(leaf);
-      }
-    }
-  }
-}
 }
 
 //------------------------------------------------------------------------------
@@ -971,9 +948,8 @@ int vtkTensorLineTracer::RequestData(
   }
 
   // The field's data sets and their arrays.
-  std::vector<vtkDataSet*> dataSets, all;
-  CollectDataSets(input, all);
-  for (vtkDataSet* ds : all)
+  std::vector<vtkDataSet*> dataSets;
+  for (vtkDataSet* ds : vtkCompositeDataSet::GetDataSets(input))
   {
     if (ds->GetNumberOfPoints() > 0)
     {
@@ -1273,9 +1249,7 @@ int vtkTensorLineTracer::RequestData(
                        "port (port 1), or use SeedMode SEEDS_FROM_VOXELS");
       return 0;
     }
-    std::vector<vtkDataSet*> seedSets;
-    CollectDataSets(source, seedSets);
-    for (vtkDataSet* ds : seedSets)
+    for (vtkDataSet* ds : vtkCompositeDataSet::GetDataSets(source))
     {
       const vtkIdType n = ds->GetNumberOfPoints();
       for (vtkIdType i = 0; i < n; ++i)

@@ -5,17 +5,13 @@
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"
-#include "vtkCompositeDataIterator.h"
-#include "vtkCompositeDataSet.h"
-#include "vtkFieldData.h"
-#include "vtkIdTypeArray.h"
-
-#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
+#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
@@ -210,24 +206,7 @@ double vtkSuperquadricGlyphMapper::GetGlyphPadding(double maxTensorNorm)
 bool vtkSuperquadricGlyphMapper::ComputeGlyphBounds(vtkDataObject* data, double bounds[6])
 {
   vtkMath::UninitializeBounds(bounds);
-  std::vector<vtkDataSet*> leaves;
-  if (auto* ds = vtkDataSet::SafeDownCast(data))
-  {
-    leaves.push_back(ds);
-  }
-  else if (auto* cd = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(cd->NewIterator());
-    it->SkipEmptyNodesOn();
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      if (auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
-      {
-        leaves.push_back(leaf);
-      }
-    }
-  }
+  const std::vector<vtkDataSet*> leaves = vtkCompositeDataSet::GetDataSets(data);
   double maxNorm = 0.0;
   bool any = false;
   for (vtkDataSet* leaf : leaves)

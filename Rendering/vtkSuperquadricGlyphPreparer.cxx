@@ -3,7 +3,6 @@
 #include "vtkSplineVizTensorMath.h"
 
 #include "vtkAbstractMapper.h"
-#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
@@ -215,25 +214,8 @@ int vtkSuperquadricGlyphPreparer::RequestData(
   }
 
   // The leaves to draw.
-  std::vector<vtkDataSet*> leaves;
-  if (auto* ds = vtkDataSet::SafeDownCast(input))
-  {
-    leaves.push_back(ds);
-  }
-  else if (auto* cd = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(cd->NewIterator());
-    it->SkipEmptyNodesOn();
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      if (auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
-      {
-        leaves.push_back(leaf);
-      }
-    }
-  }
-  else
+  const std::vector<vtkDataSet*> leaves = vtkCompositeDataSet::GetDataSets(input);
+  if (!vtkDataSet::SafeDownCast(input) && !vtkCompositeDataSet::SafeDownCast(input))
   {
     vtkErrorMacro("Input of type " << (input ? input->GetClassName() : "(none)")
                                    << " is not supported: a vtkDataSet or composite data set "
