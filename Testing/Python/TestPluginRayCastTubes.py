@@ -3,42 +3,20 @@ ParaView pipeline (the synthetic fibers source), with a radius array,
 scalar coloring and the ray-casting properties; checks that the tubes are
 drawn (coverage well above that of 1-pixel lines) and that the properties
 reach the mapper."""
-import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
+from plugin_test_scene import coverage as image_coverage
+from plugin_test_scene import fibers_scene
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
-out_dir = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
-os.makedirs(out_dir, exist_ok=True)
-
-fibers = SyntheticFibers(Preset=1)  # noqa: F405
-view = CreateRenderView()  # noqa: F405
-view.ViewSize = [600, 450]
-view.UseColorPaletteForBackground = 0
-view.Background = [1, 1, 1]
-view.OrientationAxesVisibility = 0
-display = Show(fibers, view)  # noqa: F405
-ColorBy(display, ("POINTS", "Scalar"))  # noqa: F405
-ResetCamera(view)  # noqa: F405
-view.CameraPosition = [0.3, 0.2, 2.2]
-view.CameraFocalPoint = [0, 0, 0]
+fibers, view, display = fibers_scene(globals())
 
 
 def coverage(name):
-    png = os.path.join(out_dir, name)
-    SaveScreenshot(png, view, ImageResolution=[600, 450])  # noqa: F405
-    from paraview.vtk.vtkIOImage import vtkPNGReader
-
-    reader = vtkPNGReader()
-    reader.SetFileName(png)
-    reader.Update()
-    scalars = reader.GetOutput().GetPointData().GetScalars()
-    n = scalars.GetNumberOfTuples()
-    hit = sum(1 for i in range(0, n, 3) if scalars.GetTuple3(i) != (255.0, 255.0, 255.0))
-    return hit / float(len(range(0, n, 3)))
+    return image_coverage(view, name)[0]
 
 
 display.SetRepresentationType("Surface")

@@ -6,16 +6,14 @@ the mapper, changing gamma re-renders without uploading the tensors again,
 coloring by an array works, and a multiblock of two volumes gets the glyphs
 of both."""
 import builtins
-import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
+from plugin_test_scene import coverage as image_coverage
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
-out_dir = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
-os.makedirs(out_dir, exist_ok=True)
 
 SCRIPT = """
 import numpy as np
@@ -73,18 +71,7 @@ ResetCamera(view)  # noqa: F405
 
 
 def coverage(name):
-    png = os.path.join(out_dir, name)
-    SaveScreenshot(png, view, ImageResolution=[500, 400])  # noqa: F405
-    from paraview.vtk.vtkIOImage import vtkPNGReader
-
-    reader = vtkPNGReader()
-    reader.SetFileName(png)
-    reader.Update()
-    scalars = reader.GetOutput().GetPointData().GetScalars()
-    n = scalars.GetNumberOfTuples()
-    pixels = [scalars.GetTuple3(i) for i in range(0, n, 2)]
-    hit = builtins.sum(1 for p in pixels if p != (255.0, 255.0, 255.0))
-    return hit / float(len(pixels)), pixels
+    return image_coverage(view, name, stride=2)
 
 
 cov3, img3 = coverage("TestPluginSuperquadricGlyphs.png")

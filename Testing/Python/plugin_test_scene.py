@@ -1,0 +1,49 @@
+"""Shared by the pvbatch plugin tests: the synthetic-fibers scene they draw
+and the fraction of an image that is not background."""
+import os
+
+
+def output_dir():
+    """Where the tests write their images (ctest: build/Testing/Temporary)."""
+    out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
+    os.makedirs(out, exist_ok=True)
+    return out
+
+
+def fibers_scene(ns, size=(600, 450)):
+    """SyntheticFibers (Preset Fibers) shown on white, colored by its Scalar
+    array, seen from a fixed camera. `ns`: the namespace LoadPlugin gave the
+    plugin's functions to (the test's globals()). Returns (source, view,
+    display)."""
+    from paraview import simple
+
+    fibers = ns["SyntheticFibers"](Preset=1)
+    view = simple.CreateRenderView()
+    view.ViewSize = list(size)
+    view.UseColorPaletteForBackground = 0
+    view.Background = [1, 1, 1]
+    view.OrientationAxesVisibility = 0
+    display = simple.Show(fibers, view)
+    simple.ColorBy(display, ("POINTS", "Scalar"))
+    simple.ResetCamera(view)
+    view.CameraPosition = [0.3, 0.2, 2.2]
+    view.CameraFocalPoint = [0, 0, 0]
+    return fibers, view, display
+
+
+def coverage(view, name, stride=3, background=(255.0, 255.0, 255.0)):
+    """Save a screenshot of `view` as `name` in output_dir() and return
+    (fraction of the sampled pixels that differ from the background, the
+    sampled pixels); every `stride`-th pixel is sampled."""
+    from paraview import simple
+    from paraview.vtk.vtkIOImage import vtkPNGReader
+
+    png = os.path.join(output_dir(), name)
+    simple.SaveScreenshot(png, view, ImageResolution=list(view.ViewSize))
+    reader = vtkPNGReader()
+    reader.SetFileName(png)
+    reader.Update()
+    scalars = reader.GetOutput().GetPointData().GetScalars()
+    pixels = [scalars.GetTuple3(i) for i in range(0, scalars.GetNumberOfTuples(), stride)]
+    hit = sum(1 for p in pixels if p != background)
+    return hit / float(len(pixels)), pixels
