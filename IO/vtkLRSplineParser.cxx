@@ -753,13 +753,17 @@ int vtkLRSplineParser::DetectFormat(const std::string& text)
   return AUTOMATIC;
 }
 
-bool vtkLRSplineParser::ParseLRSplines(
-  const std::string& text, std::vector<vtkLRSplinePatch>& patches, std::string* error)
+namespace
+{
+/// Runs one of the format readers; a ParseError becomes `error` ("line N:
+/// message") and an empty result.
+template <typename Reader>
+bool RunReader(const std::string& text, std::vector<vtkLRSplinePatch>& patches, std::string* error)
 {
   patches.clear();
   try
   {
-    LRReader reader(text);
+    Reader reader(text);
     reader.Parse(patches);
   }
   catch (const ParseError& e)
@@ -773,26 +777,18 @@ bool vtkLRSplineParser::ParseLRSplines(
   }
   return true;
 }
+}
+
+bool vtkLRSplineParser::ParseLRSplines(
+  const std::string& text, std::vector<vtkLRSplinePatch>& patches, std::string* error)
+{
+  return RunReader<LRReader>(text, patches, error);
+}
 
 bool vtkLRSplineParser::ParseG2(
   const std::string& text, std::vector<vtkLRSplinePatch>& patches, std::string* error)
 {
-  patches.clear();
-  try
-  {
-    G2Reader reader(text);
-    reader.Parse(patches);
-  }
-  catch (const ParseError& e)
-  {
-    if (error)
-    {
-      *error = "line " + std::to_string(e.Line) + ": " + e.Message;
-    }
-    patches.clear();
-    return false;
-  }
-  return true;
+  return RunReader<G2Reader>(text, patches, error);
 }
 
 bool vtkLRSplineParser::Parse(
