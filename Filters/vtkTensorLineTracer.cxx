@@ -542,19 +542,26 @@ private:
         return vtkTensorLineTracer::STAGNATION;
       }
       int r = 0;
-      if (P.Integrator == vtkTensorLineTracer::RUNGE_KUTTA2)
+      // One stage: the direction at x + f h k, oriented like k1; 0 or why
+      // the line ends there.
+      auto stageDirection = [&](double f, const double* k, double* out) -> int
       {
         for (int d = 0; d < 3; ++d)
         {
-          xs[d] = x[d] + 0.5 * h * k1[d];
+          xs[d] = x[d] + f * h * k[d];
         }
-        if ((r = this->Evaluate(xs, stage)) != 0)
+        const int reason = this->Evaluate(xs, stage);
+        if (reason != 0)
+        {
+          return reason;
+        }
+        return this->Direction(stage, in, k1, out) ? 0 : NoDirection(stage);
+      };
+      if (P.Integrator == vtkTensorLineTracer::RUNGE_KUTTA2)
+      {
+        if ((r = stageDirection(0.5, k1, k2)) != 0)
         {
           return r;
-        }
-        if (!this->Direction(stage, in, k1, k2))
-        {
-          return NoDirection(stage);
         }
         for (int d = 0; d < 3; ++d)
         {
@@ -563,41 +570,10 @@ private:
       }
       else
       {
-        for (int d = 0; d < 3; ++d)
-        {
-          xs[d] = x[d] + 0.5 * h * k1[d];
-        }
-        if ((r = this->Evaluate(xs, stage)) != 0)
+        if ((r = stageDirection(0.5, k1, k2)) != 0 || (r = stageDirection(0.5, k2, k3)) != 0 ||
+          (r = stageDirection(1.0, k3, k4)) != 0)
         {
           return r;
-        }
-        if (!this->Direction(stage, in, k1, k2))
-        {
-          return NoDirection(stage);
-        }
-        for (int d = 0; d < 3; ++d)
-        {
-          xs[d] = x[d] + 0.5 * h * k2[d];
-        }
-        if ((r = this->Evaluate(xs, stage)) != 0)
-        {
-          return r;
-        }
-        if (!this->Direction(stage, in, k1, k3))
-        {
-          return NoDirection(stage);
-        }
-        for (int d = 0; d < 3; ++d)
-        {
-          xs[d] = x[d] + h * k3[d];
-        }
-        if ((r = this->Evaluate(xs, stage)) != 0)
-        {
-          return r;
-        }
-        if (!this->Direction(stage, in, k1, k4))
-        {
-          return NoDirection(stage);
         }
         for (int d = 0; d < 3; ++d)
         {
