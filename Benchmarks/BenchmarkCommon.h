@@ -69,6 +69,22 @@ inline bool ParseSize(const std::string& size, int& w, int& h)
   return std::sscanf(size.c_str(), "%dx%d%c", &w, &h, &rest) == 2 && w > 0 && h > 0;
 }
 
+/// True when every "WxH" of `sizes` parses; otherwise says which does not
+/// (with the usage) and returns false.
+inline bool ValidSizes(const std::vector<std::string>& sizes, const char* usage)
+{
+  for (const auto& size : sizes)
+  {
+    int w = 0, h = 0;
+    if (!ParseSize(size, w, h))
+    {
+      std::fprintf(stderr, "bad window size %s (WxH)\n%s", size.c_str(), usage);
+      return false;
+    }
+  }
+  return true;
+}
+
 /// Wall-clock seconds (monotonic).
 inline double Now()
 {

@@ -429,14 +429,9 @@ int main(int argc, char* argv[])
       return 2;
     }
   }
-  for (const auto& size : sizes)
+  if (!splineviz_benchmark::ValidSizes(sizes, Usage))
   {
-    int w = 0, h = 0;
-    if (!splineviz_benchmark::ParseSize(size, w, h))
-    {
-      std::fprintf(stderr, "bad window size %s (WxH)\n%s", size.c_str(), Usage);
-      return 2;
-    }
+    return 2;
   }
   memoryGB = std::min(memoryGB, AvailableGB() > 0 ? 0.8 * AvailableGB() : memoryGB);
 
