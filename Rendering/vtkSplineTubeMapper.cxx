@@ -576,13 +576,19 @@ void vtkSplineTubeMapper::SetCameraShaderParameters(
   {
     program->SetUniformMatrix4x4("tubeVCMC", viewModel);
   }
+  program->SetUniformMatrix("VCDCMatrix", GetViewToDisplayMatrix(ren));
+}
+
+//------------------------------------------------------------------------------
+vtkMatrix4x4* vtkSplineTubeMapper::GetViewToDisplayMatrix(vtkRenderer* ren)
+{
   vtkMatrix4x4* wcdc;
   vtkMatrix4x4* wcvc;
   vtkMatrix3x3* normals;
   vtkMatrix4x4* vcdc;
   static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
     ->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
-  program->SetUniformMatrix("VCDCMatrix", vcdc);
+  return vcdc;
 }
 
 //------------------------------------------------------------------------------

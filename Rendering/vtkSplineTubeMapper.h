@@ -221,6 +221,12 @@ protected:
   void ComputeTubeMatrices(
     vtkRenderer* ren, vtkActor* act, float modelView[16], float viewModel[16], float& radiusScale);
 
+  /**
+   * The camera's view-to-display matrix (the projection, stored transposed
+   * as VTK's shaders expect it in VCDCMatrix); owned by the camera.
+   */
+  static vtkMatrix4x4* GetViewToDisplayMatrix(vtkRenderer* ren);
+
   double Radius = 0.01;
   char* RadiusArray = nullptr;
   double RadiusScale = 1.0;

@@ -502,12 +502,7 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   float viewModel[16];
   float radiusScale = 1.0f;
   this->ComputeTubeMatrices(ren, act, modelView, viewModel, radiusScale);
-  vtkMatrix4x4* wcdc;
-  vtkMatrix4x4* wcvc;
-  vtkMatrix3x3* normals;
-  vtkMatrix4x4* vcdc;
-  static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
-    ->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
+  vtkMatrix4x4* vcdc = GetViewToDisplayMatrix(ren);
   double proj[4][4]; // the projection P (vcdc holds its transpose)
   for (int r = 0; r < 4; ++r)
   {
@@ -1029,12 +1024,7 @@ void vtkTessellatedTubeMapper::SetCameraShaderParameters(
 {
   this->Superclass::SetCameraShaderParameters(cellBO, ren, act);
   vtkShaderProgram* program = cellBO.Program;
-  vtkMatrix4x4* wcdc;
-  vtkMatrix4x4* wcvc;
-  vtkMatrix3x3* normals;
-  vtkMatrix4x4* vcdc;
-  static_cast<vtkOpenGLCamera*>(ren->GetActiveCamera())
-    ->GetKeyMatrices(ren, wcvc, normals, vcdc, wcdc);
+  vtkMatrix4x4* vcdc = GetViewToDisplayMatrix(ren);
 
   int width = 1;
   int height = 1;
