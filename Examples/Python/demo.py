@@ -48,21 +48,41 @@ fibers.SetPresetToFibers()
 fibers.Update()
 
 
-def fiber_view(actor, name, camera_position=(0.25, 0.35, 1.9), focal=(0, 0, 0), size=(800, 600)):
+DARK = (0.08, 0.08, 0.1)
+
+
+def render(actors, name, position, focal, view_up=(0, 1, 0), size=(800, 600),
+           background=(1, 1, 1), samples=None, reset_camera=True):
+    """Render `actors` off screen, the camera at `position` looking at
+    `focal`, and save the picture as `name`. reset_camera: fit the view to
+    the actors (keeping the direction), else only the clipping range;
+    samples: multisampling (None: VTK's default)."""
     renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    renderer.SetBackground(0.08, 0.08, 0.1)
+    for actor in actors:
+        renderer.AddActor(actor)
+    renderer.SetBackground(*background)
     camera = renderer.GetActiveCamera()
-    camera.SetPosition(*camera_position)
+    camera.SetPosition(*position)
     camera.SetFocalPoint(*focal)
-    camera.SetViewUp(0, 1, 0)
-    renderer.ResetCameraClippingRange()
+    camera.SetViewUp(*view_up)
+    if reset_camera:
+        renderer.ResetCamera()
+    else:
+        renderer.ResetCameraClippingRange()
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
-    window.SetMultiSamples(0)
+    if samples is not None:
+        window.SetMultiSamples(samples)
     window.SetSize(*size)
     window.AddRenderer(renderer)
     save(window, name)
+
+
+def fiber_view(actor, name, camera_position=(0.25, 0.35, 1.9), focal=(0, 0, 0), size=(800, 600),
+               samples=0):
+    """The fibers from a fixed camera on a dark background."""
+    render([actor], name, camera_position, focal, size=size, background=DARK, samples=samples,
+           reset_camera=False)
 
 
 # Ray-cast spline tubes: exact sphere-swept surfaces, per-point radius
@@ -95,21 +115,8 @@ tessellated_actor.GetProperty().SetSpecularPower(40)
 
 
 def msaa_view(actor, name, **kwargs):
-    # fiber_view without multisampling removed: render with 8 samples.
-    renderer = vtkRenderer()
-    renderer.AddActor(actor)
-    renderer.SetBackground(0.08, 0.08, 0.1)
-    camera = renderer.GetActiveCamera()
-    camera.SetPosition(*kwargs.get("camera_position", (0.25, 0.35, 1.9)))
-    camera.SetFocalPoint(*kwargs.get("focal", (0, 0, 0)))
-    camera.SetViewUp(0, 1, 0)
-    renderer.ResetCameraClippingRange()
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetMultiSamples(8)
-    window.SetSize(800, 600)
-    window.AddRenderer(renderer)
-    save(window, name)
+    """fiber_view with 8x multisampling."""
+    fiber_view(actor, name, samples=8, **kwargs)
 
 
 msaa_view(tessellated_actor, "fibers-tessellated-tubes.png")
@@ -182,19 +189,8 @@ if os.path.exists(lr_file):
     edge_actor.SetMapper(edge_mapper)
     edge_actor.GetProperty().SetRepresentationToWireframe()
     edge_actor.GetProperty().SetColor(0.05, 0.05, 0.05)
-    renderer = vtkRenderer()
-    renderer.AddActor(size_actor)
-    renderer.AddActor(edge_actor)
-    renderer.SetBackground(1, 1, 1)
-    renderer.GetActiveCamera().SetPosition(2.6, -1.9, 2.4)
-    renderer.GetActiveCamera().SetFocalPoint(0.5, 0.5, 0.5)
-    renderer.GetActiveCamera().SetViewUp(0, 0, 1)
-    renderer.ResetCamera()
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetSize(800, 600)
-    window.AddRenderer(renderer)
-    save(window, "lr-spline-elements.png")
+    render([size_actor, edge_actor], "lr-spline-elements.png", (2.6, -1.9, 2.4), (0.5, 0.5, 0.5),
+           view_up=(0, 0, 1))
 
     g2 = splineviz.vtkLRSplineReader()
     g2.SetFileName(os.path.join(data_dir, "tensor-product-volume.g2"))
@@ -211,17 +207,7 @@ if os.path.exists(lr_file):
     shape_mapper.SetScalarRange(0, 1)
     shape_actor = vtkActor()
     shape_actor.SetMapper(shape_mapper)
-    renderer = vtkRenderer()
-    renderer.AddActor(shape_actor)
-    renderer.SetBackground(1, 1, 1)
-    renderer.GetActiveCamera().SetPosition(4, -6, 8)
-    renderer.GetActiveCamera().SetFocalPoint(0, -1, 2.5)
-    renderer.ResetCamera()
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetSize(800, 600)
-    window.AddRenderer(renderer)
-    save(window, "lr-spline-g2-geometry.png")
+    render([shape_actor], "lr-spline-g2-geometry.png", (4, -6, 8), (0, -1, 2.5))
 
     # Streamlines through the real spline: patch 1 of the file is the field
     # v = (-y, x, z) (helices about the z axis), traced on the exact spline
@@ -250,8 +236,6 @@ if os.path.exists(lr_file):
     stream_mapper.SetScalarRange(speed_range)
     stream_actor = vtkActor()
     stream_actor.SetMapper(stream_mapper)
-    renderer = vtkRenderer()
-    renderer.AddActor(stream_actor)
     mesh1 = vtkDataSetSurfaceFilter()
     mesh1.SetInputData(lr.GetOutput().GetBlock(1))
     mesh1_mapper = vtkPolyDataMapper()
@@ -262,17 +246,9 @@ if os.path.exists(lr_file):
     mesh1_actor.GetProperty().SetRepresentationToWireframe()
     mesh1_actor.GetProperty().SetColor(0.3, 0.3, 0.3)
     mesh1_actor.GetProperty().SetOpacity(0.3)
-    renderer.AddActor(mesh1_actor)  # the LR mesh of the spline
-    renderer.SetBackground(1, 1, 1)
-    renderer.GetActiveCamera().SetPosition(2.4, -1.6, 1.9)
-    renderer.GetActiveCamera().SetFocalPoint(0.45, 0.45, 0.4)
-    renderer.GetActiveCamera().SetViewUp(0, 0, 1)
-    renderer.ResetCamera()
-    window = vtkRenderWindow()
-    window.SetOffScreenRendering(1)
-    window.SetSize(800, 600)
-    window.AddRenderer(renderer)
-    save(window, "lr-spline-streamlines.png")
+    # the streamlines and the LR mesh of the spline
+    render([stream_actor, mesh1_actor], "lr-spline-streamlines.png", (2.4, -1.6, 1.9),
+           (0.45, 0.45, 0.4), view_up=(0, 0, 1))
 
 # -- Superquadric tensor glyphs (Hlawitschka et al.; Kindlmann 2004) ---------
 # A synthetic tensor volume whose principal direction winds around the z axis
@@ -413,16 +389,5 @@ else:
     print("tensor slice: FA of the tensor analysis (no superquadric glyph mapper in this build)")
 slice_actor = vtkActor()
 slice_actor.SetMapper(slice_mapper)
-renderer = vtkRenderer()
-renderer.AddActor(fiber_actor)
-renderer.AddActor(slice_actor)
-renderer.SetBackground(0.08, 0.08, 0.1)
-renderer.GetActiveCamera().SetPosition(40, -30, 40)
-renderer.GetActiveCamera().SetFocalPoint(9, 9, 9)
-renderer.GetActiveCamera().SetViewUp(0, 0, 1)
-renderer.ResetCamera()
-window = vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetSize(900, 700)
-window.AddRenderer(renderer)
-save(window, "tensor-lines-dipy.png")
+render([fiber_actor, slice_actor], "tensor-lines-dipy.png", (40, -30, 40), (9, 9, 9),
+       view_up=(0, 0, 1), size=(900, 700), background=DARK)
