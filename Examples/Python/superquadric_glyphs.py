@@ -154,3 +154,9 @@ simple.ResetCamera(view)
 path = os.path.join(out_dir, "superquadric-glyphs-paraview.png")
 simple.SaveScreenshot(path, view, ImageResolution=[900, 700])
 print("wrote", path)
+# Release the ParaView view here rather than at the interpreter's exit: when
+# this script ran inside another one (demo.py run by a test), pvpython
+# crashed at exit (SIGSEGV in Xlib's error handler while the view's window
+# was made current during ParaView's teardown).
+simple.Delete(view)
+del view, display

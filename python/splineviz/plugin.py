@@ -54,7 +54,8 @@ def load_plugin(ns=None, filename=None):
     """Load the plugin unless it is loaded already; return its file name.
 
     ``ns``: the namespace that gets the plugin's sources, filters and readers
-    as functions (pass ``globals()``, as for ``paraview.simple.LoadPlugin``).
+    as functions (pass ``globals()``, as for ``paraview.simple.LoadPlugin``);
+    ``paraview.simple`` gets them as well.
     ``filename``: the library to load (default: ``plugin_file()``).
     Connected to a remote pvserver, the plugin is loaded there as well (it is
     required on client and server). Raises RuntimeError when the plugin cannot
@@ -70,6 +71,9 @@ def load_plugin(ns=None, filename=None):
         simple.LoadPlugin(path, remote=False, ns=ns)
         if not is_loaded():
             raise RuntimeError("could not load the SplineViz plugin from %s" % path)
+        # LoadPlugin gives the new functions to `ns` only; paraview.simple
+        # gets them too, so that `simple.TensorAnalysis(...)` works as well.
+        simple._add_functions(vars(simple))
     elif ns is not None:
         # Loaded at start-up: make sure the caller's namespace has the
         # plugin's functions even if it imported paraview.simple early.
