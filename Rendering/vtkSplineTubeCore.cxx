@@ -3,15 +3,17 @@
 #include "vtkSplineTubeMath.h"
 
 #include "vtkCellArray.h"
-#include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
 #include "vtkTypeUInt32Array.h"
 #include "vtkUnsignedCharArray.h"
@@ -215,126 +217,235 @@ bool vtkSplineTubeCore::AddPolyData(
     this->ColorsMissing = true;
   }
 
-  // Room for every point of the input (growing by InsertNext* is slow).
-  const vtkIdType nodesBefore = this->NodePositions->GetNumberOfTuples();
-  const vtkIdType segmentsBefore = this->SegmentFirstNodes->GetNumberOfTuples();
-  const vtkIdType tubesBefore = this->TubeFirstNodes->GetNumberOfTuples();
-  this->NodePositions->Resize(nodesBefore + numPoints);
-  this->NodeRadii->Resize(nodesBefore + numPoints);
-  this->NodeColors->Resize(nodesBefore + numPoints);
-  this->SegmentFirstNodes->Resize(segmentsBefore + numPoints);
-  this->SegmentFlags->Resize(segmentsBefore + numPoints);
-  this->SegmentCellIds->Resize(segmentsBefore + numPoints);
-  this->SegmentBlockIds->Resize(segmentsBefore + numPoints);
-  this->TubeFirstNodes->Resize(tubesBefore + input->GetNumberOfLines());
-  this->TubeNumberOfNodes->Resize(tubesBefore + input->GetNumberOfLines());
-
+  // Two passes over the polylines, both parallel (vtkSMPTools): the first
+  // validates every line and counts the nodes it keeps; the offsets then
+  // place each line's nodes and segments, and the second pass writes them.
+  // Output order and messages are those of a sequential scan.
   vtkPoints* points = input->GetPoints();
-  std::vector<vtkIdType> ids;
-  std::vector<double> pos;
-  std::vector<double> rad;
-  vtkIdType mergedHere = 0;
-  vtkIdType shortLines = 0;
-  vtkIdType cellId = input->GetNumberOfVerts(); // cell ids of lines follow the verts
+  vtkCellArray* lines = input->GetLines();
+  const vtkIdType numLines = lines->GetNumberOfCells();
+  const vtkIdType firstCellId = input->GetNumberOfVerts(); // line cell ids follow the verts
   const double constantRadius = this->Radius;
+  const double radiusScale = this->RadiusScale;
 
-  auto iter = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
-  for (iter->GoToFirstCell(); !iter->IsDoneWithTraversal(); iter->GoToNextCell(), ++cellId)
+  enum LineStatus : unsigned char
+  {
+    LINE_OK,
+    LINE_NONFINITE_POINT,
+    LINE_BAD_RADIUS,
+  };
+  struct LineScan
+  {
+    vtkIdType Kept = 0;
+    vtkIdType Merged = 0;
+    vtkIdType BadPoint = -1;
+    double BadRadius = 0.0;
+    unsigned char Status = LINE_OK;
+  };
+  // Scans line `line`: calls keep(pointId, position, radius) for every node
+  // kept (repeated consecutive points merged); stops at the first point with
+  // a non-finite coordinate or radius.
+  auto scanLine = [&](vtkIdType line, vtkIdList* scratch, LineScan& scan, auto&& keep)
   {
     vtkIdType npts;
     const vtkIdType* pts;
-    iter->GetCurrentCell(npts, pts);
-    ids.clear();
-    pos.clear();
-    rad.clear();
-    bool bad = false;
-    for (vtkIdType k = 0; k < npts && !bad; ++k)
+    lines->GetCellAtId(line, npts, pts, scratch);
+    double last[3] = { 0.0, 0.0, 0.0 };
+    for (vtkIdType k = 0; k < npts; ++k)
     {
       double p[3];
       points->GetPoint(pts[k], p);
       if (!IsFinite(p[0]) || !IsFinite(p[1]) || !IsFinite(p[2]))
       {
-        vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << pts[k]
-                        << " has a NaN or infinite coordinate.");
-        bad = true;
-        break;
+        scan.Status = LINE_NONFINITE_POINT;
+        scan.BadPoint = pts[k];
+        return;
       }
       double r = constantRadius;
       if (radiusArray)
       {
-        r = radiusArray->GetComponent(pts[k], 0) * this->RadiusScale;
+        r = radiusArray->GetComponent(pts[k], 0) * radiusScale;
         if (!IsFinite(r) || r <= 0.0)
         {
-          vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << pts[k]
-                          << " has the radius " << r << " (radii must be finite and > 0).");
-          bad = true;
-          break;
+          scan.Status = LINE_BAD_RADIUS;
+          scan.BadPoint = pts[k];
+          scan.BadRadius = r;
+          return;
         }
       }
       // Merge repeated consecutive points (the spline needs distinct nodes).
-      if (!ids.empty())
+      if (scan.Kept > 0)
       {
-        const double* q = &pos[pos.size() - 3];
-        const double d2 = vtkMath::Distance2BetweenPoints(p, q);
+        const double d2 = vtkMath::Distance2BetweenPoints(p, last);
         const double scale = std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]), r });
         if (d2 <= (1e-10 * scale) * (1e-10 * scale))
         {
-          ++mergedHere;
+          ++scan.Merged;
           continue;
         }
       }
-      ids.push_back(pts[k]);
-      pos.insert(pos.end(), p, p + 3);
-      rad.push_back(r);
+      keep(pts[k], p, r, scan.Kept);
+      ++scan.Kept;
+      std::copy(p, p + 3, last);
     }
-    if (bad)
+  };
+
+  std::vector<LineScan> scans(static_cast<size_t>(numLines));
+  vtkSMPThreadLocalObject<vtkIdList> scratch1;
+  vtkSMPTools::For(0, numLines,
+    [&](vtkIdType begin, vtkIdType end)
     {
+      vtkIdList* scratch = scratch1.Local();
+      for (vtkIdType line = begin; line < end; ++line)
+      {
+        scanLine(line, scratch, scans[line], [](vtkIdType, const double*, double, vtkIdType) {});
+      }
+    });
+
+  // Offsets of the lines that become tubes; messages in line order.
+  const vtkIdType nodesBefore = this->NodePositions->GetNumberOfTuples();
+  const vtkIdType segmentsBefore = this->SegmentFirstNodes->GetNumberOfTuples();
+  const vtkIdType tubesBefore = this->TubeFirstNodes->GetNumberOfTuples();
+  std::vector<vtkIdType> tubeOf(static_cast<size_t>(numLines), -1);
+  std::vector<vtkIdType> nodeOffset(static_cast<size_t>(numLines), 0);
+  vtkIdType mergedHere = 0;
+  vtkIdType shortLines = 0;
+  vtkIdType numNodes = nodesBefore;
+  vtkIdType numTubes = tubesBefore;
+  for (vtkIdType line = 0; line < numLines; ++line)
+  {
+    const LineScan& scan = scans[line];
+    const vtkIdType cellId = firstCellId + line;
+    mergedHere += scan.Merged;
+    if (scan.Status == LINE_NONFINITE_POINT)
+    {
+      vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << scan.BadPoint
+                      << " has a NaN or infinite coordinate.");
       ++this->NumberOfSkippedLines;
       continue;
     }
-    if (ids.size() < 2)
+    if (scan.Status == LINE_BAD_RADIUS)
+    {
+      vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << scan.BadPoint
+                      << " has the radius " << scan.BadRadius
+                      << " (radii must be finite and > 0).");
+      ++this->NumberOfSkippedLines;
+      continue;
+    }
+    if (scan.Kept < 2)
     {
       ++shortLines;
       ++this->NumberOfSkippedLines;
       continue;
     }
+    tubeOf[line] = numTubes++;
+    nodeOffset[line] = numNodes;
+    numNodes += scan.Kept;
+  }
+  const vtkIdType numSegments =
+    segmentsBefore + (numNodes - nodesBefore) - (numTubes - tubesBefore);
 
-    // Append the tube.
-    const vtkIdType first = this->NodePositions->GetNumberOfTuples();
-    const vtkIdType n = static_cast<vtkIdType>(ids.size());
-    this->TubeFirstNodes->InsertNextValue(first);
-    this->TubeNumberOfNodes->InsertNextValue(n);
-    for (vtkIdType k = 0; k < n; ++k)
+  // Grow keeping what earlier calls added: Resize() keeps the values,
+  // SetNumberOfTuples() alone may reallocate without them (VTK 9.2).
+  this->NodePositions->Resize(numNodes);
+  this->NodePositions->SetNumberOfTuples(numNodes);
+  this->NodeRadii->Resize(numNodes);
+  this->NodeRadii->SetNumberOfTuples(numNodes);
+  this->NodeColors->Resize(numNodes);
+  this->NodeColors->SetNumberOfTuples(numNodes);
+  this->SegmentFirstNodes->Resize(numSegments);
+  this->SegmentFirstNodes->SetNumberOfTuples(numSegments);
+  this->SegmentFlags->Resize(numSegments);
+  this->SegmentFlags->SetNumberOfTuples(numSegments);
+  this->SegmentCellIds->Resize(numSegments);
+  this->SegmentCellIds->SetNumberOfTuples(numSegments);
+  this->SegmentBlockIds->Resize(numSegments);
+  this->SegmentBlockIds->SetNumberOfTuples(numSegments);
+  this->TubeFirstNodes->Resize(numTubes);
+  this->TubeFirstNodes->SetNumberOfTuples(numTubes);
+  this->TubeNumberOfNodes->Resize(numTubes);
+  this->TubeNumberOfNodes->SetNumberOfTuples(numTubes);
+
+  float* positions = this->NodePositions->GetPointer(0);
+  float* radii = this->NodeRadii->GetPointer(0);
+  float* nodeColors = this->NodeColors->GetPointer(0);
+  vtkTypeUInt32* segmentFirst = this->SegmentFirstNodes->GetPointer(0);
+  unsigned char* segmentFlags = this->SegmentFlags->GetPointer(0);
+  vtkIdType* segmentCells = this->SegmentCellIds->GetPointer(0);
+  vtkTypeUInt32* segmentBlocks = this->SegmentBlockIds->GetPointer(0);
+  vtkIdType* tubeFirst = this->TubeFirstNodes->GetPointer(0);
+  vtkIdType* tubeNodes = this->TubeNumberOfNodes->GetPointer(0);
+  const unsigned char* colorBytes = colors ? colors->GetPointer(0) : nullptr;
+
+  vtkSMPThreadLocalObject<vtkIdList> scratch2;
+  vtkSMPThreadLocal<double> maxRadius(0.0);
+  vtkSMPTools::For(0, numLines,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      this->NodePositions->InsertNextTuple3(pos[3 * k], pos[3 * k + 1], pos[3 * k + 2]);
-      this->NodeRadii->InsertNextTuple2(rad[k], 0.0);
-      this->MaximumRadius = std::max(this->MaximumRadius, rad[k]);
-      if (colors)
+      vtkIdList* scratch = scratch2.Local();
+      double& rMax = maxRadius.Local();
+      for (vtkIdType line = begin; line < end; ++line)
       {
-        const unsigned char* c = colors->GetPointer(4 * (colorsPerCell ? cellId : ids[k]));
-        this->NodeColors->InsertNextTuple4(c[0] / 255.0, c[1] / 255.0, c[2] / 255.0, c[3] / 255.0);
+        const vtkIdType tube = tubeOf[line];
+        if (tube < 0)
+        {
+          continue;
+        }
+        const vtkIdType cellId = firstCellId + line;
+        const vtkIdType first = nodeOffset[line];
+        // Segments of the tubes before this one: one fewer than their nodes.
+        const vtkIdType firstSegment =
+          segmentsBefore + (first - nodesBefore) - (tube - tubesBefore);
+        LineScan scan;
+        scanLine(line, scratch, scan,
+          [&](vtkIdType pointId, const double* p, double r, vtkIdType k)
+          {
+            const vtkIdType i = first + k;
+            positions[3 * i] = static_cast<float>(p[0]);
+            positions[3 * i + 1] = static_cast<float>(p[1]);
+            positions[3 * i + 2] = static_cast<float>(p[2]);
+            radii[2 * i] = static_cast<float>(r);
+            radii[2 * i + 1] = 0.0f;
+            rMax = std::max(rMax, r);
+            float* c = nodeColors + 4 * i;
+            if (colorBytes)
+            {
+              const unsigned char* rgba = colorBytes + 4 * (colorsPerCell ? cellId : pointId);
+              for (int j = 0; j < 4; ++j)
+              {
+                c[j] = static_cast<float>(rgba[j] / 255.0);
+              }
+            }
+            else
+            {
+              std::fill(c, c + 4, 1.0f);
+            }
+          });
+        const vtkIdType n = scan.Kept;
+        tubeFirst[tube] = first;
+        tubeNodes[tube] = n;
+        for (vtkIdType k = 0; k + 1 < n; ++k)
+        {
+          unsigned char flags = 0;
+          if (k == 0)
+          {
+            flags |= TUBE_START;
+          }
+          if (k + 2 == n)
+          {
+            flags |= TUBE_END;
+          }
+          const vtkIdType s = firstSegment + k;
+          segmentFirst[s] = static_cast<vtkTypeUInt32>(first + k);
+          segmentFlags[s] = flags;
+          segmentCells[s] = cellId;
+          segmentBlocks[s] = blockId;
+        }
       }
-      else
-      {
-        this->NodeColors->InsertNextTuple4(1.0, 1.0, 1.0, 1.0);
-      }
-    }
-    for (vtkIdType k = 0; k + 1 < n; ++k)
-    {
-      unsigned char flags = 0;
-      if (k == 0)
-      {
-        flags |= TUBE_START;
-      }
-      if (k + 2 == n)
-      {
-        flags |= TUBE_END;
-      }
-      this->SegmentFirstNodes->InsertNextValue(static_cast<vtkTypeUInt32>(first + k));
-      this->SegmentFlags->InsertNextValue(flags);
-      this->SegmentCellIds->InsertNextValue(cellId);
-      this->SegmentBlockIds->InsertNextValue(blockId);
-    }
+    });
+  for (double r : maxRadius)
+  {
+    this->MaximumRadius = std::max(this->MaximumRadius, r);
   }
 
   if (mergedHere > 0)
