@@ -6,8 +6,7 @@ import runpy
 import shutil
 import sys
 
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+from splineviz_testing import drawn_fraction
 
 source = os.environ["SPLINEVIZ_SOURCE_DIR"]
 out = os.path.join(os.environ.get("SPLINEVIZ_TEST_OUTPUT", "."), "TestDemo")
@@ -36,12 +35,7 @@ for name in expected:
         print("ERROR: demo.py did not write", name)
         failed = True
         continue
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    rgb = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
-    background = rgb[0]
-    drawn = (abs(rgb - background).max(axis=1) > 30).mean()
+    drawn = drawn_fraction(path)
     print("%s: %.3f of the picture drawn" % (name, drawn))
     if drawn < 0.03:
         print("ERROR: %s is (almost) blank" % name)

@@ -4,8 +4,7 @@ import os
 import runpy
 import sys
 
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+from splineviz_testing import drawn_fraction
 
 source = os.environ["SPLINEVIZ_SOURCE_DIR"]
 out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
@@ -13,11 +12,7 @@ os.makedirs(out, exist_ok=True)
 png = os.path.join(out, "TestExamples-raycast_tubes.png")
 sys.argv = ["raycast_tubes.py", png]
 runpy.run_path(os.path.join(source, "Examples", "Python", "raycast_tubes.py"), run_name="__main__")
-reader = vtkPNGReader()
-reader.SetFileName(png)
-reader.Update()
-rgb = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3]
-drawn = (rgb.min(axis=1) < 240).mean()
+drawn = drawn_fraction(png, background=(255, 255, 255), tolerance=15)  # white background
 print("fraction drawn:", drawn)
 if drawn < 0.2:
     print("ERROR: the example drew (almost) nothing")
@@ -41,11 +36,9 @@ else:
         if stop.code not in (0, None):
             raise
     for gamma in (0, 3, 20):
-        reader = vtkPNGReader()
-        reader.SetFileName(os.path.join(glyph_out, "superquadric-glyphs-vtk-gamma%d.png" % gamma))
-        reader.Update()
-        rgb = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3]
-        drawn = (rgb.max(axis=1) > 40).mean()
+        drawn = drawn_fraction(
+            os.path.join(glyph_out, "superquadric-glyphs-vtk-gamma%d.png" % gamma),
+            background=(0, 0, 0), tolerance=40)  # black background
         print("superquadric glyphs, gamma %d: fraction drawn %.3f" % (gamma, drawn))
         if drawn < 0.08:
             print("ERROR: the superquadric example drew (almost) nothing")

@@ -15,8 +15,8 @@ import sys
 import time
 
 from paraview.simple import *  # noqa: F401,F403
-from plugin_test_scene import coverage as image_coverage
-from plugin_test_scene import fibers_scene
+from splineviz_testing import coverage as image_coverage
+from splineviz_testing import fibers_scene
 
 pvserver = sys.argv[1]
 out_dir = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")

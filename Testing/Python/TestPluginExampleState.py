@@ -12,8 +12,7 @@ import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from splineviz.plugin import is_loaded
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkIOImage import vtkPNGReader
+from splineviz_testing import drawn_fraction
 
 name = sys.argv[1]
 source = os.environ["SPLINEVIZ_SOURCE_DIR"]
@@ -41,12 +40,7 @@ for display, representation in expected.items():
         print("ERROR: %s shows '%s', expected the plugin's '%s'" % (display, used, representation))
         sys.exit(1)
 
-reader = vtkPNGReader()
-reader.SetFileName(png)
-reader.Update()
-rgb = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
-background = rgb[0]
-drawn = (abs(rgb - background).max(axis=1) > 30).mean()
+drawn = drawn_fraction(png)
 print("fraction of the picture that is not background: %.3f" % drawn)
 if drawn < 0.05:
     print("ERROR: the example drew (almost) nothing")

@@ -11,7 +11,7 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
-from plugin_test_scene import coverage as image_coverage
+from splineviz_testing import coverage as image_coverage
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 

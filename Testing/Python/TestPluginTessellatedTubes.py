@@ -10,8 +10,8 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
-from plugin_test_scene import coverage as image_coverage
-from plugin_test_scene import fibers_scene
+from splineviz_testing import coverage as image_coverage
+from splineviz_testing import fibers_scene
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 fibers, view, display = fibers_scene(globals())

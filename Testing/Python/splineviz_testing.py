@@ -1,5 +1,5 @@
-"""Shared by the pvbatch plugin tests: the synthetic-fibers scene they draw
-and the fraction of an image that is not background."""
+"""Shared by the Python and plugin tests: the synthetic-fibers scene the
+plugin tests draw, and measures of how much of a rendered image is drawn."""
 import os
 
 
@@ -47,3 +47,18 @@ def coverage(view, name, stride=3, background=(255.0, 255.0, 255.0)):
     pixels = [scalars.GetTuple3(i) for i in range(0, scalars.GetNumberOfTuples(), stride)]
     hit = sum(1 for p in pixels if p != background)
     return hit / float(len(pixels)), pixels
+
+
+def drawn_fraction(png, background=None, tolerance=30):
+    """Fraction of the pixels of the image file `png` whose RGB differs from
+    `background` (default: the first pixel) by more than `tolerance` in
+    some channel."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGReader
+
+    reader = vtkPNGReader()
+    reader.SetFileName(png)
+    reader.Update()
+    rgb = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    reference = rgb[0] if background is None else background
+    return float((abs(rgb - reference).max(axis=1) > tolerance).mean())
