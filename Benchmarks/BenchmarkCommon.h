@@ -62,6 +62,33 @@ inline std::vector<std::string> Split(const std::string& s)
   return out;
 }
 
+/// True when every item of `values` is one of `known`; otherwise says which
+/// is not (`what` names the kind of item, e.g. "renderer"), lists the known
+/// ones and returns false.
+inline bool AllKnown(
+  const std::vector<std::string>& values, const std::vector<std::string>& known, const char* what)
+{
+  for (const auto& value : values)
+  {
+    bool found = false;
+    for (const auto& k : known)
+    {
+      found = found || k == value;
+    }
+    if (!found)
+    {
+      std::string list;
+      for (const auto& k : known)
+      {
+        list += (list.empty() ? "" : ", ") + k;
+      }
+      std::fprintf(stderr, "unknown %s %s (known: %s)\n", what, value.c_str(), list.c_str());
+      return false;
+    }
+  }
+  return true;
+}
+
 /// "800x600" -> w = 800, h = 600; false for anything else.
 inline bool ParseSize(const std::string& size, int& w, int& h)
 {

@@ -413,23 +413,14 @@ int main(int argc, char* argv[])
     }
   }
   const auto factories = Renderers();
-  for (const auto& name : renderers)
+  std::vector<std::string> known;
+  for (const auto& factory : factories)
   {
-    if (!factories.count(name))
-    {
-      std::fprintf(stderr, "unknown renderer %s\n", name.c_str());
-      return 2;
-    }
+    known.push_back(factory.first);
   }
-  for (const auto& count : counts)
-  {
-    if (count != "10k" && count != "100k" && count != "1m")
-    {
-      std::fprintf(stderr, "unknown glyph count %s (10k, 100k or 1m)\n%s", count.c_str(), Usage);
-      return 2;
-    }
-  }
-  if (!splineviz_benchmark::ValidSizes(sizes, Usage))
+  if (!splineviz_benchmark::AllKnown(renderers, known, "renderer") ||
+    !splineviz_benchmark::AllKnown(counts, { "10k", "100k", "1m" }, "glyph count") ||
+    !splineviz_benchmark::ValidSizes(sizes, Usage))
   {
     return 2;
   }

@@ -279,23 +279,14 @@ int main(int argc, char* argv[])
     }
   }
   const auto factories = Renderers();
-  for (const auto& name : renderers)
+  std::vector<std::string> known;
+  for (const auto& factory : factories)
   {
-    if (!factories.count(name))
-    {
-      std::fprintf(stderr, "unknown renderer %s\n", name.c_str());
-      return 2;
-    }
+    known.push_back(factory.first);
   }
-  for (const auto& dataset : datasets)
-  {
-    if (dataset != "fibers" && dataset != "fibers2" && dataset != "million")
-    {
-      std::fprintf(stderr, "unknown data set %s\n%s", dataset.c_str(), Usage);
-      return 2;
-    }
-  }
-  if (!splineviz_benchmark::ValidSizes(sizes, Usage))
+  if (!splineviz_benchmark::AllKnown(renderers, known, "renderer") ||
+    !splineviz_benchmark::AllKnown(datasets, { "fibers", "fibers2", "million" }, "data set") ||
+    !splineviz_benchmark::ValidSizes(sizes, Usage))
   {
     return 2;
   }
