@@ -7,8 +7,10 @@
 #include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
+#include "vtkSplineVizTensorMath.h"
 
 #include <cmath>
+#include <vector>
 
 namespace tensortest
 {
@@ -66,6 +68,28 @@ inline void Compose(const double r[3][3], const double l[3], double t[6])
   t[3] = m[0][1];
   t[4] = m[1][2];
   t[5] = m[0][2];
+}
+
+/// The components of the symmetric tensor t (XX, YY, ZZ, XY, YZ, XZ) in a
+/// vtkSplineVizTensorMath layout, written out here independently of the
+/// library's readers; `confidence` is Teem's leading value.
+inline std::vector<double> Encode(int layout, const double t[6], double confidence = 1.0)
+{
+  namespace TM = vtkSplineVizTensorMath;
+  const double xx = t[0], yy = t[1], zz = t[2], xy = t[3], yz = t[4], xz = t[5];
+  switch (layout)
+  {
+    case TM::FULL_9:
+      return { xx, xy, xz, xy, yy, yz, xz, yz, zz };
+    case TM::SYMMETRIC_LOWER:
+      return { xx, xy, yy, xz, yz, zz };
+    case TM::SYMMETRIC_UPPER:
+      return { xx, xy, xz, yy, yz, zz };
+    case TM::TEEM_7:
+      return { confidence, xx, xy, xz, yy, yz, zz };
+    default: // SYMMETRIC_VTK
+      return { xx, yy, zz, xy, yz, xz };
+  }
 }
 }
 

@@ -20,6 +20,7 @@
 
 #include "SplineVizTestUtilities.h"
 #include "SuperquadricGlyphTestUtilities.h"
+#include "TensorTestUtilities.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -148,26 +149,7 @@ vtkSmartPointer<vtkDoubleArray> Encode(
   a->SetNumberOfComponents(TM::GetNumberOfComponents(layout));
   for (int i = first; i < first + count; ++i)
   {
-    const auto& t = tensors[i];
-    const double xx = t[0], yy = t[1], zz = t[2], xy = t[3], yz = t[4], xz = t[5];
-    std::vector<double> c;
-    switch (layout)
-    {
-      case TM::FULL_9:
-        c = { xx, xy, xz, xy, yy, yz, xz, yz, zz };
-        break;
-      case TM::SYMMETRIC_LOWER:
-        c = { xx, xy, yy, xz, yz, zz };
-        break;
-      case TM::SYMMETRIC_UPPER:
-        c = { xx, xy, xz, yy, yz, zz };
-        break;
-      case TM::TEEM_7:
-        c = { 1.0, xx, xy, xz, yy, yz, zz };
-        break;
-      default:
-        c = { xx, yy, zz, xy, yz, xz };
-    }
+    const std::vector<double> c = tensortest::Encode(layout, tensors[i].data());
     a->InsertNextTuple(c.data());
   }
   return a;

@@ -14,6 +14,7 @@
 #include "vtkSplineVizTensorMath.h"
 
 #include "SplineVizTestUtilities.h"
+#include "TensorTestUtilities.h"
 
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
@@ -108,27 +109,7 @@ vtkSmartPointer<vtkDoubleArray> Encode(const std::vector<Sample>& samples, int l
   a->SetNumberOfComponents(TM::GetNumberOfComponents(layout));
   for (const Sample& s : samples)
   {
-    const double* t = s.T;
-    const double xx = t[0], yy = t[1], zz = t[2], xy = t[3], yz = t[4], xz = t[5];
-    std::vector<double> c;
-    switch (layout)
-    {
-      case TM::FULL_9:
-        c = { xx, xy, xz, xy, yy, yz, xz, yz, zz };
-        break;
-      case TM::SYMMETRIC_VTK:
-        c = { xx, yy, zz, xy, yz, xz };
-        break;
-      case TM::SYMMETRIC_LOWER:
-        c = { xx, xy, yy, xz, yz, zz };
-        break;
-      case TM::SYMMETRIC_UPPER:
-        c = { xx, xy, xz, yy, yz, zz };
-        break;
-      case TM::TEEM_7:
-        c = { 0.5, xx, xy, xz, yy, yz, zz };
-        break;
-    }
+    const std::vector<double> c = tensortest::Encode(layout, s.T, 0.5);
     a->InsertNextTuple(c.data());
   }
   return a;
