@@ -30,7 +30,6 @@
 #include "TensorLineTestFields.h"
 #include "vtkSplineVizTensorMath.h"
 
-#include "vtkCellArray.h"
 #include "vtkHyperStreamline.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
@@ -43,7 +42,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <cstdlib>
 #include <functional>
 #include <random>
@@ -73,11 +71,6 @@ void UseCores(int cores)
   }
 }
 
-double CPUSeconds()
-{
-  return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
-}
-
 struct Run
 {
   double Wall = 0.0, CPU = 0.0;
@@ -104,11 +97,11 @@ Run TraceOnce(vtkImageData* field, vtkPolyData* seeds, int cores,
     vtkAlgorithm::SINGLE_PRECISION); // float output, as usual for fibers
   configure(tracer);
   const auto t0 = Clock::now();
-  const double c0 = CPUSeconds();
+  const double c0 = splineviz_benchmark::CPUTime();
   tracer->Update();
   Run r;
   r.Wall = Seconds(t0);
-  r.CPU = CPUSeconds() - c0;
+  r.CPU = splineviz_benchmark::CPUTime() - c0;
   r.Seeds = tracer->GetNumberOfSeeds();
   r.Lines = tracer->GetOutput()->GetNumberOfLines();
   r.Points = tracer->GetOutput()->GetNumberOfPoints();
@@ -127,42 +120,6 @@ void PrintRow(const char* name, const Run& one, const Run& two)
     "| %-36s | %7lld | %9lld | %6.1f s (%6.1f) | %6.1f s (%6.1f) | %6.0f | %6.0f | %7.2e |\n", name,
     static_cast<long long>(two.Lines), static_cast<long long>(two.Points), one.Wall, one.CPU,
     two.Wall, two.CPU, one.Lines / one.Wall, two.Lines / two.Wall, two.Evaluations / two.Wall);
-}
-
-// vtkHyperStreamline's centre line (mean of each ring), per streamer.
-std::vector<std::vector<Vec3>> CentreLines(vtkPolyData* tubes, int sides)
-{
-  std::vector<std::vector<Vec3>> out;
-  vtkCellArray* strips = tubes->GetStrips();
-  vtkIdType n;
-  const vtkIdType* ids;
-  vtkIdType offset = 0;
-  int strip = 0;
-  for (strips->InitTraversal(); strips->GetNextCell(n, ids); ++strip)
-  {
-    if (strip % sides != 0)
-    {
-      continue;
-    }
-    std::vector<Vec3> line;
-    for (vtkIdType r = 0; r < n / 2; ++r)
-    {
-      Vec3 c = { 0, 0, 0 };
-      for (int k = 0; k < sides; ++k)
-      {
-        double p[3];
-        tubes->GetPoint(offset + r * sides + k, p);
-        for (int d = 0; d < 3; ++d)
-        {
-          c[d] += p[d] / sides;
-        }
-      }
-      line.push_back(c);
-    }
-    offset += (n / 2) * sides;
-    out.push_back(line);
-  }
-  return out;
 }
 }
 
@@ -305,7 +262,7 @@ int main(int argc, char* argv[])
   const int sides = 3;
   UseCores(1);
   t0 = Clock::now();
-  double c0 = CPUSeconds();
+  double c0 = splineviz_benchmark::CPUTime();
   std::vector<std::vector<std::vector<Vec3>>> vtkLines;
   vtkIdType vtkCentres = 0;
   for (const Vec3& s : all)
@@ -324,7 +281,7 @@ int main(int argc, char* argv[])
     vtkLines.push_back(CentreLines(hs->GetOutput(), sides));
     vtkCentres += hs->GetOutput()->GetNumberOfPoints() / sides;
   }
-  const double vtkWall = Seconds(t0), vtkCPU = CPUSeconds() - c0;
+  const double vtkWall = Seconds(t0), vtkCPU = splineviz_benchmark::CPUTime() - c0;
 
   // The same work: RK2, step and length as above, no FA or angle stop.
   const auto same = [](vtkTensorLineTracer* t)

@@ -381,6 +381,44 @@ inline double DistanceToPolyline(const Vec3& p, const std::vector<Vec3>& line)
   }
   return best;
 }
+
+// The centre lines of vtkHyperStreamline's tubes (one per streamer): the
+// mean of each ring of `sides` points of its triangle strips.
+inline std::vector<std::vector<Vec3>> CentreLines(vtkPolyData* tubes, int sides)
+{
+  std::vector<std::vector<Vec3>> out;
+  vtkCellArray* strips = tubes->GetStrips();
+  vtkIdType n;
+  const vtkIdType* ids;
+  vtkIdType offset = 0;
+  int strip = 0;
+  for (strips->InitTraversal(); strips->GetNextCell(n, ids); ++strip)
+  {
+    if (strip % sides != 0)
+    {
+      continue; // the other strips of the same streamer
+    }
+    const vtkIdType rings = n / 2;
+    std::vector<Vec3> line;
+    for (vtkIdType r = 0; r < rings; ++r)
+    {
+      Vec3 c = { 0, 0, 0 };
+      for (int k = 0; k < sides; ++k)
+      {
+        double p[3];
+        tubes->GetPoint(offset + r * sides + k, p);
+        for (int d = 0; d < 3; ++d)
+        {
+          c[d] += p[d] / sides;
+        }
+      }
+      line.push_back(c);
+    }
+    offset += rings * sides;
+    out.push_back(line);
+  }
+  return out;
+}
 }
 
 #endif
