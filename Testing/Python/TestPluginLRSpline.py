@@ -5,6 +5,7 @@ import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
+from splineviz_testing import coverage
 
 plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -103,21 +104,7 @@ view.CameraViewUp = [0, 0, 1]
 ResetCamera(view)  # noqa: F405
 Render(view)  # noqa: F405
 
-out_dir = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
-os.makedirs(out_dir, exist_ok=True)
-png = os.path.join(out_dir, "TestPluginLRSpline.png")
-SaveScreenshot(png, view, ImageResolution=[400, 300])  # noqa: F405
-
-from paraview.vtk.vtkIOImage import vtkPNGReader  # noqa: E402
-
-png_reader = vtkPNGReader()
-png_reader.SetFileName(png)
-png_reader.Update()
-img = png_reader.GetOutput()
-scalars = img.GetPointData().GetScalars()
-n = img.GetNumberOfPoints()
-covered = sum(1 for i in range(0, n, 7) if scalars.GetTuple3(i) != (255.0, 255.0, 255.0))
-fraction = covered / float(len(range(0, n, 7)))
+fraction, _ = coverage(view, "TestPluginLRSpline.png", stride=7)
 print("fraction of non-background pixels:", fraction)
 if fraction < 0.1 or fraction > 0.9:
     print("ERROR: the LR spline did not render as a cube in the middle of the view")

@@ -7,13 +7,12 @@ import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
+from splineviz_testing import coverage
 from paraview import servermanager
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
-out_dir = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
-os.makedirs(out_dir, exist_ok=True)
 path = os.path.join(os.environ["SPLINEVIZ_SOURCE_DIR"], "Testing", "Data", "DIPY",
                     "small_64D_dti.vti")
 dti = OpenDataFile(path)  # noqa: F405
@@ -76,17 +75,7 @@ view.CameraPosition = [40, -30, 40]
 view.CameraFocalPoint = [9, 9, 9]
 view.CameraViewUp = [0, 0, 1]
 ResetCamera(view)  # noqa: F405
-png = os.path.join(out_dir, "TestPluginTensorLines.png")
-SaveScreenshot(png, view, ImageResolution=[500, 400])  # noqa: F405
-from paraview.vtk.vtkIOImage import vtkPNGReader  # noqa: E402
-
-reader = vtkPNGReader()
-reader.SetFileName(png)
-reader.Update()
-scalars = reader.GetOutput().GetPointData().GetScalars()
-n = scalars.GetNumberOfTuples()
-pixels = [scalars.GetTuple3(i) for i in range(0, n, 3)]
-cover = sum(1 for p in pixels if p != (255.0, 255.0, 255.0)) / float(len(pixels))
+cover, pixels = coverage(view, "TestPluginTensorLines.png")
 colored = sum(1 for p in pixels if max(p) - min(p) > 60) / float(len(pixels))
 print("coverage %.3f, strongly colored %.3f" % (cover, colored))
 sub = display.GetClientSideObject().GetActiveRepresentation()
