@@ -191,6 +191,13 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
     addLeaf(vtkPolyData::SafeDownCast(input), 0);
   }
   this->Core->Build();
+  // The largest cell id the shaders write, once per data (picking needs it).
+  this->MaximumCellId = 0;
+  vtkIdTypeArray* cellIds = this->Core->GetSegmentCellIds();
+  for (vtkIdType s = 0; s < cellIds->GetNumberOfTuples(); ++s)
+  {
+    this->MaximumCellId = std::max(this->MaximumCellId, cellIds->GetValue(s));
+  }
   this->HaveColors = this->Core->HasColors();
   if (this->Core->GetNumberOfTubes() == 0 && inputCells > 0 &&
     this->Core->GetNumberOfSkippedLines() == 0)
@@ -271,14 +278,7 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   this->RenderPieceStart(ren, actor);
   if (vtkHardwareSelector* selector = ren->GetSelector())
   {
-    // The largest cell id the shaders write (the polylines' cell ids).
-    vtkIdType maxCellId = 0;
-    vtkIdTypeArray* cellIds = this->Core->GetSegmentCellIds();
-    for (vtkIdType s = 0; s < cellIds->GetNumberOfTuples(); ++s)
-    {
-      maxCellId = std::max(maxCellId, cellIds->GetValue(s));
-    }
-    selector->UpdateMaximumCellId(maxCellId);
+    selector->UpdateMaximumCellId(this->MaximumCellId);
   }
   this->RenderPieceDraw(ren, actor);
   this->RenderPieceFinish(ren, actor);

@@ -234,6 +234,7 @@ protected:
   vtkNew<vtkSplineTubeCore> Core;
   vtkNew<vtkPolyData> EmptyInput; ///< stands in for CurrentInput in superclass code
   double Shift[3] = { 0.0, 0.0, 0.0 };
+  vtkIdType MaximumCellId = 0; ///< largest polyline cell id drawn (for picking)
   vtkTimeStamp CoreBuildTime;
   vtkTimeStamp UploadTime;
   vtkTimeStamp BoundsTime; ///< when CoreBounds were computed from the core
