@@ -92,7 +92,8 @@ public:
   enum NegativeEigenvaluePolicies
   {
     SKIP_NEGATIVE = 0,
-    ABSOLUTE_VALUES = 1
+    ABSOLUTE_VALUES = 1,
+    SCHULTZ_KINDLMANN = 2
   };
 
   /// Color modes (see the class documentation).
@@ -228,8 +229,20 @@ public:
    * SKIP_NEGATIVE (default, as Teem) does not draw tensors with a negative
    * eigenvalue; ABSOLUTE_VALUES draws the glyph of the absolute values.
    */
-  vtkSetClampMacro(NegativeEigenvaluePolicy, int, SKIP_NEGATIVE, ABSOLUTE_VALUES);
+  vtkSetClampMacro(NegativeEigenvaluePolicy, int, SKIP_NEGATIVE, SCHULTZ_KINDLMANN);
   vtkGetMacro(NegativeEigenvaluePolicy, int);
+  void SetNegativeEigenvaluePolicyToSkipNegative()
+  {
+    this->SetNegativeEigenvaluePolicy(SKIP_NEGATIVE);
+  }
+  void SetNegativeEigenvaluePolicyToAbsoluteValues()
+  {
+    this->SetNegativeEigenvaluePolicy(ABSOLUTE_VALUES);
+  }
+  void SetNegativeEigenvaluePolicyToSchultzKindlmann()
+  {
+    this->SetNegativeEigenvaluePolicy(SCHULTZ_KINDLMANN);
+  }
   ///@}
 
   ///@{

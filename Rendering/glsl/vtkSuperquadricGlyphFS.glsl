@@ -19,7 +19,8 @@ uniform int PrimitiveIDOffset;
 in vec4 vertexVCGSOutput;
 flat in mat3 glyphInverseGSOutput;
 flat in vec3 glyphCenterGSOutput;
-flat in vec2 glyphShapeGSOutput;
+flat in vec3 glyphShapeGSOutput;
+flat in vec3 glyphFormGSOutput;
 flat in vec4 glyphColorGSOutput;
 
 uniform mat4 VCDCMatrix;
@@ -54,14 +55,13 @@ void main()
   vec3 d = inv * dirVC;
   float t;
   int evaluations;
-  if (!svqIntersect(o, d, glyphShapeGSOutput.x, glyphShapeGSOutput.y, sqMaximumIterations, t,
-        evaluations))
+  if (!svqIntersectShape(o, d, glyphShapeGSOutput, sqMaximumIterations, t, evaluations))
   {
     discard;
   }
   vertexVC.xyz = vertexVC.xyz + t * dirVC;
-  vec3 gradient;
-  svqValueGradient(o + t * d, glyphShapeGSOutput.x, glyphShapeGSOutput.y, gradient);
+  vec3 hitGlyph = o + t * d;
+  vec3 gradient = svqShapeGradient(hitGlyph, glyphShapeGSOutput);
   // normal = G^-T grad q; the first hit faces the viewer
   vec3 normalVCVSOutput = normalize(transpose(inv) * gradient);
   if (dot(normalVCVSOutput, dirVC) > 0.0)

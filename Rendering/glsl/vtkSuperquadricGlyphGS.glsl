@@ -19,13 +19,15 @@ uniform float nearPlaneVC; // z of the near clipping plane in view coordinates (
 in int glyphValidVSOut[];
 in vec3 glyphCenterVSOut[];
 in mat3 glyphFrameVSOut[];
-in vec2 glyphShapeVSOut[];
+in vec3 glyphShapeVSOut[];
+in vec3 glyphFormVSOut[];
 in vec4 glyphColorVSOut[];
 
 out vec4 vertexVCGSOutput;
 flat out mat3 glyphInverseGSOutput;
 flat out vec3 glyphCenterGSOutput;
-flat out vec2 glyphShapeGSOutput;
+flat out vec3 glyphShapeGSOutput;
+flat out vec3 glyphFormGSOutput;
 flat out vec4 glyphColorGSOutput;
 
 //VTK::Picking::Dec
@@ -37,6 +39,7 @@ void emitCorner(vec3 p, mat3 inv)
   glyphInverseGSOutput = inv;
   glyphCenterGSOutput = glyphCenterVSOut[0];
   glyphShapeGSOutput = glyphShapeVSOut[0];
+  glyphFormGSOutput = glyphFormVSOut[0];
   glyphColorGSOutput = glyphColorVSOut[0];
   int i = 0;
   //VTK::Picking::Impl

@@ -8,6 +8,7 @@
 #define SuperquadricGlyphTestUtilities_h
 
 #include "vtkAppendPolyData.h"
+#include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
@@ -223,6 +224,273 @@ inline vtkSmartPointer<vtkPolyData> ReferenceGlyph(
   tf->SetTransform(xf);
   tf->Update();
   return tf->GetOutput();
+}
+
+//------------------------------------------------------------------------------
+// Schultz-Kindlmann glyphs, written out here independently of the shader code
+// (vtkTensorMathShared.glsl folds the negative-dominant half of the shape
+// square onto the positive one and blends five zones; this reference walks
+// the whole square with the ten zones and shape table of Teem's
+// tenGlyphBqdAbcUv and Deft's glyph palette), and a polygonal surface from
+// an explicit parametrization (the shader ray casts an implicit function).
+
+struct SKShape
+{
+  double ABC[3]; // alpha, beta, c
+  bool AxisE1;   // symmetry axis along e1 (else e3)
+  double UV[2];  // the point in the shape square
+  int Zone;
+};
+
+/// Deliberate mistakes for the Schultz-Kindlmann reference.
+enum SKMutation
+{
+  SK_NONE = 0,
+  SK_SWAPPED_AXIS = 1,        // symmetry axis e3 where it is e1 and vice versa
+  SK_ABSOLUTE_KINDLMANN = 2,  // Kindlmann's glyph of |l| (ABSOLUTE_VALUES)
+  SK_PAPER_NORMALIZATION = 3, // the paper's max-normalized placement (no trace warp)
+  SK_NO_THIRD_EXPONENT = 4,   // c = beta everywhere
+  SK_UNSHARPENED = 5          // gamma ignored (the paper's shapes at gamma 1)
+};
+
+/// (u, v) of sorted eigenvalues l of a positive-dominant tensor (l0 = 1 after
+/// normalization), with the documented trace re-parametrization.
+inline void SKPositiveDominantUV(double x, double y, double z, bool trace, double uv[2])
+{
+  (void)x; // 1
+  double yy = y, zz = z;
+  if (trace && z >= 0.0)
+  {
+    const double S = 1.0 + y + z;
+    yy = (2.0 * y + z) / S;
+    zz = 3.0 * z / S;
+  }
+  else if (trace && y > 0.0)
+  {
+    yy = y * (2.0 + z) / (1.0 + y * (1.0 + z));
+  }
+  uv[0] = (yy + 1.0) / 2.0;
+  uv[1] = (zz + 1.0) / 2.0 - uv[0] + 1.0;
+}
+
+inline SKShape SchultzKindlmann(
+  const double lsorted[3], double gamma, double minRoundness, SKMutation mutate = SK_NONE)
+{
+  SKShape r;
+  const bool trace = mutate != SK_PAPER_NORMALIZATION;
+  const double m = std::max(std::abs(lsorted[0]), std::abs(lsorted[2]));
+  double x = lsorted[0] / m, y = lsorted[1] / m, z = lsorted[2] / m;
+  if (x >= -z)
+  {
+    SKPositiveDominantUV(x, y, z, trace, r.UV);
+  }
+  else
+  {
+    double uvNeg[2];
+    SKPositiveDominantUV(-z, -y, -x, trace, uvNeg);
+    r.UV[0] = 1.0 - uvNeg[0];
+    r.UV[1] = 1.0 - uvNeg[1];
+  }
+  const double u = r.UV[0], v = r.UV[1];
+  // Teem's zones of the unit square (the definite zones with their edge
+  // u + v = 3/2, a zero smallest eigenvalue, as documented)
+  int zone;
+  if (u > 0.5 || u + v >= 1.5)
+  {
+    if (u + v >= 1.5)
+      zone = u < v ? 0 : 1;
+    else if (2 * u + v > 2)
+      zone = 2;
+    else if (u + v > 1)
+      zone = 3;
+    else
+      zone = 4;
+  }
+  else
+  {
+    if (u + v > 0.5)
+    {
+      if (u + v > 1)
+        zone = 5;
+      else if (2 * u + v > 1)
+        zone = 6;
+      else
+        zone = 7;
+    }
+    else
+      zone = u < v ? 8 : 9;
+  }
+  r.Zone = zone;
+  static const double corner[11][2] = { { 1.00, 1.00 }, { 0.50, 1.00 }, { 0.75, 0.75 },
+    { 1.00, 0.50 }, { 1.00, 0.00 }, { 0.50, 0.50 }, { 0.00, 1.00 }, { 0.00, 0.50 }, { 0.25, 0.25 },
+    { 0.50, 0.00 }, { 0.00, 0.00 } };
+  static const int zoneCorners[10][3] = { { 0, 1, 2 }, { 0, 2, 3 }, { 1, 3, 4 }, { 1, 4, 5 },
+    { 4, 5, 9 }, { 1, 5, 6 }, { 5, 6, 9 }, { 6, 7, 9 }, { 7, 8, 10 }, { 8, 9, 10 } };
+  enum Base
+  {
+    BALL,
+    CYLINDER,
+    HALF,
+    OCTAHEDRON,
+    CONE,
+    THORN,
+    CENTER
+  };
+  static const double base[7][3] = { { 1, 1, 1 }, { 1, 0, 0 }, { 0.5, 0.5, 0.5 }, { 0, 2, 2 },
+    { 1, 2, 2 }, { 1, 3, 3 }, { 0, 3, 2 } };
+  static const int zoneShapes[10][3] = { { BALL, CYLINDER, HALF }, { BALL, HALF, CYLINDER },
+    { OCTAHEDRON, CONE, THORN }, { OCTAHEDRON, THORN, CENTER }, { THORN, CENTER, CONE },
+    { CONE, CENTER, THORN }, { CENTER, THORN, OCTAHEDRON }, { THORN, CONE, OCTAHEDRON },
+    { CYLINDER, HALF, BALL }, { HALF, CYLINDER, BALL } };
+  // barycentric coordinates from sub-triangle areas
+  auto area = [](const double* a, const double* b, double pu, double pv)
+  { return std::abs((a[0] - pu) * (b[1] - pv) - (b[0] - pu) * (a[1] - pv)); };
+  const double* c0 = corner[zoneCorners[zone][0]];
+  const double* c1 = corner[zoneCorners[zone][1]];
+  const double* c2 = corner[zoneCorners[zone][2]];
+  const double a0 = area(c1, c2, u, v), a1 = area(c0, c2, u, v), a2 = area(c0, c1, u, v);
+  const double sum = a0 + a1 + a2;
+  for (int k = 0; k < 3; ++k)
+  {
+    r.ABC[k] = (a0 * base[zoneShapes[zone][0]][k] + a1 * base[zoneShapes[zone][1]][k] +
+                 a2 * base[zoneShapes[zone][2]][k]) /
+      sum;
+  }
+  // Deft: the symmetry axis is x (e1) in zones 0, 5, 6, 7, 8, else z (e3)
+  r.AxisE1 = zone == 0 || zone == 5 || zone == 6 || zone == 7 || zone == 8;
+  if (mutate == SK_SWAPPED_AXIS)
+  {
+    r.AxisE1 = !r.AxisE1;
+  }
+  if (mutate == SK_NO_THIRD_EXPONENT)
+  {
+    r.ABC[2] = r.ABC[1];
+  }
+  const double g = mutate == SK_UNSHARPENED ? 1.0 : gamma;
+  const double lo = std::max(minRoundness, 1e-3);
+  for (int k = 0; k < 3; ++k)
+  {
+    double e = r.ABC[k];
+    if (e < 1.0)
+      e = std::pow(std::max(e, 1e-6), g);
+    else if (e > 2.0)
+      e = 2.0 + (e - 2.0) * g;
+    r.ABC[k] = std::min(k == 0 ? 1.0 : 1.0 / lo, std::max(lo, e));
+  }
+  return r;
+}
+
+/// sgn(x) |x|^p
+inline double SignedPower(double x, double p)
+{
+  return x < 0 ? -std::pow(-x, p) : std::pow(x, p);
+}
+
+/// Polygonal Schultz-Kindlmann glyph of tensor t (VTK order) at center c:
+/// the (alpha, beta, c) surface z = cos^beta(phi), x = cos^alpha(theta)
+/// R_beta(z), y = sin^alpha(theta) R_c(z), R_e(z) = (1 - |z|^(2/e))^(e/2)
+/// (Barr's superquadric for c = beta), res x res/2 quads, placed by the
+/// eigen-system from vtkMath::Jacobi with semi-axes scale |l_i| (at least
+/// minThickness of the largest).
+inline vtkSmartPointer<vtkPolyData> ReferenceSKGlyph(const double t[6], const double c[3],
+  double gamma, double scale, double minRoundness, double minThickness, int res,
+  SKMutation mutate = SK_NONE)
+{
+  double a0[3] = { t[0], t[3], t[5] }, a1[3] = { t[3], t[1], t[4] }, a2[3] = { t[5], t[4], t[2] };
+  double v0[3], v1[3], v2[3], w[3];
+  double* a[3] = { a0, a1, a2 };
+  double* v[3] = { v0, v1, v2 };
+  vtkMath::Jacobi(a, w, v); // descending values, vectors in columns
+  double e[3][3];
+  for (int k = 0; k < 3; ++k)
+  {
+    for (int r = 0; r < 3; ++r)
+    {
+      e[k][r] = v[r][k];
+    }
+  }
+  double abc[3];
+  bool axisE1;
+  double semi[3];
+  const double big = std::max({ std::abs(w[0]), std::abs(w[1]), std::abs(w[2]) });
+  if (mutate == SK_ABSOLUTE_KINDLMANN)
+  {
+    // Kindlmann's glyph of the absolute eigenvalues (trace-normalized Westin)
+    int order[3] = { 0, 1, 2 };
+    std::sort(order, order + 3, [&](int i, int j) { return std::abs(w[i]) > std::abs(w[j]); });
+    double l[3], ee[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      l[k] = std::abs(w[order[k]]);
+      for (int r = 0; r < 3; ++r)
+        ee[k][r] = e[order[k]][r];
+    }
+    for (int k = 0; k < 3; ++k)
+      for (int r = 0; r < 3; ++r)
+        e[k][r] = ee[k][r];
+    for (int k = 0; k < 3; ++k)
+      w[k] = l[k];
+    const double S = l[0] + l[1] + l[2];
+    const double cl = (l[0] - l[1]) / S, cp = 2.0 * (l[1] - l[2]) / S;
+    axisE1 = cl > cp;
+    const double al = std::pow(std::max(axisE1 ? 1 - cp : 1 - cl, 1e-6), gamma);
+    const double be = std::pow(std::max(axisE1 ? 1 - cl : 1 - cp, 1e-6), gamma);
+    abc[0] = std::min(1.0, std::max(minRoundness, al));
+    abc[1] = abc[2] = std::min(1.0, std::max(minRoundness, be));
+  }
+  else
+  {
+    const SKShape sh = SchultzKindlmann(w, gamma, minRoundness, mutate);
+    for (int k = 0; k < 3; ++k)
+      abc[k] = sh.ABC[k];
+    axisE1 = sh.AxisE1;
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    semi[k] = std::max(scale * std::abs(w[k]), minThickness * scale * big);
+  }
+  // glyph axes (u, v, w): u = the other of e1/e3, v = e2, w = the symmetry axis
+  const int axes[3] = { axisE1 ? 2 : 0, 1, axisE1 ? 0 : 2 };
+
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> quads;
+  const int nt = res, np = res / 2;
+  auto radius = [](double z, double ex)
+  { return std::pow(std::max(0.0, 1.0 - std::pow(std::abs(z), 2.0 / ex)), ex / 2.0); };
+  for (int j = 0; j <= np; ++j)
+  {
+    const double phi = vtkMath::Pi() * j / np;
+    for (int i = 0; i < nt; ++i)
+    {
+      const double theta = 2.0 * vtkMath::Pi() * i / nt;
+      const double zz = SignedPower(std::cos(phi), abc[1]);
+      const double xx = SignedPower(std::cos(theta), abc[0]) * radius(zz, abc[1]);
+      const double yy = SignedPower(std::sin(theta), abc[0]) * radius(zz, abc[2]);
+      const double g[3] = { xx, yy, zz };
+      double p[3] = { c[0], c[1], c[2] };
+      for (int k = 0; k < 3; ++k)
+      {
+        for (int r = 0; r < 3; ++r)
+        {
+          p[r] += g[k] * semi[axes[k]] * e[axes[k]][r];
+        }
+      }
+      pts->InsertNextPoint(p);
+    }
+  }
+  for (int j = 0; j < np; ++j)
+  {
+    for (int i = 0; i < nt; ++i)
+    {
+      const vtkIdType q[4] = { j * nt + i, j * nt + (i + 1) % nt, (j + 1) * nt + (i + 1) % nt,
+        (j + 1) * nt + i };
+      quads->InsertNextCell(4, q);
+    }
+  }
+  pd->SetPoints(pts);
+  pd->SetPolys(quads);
+  return pd;
 }
 
 /// The reference glyphs of all tensors of an image (or any data set).
