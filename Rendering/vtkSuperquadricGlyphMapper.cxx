@@ -449,11 +449,15 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
   std::string colorImpl = "  vec3 ambientColor = ambientIntensity * ambientColorUniform;\n"
                           "  vec3 diffuseColor = diffuseIntensity * diffuseColorUniform;\n"
                           "  float opacity = opacityUniform;\n"
-                          "  if (glyphColorGSOutput.a >= 0.0)\n"
+                          "  if (glyphColorFS.a >= 0.0)\n"
                           "  {\n"
-                          "    ambientColor = ambientIntensity * glyphColorGSOutput.rgb;\n"
-                          "    diffuseColor = diffuseIntensity * glyphColorGSOutput.rgb;\n"
-                          "    opacity = opacityUniform * glyphColorGSOutput.a;\n"
+                          "    ambientColor = ambientIntensity * glyphColorFS.rgb;\n"
+                          "    diffuseColor = diffuseIntensity * glyphColorFS.rgb;\n"
+                          "    opacity = opacityUniform * glyphColorFS.a;\n"
+                          "  }\n"
+                          "  else\n"
+                          "  {\n"
+                          "    opacity = opacityUniform * -glyphColorFS.a;\n"
                           "  }\n";
   if (this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity)
   {
@@ -532,6 +536,14 @@ void vtkSuperquadricGlyphMapper::SetMapperShaderParameters(
   p->SetUniformi("sqScaleMode", this->ScaleMode);
   p->SetUniformi("sqSignPolicy", this->NegativeEigenvaluePolicy);
   p->SetUniformi("sqColorMode", this->GlyphColorMode);
+  float positive[3], negative[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    positive[c] = static_cast<float>(this->PositiveFormColor[c]);
+    negative[c] = static_cast<float>(this->NegativeFormColor[c]);
+  }
+  p->SetUniform3f("sqPositiveFormColor", positive);
+  p->SetUniform3f("sqNegativeFormColor", negative);
   p->SetUniformi("sqMaximumIterations", this->MaximumIterations);
 }
 
@@ -655,6 +667,10 @@ void vtkSuperquadricGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumEigenvalue: " << this->MinimumEigenvalue << "\n";
   os << indent << "NegativeEigenvaluePolicy: " << this->NegativeEigenvaluePolicy << "\n";
   os << indent << "GlyphColorMode: " << this->GlyphColorMode << "\n";
+  os << indent << "PositiveFormColor: " << this->PositiveFormColor[0] << " "
+     << this->PositiveFormColor[1] << " " << this->PositiveFormColor[2] << "\n";
+  os << indent << "NegativeFormColor: " << this->NegativeFormColor[0] << " "
+     << this->NegativeFormColor[1] << " " << this->NegativeFormColor[2] << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
   os << indent << "NumberOfGlyphs: " << this->NumberOfGlyphs << "\n";
   os << indent << "NumberOfInvalidTensors: " << this->NumberOfInvalidTensors << "\n";

@@ -101,7 +101,8 @@ public:
   {
     COLOR_BY_EIGENVECTOR = 0,
     COLOR_BY_SCALARS = 1,
-    COLOR_SOLID = 2
+    COLOR_SOLID = 2,
+    COLOR_BY_QUADRATIC_FORM = 3
   };
 
   /**
@@ -247,8 +248,27 @@ public:
 
   ///@{
   /// Color mode (ColorModes). Default COLOR_BY_EIGENVECTOR.
-  vtkSetClampMacro(GlyphColorMode, int, COLOR_BY_EIGENVECTOR, COLOR_SOLID);
+  vtkSetClampMacro(GlyphColorMode, int, COLOR_BY_EIGENVECTOR, COLOR_BY_QUADRATIC_FORM);
   vtkGetMacro(GlyphColorMode, int);
+  void SetGlyphColorModeToEigenvector() { this->SetGlyphColorMode(COLOR_BY_EIGENVECTOR); }
+  void SetGlyphColorModeToScalars() { this->SetGlyphColorMode(COLOR_BY_SCALARS); }
+  void SetGlyphColorModeToSolid() { this->SetGlyphColorMode(COLOR_SOLID); }
+  void SetGlyphColorModeToQuadraticForm() { this->SetGlyphColorMode(COLOR_BY_QUADRATIC_FORM); }
+  ///@}
+
+  ///@{
+  /**
+   * Colors of COLOR_BY_QUADRATIC_FORM: each point x of a glyph's surface
+   * (relative to its center) is drawn in PositiveFormColor where
+   * x^T T x > 0 (e.g. tension of a stress tensor) and in NegativeFormColor
+   * where x^T T x < 0 (compression), as Schultz and Kindlmann color their
+   * glyphs (T and -T have the same Schultz-Kindlmann shape). Defaults
+   * orange (0.9, 0.45, 0.2) and blue (0.2, 0.45, 0.9).
+   */
+  vtkSetVector3Macro(PositiveFormColor, double);
+  vtkGetVector3Macro(PositiveFormColor, double);
+  vtkSetVector3Macro(NegativeFormColor, double);
+  vtkGetVector3Macro(NegativeFormColor, double);
   ///@}
 
   ///@{
@@ -339,6 +359,8 @@ protected:
   double MinimumEigenvalue = -VTK_DOUBLE_MAX;
   int NegativeEigenvaluePolicy = SKIP_NEGATIVE;
   int GlyphColorMode = COLOR_BY_EIGENVECTOR;
+  double PositiveFormColor[3] = { 0.9, 0.45, 0.2 };
+  double NegativeFormColor[3] = { 0.2, 0.45, 0.9 };
   int MaximumIterations = 10;
 
   vtkIdType NumberOfGlyphs = 0;

@@ -26,6 +26,9 @@ flat in vec4 glyphColorGSOutput;
 uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
 uniform int sqMaximumIterations;
+uniform int sqColorMode;
+uniform vec3 sqPositiveFormColor;
+uniform vec3 sqNegativeFormColor;
 
 //VTK::Color::Dec
 
@@ -75,6 +78,16 @@ void main()
     discard;
   }
   gl_FragDepth = depth;
+
+  // the glyph's color; a < 0: the actor's colors with opacity -a
+  vec4 glyphColorFS = glyphColorGSOutput;
+  if (sqColorMode == 3)
+  {
+    // the sign of the quadratic form x^T T x at the surface point
+    float form = dot(glyphFormGSOutput, hitGlyph * hitGlyph);
+    glyphColorFS = vec4(form >= 0.0 ? sqPositiveFormColor : sqNegativeFormColor,
+      abs(glyphColorGSOutput.a));
+  }
 
   //VTK::DepthPeeling::PreColor
 
