@@ -282,6 +282,48 @@ public:
 
   ///@{
   /**
+   * Occlusion culling (default on; see the class documentation): glyphs are
+   * drawn brick by brick in visibility groups (NumberOfCullingGroups), each later group
+   * tested against a depth pyramid of what is already drawn, whole glyphs in
+   * the geometry stage and single fragments before the ray cast. Exact: the
+   * image is the same with culling off. Used for opaque rendering without
+   * multisampling; otherwise the glyphs are drawn in one pass.
+   */
+  vtkSetMacro(Culling, vtkTypeBool);
+  vtkGetMacro(Culling, vtkTypeBool);
+  vtkBooleanMacro(Culling, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Number of visibility groups of the occlusion culling, in [1, 8]: the
+   * bricks of glyphs in front, behind them, ..., and all deeper ones; a
+   * depth pyramid is built before each group but the first. Default 12.
+   */
+  vtkSetClampMacro(NumberOfCullingGroups, int, 1, 16);
+  vtkGetMacro(NumberOfCullingGroups, int);
+  ///@}
+
+  /**
+   * Glyphs in culling group `group` in the last frame (all in group 0 when
+   * culling was not used), and the number of depth pyramids built.
+   */
+  vtkIdType GetLastCullingGroupSize(int group);
+  int GetLastNumberOfDepthPyramids();
+
+  ///@{
+  /**
+   * For tests and benchmarks: count, with an OpenGL query, the sprite
+   * triangles that the geometry stage emits (culled glyphs emit none). Off
+   * by default (the query waits for the frame).
+   */
+  vtkSetMacro(CountSprites, bool);
+  vtkGetMacro(CountSprites, bool);
+  vtkGetMacro(LastSpriteTriangles, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
    * Statistics of the last data preparation: glyphs uploaded, points left
    * out for NaN/infinite tensors, for zero tensors, and by the mask.
    */
@@ -333,6 +375,8 @@ protected:
 
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+  bool UseCulling(vtkRenderer* ren, vtkActor* act);
+  void DrawGlyphs(vtkRenderer* ren, vtkActor* act, int numVerts);
 
   void GetShaderTemplate(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
@@ -362,6 +406,10 @@ protected:
   double PositiveFormColor[3] = { 0.9, 0.45, 0.2 };
   double NegativeFormColor[3] = { 0.2, 0.45, 0.9 };
   int MaximumIterations = 10;
+  vtkTypeBool Culling = 1;
+  int NumberOfCullingGroups = 12;
+  bool CountSprites = false;
+  vtkIdType LastSpriteTriangles = 0;
 
   vtkIdType NumberOfGlyphs = 0;
   vtkIdType NumberOfInvalidTensors = 0;

@@ -16,6 +16,16 @@ uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
 uniform float nearPlaneVC; // z of the near clipping plane in view coordinates (< 0)
 
+// Occlusion culling (vtkSuperquadricGlyphMapper draws the glyphs in groups;
+// from the second group on, sqCulling = 1): the maxima of the depth buffer
+// over 2 x 2, 4 x 4, 16 x 16 and 64 x 64 pixel tiles of what is already drawn.
+uniform int sqCulling;
+uniform sampler2D sqPyramid1;
+uniform sampler2D sqPyramid2;
+uniform sampler2D sqPyramid4;
+uniform sampler2D sqPyramid6;
+uniform ivec2 sqViewportSize;
+
 in int glyphValidVSOut[];
 in vec3 glyphCenterVSOut[];
 in mat3 glyphFrameVSOut[];
@@ -44,6 +54,81 @@ void emitCorner(vec3 p, mat3 inv)
   int i = 0;
   //VTK::Picking::Impl
   EmitVertex();
+}
+
+// Occlusion tests: the window-space rectangle and nearest depth of a set of
+// points (view coordinates, all in front of the near plane) ...
+void extendBounds(vec3 p, inout vec2 lo, inout vec2 hi, inout float zNear)
+{
+  vec4 clip = VCDCMatrix * vec4(p, 1.0);
+  vec3 ndc = clip.xyz / clip.w;
+  vec2 pixel = (0.5 * ndc.xy + 0.5) * vec2(sqViewportSize);
+  lo = min(lo, pixel);
+  hi = max(hi, pixel);
+  zNear = min(zNear, 0.5 * ndc.z + 0.5);
+}
+
+// ... is occluded when the nearest depth is beyond the largest depth of every
+// pyramid tile the rectangle touches (the tiles of the level at which it spans
+// at most 4 x 4 of them; larger than 192 pixels: left to the fragment test).
+bool occludedRect(vec2 lo, vec2 hi, float zNear)
+{
+  lo = max(lo, vec2(0.0));
+  hi = min(hi, vec2(sqViewportSize) - 1.0);
+  if (lo.x > hi.x || lo.y > hi.y)
+  {
+    return true; // outside the viewport
+  }
+  float extent = max(hi.x - lo.x, hi.y - lo.y);
+  int tile;
+  if (extent <= 6.0)
+  {
+    tile = 2;
+  }
+  else if (extent <= 12.0)
+  {
+    tile = 4;
+  }
+  else if (extent <= 48.0)
+  {
+    tile = 16;
+  }
+  else if (extent <= 192.0)
+  {
+    tile = 64;
+  }
+  else
+  {
+    return false;
+  }
+  ivec2 t0 = ivec2(lo) / tile;
+  ivec2 t1 = ivec2(hi) / tile;
+  float farthest = 0.0;
+  for (int y = t0.y; y <= t1.y; ++y)
+  {
+    for (int x = t0.x; x <= t1.x; ++x)
+    {
+      float z;
+      if (tile == 2)
+      {
+        z = texelFetch(sqPyramid1, ivec2(x, y), 0).r;
+      }
+      else if (tile == 4)
+      {
+        z = texelFetch(sqPyramid2, ivec2(x, y), 0).r;
+      }
+      else if (tile == 16)
+      {
+        z = texelFetch(sqPyramid4, ivec2(x, y), 0).r;
+      }
+      else
+      {
+        z = texelFetch(sqPyramid6, ivec2(x, y), 0).r;
+      }
+      farthest = max(farthest, z);
+    }
+  }
+  return zNear > farthest + 1.2e-7; // (two 24-bit depth steps: ties to the depth test)
 }
 
 void main()
@@ -95,6 +180,35 @@ void main()
     vec3 sgn = vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0, (k & 4) != 0 ? 1.0 : -1.0);
     corners[k] = c + G * sgn;
   }
+  if (sqCulling != 0)
+  {
+    // A tighter box for the test: Kindlmann's glyphs (alpha, beta <= 1) also
+    // lie in the ellipsoid G (ball of radius 2^(1 - (alpha + beta)/2)), whose
+    // half extent along view axis i is that radius times |row i of G|.
+    vec3 shape = glyphShapeVSOut[0];
+    vec3 hb = h;
+    if (shape.x <= 1.0 && shape.y <= 1.0 && shape.z == shape.y)
+    {
+      float radius = pow(2.0, 1.0 - 0.5 * (shape.x + shape.y));
+      vec3 he = radius * sqrt(vec3(dot(vec3(G[0][0], G[1][0], G[2][0]), vec3(G[0][0], G[1][0], G[2][0])),
+        dot(vec3(G[0][1], G[1][1], G[2][1]), vec3(G[0][1], G[1][1], G[2][1])),
+        dot(vec3(G[0][2], G[1][2], G[2][2]), vec3(G[0][2], G[1][2], G[2][2]))));
+      hb = min(h, he);
+    }
+    vec2 lo = vec2(1e30);
+    vec2 hi = vec2(-1e30);
+    float zNear = 1.0;
+    for (int k = 0; k < 8; ++k)
+    {
+      extendBounds(c + hb * vec3((k & 1) != 0 ? 1.0 : -1.0, (k & 2) != 0 ? 1.0 : -1.0,
+                         (k & 4) != 0 ? 1.0 : -1.0),
+        lo, hi, zNear);
+    }
+    if (occludedRect(lo, hi, zNear))
+    {
+      return;
+    }
+  }
   for (int axis = 0; axis < 3; ++axis)
   {
     // outward normal of the face +axis: row `axis` of G^-1
@@ -106,9 +220,22 @@ void main()
       float sigma = side == 0 ? -1.0 : 1.0;
       vec3 faceCenter = c + sigma * G[axis];
       vec3 toEye = cameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : -faceCenter;
-      if (sigma * dot(normal, toEye) > 0.0)
+      int base = side << axis;
+      bool visible = sigma * dot(normal, toEye) > 0.0;
+      if (visible && sqCulling != 0)
       {
-        int base = side << axis;
+        // each face on its own: behind what is drawn, so is the glyph there
+        vec2 lo = vec2(1e30);
+        vec2 hi = vec2(-1e30);
+        float zNear = 1.0;
+        extendBounds(corners[base], lo, hi, zNear);
+        extendBounds(corners[base | (1 << a)], lo, hi, zNear);
+        extendBounds(corners[base | (1 << b)], lo, hi, zNear);
+        extendBounds(corners[base | (1 << a) | (1 << b)], lo, hi, zNear);
+        visible = !occludedRect(lo, hi, zNear);
+      }
+      if (visible)
+      {
         emitCorner(corners[base], inv);
         emitCorner(corners[base | (1 << a)], inv);
         emitCorner(corners[base | (1 << b)], inv);
