@@ -77,6 +77,7 @@ public:
   bool HaveColors = false;
   bool ShaderHaveColors = false;
   bool ShaderGeneralShapes = false;
+  bool ShaderClip = false;
   const void* UploadedTensors = nullptr;
   vtkMTimeType UploadedTensorsTime = 0;
   int BytesPerGlyph = 0;
@@ -829,8 +830,9 @@ bool vtkSuperquadricGlyphMapper::GetNeedToRebuildShaders(
   const bool colorsChanged = this->Internal->ShaderHaveColors != this->Internal->HaveColors;
   const bool shapesChanged =
     this->Internal->ShaderGeneralShapes != (this->NegativeEigenvaluePolicy == SCHULTZ_KINDLMANN);
+  const bool clipChanged = this->Internal->ShaderClip != (this->GetNumberOfClippingPlanes() > 0);
   return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) || colorsChanged ||
-    shapesChanged;
+    shapesChanged || clipChanged;
 }
 
 //------------------------------------------------------------------------------
@@ -850,6 +852,11 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
   this->Internal->ShaderGeneralShapes = this->NegativeEigenvaluePolicy == SCHULTZ_KINDLMANN;
   vtkShaderProgram::Substitute(FSSource, "//SQ::GeneralShapes::Dec",
     this->Internal->ShaderGeneralShapes ? "#define SQ_GENERAL_SHAPES" : "");
+  // Clipping planes: in the fragment stage, on the ray (not VTK's per-vertex
+  // clip distances, which would cut the sprites).
+  this->Internal->ShaderClip = this->GetNumberOfClippingPlanes() > 0;
+  vtkShaderProgram::Substitute(
+    FSSource, "//SQ::Clip::Dec", this->Internal->ShaderClip ? "#define SQ_CLIP" : "");
 
   // Scalar colors.
   this->Internal->ShaderHaveColors = this->Internal->HaveColors;
@@ -1004,6 +1011,14 @@ void vtkSuperquadricGlyphMapper::SetCameraShaderParameters(
   }
   program->SetUniformMatrix("glyphMCVC", this->TempMatrix3);
   program->SetUniformi("cameraParallel", cam->GetParallelProjection());
+  if (program->IsUniformUsed("glyphVCMC"))
+  {
+    // the clipping planes are in data coordinates (the transposed key
+    // matrix's inverse is the transposed inverse)
+    vtkNew<vtkMatrix4x4> vcmc;
+    vtkMatrix4x4::Invert(mcvc, vcmc);
+    program->SetUniformMatrix("glyphVCMC", vcmc);
+  }
   program->SetUniformf("nearPlaneVC", static_cast<float>(-cam->GetClippingRange()[0]));
 }
 

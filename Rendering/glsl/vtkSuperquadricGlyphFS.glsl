@@ -47,7 +47,16 @@ uniform vec3 sqNegativeFormColor;
 #define SV_OUT(T) out T
 #define SV_INOUT(T) inout T
 //SQ::GeneralShapes::Dec
+//SQ::Clip::Dec
 //SQ::GlyphMath::Dec
+
+#ifdef SQ_CLIP
+// VTK's clipping planes (data coordinates; the kept side has
+// dot(plane, (x, 1)) >= 0) and the view-to-data transformation.
+uniform int numClipPlanes;
+uniform vec4 clipPlanes[6];
+uniform mat4 glyphVCMC;
+#endif
 
 void main()
 {
@@ -71,28 +80,88 @@ void main()
   vec3 d = inv * dirVC;
   float t;
   int evaluations;
-  // (the general ray caster of the Schultz-Kindlmann shapes is compiled in
-  // only for that policy: its mere presence slows llvmpipe down by 40 %)
-#ifdef SQ_GENERAL_SHAPES
-  if (!svqIntersectShape(o, d, glyphShapeGSOutput, sqMaximumIterations, t, evaluations))
+  // Clipping planes clip the solid glyph: the ray's part in the kept
+  // half-spaces is [tStart, tEnd]; where the ray enters it inside the glyph,
+  // the cut itself is seen (depth and normal of the plane).
+  float tStart = 0.0;
+  float tEnd = 1e30;
+  vec3 capNormalVC = vec3(0.0);
+#ifdef SQ_CLIP
+  vec4 originMC = glyphVCMC * vec4(vertexVC.xyz, 1.0);
+  vec3 dirMC = mat3(glyphVCMC) * dirVC;
+  for (int i = 0; i < numClipPlanes; ++i)
+  {
+    float value = dot(clipPlanes[i], originMC);
+    float slope = dot(clipPlanes[i].xyz, dirMC);
+    if (slope > 0.0)
+    {
+      float tc = -value / slope;
+      if (tc > tStart)
+      {
+        tStart = tc;
+        capNormalVC = transpose(mat3(glyphVCMC)) * clipPlanes[i].xyz;
+      }
+    }
+    else if (slope < 0.0)
+    {
+      tEnd = min(tEnd, -value / slope);
+    }
+    else if (value < 0.0)
+    {
+      discard;
+    }
+  }
+  if (!(tStart < tEnd))
   {
     discard;
   }
-  vec3 hitGlyph = o + t * d;
-  vec3 gradient = svqShapeGradient(hitGlyph, glyphShapeGSOutput);
-#else
-  if (!svqIntersect(
-        o, d, glyphShapeGSOutput.x, glyphShapeGSOutput.y, sqMaximumIterations, t, evaluations))
-  {
-    discard;
-  }
-  vec3 hitGlyph = o + t * d;
-  vec3 gradient;
-  svqValueGradient(hitGlyph, glyphShapeGSOutput.x, glyphShapeGSOutput.y, gradient);
 #endif
+  vec3 start = o + tStart * d;
+  bool cap = false;
+  if (tStart > 0.0)
+  {
+#ifdef SQ_GENERAL_SHAPES
+    cap = svqShapeInside(start, glyphShapeGSOutput);
+#else
+    vec3 unused;
+    cap = svqValueGradient(start, glyphShapeGSOutput.x, glyphShapeGSOutput.y, unused) < 0.0;
+#endif
+  }
+  vec3 hitGlyph = start;
+  vec3 gradient = vec3(0.0);
+  if (cap)
+  {
+    t = tStart;
+  }
+  else
+  {
+    // (the general ray caster of the Schultz-Kindlmann shapes is compiled
+    // in only for that policy: its mere presence slows llvmpipe down by 40 %)
+#ifdef SQ_GENERAL_SHAPES
+    if (!svqIntersectShape(start, d, glyphShapeGSOutput, sqMaximumIterations, t, evaluations))
+    {
+      discard;
+    }
+    hitGlyph = start + t * d;
+    gradient = svqShapeGradient(hitGlyph, glyphShapeGSOutput);
+#else
+    if (!svqIntersect(start, d, glyphShapeGSOutput.x, glyphShapeGSOutput.y, sqMaximumIterations,
+          t, evaluations))
+    {
+      discard;
+    }
+    hitGlyph = start + t * d;
+    svqValueGradient(hitGlyph, glyphShapeGSOutput.x, glyphShapeGSOutput.y, gradient);
+#endif
+    t += tStart;
+    if (t > tEnd)
+    {
+      discard;
+    }
+  }
   vertexVC.xyz = vertexVC.xyz + t * dirVC;
-  // normal = G^-T grad q; the first hit faces the viewer
-  vec3 normalVCVSOutput = normalize(transpose(inv) * gradient);
+  // normal = G^-T grad q (or the cut's plane); the first hit faces the viewer
+  vec3 normalVCVSOutput = normalize(cap ? capNormalVC : transpose(inv) * gradient);
   if (dot(normalVCVSOutput, dirVC) > 0.0)
   {
     normalVCVSOutput = -normalVCVSOutput;

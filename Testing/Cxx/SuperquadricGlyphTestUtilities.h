@@ -386,15 +386,60 @@ inline double SignedPower(double x, double p)
   return x < 0 ? -std::pow(-x, p) : std::pow(x, p);
 }
 
+/// A glyph as a solid, for CPU ray casting in tests: center, the scaled
+/// glyph axes u, v, w (w the symmetry axis) and the exponents.
+struct GlyphSolid
+{
+  double Center[3];
+  double Axes[3][3]; // Axes[k] = semi-axis k times its unit vector
+  double ABC[3];
+
+  /// The glyph coordinates of world point p (Axes are orthogonal).
+  void ToGlyph(const double p[3], double x[3]) const
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      double dot = 0.0, len2 = 0.0;
+      for (int r = 0; r < 3; ++r)
+      {
+        dot += (p[r] - this->Center[r]) * this->Axes[k][r];
+        len2 += this->Axes[k][r] * this->Axes[k][r];
+      }
+      x[k] = dot / len2;
+    }
+  }
+
+  /// Inside: |w| < 1 and (|u|/R_beta(w))^(2/alpha) + (|v|/R_c(w))^(2/alpha) < 1.
+  bool Inside(const double p[3]) const
+  {
+    double x[3];
+    this->ToGlyph(p, x);
+    if (std::abs(x[2]) >= 1.0)
+    {
+      return false;
+    }
+    auto radius = [&](double e)
+    { return std::pow(1.0 - std::pow(std::abs(x[2]), 2.0 / e), e / 2.0); };
+    return std::pow(std::abs(x[0]) / radius(this->ABC[1]), 2.0 / this->ABC[0]) +
+      std::pow(std::abs(x[1]) / radius(this->ABC[2]), 2.0 / this->ABC[0]) <
+      1.0;
+  }
+};
+
+/// The Schultz-Kindlmann glyph of tensor t (VTK order) at c as a solid
+/// (eigen-system from vtkMath::Jacobi; semi-axes scale |l_i|, at least
+/// minThickness of the largest). Mutations as for ReferenceSKGlyph().
+inline GlyphSolid SKGlyphSolid(const double t[6], const double c[3], double gamma, double scale,
+  double minRoundness, double minThickness, SKMutation mutate = SK_NONE);
+
 /// Polygonal Schultz-Kindlmann glyph of tensor t (VTK order) at center c:
 /// the (alpha, beta, c) surface z = cos^beta(phi), x = cos^alpha(theta)
 /// R_beta(z), y = sin^alpha(theta) R_c(z), R_e(z) = (1 - |z|^(2/e))^(e/2)
 /// (Barr's superquadric for c = beta), res x res/2 quads, placed by the
 /// eigen-system from vtkMath::Jacobi with semi-axes scale |l_i| (at least
 /// minThickness of the largest).
-inline vtkSmartPointer<vtkPolyData> ReferenceSKGlyph(const double t[6], const double c[3],
-  double gamma, double scale, double minRoundness, double minThickness, int res,
-  SKMutation mutate = SK_NONE)
+inline GlyphSolid SKGlyphSolid(const double t[6], const double c[3], double gamma, double scale,
+  double minRoundness, double minThickness, SKMutation mutate)
 {
   double a0[3] = { t[0], t[3], t[5] }, a1[3] = { t[3], t[1], t[4] }, a2[3] = { t[5], t[4], t[2] };
   double v0[3], v1[3], v2[3], w[3];
@@ -451,7 +496,25 @@ inline vtkSmartPointer<vtkPolyData> ReferenceSKGlyph(const double t[6], const do
   }
   // glyph axes (u, v, w): u = the other of e1/e3, v = e2, w = the symmetry axis
   const int axes[3] = { axisE1 ? 2 : 0, 1, axisE1 ? 0 : 2 };
+  GlyphSolid solid;
+  for (int k = 0; k < 3; ++k)
+  {
+    solid.Center[k] = c[k];
+    solid.ABC[k] = abc[k];
+    for (int r = 0; r < 3; ++r)
+    {
+      solid.Axes[k][r] = semi[axes[k]] * e[axes[k]][r];
+    }
+  }
+  return solid;
+}
 
+inline vtkSmartPointer<vtkPolyData> ReferenceSKGlyph(const double t[6], const double c[3],
+  double gamma, double scale, double minRoundness, double minThickness, int res,
+  SKMutation mutate = SK_NONE)
+{
+  const GlyphSolid solid = SKGlyphSolid(t, c, gamma, scale, minRoundness, minThickness, mutate);
+  const double* abc = solid.ABC;
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> pts;
   vtkNew<vtkCellArray> quads;
@@ -473,7 +536,7 @@ inline vtkSmartPointer<vtkPolyData> ReferenceSKGlyph(const double t[6], const do
       {
         for (int r = 0; r < 3; ++r)
         {
-          p[r] += g[k] * semi[axes[k]] * e[axes[k]][r];
+          p[r] += g[k] * solid.Axes[k][r];
         }
       }
       pts->InsertNextPoint(p);
