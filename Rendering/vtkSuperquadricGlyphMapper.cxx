@@ -6,6 +6,7 @@
 #include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
+#include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkExecutive.h"
@@ -17,8 +18,11 @@
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
+#include "vtkPartitionedDataSet.h"
+#include "vtkPartitionedDataSetCollection.h"
 #include "vtkOpenGLActor.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -55,6 +59,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -78,6 +83,128 @@ public:
   bool ShaderHaveColors = false;
   bool ShaderGeneralShapes = false;
   bool ShaderClip = false;
+  // per-block attributes of composite inputs, uploaded per glyph
+  vtkSmartPointer<vtkCompositeDataDisplayAttributes> BlockAttributes;
+  vtkNew<vtkFloatArray> BlockColors;
+  bool HaveBlockColors = false;
+  bool ShaderHaveBlockColors = false;
+  bool AnyTranslucentBlock = false;
+
+  /// The block attributes of every leaf of a composite input, in the
+  /// preparer's order: (r, g, b or -1 for none, opacity; 0 hidden), and the
+  /// first concatenated point id of each leaf (one more entry). Returns false
+  /// when there are no attributes or none applies; sets AnyTranslucentBlock.
+  bool BlockColorsOfLeaves(
+    std::vector<vtkIdType>& firstId, std::vector<std::array<float, 4>>& leafColor)
+  {
+    this->AnyTranslucentBlock = false;
+    vtkCompositeDataSet* composite =
+      vtkCompositeDataSet::SafeDownCast(this->Preparer->GetInputDataObject(0, 0));
+    if (!this->BlockAttributes || !composite)
+    {
+      return false;
+    }
+    // the leaves' states, inherited from the nearest block that sets them
+    // (as vtkCompositePolyDataMapper2 does: ParaView hides the root and
+    // shows the selected blocks)
+    std::vector<vtkDataSet*> leaves;
+    std::vector<std::array<float, 4>> states;
+    bool any = false;
+    this->CollectBlockStates(composite, { -1.0f, -1.0f, -1.0f, 1.0f }, true, leaves, states, any);
+    if (leaves != vtkCompositeDataSet::GetDataSets(composite))
+    {
+      // a composite type whose structure is not walked here: the leaves' own
+      // attributes only
+      const std::vector<vtkDataSet*> all = vtkCompositeDataSet::GetDataSets(composite);
+      leaves.clear();
+      states.clear();
+      any = false;
+      for (vtkDataSet* leaf : all)
+      {
+        this->CollectBlockStates(leaf, { -1.0f, -1.0f, -1.0f, 1.0f }, true, leaves, states, any);
+      }
+      if (leaves != all)
+      {
+        return false; // (empty leaves: no attributes)
+      }
+    }
+    firstId.assign(leaves.size() + 1, 0);
+    leafColor = states;
+    for (size_t b = 0; b < leaves.size(); ++b)
+    {
+      firstId[b + 1] = firstId[b] + leaves[b]->GetNumberOfPoints();
+      const float a = leafColor[b][3];
+      this->AnyTranslucentBlock = this->AnyTranslucentBlock || (a > 0.0f && a < 1.0f);
+    }
+    return any;
+  }
+
+  /// Depth-first over multiblocks and partitioned collections: a node's
+  /// color, opacity and visibility override the inherited ones; leaves (data
+  /// sets) are appended with their state (opacity 0 when invisible).
+  void CollectBlockStates(vtkDataObject* node, std::array<float, 4> state, bool visible,
+    std::vector<vtkDataSet*>& leaves, std::vector<std::array<float, 4>>& states, bool& any)
+  {
+    if (!node)
+    {
+      return;
+    }
+    vtkCompositeDataDisplayAttributes* attributes = this->BlockAttributes;
+    if (attributes->HasBlockColor(node))
+    {
+      double rgb[3];
+      attributes->GetBlockColor(node, rgb);
+      state = { static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]),
+        state[3] };
+      any = true;
+    }
+    if (attributes->HasBlockOpacity(node))
+    {
+      state[3] =
+        static_cast<float>(std::max(0.0, std::min(1.0, attributes->GetBlockOpacity(node))));
+      any = true;
+    }
+    if (attributes->HasBlockVisibility(node))
+    {
+      visible = attributes->GetBlockVisibility(node);
+      any = any || !visible;
+    }
+    if (auto* ds = vtkDataSet::SafeDownCast(node))
+    {
+      if (ds->GetNumberOfPoints() > 0 || ds->GetNumberOfCells() > 0)
+      {
+        leaves.push_back(ds);
+        std::array<float, 4> leafState = state;
+        if (!visible)
+        {
+          leafState[3] = 0.0f;
+        }
+        states.push_back(leafState);
+      }
+    }
+    else if (auto* mb = vtkMultiBlockDataSet::SafeDownCast(node))
+    {
+      for (unsigned int i = 0; i < mb->GetNumberOfBlocks(); ++i)
+      {
+        this->CollectBlockStates(mb->GetBlock(i), state, visible, leaves, states, any);
+      }
+    }
+    else if (auto* pdc = vtkPartitionedDataSetCollection::SafeDownCast(node))
+    {
+      for (unsigned int i = 0; i < pdc->GetNumberOfPartitionedDataSets(); ++i)
+      {
+        this->CollectBlockStates(
+          pdc->GetPartitionedDataSet(i), state, visible, leaves, states, any);
+      }
+    }
+    else if (auto* pds = vtkPartitionedDataSet::SafeDownCast(node))
+    {
+      for (unsigned int i = 0; i < pds->GetNumberOfPartitions(); ++i)
+      {
+        this->CollectBlockStates(pds->GetPartition(i), state, visible, leaves, states, any);
+      }
+    }
+  }
   const void* UploadedTensors = nullptr;
   vtkMTimeType UploadedTensorsTime = 0;
   int BytesPerGlyph = 0;
@@ -715,7 +842,9 @@ std::string vtkSuperquadricGlyphMapper::GetColorKey()
       << this->UseLookupTableScalarRange << "|" << this->ScalarRange[0] << "|"
       << this->ScalarRange[1] << "|" << static_cast<void*>(this->LookupTable) << "|"
       << (this->LookupTable ? this->LookupTable->GetMTime() : 0) << "|"
-      << static_cast<void*>(scalars) << "|" << (scalars ? scalars->GetMTime() : 0);
+      << static_cast<void*>(scalars) << "|" << (scalars ? scalars->GetMTime() : 0) << "|"
+      << static_cast<void*>(this->Internal->BlockAttributes.Get()) << "|"
+      << (this->Internal->BlockAttributes ? this->Internal->BlockAttributes->GetMTime() : 0);
   return key.str();
 }
 
@@ -764,7 +893,37 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
       this->Colors->GetNumberOfComponents() == 4;
   }
 
+  // Per-block attributes: (r, g, b or -1 for no color, opacity; 0 hidden).
+  in.HaveBlockColors = false;
+  std::vector<vtkIdType> firstId;
+  std::vector<std::array<float, 4>> leafColor;
+  vtkIdTypeArray* pointIds = vtkArrayDownCast<vtkIdTypeArray>(pd->GetArray("sqPointIds"));
+  if (in.BlockColorsOfLeaves(firstId, leafColor) && pointIds)
+  {
+    {
+      const vtkIdType n = poly->GetNumberOfPoints();
+      in.BlockColors->SetNumberOfComponents(4);
+      in.BlockColors->SetNumberOfTuples(n);
+      float* out = in.BlockColors->GetPointer(0);
+      const vtkIdType* ids = pointIds->GetPointer(0);
+      vtkSMPTools::For(0, n,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            const size_t b = static_cast<size_t>(
+              std::upper_bound(firstId.begin(), firstId.end(), ids[i]) - firstId.begin() - 1);
+            std::copy(leafColor[b].begin(), leafColor[b].end(), out + 4 * i);
+          }
+        });
+      in.BlockColors->Modified();
+      in.HaveBlockColors = true;
+    }
+  }
+
   this->VBOs->CacheDataArray("vertexMC", poly->GetPoints()->GetData(), ren, VTK_FLOAT);
+  this->VBOs->CacheDataArray(
+    "glyphBlockColor", in.HaveBlockColors ? in.BlockColors.Get() : nullptr, ren, VTK_FLOAT);
   this->VBOs->CacheDataArray("tensorDiagMC", diag, ren, VTK_FLOAT);
   this->VBOs->CacheDataArray("tensorOffMC", off, ren, VTK_FLOAT);
   this->VBOs->CacheDataArray(
@@ -777,7 +936,8 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
     in.UploadedTensorsTime = diag->GetMTime();
   }
   in.BytesPerGlyph = 0;
-  for (const char* name : { "vertexMC", "tensorDiagMC", "tensorOffMC", "glyphScalarColor" })
+  for (const char* name :
+    { "vertexMC", "tensorDiagMC", "tensorOffMC", "glyphScalarColor", "glyphBlockColor" })
   {
     vtkOpenGLVertexBufferObject* vbo = this->VBOs->GetVBO(name);
     if (vbo && vbo->GetNumberOfTuples() > 0)
@@ -794,6 +954,42 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
   this->Primitives[PrimitiveTris].IBO->IndexCount = static_cast<size_t>(poly->GetNumberOfPoints());
   in.ColorKey = this->GetColorKey();
   this->VBOBuildTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkSuperquadricGlyphMapper::SetCompositeDataDisplayAttributes(
+  vtkCompositeDataDisplayAttributes* attributes)
+{
+  if (this->Internal->BlockAttributes != attributes)
+  {
+    this->Internal->BlockAttributes = attributes;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkCompositeDataDisplayAttributes* vtkSuperquadricGlyphMapper::GetCompositeDataDisplayAttributes()
+{
+  return this->Internal->BlockAttributes;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSuperquadricGlyphMapper::HasOpaqueGeometry()
+{
+  // translucent blocks: everything is drawn in the translucent pass
+  std::vector<vtkIdType> firstId;
+  std::vector<std::array<float, 4>> leafColor;
+  this->Internal->BlockColorsOfLeaves(firstId, leafColor);
+  return this->Superclass::HasOpaqueGeometry() && !this->Internal->AnyTranslucentBlock;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSuperquadricGlyphMapper::HasTranslucentPolygonalGeometry()
+{
+  std::vector<vtkIdType> firstId;
+  std::vector<std::array<float, 4>> leafColor;
+  this->Internal->BlockColorsOfLeaves(firstId, leafColor);
+  return this->Superclass::HasTranslucentPolygonalGeometry() || this->Internal->AnyTranslucentBlock;
 }
 
 //------------------------------------------------------------------------------
@@ -831,8 +1027,10 @@ bool vtkSuperquadricGlyphMapper::GetNeedToRebuildShaders(
   const bool shapesChanged =
     this->Internal->ShaderGeneralShapes != (this->NegativeEigenvaluePolicy == SCHULTZ_KINDLMANN);
   const bool clipChanged = this->Internal->ShaderClip != (this->GetNumberOfClippingPlanes() > 0);
+  const bool blocksChanged =
+    this->Internal->ShaderHaveBlockColors != this->Internal->HaveBlockColors;
   return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) || colorsChanged ||
-    shapesChanged || clipChanged;
+    shapesChanged || clipChanged || blocksChanged;
 }
 
 //------------------------------------------------------------------------------
@@ -857,6 +1055,24 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
   this->Internal->ShaderClip = this->GetNumberOfClippingPlanes() > 0;
   vtkShaderProgram::Substitute(
     FSSource, "//SQ::Clip::Dec", this->Internal->ShaderClip ? "#define SQ_CLIP" : "");
+
+  // Per-block colors, opacities, visibilities.
+  this->Internal->ShaderHaveBlockColors = this->Internal->HaveBlockColors;
+  if (this->Internal->HaveBlockColors)
+  {
+    vtkShaderProgram::Substitute(VSSource, "//SQ::BlockColor::Dec", "in vec4 glyphBlockColor;");
+    vtkShaderProgram::Substitute(VSSource, "//SQ::BlockColor::Impl",
+      "  if (glyphBlockColor.w <= 0.0)\n"
+      "  {\n"
+      "    glyphValidVSOut = 0; // a hidden block\n"
+      "    return;\n"
+      "  }\n"
+      "  if (glyphColorVSOut.a < 0.0 && glyphBlockColor.x >= 0.0)\n"
+      "  {\n"
+      "    glyphColorVSOut = vec4(glyphBlockColor.rgb, 1.0); // instead of the actor's\n"
+      "  }\n"
+      "  glyphColorVSOut.a *= glyphBlockColor.w;\n");
+  }
 
   // Scalar colors.
   this->Internal->ShaderHaveColors = this->Internal->HaveColors;

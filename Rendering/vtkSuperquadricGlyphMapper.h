@@ -70,6 +70,7 @@
 #include <memory> // for unique_ptr
 #include <string> // for std::string
 
+class vtkCompositeDataDisplayAttributes;
 class vtkDataSet;
 class vtkFloatArray;
 
@@ -279,6 +280,23 @@ public:
   vtkSetClampMacro(MaximumIterations, int, 1, 100);
   vtkGetMacro(MaximumIterations, int);
   ///@}
+
+  ///@{
+  /**
+   * Per-block display attributes of composite inputs, as for
+   * vtkCompositePolyDataMapper2 (keyed by the leaf data sets of the input):
+   * block visibility hides a block's glyphs, block opacity multiplies their
+   * opacity (the mapper is then drawn as translucent), block color replaces
+   * the actor's color where it is used (COLOR_SOLID, and COLOR_BY_SCALARS
+   * without scalars). Changes re-upload the per-glyph colors (16 bytes per
+   * glyph while attributes are set). nullptr (default): none.
+   */
+  void SetCompositeDataDisplayAttributes(vtkCompositeDataDisplayAttributes* attributes);
+  vtkCompositeDataDisplayAttributes* GetCompositeDataDisplayAttributes();
+  ///@}
+
+  bool HasOpaqueGeometry() override;
+  bool HasTranslucentPolygonalGeometry() override;
 
   ///@{
   /**

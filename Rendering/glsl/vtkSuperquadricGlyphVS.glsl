@@ -10,6 +10,7 @@ in vec4 vertexMC;
 in vec3 tensorDiagMC; // xx, yy, zz
 in vec3 tensorOffMC;  // xy, yz, xz
 //SQ::ScalarColor::Dec
+//SQ::BlockColor::Dec
 
 uniform mat4 MCVCMatrix;
 uniform mat3 glyphMCVC; // linear part of model -> view
@@ -142,5 +143,6 @@ void main()
     glyphColorVSOut = vec4(abs(e1) * min(fa, 1.0), 1.0);
   }
   //SQ::ScalarColor::Impl
+  //SQ::BlockColor::Impl
   glyphValidVSOut = 1;
 }
