@@ -214,6 +214,7 @@ public:
   // buffer; levels 1, 2, 4, 6: maxima over 2^k x 2^k pixels).
   std::vector<unsigned char> BrickGroup;
   static constexpr int MaxGroups = 16;
+  static constexpr int FrontSplits = 2; // parts of the front layer (ComputeGroups)
   std::vector<GLint> First[MaxGroups];
   std::vector<GLsizei> Count[MaxGroups];
   vtkIdType GroupGlyphs[MaxGroups] = {};
@@ -370,6 +371,41 @@ bool vtkSuperquadricGlyphMapper::Internals::ComputeGroups(
         group[b] = static_cast<unsigned char>(layer);
       }
     });
+  // The front layer is drawn in FrontSplits parts, nearest bricks first:
+  // its glyphs' sprites overlap their neighbours', so later parts are culled
+  // against earlier ones too. Deeper layers follow.
+  const int splits = std::min(FrontSplits, deepest);
+  if (splits > 1)
+  {
+    std::vector<std::pair<double, vtkIdType>> front;
+    for (vtkIdType b = 0; b < bricks; ++b)
+    {
+      if (offsets[b + 1] > offsets[b] && group[b] == 0)
+      {
+        const double center[3] = { origin[0] + (b % dims[0] + 0.5) * spacing[0],
+          origin[1] + ((b / dims[0]) % dims[1] + 0.5) * spacing[1],
+          origin[2] + (b / (static_cast<vtkIdType>(dims[0]) * dims[1]) + 0.5) * spacing[2] };
+        const double depth = parallel
+          ? -(center[0] * eye[0] + center[1] * eye[1] + center[2] * eye[2])
+          : (center[0] - eye[0]) * (center[0] - eye[0]) +
+            (center[1] - eye[1]) * (center[1] - eye[1]) +
+            (center[2] - eye[2]) * (center[2] - eye[2]);
+        front.emplace_back(depth, b);
+      }
+    }
+    std::sort(front.begin(), front.end());
+    for (vtkIdType b = 0; b < bricks; ++b)
+    {
+      if (group[b] > 0)
+      {
+        group[b] = static_cast<unsigned char>(std::min(group[b] + splits - 1, deepest));
+      }
+    }
+    for (size_t k = 0; k < front.size(); ++k)
+    {
+      group[front[k].second] = static_cast<unsigned char>((k * splits) / front.size());
+    }
+  }
   for (int g = 0; g < MaxGroups; ++g)
   {
     this->First[g].clear();
@@ -1048,8 +1084,11 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
 
   // The general ray caster, for the Schultz-Kindlmann shapes only.
   this->Internal->ShaderGeneralShapes = this->NegativeEigenvaluePolicy == SCHULTZ_KINDLMANN;
-  vtkShaderProgram::Substitute(FSSource, "//SQ::GeneralShapes::Dec",
-    this->Internal->ShaderGeneralShapes ? "#define SQ_GENERAL_SHAPES" : "");
+  for (std::string* source : { &VSSource, &GSSource, &FSSource })
+  {
+    vtkShaderProgram::Substitute(*source, "//SQ::GeneralShapes::Dec",
+      this->Internal->ShaderGeneralShapes ? "#define SQ_GENERAL_SHAPES" : "");
+  }
   // Clipping planes: in the fragment stage, on the ray (not VTK's per-vertex
   // clip distances, which would cut the sprites).
   this->Internal->ShaderClip = this->GetNumberOfClippingPlanes() > 0;
@@ -1177,6 +1216,10 @@ void vtkSuperquadricGlyphMapper::SetMapperShaderParameters(
   p->SetUniformf("sqMaximumScale", static_cast<float>(this->MaximumScale));
   p->SetUniformf("sqMinimumThickness", static_cast<float>(this->MinimumThickness));
   p->SetUniformf("sqMinimumRoundness", static_cast<float>(this->MinimumRoundness));
+  if (this->Internal->ShaderGeneralShapes)
+  {
+    p->SetUniformf("sqZeroEigenvalueBand", static_cast<float>(this->ZeroEigenvalueBand));
+  }
   p->SetUniformf("sqAnisotropyThreshold", static_cast<float>(this->AnisotropyThreshold));
   p->SetUniformf("sqMinimumEigenvalue",
     static_cast<float>(std::max(this->MinimumEigenvalue, -static_cast<double>(VTK_FLOAT_MAX))));
@@ -1322,6 +1365,7 @@ void vtkSuperquadricGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AnisotropyThreshold: " << this->AnisotropyThreshold << "\n";
   os << indent << "MinimumEigenvalue: " << this->MinimumEigenvalue << "\n";
   os << indent << "NegativeEigenvaluePolicy: " << this->NegativeEigenvaluePolicy << "\n";
+  os << indent << "ZeroEigenvalueBand: " << this->ZeroEigenvalueBand << "\n";
   os << indent << "GlyphColorMode: " << this->GlyphColorMode << "\n";
   os << indent << "PositiveFormColor: " << this->PositiveFormColor[0] << " "
      << this->PositiveFormColor[1] << " " << this->PositiveFormColor[2] << "\n";

@@ -248,6 +248,18 @@ public:
   ///@}
 
   ///@{
+  /**
+   * SCHULTZ_KINDLMANN only: width, relative to the largest |eigenvalue|, of
+   * the band on the indefinite side of a zero eigenvalue in which the glyph
+   * is blended with the definite side's glyph (see the class documentation),
+   * in [0, 0.5]. Default 0.15. 0 gives the paper's glyphs exactly, which
+   * change abruptly at the zero eigenvalue when MinimumThickness > 0.
+   */
+  vtkSetClampMacro(ZeroEigenvalueBand, double, 0.0, 0.5);
+  vtkGetMacro(ZeroEigenvalueBand, double);
+  ///@}
+
+  ///@{
   /// Color mode (ColorModes). Default COLOR_BY_EIGENVECTOR.
   vtkSetClampMacro(GlyphColorMode, int, COLOR_BY_EIGENVECTOR, COLOR_BY_QUADRATIC_FORM);
   vtkGetMacro(GlyphColorMode, int);
@@ -420,6 +432,7 @@ protected:
   double AnisotropyThreshold = 0.0;
   double MinimumEigenvalue = -VTK_DOUBLE_MAX;
   int NegativeEigenvaluePolicy = SKIP_NEGATIVE;
+  double ZeroEigenvalueBand = 0.15;
   int GlyphColorMode = COLOR_BY_EIGENVECTOR;
   double PositiveFormColor[3] = { 0.9, 0.45, 0.2 };
   double NegativeFormColor[3] = { 0.2, 0.45, 0.9 };

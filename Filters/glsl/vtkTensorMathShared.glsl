@@ -478,3 +478,52 @@ bool svtSchultzKindlmannShape(
   }
   return axisE1;
 }
+
+// The glyph of a zero eigenvalue is flat in the paper, so its two sides may
+// differ in the flat direction: Kindlmann's glyph on the definite side, the
+// cones and octahedra of zone 2 on the indefinite side. With a minimum
+// thickness that difference is visible (a jump when a tensor path crosses
+// from definite to indefinite). So on the indefinite side, within a band
+// |l_near| < bandWidth max |l_i| of the definite edge (l_near = l3 for
+// positive-dominant tensors, l1 for negative-dominant ones), the glyph is the
+// blend of the two implicit functions,
+//   g = w g_SK + (1 - w) g_definite,  w = smoothstep(0, bandWidth, |l_near| / max |l_i|),
+// where g_definite is the glyph of the tensor with l_near set to 0 (Kindlmann's
+// glyph there, the limit of the definite side). Returns w (1 outside the band:
+// the Schultz-Kindlmann glyph alone) and, for w < 1, the definite shape in
+// abcDefinite and its axis (true: e1) in axisDefiniteE1.
+real svtSchultzKindlmannBlend(vec3 l, real gamma, real minimumRoundness, real bandWidth,
+  SV_OUT(vec3) abcDefinite, SV_OUT(bool) axisDefiniteE1)
+{
+  abcDefinite = vec3(1.0, 1.0, 1.0);
+  axisDefiniteE1 = false;
+  real m = max(abs(l.x), abs(l.z));
+  if (!(m > 0.0) || !(bandWidth > 0.0))
+  {
+    return 1.0;
+  }
+  bool negativeDominant = l.x + l.z < 0.0;
+  real edge = negativeDominant ? l.x : l.z; // the eigenvalue at the definite edge
+  real edgeSign = negativeDominant ? 1.0 : -1.0;
+  // only on the indefinite side of the edge
+  if (!(edge * edgeSign > 0.0))
+  {
+    return 1.0;
+  }
+  real x = abs(edge) / (bandWidth * m);
+  if (x >= 1.0)
+  {
+    return 1.0;
+  }
+  vec3 flattened = l;
+  if (negativeDominant)
+  {
+    flattened = vec3(0.0, l.y, l.z);
+  }
+  else
+  {
+    flattened = vec3(l.x, l.y, 0.0);
+  }
+  axisDefiniteE1 = svtSchultzKindlmannShape(flattened, gamma, minimumRoundness, abcDefinite);
+  return x * x * (3.0 - 2.0 * x);
+}

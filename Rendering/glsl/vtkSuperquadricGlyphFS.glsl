@@ -50,6 +50,10 @@ uniform vec3 sqNegativeFormColor;
 //SQ::Clip::Dec
 //SQ::GlyphMath::Dec
 
+#ifdef SQ_GENERAL_SHAPES
+flat in vec4 glyphBlendGSOutput;
+#endif
+
 #ifdef SQ_CLIP
 // VTK's clipping planes (data coordinates; the kept side has
 // dot(plane, (x, 1)) >= 0) and the view-to-data transformation.
@@ -121,7 +125,7 @@ void main()
   if (tStart > 0.0)
   {
 #ifdef SQ_GENERAL_SHAPES
-    cap = svqShapeInside(start, glyphShapeGSOutput);
+    cap = svqShapeInside(start, glyphShapeGSOutput, glyphBlendGSOutput);
 #else
     vec3 unused;
     cap = svqValueGradient(start, glyphShapeGSOutput.x, glyphShapeGSOutput.y, unused) < 0.0;
@@ -138,12 +142,13 @@ void main()
     // (the general ray caster of the Schultz-Kindlmann shapes is compiled
     // in only for that policy: its mere presence slows llvmpipe down by 40 %)
 #ifdef SQ_GENERAL_SHAPES
-    if (!svqIntersectShape(start, d, glyphShapeGSOutput, sqMaximumIterations, t, evaluations))
+    if (!svqIntersectShape(
+          start, d, glyphShapeGSOutput, glyphBlendGSOutput, sqMaximumIterations, t, evaluations))
     {
       discard;
     }
     hitGlyph = start + t * d;
-    gradient = svqShapeGradient(hitGlyph, glyphShapeGSOutput);
+    gradient = svqShapeGradient(hitGlyph, glyphShapeGSOutput, glyphBlendGSOutput);
 #else
     if (!svqIntersect(start, d, glyphShapeGSOutput.x, glyphShapeGSOutput.y, sqMaximumIterations,
           t, evaluations))

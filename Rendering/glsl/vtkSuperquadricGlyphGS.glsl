@@ -32,6 +32,11 @@ in mat3 glyphFrameVSOut[];
 in vec3 glyphShapeVSOut[];
 in vec3 glyphFormVSOut[];
 in vec4 glyphColorVSOut[];
+//SQ::GeneralShapes::Dec
+#ifdef SQ_GENERAL_SHAPES
+in vec4 glyphBlendVSOut[];
+flat out vec4 glyphBlendGSOutput;
+#endif
 
 out vec4 vertexVCGSOutput;
 flat out mat3 glyphInverseGSOutput;
@@ -50,6 +55,9 @@ void emitCorner(vec3 p, mat3 inv)
   glyphCenterGSOutput = glyphCenterVSOut[0];
   glyphShapeGSOutput = glyphShapeVSOut[0];
   glyphFormGSOutput = glyphFormVSOut[0];
+#ifdef SQ_GENERAL_SHAPES
+  glyphBlendGSOutput = glyphBlendVSOut[0];
+#endif
   glyphColorGSOutput = glyphColorVSOut[0];
   int i = 0;
   //VTK::Picking::Impl
@@ -187,12 +195,17 @@ void main()
     // half extent along view axis i is that radius times |row i of G|.
     vec3 shape = glyphShapeVSOut[0];
     vec3 hb = h;
-    if (shape.x <= 1.0 && shape.y <= 1.0 && shape.z == shape.y)
+    bool kindlmann = shape.x <= 1.0 && shape.y <= 1.0 && shape.z == shape.y;
+#ifdef SQ_GENERAL_SHAPES
+    kindlmann = kindlmann && glyphBlendVSOut[0].w == 1.0;
+#endif
+    if (kindlmann)
     {
       float radius = pow(2.0, 1.0 - 0.5 * (shape.x + shape.y));
-      vec3 he = radius * sqrt(vec3(dot(vec3(G[0][0], G[1][0], G[2][0]), vec3(G[0][0], G[1][0], G[2][0])),
-        dot(vec3(G[0][1], G[1][1], G[2][1]), vec3(G[0][1], G[1][1], G[2][1])),
-        dot(vec3(G[0][2], G[1][2], G[2][2]), vec3(G[0][2], G[1][2], G[2][2]))));
+      vec3 row0 = vec3(G[0][0], G[1][0], G[2][0]);
+      vec3 row1 = vec3(G[0][1], G[1][1], G[2][1]);
+      vec3 row2 = vec3(G[0][2], G[1][2], G[2][2]);
+      vec3 he = radius * sqrt(vec3(dot(row0, row0), dot(row1, row1), dot(row2, row2)));
       hb = min(h, he);
     }
     vec2 lo = vec2(1e30);

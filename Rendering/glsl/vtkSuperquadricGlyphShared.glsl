@@ -37,8 +37,9 @@
 //    §3.4 Newton iteration, made robust as in Teem's echo/sqd.c: a bracket
 //    from the inner unit sphere or from safe Newton steps on the convex f,
 //    then Newton on log(1 + f) with a bisection fallback inside the bracket);
-//  - svqGeneralAbs, svqGeneralValueGradient, svqIntersectGeneral: the same
-//    for the (alpha, beta, c) solids of any Schultz-Kindlmann glyph;
+//  - svqGeneralAbs, svqGeneralValueGradient, svqBlendAbs,
+//    svqIntersectGeneral: the same for the (alpha, beta, c) solids of any
+//    Schultz-Kindlmann glyph and the blends of two of them;
 //  - svqIsKindlmann, svqIntersectShape, svqShapeGradient, svqShapeInside:
 //    the dispatch between the two (Kindlmann's convex glyphs keep the fast
 //    path).
@@ -356,6 +357,37 @@ real svqGeneralAbs(real U, real V, real W, vec3 abc)
   return pow(U, ea) / max(a, 1e-30) + pow(V, ea) / max(b, 1e-30);
 }
 
+// The blend of the Schultz-Kindlmann band (svtSchultzKindlmannBlend): the
+// glyph abc weighted by w and a second glyph blend.xyz weighted by 1 - w,
+// with blend.w = w, or w + 2 when the second glyph's symmetry axis is the
+// other one of e1, e3 (its u and w swapped). blend.w = 1: abc alone.
+// Blended are the radius-like n_i = g_i^(alpha_i / 2) (a norm of (u, v) at
+// w = 0) as the harmonic mean: the blend is inside where
+//   G = 1 / (w / n_1 + (1 - w) / n_2) < 1,
+// so along a ray from the center where n_i grows like s / r_i the blended
+// surface is at r = w r_1 + (1 - w) r_2, a continuous motion from one
+// surface to the other as w goes from 0 to 1, at the pace of w. (An
+// arithmetic blend of g, or of a bounded g / (1 + g), is not continuous: the
+// steep g of sharp glyphs saturates, and the points deep inside one glyph and
+// far outside the other would all switch at the same w. A geometric one moves
+// most of the way at small w.) G increases with |u|, |v|, |w| as the n_i do:
+// the bounds of svqIntersectGeneral hold.
+real svqBlendAbs(real U, real V, real W, vec3 abc, vec4 blend)
+{
+  real g = svqGeneralAbs(U, V, W, abc);
+  bool swapped = blend.w >= 2.0;
+  real w = swapped ? blend.w - 2.0 : blend.w;
+  if (w >= 1.0)
+  {
+    return g;
+  }
+  vec3 other = vec3(blend.x, blend.y, blend.z);
+  real second = swapped ? svqGeneralAbs(W, V, U, other) : svqGeneralAbs(U, V, W, other);
+  real n1 = max(pow(g, 0.5 * abc.x), 1e-30);
+  real n2 = max(pow(second, 0.5 * other.x), 1e-30);
+  return 1.0 / (w / n1 + (1.0 - w) / n2);
+}
+
 // g(x) - 1 and the gradient of g at x = (u, v, w) (|w| < 1; the normal).
 real svqGeneralValueGradient(vec3 x, vec3 abc, SV_OUT(vec3) grad)
 {
@@ -399,8 +431,8 @@ real svqGeneralValueGradient(vec3 x, vec3 abc, SV_OUT(vec3) grad)
 // skipped); the others are split until shorter than the tolerance. No part of
 // the solid thicker than the tolerance is missed. Rays that would need more
 // evaluations are reported as misses (they graze the surface).
-bool svqIntersectGeneral(vec3 o, vec3 d, vec3 abc, int maxEvaluations, SV_OUT(real) tHit,
-  SV_OUT(int) evaluations)
+bool svqIntersectGeneral(vec3 o, vec3 d, vec3 abc, vec4 blend, int maxEvaluations,
+  SV_OUT(real) tHit, SV_OUT(int) evaluations)
 {
   evaluations = 0;
   tHit = 0.0;
@@ -424,7 +456,7 @@ bool svqIntersectGeneral(vec3 o, vec3 d, vec3 abc, int maxEvaluations, SV_OUT(re
   // the start point itself (a ray starting inside, e.g. at a clipping plane)
   vec3 p0 = abs(o + s * d);
   evaluations += 1;
-  if (svqGeneralAbs(p0.x, p0.y, p0.z, abc) < 1.0)
+  if (svqBlendAbs(p0.x, p0.y, p0.z, abc, blend) < 1.0)
   {
     tHit = s;
     return true;
@@ -462,7 +494,7 @@ bool svqIntersectGeneral(vec3 o, vec3 d, vec3 abc, int maxEvaluations, SV_OUT(re
       vec3 pb = abs(o + b * d);
       vec3 lo = min(pa, pb);
       evaluations += 1;
-      if (svqGeneralAbs(lo.x, lo.y, lo.z, abc) >= 1.0)
+      if (svqBlendAbs(lo.x, lo.y, lo.z, abc, blend) >= 1.0)
       {
         // nothing inside [a, b]: the next interval, climbing while it would
         // be a left child
@@ -485,7 +517,7 @@ bool svqIntersectGeneral(vec3 o, vec3 d, vec3 abc, int maxEvaluations, SV_OUT(re
           // (deeper, whole intervals inside are rare: not worth an evaluation)
           vec3 hi = max(pa, pb);
           evaluations += 1;
-          if (svqGeneralAbs(hi.x, hi.y, hi.z, abc) < 1.0)
+          if (svqBlendAbs(hi.x, hi.y, hi.z, abc, blend) < 1.0)
           {
             tHit = a; // all of [a, b] is inside, all before it outside
             return true;
@@ -498,13 +530,13 @@ bool svqIntersectGeneral(vec3 o, vec3 d, vec3 abc, int maxEvaluations, SV_OUT(re
           // loose where g is steep, near spike tips)
           evaluations += 1;
           vec3 pm = abs(o + (a + 0.5 * len) * d);
-          if (svqGeneralAbs(pm.x, pm.y, pm.z, abc) < 1.0)
+          if (svqBlendAbs(pm.x, pm.y, pm.z, abc, blend) < 1.0)
           {
             tHit = a + 0.5 * len;
             return true;
           }
           evaluations += 1;
-          if (svqGeneralAbs(pb.x, pb.y, pb.z, abc) < 1.0)
+          if (svqBlendAbs(pb.x, pb.y, pb.z, abc, blend) < 1.0)
           {
             tHit = b;
             return true;
@@ -550,41 +582,61 @@ bool svqIsKindlmann(vec3 abc)
 // glyphs with 1 < beta <= 2 get 4 maxEvaluations, the general solids
 // 48 maxEvaluations + 32 evaluations (512 for the default
 // 10; rays that graze a concave rim over a long stretch need many).
-bool svqIntersectShape(
-  vec3 o, vec3 d, vec3 abc, int maxEvaluations, SV_OUT(real) tHit, SV_OUT(int) evaluations)
+bool svqIntersectShape(vec3 o, vec3 d, vec3 abc, vec4 blend, int maxEvaluations,
+  SV_OUT(real) tHit, SV_OUT(int) evaluations)
 {
-  if (svqIsKindlmann(abc))
+  if (blend.w == 1.0 && svqIsKindlmann(abc))
   {
     // flatter faces (1 < beta <= 2) converge more slowly
     return svqIntersect(
       o, d, abc.x, abc.y, abc.y <= 1.0 ? maxEvaluations : 4 * maxEvaluations, tHit, evaluations);
   }
-  return svqIntersectGeneral(o, d, abc, 48 * maxEvaluations + 32, tHit, evaluations);
+  return svqIntersectGeneral(o, d, abc, blend, 48 * maxEvaluations + 32, tHit, evaluations);
 }
 
-// The (unnormalized) outward normal of the glyph abc at x.
-vec3 svqShapeGradient(vec3 x, vec3 abc)
+// The (unnormalized) outward normal of the glyph abc (blended with blend) at x.
+vec3 svqShapeGradient(vec3 x, vec3 abc, vec4 blend)
 {
   vec3 g;
-  if (svqIsKindlmann(abc))
+  if (blend.w == 1.0 && svqIsKindlmann(abc))
   {
     svqValueGradient(x, abc.x, abc.y, g);
+    return g;
   }
-  else
+  real f = svqGeneralValueGradient(x, abc, g) + 1.0;
+  bool swapped = blend.w >= 2.0;
+  real w = swapped ? blend.w - 2.0 : blend.w;
+  if (w < 1.0)
   {
-    svqGeneralValueGradient(x, abc, g);
+    // the gradient of G: with n_i = g_i^(alpha_i / 2), along
+    // sum_i w_i grad n_i / n_i^2 = sum_i w_i alpha_i grad g_i / (2 n_i g_i)
+    vec3 g2;
+    vec3 other = vec3(blend.x, blend.y, blend.z);
+    real f2;
+    if (swapped)
+    {
+      f2 = svqGeneralValueGradient(vec3(x.z, x.y, x.x), other, g2) + 1.0;
+      g2 = vec3(g2.z, g2.y, g2.x);
+    }
+    else
+    {
+      f2 = svqGeneralValueGradient(x, other, g2) + 1.0;
+    }
+    real n1 = max(pow(max(f, 0.0), 0.5 * abc.x), 1e-30);
+    real n2 = max(pow(max(f2, 0.0), 0.5 * other.x), 1e-30);
+    g = (w * abc.x / max(n1 * f, 1e-30)) * g + ((1.0 - w) * other.x / max(n2 * f2, 1e-30)) * g2;
   }
   return g;
 }
 
-// True when x is inside the glyph abc.
-bool svqShapeInside(vec3 x, vec3 abc)
+// True when x is inside the glyph abc (blended with blend).
+bool svqShapeInside(vec3 x, vec3 abc, vec4 blend)
 {
-  if (svqIsKindlmann(abc))
+  if (blend.w == 1.0 && svqIsKindlmann(abc))
   {
     vec3 g;
     return svqValueGradient(x, abc.x, abc.y, g) < 0.0;
   }
   vec3 p = abs(x);
-  return svqGeneralAbs(p.x, p.y, p.z, abc) < 1.0;
+  return svqBlendAbs(p.x, p.y, p.z, abc, blend) < 1.0;
 }

@@ -20,6 +20,10 @@ uniform float sqScaleFactor;
 uniform float sqMaximumScale;
 uniform float sqMinimumThickness;
 uniform float sqMinimumRoundness;
+//SQ::GeneralShapes::Dec
+#ifdef SQ_GENERAL_SHAPES
+uniform float sqZeroEigenvalueBand;
+#endif
 uniform float sqAnisotropyThreshold;
 uniform float sqMinimumEigenvalue;
 uniform int sqScaleMode;
@@ -31,6 +35,9 @@ out vec3 glyphCenterVSOut;
 out mat3 glyphFrameVSOut; // columns: the glyph's u, v, w axes (scaled), view coordinates
 out vec3 glyphShapeVSOut; // alpha, beta, c (c = beta for Kindlmann's glyphs)
 out vec3 glyphFormVSOut;  // the quadratic form in glyph coordinates: l_i s_i^2, normalized
+#ifdef SQ_GENERAL_SHAPES
+out vec4 glyphBlendVSOut; // the band of a zero eigenvalue (svqBlendAbs); w = 1: none
+#endif
 out vec4 glyphColorVSOut; // rgba, a < 0: use the actor's colors
 
 //VTK::Picking::Dec
@@ -48,6 +55,9 @@ void main()
   glyphFrameVSOut = mat3(1.0);
   glyphShapeVSOut = vec3(1.0);
   glyphFormVSOut = vec3(1.0);
+#ifdef SQ_GENERAL_SHAPES
+  glyphBlendVSOut = vec4(1.0);
+#endif
   glyphColorVSOut = vec4(1.0, 1.0, 1.0, -1.0);
   gl_Position = vec4(glyphCenterVSOut, 1.0);
 
@@ -106,6 +116,18 @@ void main()
       form = vec3(lambda.x * s.x * s.x, lambda.y * s.y * s.y, lambda.z * s.z * s.z);
     }
     glyphShapeVSOut = abc;
+#ifdef SQ_GENERAL_SHAPES
+    // near a zero eigenvalue, on the indefinite side: the blend with the
+    // definite side's glyph (continuity with a minimum thickness)
+    vec3 abcDefinite;
+    bool axisDefiniteE1;
+    float w = svtSchultzKindlmannBlend(
+      lambda, sqGamma, sqMinimumRoundness, sqZeroEigenvalueBand, abcDefinite, axisDefiniteE1);
+    if (w < 1.0)
+    {
+      glyphBlendVSOut = vec4(abcDefinite, axisDefiniteE1 != axisE1 ? w + 2.0 : w);
+    }
+#endif
   }
   else
   {

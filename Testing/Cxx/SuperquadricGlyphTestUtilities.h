@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace sqtest
@@ -387,12 +388,18 @@ inline double SignedPower(double x, double p)
 }
 
 /// A glyph as a solid, for CPU ray casting in tests: center, the scaled
-/// glyph axes u, v, w (w the symmetry axis) and the exponents.
+/// glyph axes u, v, w (w the symmetry axis) and the exponents; optionally
+/// blended (Weight < 1) with a second shape ABC2 in the same axes (Swapped2:
+/// its symmetry axis is u), as in the zero-eigenvalue band of the
+/// Schultz-Kindlmann glyphs.
 struct GlyphSolid
 {
   double Center[3];
   double Axes[3][3]; // Axes[k] = semi-axis k times its unit vector
   double ABC[3];
+  double ABC2[3] = { 1.0, 1.0, 1.0 };
+  bool Swapped2 = false;
+  double Weight = 1.0;
 
   /// The glyph coordinates of world point p (Axes are orthogonal).
   void ToGlyph(const double p[3], double x[3]) const
@@ -409,37 +416,57 @@ struct GlyphSolid
     }
   }
 
-  /// Inside: |w| < 1 and (|u|/R_beta(w))^(2/alpha) + (|v|/R_c(w))^(2/alpha) < 1.
+  /// (|u|/R_beta(w))^(2/alpha) + (|v|/R_c(w))^(2/alpha) for |w| < 1, else
+  /// infinity: the solid is where it is below 1.
+  static double Implicit(const double x[3], const double abc[3])
+  {
+    if (std::abs(x[2]) >= 1.0)
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+    auto radius = [&](double e)
+    { return std::pow(1.0 - std::pow(std::abs(x[2]), 2.0 / e), e / 2.0); };
+    return std::pow(std::abs(x[0]) / radius(abc[1]), 2.0 / abc[0]) +
+      std::pow(std::abs(x[1]) / radius(abc[2]), 2.0 / abc[0]);
+  }
+
+  /// Inside, in glyph coordinates. Blended: the radius-like n_i =
+  /// g_i^(alpha_i / 2) of the two shapes by their weighted harmonic mean,
+  /// inside where w / n_1 + (1 - w) / n_2 > 1.
+  bool InsideGlyph(const double x[3]) const
+  {
+    const double g = Implicit(x, this->ABC);
+    if (this->Weight >= 1.0)
+    {
+      return g < 1.0;
+    }
+    const double x2[3] = { this->Swapped2 ? x[2] : x[0], x[1], this->Swapped2 ? x[0] : x[2] };
+    const double g2 = Implicit(x2, this->ABC2);
+    const double n1 = std::pow(g, this->ABC[0] / 2.0), n2 = std::pow(g2, this->ABC2[0] / 2.0);
+    return this->Weight / n1 + (1.0 - this->Weight) / n2 > 1.0;
+  }
+
   bool Inside(const double p[3]) const
   {
     double x[3];
     this->ToGlyph(p, x);
-    if (std::abs(x[2]) >= 1.0)
-    {
-      return false;
-    }
-    auto radius = [&](double e)
-    { return std::pow(1.0 - std::pow(std::abs(x[2]), 2.0 / e), e / 2.0); };
-    return std::pow(std::abs(x[0]) / radius(this->ABC[1]), 2.0 / this->ABC[0]) +
-      std::pow(std::abs(x[1]) / radius(this->ABC[2]), 2.0 / this->ABC[0]) <
-      1.0;
+    return this->InsideGlyph(x);
   }
 };
 
 /// The Schultz-Kindlmann glyph of tensor t (VTK order) at c as a solid
 /// (eigen-system from vtkMath::Jacobi; semi-axes scale |l_i|, at least
-/// minThickness of the largest). Mutations as for ReferenceSKGlyph().
+/// minThickness of the largest). Mutations as for ReferenceSKGlyph(). In
+/// the band |l_edge| < band max|l| on the indefinite side of a zero
+/// eigenvalue (l_edge = l3 of positive-dominant tensors, l1 of
+/// negative-dominant ones) the solid is blended, with the weight
+/// smoothstep(|l_edge| / (band max|l|)), with the shape of the tensor whose
+/// l_edge is 0 (the class documentation of vtkSuperquadricGlyphMapper).
 inline GlyphSolid SKGlyphSolid(const double t[6], const double c[3], double gamma, double scale,
-  double minRoundness, double minThickness, SKMutation mutate = SK_NONE);
+  double minRoundness, double minThickness, SKMutation mutate = SK_NONE, double band = 0.15);
 
-/// Polygonal Schultz-Kindlmann glyph of tensor t (VTK order) at center c:
-/// the (alpha, beta, c) surface z = cos^beta(phi), x = cos^alpha(theta)
-/// R_beta(z), y = sin^alpha(theta) R_c(z), R_e(z) = (1 - |z|^(2/e))^(e/2)
-/// (Barr's superquadric for c = beta), res x res/2 quads, placed by the
-/// eigen-system from vtkMath::Jacobi with semi-axes scale |l_i| (at least
-/// minThickness of the largest).
 inline GlyphSolid SKGlyphSolid(const double t[6], const double c[3], double gamma, double scale,
-  double minRoundness, double minThickness, SKMutation mutate)
+  double minRoundness, double minThickness, SKMutation mutate, double band)
 {
   double a0[3] = { t[0], t[3], t[5] }, a1[3] = { t[3], t[1], t[4] }, a2[3] = { t[5], t[4], t[2] };
   double v0[3], v1[3], v2[3], w[3];
@@ -490,6 +517,23 @@ inline GlyphSolid SKGlyphSolid(const double t[6], const double c[3], double gamm
       abc[k] = sh.ABC[k];
     axisE1 = sh.AxisE1;
   }
+  double weight = 1.0, abc2[3] = { 1.0, 1.0, 1.0 };
+  bool axis2E1 = axisE1;
+  if (mutate != SK_ABSOLUTE_KINDLMANN && band > 0.0)
+  {
+    const double m = std::max(std::abs(w[0]), std::abs(w[2]));
+    const int edge = w[0] + w[2] < 0.0 ? 0 : 2;
+    const double x = std::abs(w[edge]) / (band * m);
+    if ((edge == 0 ? w[0] > 0.0 : w[2] < 0.0) && x < 1.0)
+    {
+      weight = x * x * (3.0 - 2.0 * x);
+      double flat[3] = { w[0], w[1], w[2] };
+      flat[edge] = 0.0;
+      const SKShape sh2 = SchultzKindlmann(flat, gamma, minRoundness, mutate);
+      std::copy(sh2.ABC, sh2.ABC + 3, abc2);
+      axis2E1 = sh2.AxisE1;
+    }
+  }
   for (int k = 0; k < 3; ++k)
   {
     semi[k] = std::max(scale * std::abs(w[k]), minThickness * scale * big);
@@ -501,19 +545,31 @@ inline GlyphSolid SKGlyphSolid(const double t[6], const double c[3], double gamm
   {
     solid.Center[k] = c[k];
     solid.ABC[k] = abc[k];
+    solid.ABC2[k] = abc2[k];
     for (int r = 0; r < 3; ++r)
     {
       solid.Axes[k][r] = semi[axes[k]] * e[axes[k]][r];
     }
   }
+  solid.Weight = weight;
+  solid.Swapped2 = axis2E1 != axisE1;
   return solid;
 }
 
+/// Polygonal Schultz-Kindlmann glyph of tensor t (VTK order) at center c:
+/// the (alpha, beta, c) surface z = cos^beta(phi), x = cos^alpha(theta)
+/// R_beta(z), y = sin^alpha(theta) R_c(z), R_e(z) = (1 - |z|^(2/e))^(e/2)
+/// (Barr's superquadric for c = beta), res x res/2 quads, placed by the
+/// eigen-system from vtkMath::Jacobi with semi-axes scale |l_i| (at least
+/// minThickness of the largest). Blended glyphs (see SKGlyphSolid()): the
+/// points of that parametrization of the unblended shape moved along their
+/// rays from the center onto the blended surface (by bisection).
 inline vtkSmartPointer<vtkPolyData> ReferenceSKGlyph(const double t[6], const double c[3],
   double gamma, double scale, double minRoundness, double minThickness, int res,
-  SKMutation mutate = SK_NONE)
+  SKMutation mutate = SK_NONE, double band = 0.15)
 {
-  const GlyphSolid solid = SKGlyphSolid(t, c, gamma, scale, minRoundness, minThickness, mutate);
+  const GlyphSolid solid =
+    SKGlyphSolid(t, c, gamma, scale, minRoundness, minThickness, mutate, band);
   const double* abc = solid.ABC;
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> pts;
@@ -530,7 +586,24 @@ inline vtkSmartPointer<vtkPolyData> ReferenceSKGlyph(const double t[6], const do
       const double zz = SignedPower(std::cos(phi), abc[1]);
       const double xx = SignedPower(std::cos(theta), abc[0]) * radius(zz, abc[1]);
       const double yy = SignedPower(std::sin(theta), abc[0]) * radius(zz, abc[2]);
-      const double g[3] = { xx, yy, zz };
+      double g[3] = { xx, yy, zz };
+      if (solid.Weight < 1.0)
+      {
+        // blended (star-shaped about the center: the solid's function grows
+        // along every ray from it): the surface point on the ray through
+        // the unblended surface point, by bisection
+        double lo = 0.0, hi = 1.0 / std::max({ std::abs(xx), std::abs(yy), std::abs(zz) });
+        for (int it = 0; it < 40; ++it)
+        {
+          const double mid = 0.5 * (lo + hi);
+          const double x[3] = { mid * xx, mid * yy, mid * zz };
+          (solid.InsideGlyph(x) ? lo : hi) = mid;
+        }
+        for (double& gk : g)
+        {
+          gk *= 0.5 * (lo + hi);
+        }
+      }
       double p[3] = { c[0], c[1], c[2] };
       for (int k = 0; k < 3; ++k)
       {

@@ -359,7 +359,8 @@ int TestSuperquadricGlyphMath(int, char*[])
       const double chord = ref ? (last - first) * std::sqrt(dot(d, d)) : 0.0;
       double t;
       int evals;
-      const bool hit = SQ::svqIntersectGeneral(o, d, abc, 512, t, evals);
+      const bool hit =
+        SQ::svqIntersectGeneral(o, d, abc, SQ::vec4(1.0, 1.0, 1.0, 1.0), 512, t, evals);
       worstEvals = std::max(worstEvals, evals);
       totalEvals += evals;
       if (hit != ref)
@@ -392,6 +393,153 @@ int TestSuperquadricGlyphMath(int, char*[])
     SV_CHECK_MSG(status, worstChordMissed < 2e-2 || cappedMiss * 5000 < hits,
       "rays through the solid were missed");
     SV_CHECK_MSG(status, worstT < 2e-3, "general root error " << worstT);
+  }
+
+  //----------------------------------------------------------------------------
+  // Blends of two (alpha, beta, c) solids (the zero-eigenvalue band of the
+  // Schultz-Kindlmann glyphs, svqBlendAbs): inside where
+  // w / n_1 + (1 - w) / n_2 > 1, n_i = g_i^(alpha_i / 2), the second solid's
+  // symmetry axis u when swapped. Its value against that formula, the
+  // normal (svqShapeGradient) against differences, the monotone bounds, and
+  // the general root finder against brute force.
+  {
+    auto G = [](double u, double v, double w, const SQ::vec3& abc)
+    {
+      if (std::abs(w) >= 1.0)
+        return 1e30;
+      const double rb = std::pow(1.0 - std::pow(std::abs(w), 2.0 / abc.y), abc.y / 2.0);
+      const double rc = std::pow(1.0 - std::pow(std::abs(w), 2.0 / abc.z), abc.z / 2.0);
+      return std::pow(std::abs(u) / rb, 2.0 / abc.x) + std::pow(std::abs(v) / rc, 2.0 / abc.x);
+    };
+    // the blend as 1 / (w / n_1 + (1 - w) / n_2) (inside: < 1)
+    auto B = [&](const SQ::vec3& x, const SQ::vec3& abc, const SQ::vec3& abc2, double w, bool swap)
+    {
+      const double n1 = std::pow(G(x.x, x.y, x.z, abc), abc.x / 2.0);
+      const double n2 =
+        std::pow(swap ? G(x.z, x.y, x.x, abc2) : G(x.x, x.y, x.z, abc2), abc2.x / 2.0);
+      return 1.0 / (w / n1 + (1.0 - w) / n2);
+    };
+    auto randomShape = [&]()
+    {
+      SQ::vec3 abc(rnd.Next(0.2, 1.0), rnd.Next(0.2, 4.0), rnd.Next(0.2, 4.0));
+      if (rnd.Next(0, 1) < 0.3)
+        abc.z = abc.y;
+      return abc;
+    };
+    double worstValue = 0.0, worstAngle = 0.0;
+    int boundViolations = 0;
+    for (int n = 0; n < 20000; ++n)
+    {
+      const SQ::vec3 abc = randomShape(), abc2 = randomShape();
+      const double w = rnd.Next(0.0, 1.0);
+      const bool swap = n % 2 == 1;
+      const SQ::vec4 blend(abc2.x, abc2.y, abc2.z, swap ? w + 2.0 : w);
+      const auto coord = [&](double lo, double hi)
+      { return (rnd.Next(0, 1) < 0.5 ? -1.0 : 1.0) * rnd.Next(lo, hi); };
+      const SQ::vec3 x(coord(0.05, 0.9), coord(0.05, 0.9), coord(0.05, 0.9));
+      const double ref = B(x, abc, abc2, w, swap);
+      if (ref > 1e2)
+        continue;
+      const SQ::vec3 ax = abs(x);
+      worstValue = std::max(
+        worstValue, std::abs(SQ::svqBlendAbs(ax.x, ax.y, ax.z, abc, blend) - ref) / (1.0 + ref));
+      const SQ::vec3 g = SQ::svqShapeGradient(x, abc, blend);
+      SQ::vec3 fd;
+      const double h = 1e-6;
+      for (int c = 0; c < 3; ++c)
+      {
+        SQ::vec3 xp = x, xm = x;
+        xp[c] += h;
+        xm[c] -= h;
+        fd[c] = (B(xp, abc, abc2, w, swap) - B(xm, abc, abc2, w, swap)) / (2.0 * h);
+      }
+      const double cosine = dot(g, fd) / std::sqrt(dot(g, g) * dot(fd, fd));
+      worstAngle = std::max(worstAngle, std::acos(std::min(1.0, cosine)));
+      const SQ::vec3 y(x.x * rnd.Next(0, 1), x.y * rnd.Next(0, 1), x.z * rnd.Next(0, 1));
+      const SQ::vec3 ay = abs(y);
+      boundViolations += SQ::svqBlendAbs(ay.x, ay.y, ay.z, abc, blend) >
+        SQ::svqBlendAbs(ax.x, ax.y, ax.z, abc, blend) * (1.0 + 1e-12);
+    }
+    std::cout << "blended solids: worst value error " << worstValue << ", worst normal angle "
+              << worstAngle << " rad, " << boundViolations << " monotonicity violations"
+              << std::endl;
+    SV_CHECK_MSG(status, worstValue < 1e-10, "blend value " << worstValue);
+    SV_CHECK_MSG(status, worstAngle < 1e-3, "blend normal " << worstAngle);
+    SV_CHECK_MSG(status, boundViolations == 0, boundViolations << " monotonicity violations");
+
+    int rays = 0, hits = 0, disagree = 0, falseHits = 0;
+    double worstT = 0.0, worstChordMissed = 0.0;
+    for (int n = 0; n < 6000; ++n)
+    {
+      const SQ::vec3 abc = randomShape(), abc2 = randomShape();
+      const double w = rnd.Next(0.0, 1.0);
+      const bool swap = n % 2 == 1;
+      const SQ::vec4 blend(abc2.x, abc2.y, abc2.z, swap ? w + 2.0 : w);
+      SQ::vec3 o(rnd.Next(-1, 1), rnd.Next(-1, 1), rnd.Next(-1, 1));
+      o = 4.0 * o / std::sqrt(dot(o, o));
+      const SQ::vec3 target(rnd.Next(-1.1, 1.1), rnd.Next(-1.1, 1.1), rnd.Next(-1.1, 1.1));
+      const SQ::vec3 d = target - o;
+      double t0, t1;
+      if (!SQ::svqClipUnitBox(o, d, t0, t1))
+        continue;
+      ++rays;
+      // brute force: dense samples, bisection on the first change
+      const int samples = 4000;
+      double first = -1.0, last = -1.0, prev = t0;
+      for (int k = 0; k <= samples; ++k)
+      {
+        const double t = t0 + (t1 - t0) * k / samples;
+        if (B(o + t * d, abc, abc2, w, swap) < 1.0)
+        {
+          if (first < 0)
+          {
+            double lo = prev, hi = t;
+            for (int b = 0; b < 100; ++b)
+            {
+              const double m = 0.5 * (lo + hi);
+              (B(o + m * d, abc, abc2, w, swap) < 1.0 ? hi : lo) = m;
+            }
+            first = hi;
+          }
+          last = t;
+        }
+        else if (first >= 0)
+        {
+          break;
+        }
+        prev = t;
+      }
+      const bool ref = first >= 0;
+      double t;
+      int evals;
+      const bool hit = SQ::svqIntersectGeneral(o, d, abc, blend, 512, t, evals);
+      if (hit != ref)
+      {
+        ++disagree;
+        if (ref)
+        {
+          worstChordMissed = std::max(worstChordMissed, (last - first) * std::sqrt(dot(d, d)));
+        }
+        else
+        {
+          // a thin rim between the samples: the hit must be inside
+          falseHits += !(B(o + t * d, abc, abc2, w, swap) < 1.0);
+        }
+      }
+      if (hit && ref)
+      {
+        ++hits;
+        worstT = std::max(worstT, std::abs(t - first) * std::sqrt(dot(d, d)));
+      }
+    }
+    std::cout << "blended solids: " << rays << " rays, " << hits << " hits, " << disagree
+              << " hit/miss disagreements (longest missed chord " << worstChordMissed << ", "
+              << falseHits << " hits outside), worst root error " << worstT << " glyph units"
+              << std::endl;
+    SV_CHECK(status, rays > 4000 && hits > 1500);
+    SV_CHECK_MSG(status, worstChordMissed < 2e-2, "rays through the blend were missed");
+    SV_CHECK_MSG(status, falseHits == 0, falseHits << " hits outside the blend");
+    SV_CHECK_MSG(status, worstT < 2e-3, "blend root error " << worstT);
   }
 
   //----------------------------------------------------------------------------
