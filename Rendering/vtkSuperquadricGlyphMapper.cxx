@@ -1090,10 +1090,14 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
       this->Internal->ShaderGeneralShapes ? "#define SQ_GENERAL_SHAPES" : "");
   }
   // Clipping planes: in the fragment stage, on the ray (not VTK's per-vertex
-  // clip distances, which would cut the sprites).
+  // clip distances, which would cut the sprites); whole glyphs beyond a plane
+  // in the geometry stage.
   this->Internal->ShaderClip = this->GetNumberOfClippingPlanes() > 0;
-  vtkShaderProgram::Substitute(
-    FSSource, "//SQ::Clip::Dec", this->Internal->ShaderClip ? "#define SQ_CLIP" : "");
+  for (std::string* source : { &GSSource, &FSSource })
+  {
+    vtkShaderProgram::Substitute(
+      *source, "//SQ::Clip::Dec", this->Internal->ShaderClip ? "#define SQ_CLIP" : "");
+  }
 
   // Per-block colors, opacities, visibilities.
   this->Internal->ShaderHaveBlockColors = this->Internal->HaveBlockColors;

@@ -45,6 +45,15 @@ flat out vec3 glyphShapeGSOutput;
 flat out vec3 glyphFormGSOutput;
 flat out vec4 glyphColorGSOutput;
 
+//SQ::Clip::Dec
+#ifdef SQ_CLIP
+// VTK's clipping planes (data coordinates) and the view-to-data
+// transformation: glyphs whose box is beyond a plane are not drawn.
+uniform int numClipPlanes;
+uniform vec4 clipPlanes[6];
+uniform mat4 glyphVCMC;
+#endif
+
 //VTK::Picking::Dec
 
 void emitCorner(vec3 p, mat3 inv)
@@ -81,12 +90,14 @@ void extendBounds(vec3 p, inout vec2 lo, inout vec2 hi, inout float zNear)
 // at most 4 x 4 of them; larger than 192 pixels: left to the fragment test).
 bool occludedRect(vec2 lo, vec2 hi, float zNear)
 {
-  lo = max(lo, vec2(0.0));
-  hi = min(hi, vec2(sqViewportSize) - 1.0);
-  if (lo.x > hi.x || lo.y > hi.y)
+  // (window coordinates: pixel i covers [i, i + 1))
+  if (hi.x < 0.0 || hi.y < 0.0 || lo.x >= float(sqViewportSize.x) ||
+    lo.y >= float(sqViewportSize.y))
   {
     return true; // outside the viewport
   }
+  lo = max(lo, vec2(0.0));
+  hi = min(hi, vec2(sqViewportSize) - 1.0);
   float extent = max(hi.x - lo.x, hi.y - lo.y);
   int tile;
   if (extent <= 6.0)
@@ -149,6 +160,21 @@ void main()
   mat3 G = glyphFrameVSOut[0];
   // half extents of the glyph's box along the view axes
   vec3 h = abs(G[0]) + abs(G[1]) + abs(G[2]);
+#ifdef SQ_CLIP
+  // the largest value of a plane's function over the box: its value at the
+  // center plus |plane . (semi-axis k)| for the three axes
+  vec3 cMC = (glyphVCMC * vec4(c, 1.0)).xyz;
+  mat3 axesMC = mat3(glyphVCMC) * G;
+  for (int i = 0; i < numClipPlanes; ++i)
+  {
+    vec3 n = clipPlanes[i].xyz;
+    float reach = abs(dot(n, axesMC[0])) + abs(dot(n, axesMC[1])) + abs(dot(n, axesMC[2]));
+    if (dot(n, cMC) + clipPlanes[i].w + reach < 0.0)
+    {
+      return; // all beyond the plane
+    }
+  }
+#endif
   float zFront = c.z + h.z;
   float zBack = c.z - h.z;
   if (zBack >= nearPlaneVC)
