@@ -326,9 +326,10 @@ public:
 
   ///@{
   /**
-   * Number of visibility groups of the occlusion culling, in [1, 8]: the
-   * bricks of glyphs in front, behind them, ..., and all deeper ones; a
-   * depth pyramid is built before each group but the first. Default 12.
+   * Number of visibility groups of the occlusion culling, clamped to
+   * [1, 16]: the bricks of glyphs in front, behind them, ..., and all deeper
+   * ones; a depth pyramid is built before each group but the first. Default
+   * 12.
    */
   vtkSetClampMacro(NumberOfCullingGroups, int, 1, 16);
   vtkGetMacro(NumberOfCullingGroups, int);
