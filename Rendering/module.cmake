@@ -8,6 +8,19 @@ list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkTessellatedTubeMapper")
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineVizGPUBuffer")
+# Stylized lines (Stoll et al.): the mapper, its CPU fix-up and the math
+# shared by both and the shaders (vtkStylizedLineMath.h compiles
+# glsl/vtkStylizedLineMathShared.glsl as C++).
+list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkStylizedLineMapper")
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkStylizedLineFixUp")
+list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkStylizedLineMath.h")
+list(APPEND splineviz_shaders
+  "${SPLINEVIZ_FOLDER}/glsl/vtkStylizedLineMathShared.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkStylizedLineVS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkStylizedLineFS.glsl")
 list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkSplineTubeMath.h")
 list(APPEND splineviz_shaders

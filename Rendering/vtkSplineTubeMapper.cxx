@@ -92,6 +92,7 @@ std::string vtkSplineTubeMapper::BuildSignature()
     << this->ArrayComponent << '|' << this->ColorMode << '|' << this->UseLookupTableScalarRange
     << '|' << this->ScalarRange[0] << '|' << this->ScalarRange[1] << '|' << this->FieldDataTupleId
     << '|' << this->LookupTable << '|' << (this->LookupTable ? this->LookupTable->GetMTime() : 0);
+  this->AppendBuildSignature(s);
   return s.str();
 }
 
@@ -111,6 +112,7 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
   this->Core->SetRadiusArrayName(
     this->RadiusArray && this->RadiusArray[0] ? this->RadiusArray : nullptr);
   this->Core->SetRadiusScale(this->RadiusScale);
+  this->ConfigureTubeCore(this->Core);
 
   vtkIdType inputCells = 0;
   auto addLeaf = [this, &inputCells](vtkPolyData* pd, unsigned int blockId)
@@ -609,6 +611,26 @@ void vtkSplineTubeMapper::ReplaceShaderTubeClip(
     "  {\n"
     "    if (dot(clipPlanes[planeNum], tubeClipMC) < 0.0) discard;\n"
     "  }\n");
+}
+
+//------------------------------------------------------------------------------
+const char* vtkSplineTubeMapper::GetFragDepthWrittenMarker()
+{
+  return "// SplineViz: gl_FragDepth is the primitive's depth from here on\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::UseWrittenFragDepth(std::string& FSSource)
+{
+  const size_t marker = FSSource.find(GetFragDepthWrittenMarker());
+  if (marker == std::string::npos)
+  {
+    return;
+  }
+  std::string tail = FSSource.substr(marker);
+  vtkShaderProgram::Substitute(tail, "gl_FragCoord.z", "gl_FragDepth", true);
+  vtkShaderProgram::Substitute(tail, "1.0/gl_FragCoord.w", "(-vertexVC.z)", true);
+  FSSource = FSSource.substr(0, marker) + tail;
 }
 
 //------------------------------------------------------------------------------

@@ -40,6 +40,7 @@
 #include "vtkNew.h"          // for vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 
+#include <iosfwd>  // for std::ostream
 #include <memory>  // for std::unique_ptr
 #include <string>  // for std::string
 #include <utility> // for std::pair
@@ -206,6 +207,32 @@ protected:
   /// Rebuild the core if the input, settings or coloring changed. Returns
   /// true when it was rebuilt.
   bool UpdateTubeCore();
+
+  /**
+   * Subclasses set the core's own options (frames, node scalars) here; called
+   * by UpdateTubeCore() before the input is added. What it depends on must be
+   * in AppendBuildSignature().
+   */
+  virtual void ConfigureTubeCore(vtkSplineTubeCore*) {}
+
+  /**
+   * Subclasses append the settings their tube data depends on (beyond the
+   * radius and coloring settings): a change rebuilds the core.
+   */
+  virtual void AppendBuildSignature(std::ostream&) {}
+
+  ///@{
+  /**
+   * For shaders that write gl_FragDepth: mark the end of that code with
+   * GetFragDepthWrittenMarker(), then, after VTK's replacements, call
+   * UseWrittenFragDepth(): from the marker on, render-pass code that reads
+   * the fragment's depth (depth peeling, the shadow-map baker) reads the
+   * written depth (gl_FragDepth; -vertexVC.z for 1/gl_FragCoord.w, the eye
+   * distance of a perspective camera) instead of the rasterized one.
+   */
+  static const char* GetFragDepthWrittenMarker();
+  static void UseWrittenFragDepth(std::string& FSSource);
+  ///@}
 
   // The buffer objects are ours: the superclass' VBO/IBO path is not used.
   bool GetNeedToRebuildBufferObjects(vtkRenderer*, vtkActor*) override { return false; }
