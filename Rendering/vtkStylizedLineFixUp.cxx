@@ -86,9 +86,16 @@ void vtkStylizedLineFixUp::Build(vtkSplineTubeCore* core, const double shift[3])
       for (;;)
       {
         const double c = glm::dot(axis, UnitTangent(M, end));
-        if (c < cosLimit && end > start + 1)
+        if (c < cosLimit)
         {
-          --end; // the node that left the cone closes the next batch
+          if (end > start + 1)
+          {
+            --end; // the node that left the cone starts the next batch
+          }
+          else
+          {
+            minCos = c; // a sharp turn: a batch of one segment
+          }
           break;
         }
         minCos = std::min(minCos, c);
