@@ -298,6 +298,20 @@ void vtkStylizedLineFixUp::Classify(const View& view, bool enabled, std::vector<
   const float* P = this->Core->GetNodePositions()->GetPointer(0);
   const float* R = this->Core->GetNodeRadii()->GetPointer(0);
   auto point = [P](vtkIdType i) { return vec3(P[3 * i], P[3 * i + 1], P[3 * i + 2]); };
+  // The radius on screen of point i, in pixels (0 behind the eye).
+  auto screenRadius = [&](vtkIdType i)
+  {
+    const vec3 p = TransformPoint(view.ModelView,
+      vec3(
+        P[3 * i] - this->Shift[0], P[3 * i + 1] - this->Shift[1], P[3 * i + 2] - this->Shift[2]));
+    const double r = R[2 * i] * view.RadiusScale * view.PixelsPerUnit;
+    if (view.Parallel)
+    {
+      return r;
+    }
+    return p.z < 0.0 ? r / std::max(-p.z, 1e-30) : 0.0;
+  };
+  this->MaximumScreenRadius = 0.0;
   stripFirsts.reserve(static_cast<size_t>(numTubes));
   stripCounts.reserve(static_cast<size_t>(numTubes));
   auto strip = [&](vtkIdType first, vtkIdType last)
@@ -312,6 +326,8 @@ void vtkStylizedLineFixUp::Classify(const View& view, bool enabled, std::vector<
   {
     vtkIdType start = tubeFirst[t];
     const vtkIdType last = tubeFirst[t] + tubeNodes[t] - 1;
+    this->MaximumScreenRadius =
+      std::max({ this->MaximumScreenRadius, screenRadius(tubeFirst[t]), screenRadius(last) });
     for (vtkIdType b = this->TubeFirstBatch[t]; b < this->TubeFirstBatch[t + 1]; ++b)
     {
       if (!this->Flags[b])
@@ -323,6 +339,8 @@ void vtkStylizedLineFixUp::Classify(const View& view, bool enabled, std::vector<
       for (int s = 0; s < batch.Segments; ++s)
       {
         segments.push_back(batch.FirstNode + static_cast<std::uint32_t>(s));
+        this->MaximumScreenRadius =
+          std::max(this->MaximumScreenRadius, screenRadius(batch.FirstNode + s));
       }
       // Joints: the batch's points, each once (consecutive fixed batches
       // share one), but those whose sphere would stick out of an end cap.

@@ -53,6 +53,7 @@ public:
     bool Parallel;        ///< parallel projection
     double Epsilon;       ///< threshold of |t . u_hat| > 1 - Epsilon
     double JointRadius;   ///< joint spheres' radius in line radii (1 + halo width)
+    double PixelsPerUnit; ///< pixels per view unit (perspective: at distance 1)
   };
 
   /**
@@ -76,6 +77,14 @@ public:
 
   /// Unit tangent per line vertex (3 floats each), made by Build().
   const std::vector<float>& GetTangents() const { return this->Tangents; }
+
+  /**
+   * The largest radius on screen, in pixels, of the polylines' ends (the
+   * caps, in front of the eye) and of the fixed-up segments' points, found
+   * by the last Classify(); the mapper tessellates the caps and cylinders
+   * from it.
+   */
+  double GetMaximumScreenRadius() const { return this->MaximumScreenRadius; }
 
   /// Per batch: 1 when the last Classify() fixed it up.
   const std::vector<unsigned char>& GetBatchFlags() const { return this->Flags; }
@@ -114,6 +123,7 @@ private:
   std::vector<vtkIdType> TubeFirstBatch; ///< tubes + 1
   std::vector<unsigned char> Flags;
   vtkIdType Candidates = 0;
+  double MaximumScreenRadius = 0.0;
 };
 
 #endif

@@ -11,6 +11,7 @@
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLHelper.h"
@@ -69,6 +70,7 @@ struct vtkStylizedLineMapper::vtkInternals
   vtkSmartPointer<vtkOpenGLBufferObject> Meshes; // cylinder, then cap index patterns
   size_t MeshBytes = 0;
   int MeshSides = 0;
+  int Sides = 8; // for the current view
 
   vtkStylizedLineFixUp FixUp;
   std::vector<int> StripFirsts;
@@ -325,13 +327,13 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
 bool vtkStylizedLineMapper::BuildMeshes()
 {
   vtkInternals& in = *this->Internals;
-  if (in.Meshes && in.MeshSides == this->FixUpSides)
+  if (in.Meshes && in.MeshSides == in.Sides)
   {
     return true;
   }
   // Cylinder between two rings (vertex = ring * sides + j), the cap fan
   // (vertex 0 the center, 1 + j the rim), then a square (the joints).
-  const unsigned short n = static_cast<unsigned short>(this->FixUpSides);
+  const unsigned short n = static_cast<unsigned short>(in.Sides);
   std::vector<unsigned short> indices;
   indices.reserve(9 * n);
   for (unsigned short j = 0; j < n; ++j)
@@ -360,7 +362,7 @@ bool vtkStylizedLineMapper::BuildMeshes()
     in.MeshBytes = 0;
     return false;
   }
-  in.MeshSides = this->FixUpSides;
+  in.MeshSides = in.Sides;
   in.MeshBytes = indices.size() * sizeof(unsigned short);
   return true;
 }
@@ -374,10 +376,18 @@ void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   float radiusScale = 1.0f;
   this->ComputeTubeMatrices(ren, act, modelView, viewModel, radiusScale);
   const bool parallel = ren->GetActiveCamera()->GetParallelProjection() != 0;
+  // Pixels per view unit (at distance 1 for a perspective camera).
+  vtkMatrix4x4* vcdc = GetViewToDisplayMatrix(ren);
+  int width = 1;
+  int height = 1;
+  ren->GetTiledSize(&width, &height);
+  const double pixelsPerUnit =
+    0.5 * std::max(vcdc->GetElement(0, 0) * width, vcdc->GetElement(1, 1) * height);
   std::vector<double> view(modelView, modelView + 16);
   view.insert(view.end(),
-    { static_cast<double>(radiusScale), parallel ? 1.0 : 0.0, this->FixUp ? 1.0 : 0.0,
-      this->FixUpEpsilon, this->HaloWidth, static_cast<double>(this->UploadTime.GetMTime()) });
+    { static_cast<double>(radiusScale), parallel ? 1.0 : 0.0, pixelsPerUnit,
+      static_cast<double>(this->FixUpSides), this->FixUp ? 1.0 : 0.0, this->FixUpEpsilon,
+      this->HaloWidth, static_cast<double>(this->UploadTime.GetMTime()) });
   if (view == in.LastView)
   {
     return;
@@ -388,7 +398,11 @@ void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   v.Parallel = parallel;
   v.Epsilon = this->FixUpEpsilon;
   v.JointRadius = 1.0 + this->HaloWidth;
+  v.PixelsPerUnit = pixelsPerUnit;
   in.FixUp.Classify(v, this->FixUp, in.StripFirsts, in.StripCounts, in.FixedSegments, in.Joints);
+  // Sides of about 3 pixels for the largest cap or cylinder on screen.
+  const double sides = std::ceil(2.0 * vtkMath::Pi() * in.FixUp.GetMaximumScreenRadius() / 3.0);
+  in.Sides = static_cast<int>(std::max(8.0, std::min<double>(this->FixUpSides, sides)));
   auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   if (!in.Segments.Upload(
         window, in.FixedSegments.data(), in.FixedSegments.size(), 1, VTK_TYPE_UINT32, GL_R32UI) ||
@@ -566,7 +580,7 @@ void vtkStylizedLineMapper::SetMapperShaderParameters(
   }
   program->SetUniformi("lineNumberOfTubes", static_cast<int>(this->Core->GetNumberOfTubes()));
   program->SetUniformi("lineExact", this->ExactSilhouette ? 1 : 0);
-  program->SetUniformi("lineSides", this->FixUpSides);
+  program->SetUniformi("lineSides", in.MeshSides);
   program->SetUniformf("lineDepthCap", static_cast<float>(DepthCap));
   program->SetUniformf("lineWiden", static_cast<float>(1.0 + this->HaloWidth));
   program->SetUniformi("lineDepthCorrection", this->DepthCorrection ? 1 : 0);
@@ -590,11 +604,15 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 {
   vtkInternals& in = *this->Internals;
   const vtkIdType numTubes = this->Core->GetNumberOfTubes();
-  if (numTubes == 0 || in.Nodes.GetNumberOfBytes() == 0 || !this->BuildMeshes())
+  if (numTubes == 0 || in.Nodes.GetNumberOfBytes() == 0)
   {
     return;
   }
   this->UpdateDraws(ren, act);
+  if (!this->BuildMeshes())
+  {
+    return;
+  }
 
   vtkOpenGLHelper& helper = this->Primitives[PrimitiveTris];
   this->UpdateShaders(helper, ren, act);
@@ -619,7 +637,7 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
     glMultiDrawArrays(GL_TRIANGLE_STRIP, in.StripFirsts.data(), in.StripCounts.data(),
       static_cast<GLsizei>(in.StripFirsts.size()));
   }
-  // 2. Caps, 3. the fix-up's cylinders and joints; then their halos.
+  // 2. Caps, 3. the fix-up's cylinders and joints; then the caps' halos.
   in.Meshes->Bind();
   const GLsizei sides = static_cast<GLsizei>(in.MeshSides);
   const void* capOffset = reinterpret_cast<const void*>(6 * sizeof(unsigned short) * in.MeshSides);
@@ -634,12 +652,15 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
       glDrawElementsInstanced(
         GL_TRIANGLES, 3 * sides, GL_UNSIGNED_SHORT, capOffset, static_cast<GLsizei>(2 * numTubes));
     }
-    if (fixed > 0)
+    // The fix-up's geometry has no halo: around a line seen down its length
+    // a halo ring would cut the line's own parts further back wherever they
+    // curve out of its profile (Stoll's halo is the quads' band).
+    if (fixed > 0 && halo == 0)
     {
       program->SetUniformi("lineMode", FIXUP_CYLINDERS);
       glDrawElementsInstanced(GL_TRIANGLES, 6 * sides, GL_UNSIGNED_SHORT, nullptr, fixed);
     }
-    if (!in.Joints.empty())
+    if (!in.Joints.empty() && halo == 0)
     {
       program->SetUniformi("lineMode", FIXUP_JOINTS);
       glDrawElementsInstanced(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT,

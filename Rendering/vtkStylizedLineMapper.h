@@ -34,7 +34,9 @@
  *   the extra band is drawn in HaloColor (or the renderer's background) at a
  *   depth pushed back by HaloDepthOffset radii, so that it hides lines
  *   further behind and never its own line. The halo is defined in object
- *   space: it scales with the line.
+ *   space: it scales with the line. The caps have one too; the fix-up's
+ *   geometry has none (around a line seen down its length a halo ring
+ *   would cut the line's own parts further back).
  * - **Textures along the line** (§4.2, §6, Figs. 10-13): built-in stripes,
  *   arrows or dashes (procedural, anti-aliased), or the actor's vtkTexture,
  *   mapped with u along the line (TextureRepeat, in radii or world units)
@@ -59,7 +61,7 @@
  *   (Stoll: 10-15 degrees) in parallel (vtkSMPTools; a batch is skipped by
  *   one cone test unless the view can meet its tangents), and the batches
  *   with a problem vertex are drawn as real geometry instead of quads:
- *   cylinders of FixUpSides sides per segment, generated on the GPU from the
+ *   cylinders per segment, generated on the GPU from the
  *   same vertex buffers (only the list of segments is uploaded, a few bytes
  *   per fixed segment). This is Stoll's method 1 (tessellated geometry, exact
  *   depth) without its alpha blending: the quad strips are split at the
@@ -181,7 +183,9 @@ public:
 
   ///@{
   /**
-   * Sides of the cylinders the fix-up draws and of the end caps. Default 16.
+   * Largest number of sides of the cylinders the fix-up draws and of the end
+   * caps: per view they get sides of about 3 pixels (at least 8) for the
+   * largest of them on screen, at most this many. Default 64.
    */
   vtkSetClampMacro(FixUpSides, int, 3, 256);
   vtkGetMacro(FixUpSides, int);
@@ -323,7 +327,7 @@ protected:
   bool DepthCorrection = true;
   bool FixUp = true;
   double FixUpEpsilon = 0.025;
-  int FixUpSides = 16;
+  int FixUpSides = 64;
   bool Capping = true;
   int TexturePattern = NO_PATTERN;
   double TextureRepeat = 8.0;

@@ -24,8 +24,9 @@
 //     where the neighbouring quads cover only half of the profile disk; lit
 //     with the normal of the vertex's cylinder (the sphere's normal made
 //     orthogonal to the tangent), they continue the line's wall.
-// Modes 1, 2 and 3 draw their halo in a second draw (lineHaloPass) with the
-// radius widened.
+// Mode 2 draws its halo in a second draw (lineHaloPass) with the radius
+// widened (modes 1 and 3 could, but the mapper does not draw them: see
+// vtkStylizedLineMapper::RenderPieceDraw).
 
 uniform samplerBuffer lineNodes;       // per vertex: (x, y, z, radius), shifted model coordinates
 uniform isamplerBuffer lineTangents;   // per vertex: unit tangent, octahedral, 2 x int16

@@ -311,6 +311,8 @@ void TestFixUp(SplineVizTestStatus& status)
     view.Parallel = trial % 4 == 3;
     view.Epsilon = trial % 5 == 0 ? 0.2 : 0.025;
     view.JointRadius = 1.0;
+    view.PixelsPerUnit = 500.0;
+    view.PixelsPerUnit = 500.0;
     std::vector<int> firsts;
     std::vector<int> counts;
     std::vector<std::uint32_t> segments;
@@ -414,6 +416,7 @@ void TestFixUp(SplineVizTestStatus& status)
   view.RadiusScale = 1.0;
   view.Epsilon = 0.5;
   view.JointRadius = 1.0;
+  view.PixelsPerUnit = 500.0;
   std::vector<int> firsts;
   std::vector<int> counts;
   std::vector<std::uint32_t> segments;
