@@ -3,6 +3,7 @@
 #include "vtkSplineTubeMath.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
@@ -128,6 +129,7 @@ vtkSplineTubeCore::~vtkSplineTubeCore()
   this->SetRadiusArrayName(nullptr);
   this->SetNodeScalarArrayName(nullptr);
   this->SetNodeScalarRole(nullptr);
+  this->SetCellIdArrayName(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -243,6 +245,20 @@ bool vtkSplineTubeCore::AddPolyData(
   vtkCellArray* lines = input->GetLines();
   const vtkIdType numLines = lines->GetNumberOfCells();
   const vtkIdType firstCellId = input->GetNumberOfVerts(); // line cell ids follow the verts
+  // Original cell ids, when the input carries them (one component, integer).
+  vtkDataArray* originalIds = nullptr;
+  if (this->CellIdArrayName && this->CellIdArrayName[0])
+  {
+    originalIds = input->GetCellData()->GetArray(this->CellIdArrayName);
+    if (originalIds &&
+      (originalIds->GetNumberOfComponents() != 1 ||
+        vtkDataArray::GetDataTypeMin(originalIds->GetDataType()) == VTK_DOUBLE_MIN ||
+        vtkDataArray::GetDataTypeMin(originalIds->GetDataType()) == VTK_FLOAT_MIN ||
+        originalIds->GetNumberOfTuples() != input->GetNumberOfCells()))
+    {
+      originalIds = nullptr;
+    }
+  }
   const double constantRadius = this->Radius;
   const double radiusScale = this->RadiusScale;
 
@@ -482,7 +498,8 @@ bool vtkSplineTubeCore::AddPolyData(
           const vtkIdType s = firstSegment + k;
           segmentFirst[s] = static_cast<vtkTypeUInt32>(first + k);
           segmentFlags[s] = flags;
-          segmentCells[s] = cellId;
+          segmentCells[s] =
+            originalIds ? static_cast<vtkIdType>(originalIds->GetComponent(cellId, 0)) : cellId;
           segmentBlocks[s] = blockId;
         }
       }

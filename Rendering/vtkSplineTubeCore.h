@@ -112,6 +112,18 @@ public:
 
   ///@{
   /**
+   * Name of an integer cell array of original cell ids (ParaView's
+   * "vtkOriginalCellIds" of geometry filtered input): when a block has it,
+   * the segments' cell ids (GetSegmentCellIds(), what picking reports) are
+   * its values instead of the cell's index in the block. nullptr (default):
+   * the index.
+   */
+  vtkSetStringMacro(CellIdArrayName);
+  vtkGetStringMacro(CellIdArrayName);
+  ///@}
+
+  ///@{
+  /**
    * What the node scalars are, for messages ("The <role> array ..."). Default
    * "node scalar".
    */
@@ -254,6 +266,7 @@ protected:
   double RadiusScale = 1.0;
   char* NodeScalarArrayName = nullptr;
   char* NodeScalarRole = nullptr;
+  char* CellIdArrayName = nullptr;
   double MaximumFrameStepAngle = 0.1;
   bool ComputeFrames = true;
 

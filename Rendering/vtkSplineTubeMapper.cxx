@@ -58,6 +58,7 @@ vtkSplineTubeMapper::vtkSplineTubeMapper()
 vtkSplineTubeMapper::~vtkSplineTubeMapper()
 {
   this->SetRadiusArray(nullptr);
+  this->SetCellIdArrayName(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -87,11 +88,12 @@ std::string vtkSplineTubeMapper::BuildSignature()
   std::ostringstream s;
   s.precision(17);
   s << this->Radius << '|' << (this->RadiusArray ? this->RadiusArray : "") << '|'
-    << this->RadiusScale << '|' << this->ScalarVisibility << '|' << this->ScalarMode << '|'
-    << this->ArrayAccessMode << '|' << this->ArrayId << '|' << this->ArrayName << '|'
-    << this->ArrayComponent << '|' << this->ColorMode << '|' << this->UseLookupTableScalarRange
-    << '|' << this->ScalarRange[0] << '|' << this->ScalarRange[1] << '|' << this->FieldDataTupleId
-    << '|' << this->LookupTable << '|' << (this->LookupTable ? this->LookupTable->GetMTime() : 0);
+    << this->RadiusScale << '|' << (this->CellIdArrayName ? this->CellIdArrayName : "") << '|'
+    << this->ScalarVisibility << '|' << this->ScalarMode << '|' << this->ArrayAccessMode << '|'
+    << this->ArrayId << '|' << this->ArrayName << '|' << this->ArrayComponent << '|'
+    << this->ColorMode << '|' << this->UseLookupTableScalarRange << '|' << this->ScalarRange[0]
+    << '|' << this->ScalarRange[1] << '|' << this->FieldDataTupleId << '|' << this->LookupTable
+    << '|' << (this->LookupTable ? this->LookupTable->GetMTime() : 0);
   this->AppendBuildSignature(s);
   return s.str();
 }
@@ -112,6 +114,7 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
   this->Core->SetRadiusArrayName(
     this->RadiusArray && this->RadiusArray[0] ? this->RadiusArray : nullptr);
   this->Core->SetRadiusScale(this->RadiusScale);
+  this->Core->SetCellIdArrayName(this->CellIdArrayName);
   this->ConfigureTubeCore(this->Core);
 
   vtkIdType inputCells = 0;
@@ -689,8 +692,16 @@ double* vtkSplineTubeMapper::GetBounds()
 void vtkSplineTubeMapper::ComputeTubeMatrices(
   vtkRenderer* ren, vtkActor* act, float modelView[16], float viewModel[16], float& radiusScale)
 {
+  this->ComputeTubeMatrices(
+    ren->GetActiveCamera()->GetModelViewTransformMatrix(), act, modelView, viewModel, radiusScale);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::ComputeTubeMatrices(vtkMatrix4x4* worldToView, vtkActor* act,
+  float modelView[16], float viewModel[16], float& radiusScale)
+{
   vtkNew<vtkMatrix4x4> m;
-  m->DeepCopy(ren->GetActiveCamera()->GetModelViewTransformMatrix());
+  m->DeepCopy(worldToView);
   if (!act->GetIsIdentity())
   {
     vtkMatrix4x4::Multiply4x4(m, act->GetMatrix(), m);
@@ -722,7 +733,10 @@ void vtkSplineTubeMapper::ComputeTubeMatrices(
     for (int c = 0; c < 4; ++c)
     {
       modelView[c * 4 + r] = static_cast<float>(m->GetElement(r, c));
-      viewModel[c * 4 + r] = static_cast<float>(inverse->GetElement(r, c));
+      if (viewModel)
+      {
+        viewModel[c * 4 + r] = static_cast<float>(inverse->GetElement(r, c));
+      }
     }
   }
 }
@@ -734,5 +748,7 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "RadiusArray: " << (this->RadiusArray ? this->RadiusArray : "(none)") << "\n";
   os << indent << "RadiusScale: " << this->RadiusScale << "\n";
+  os << indent << "CellIdArrayName: " << (this->CellIdArrayName ? this->CellIdArrayName : "(none)")
+     << "\n";
   os << indent << "Segments: " << this->Core->GetNumberOfSegments() << "\n";
 }

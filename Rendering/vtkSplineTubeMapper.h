@@ -87,6 +87,18 @@ public:
   vtkGetMacro(RadiusScale, double);
   ///@}
 
+  ///@{
+  /**
+   * Name of an integer cell array of original cell ids: when a block has it,
+   * picking reports its value for the picked polyline instead of the
+   * polyline's index (ParaView's geometry representations pass
+   * "vtkOriginalCellIds" through vtkPVDataRepresentation::SetArrayIdNames).
+   * nullptr (default): the index.
+   */
+  vtkSetStringMacro(CellIdArrayName);
+  vtkGetStringMacro(CellIdArrayName);
+  ///@}
+
   /**
    * The tube data built from the last rendered input (nodes, frames, segments).
    */
@@ -247,6 +259,9 @@ protected:
    */
   void ComputeTubeMatrices(
     vtkRenderer* ren, vtkActor* act, float modelView[16], float viewModel[16], float& radiusScale);
+  /// The same for another camera (its world-to-view matrix); viewModel may be nullptr.
+  void ComputeTubeMatrices(vtkMatrix4x4* worldToView, vtkActor* act, float modelView[16],
+    float viewModel[16], float& radiusScale);
 
   /**
    * The camera's view-to-display matrix (the projection, stored transposed
@@ -257,6 +272,7 @@ protected:
   double Radius = 0.01;
   char* RadiusArray = nullptr;
   double RadiusScale = 1.0;
+  char* CellIdArrayName = nullptr;
 
   vtkNew<vtkSplineTubeCore> Core;
   vtkNew<vtkPolyData> EmptyInput; ///< stands in for CurrentInput in superclass code

@@ -7,6 +7,10 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkTextureObject.h"
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
@@ -79,6 +83,20 @@ struct vtkStylizedLineMapper::vtkInternals
   std::vector<std::uint32_t> Joints;
   std::vector<double> LastView;
 
+  // Whole polylines as strips (the shadow map's draw), per data.
+  std::vector<int> WholeFirsts;
+  std::vector<int> WholeCounts;
+
+  // The shadow map.
+  vtkSmartPointer<vtkOpenGLFramebufferObject> ShadowFramebuffer;
+  vtkSmartPointer<vtkTextureObject> ShadowMap;
+  vtkSmartPointer<vtkTextureObject> ShadowDummy; // for the sampler while the map is drawn
+  int ShadowSize = 0;
+  std::vector<double> LastShadowKey;
+  double ShadowView[16];       // world to light view (row-major)
+  double ShadowProjection[16]; // light view to clip (row-major)
+  float ShadowBias = 0.0f;
+
   bool TextureData = false;  // the uploaded lines carry texture coordinates and frames
   bool ActorTexture = false; // the actor being rendered has a texture
   std::string ShaderKey;
@@ -138,7 +156,8 @@ vtkIdType vtkStylizedLineMapper::GetNumberOfFixUpBatches()
 size_t vtkStylizedLineMapper::GetGPUMemorySize()
 {
   vtkInternals& in = *this->Internals;
-  return in.Nodes.GetNumberOfBytes() + in.Tangents.GetNumberOfBytes() +
+  const size_t shadow = in.ShadowMap ? 4 * static_cast<size_t>(in.ShadowSize) * in.ShadowSize : 0;
+  return shadow + in.Nodes.GetNumberOfBytes() + in.Tangents.GetNumberOfBytes() +
     in.Colors.GetNumberOfBytes() + in.TexCoords.GetNumberOfBytes() + in.Frames.GetNumberOfBytes() +
     in.TubeStarts.GetNumberOfBytes() + in.Segments.GetNumberOfBytes() +
     in.JointsBuffer.GetNumberOfBytes() + this->TubesBuffer->GetNumberOfBytes() + in.MeshBytes;
@@ -158,6 +177,23 @@ void vtkStylizedLineMapper::ReleaseGraphicsResources(vtkWindow* window)
     in.Meshes->ReleaseGraphicsResources();
   }
   in.Meshes = nullptr;
+  if (in.ShadowMap)
+  {
+    in.ShadowMap->ReleaseGraphicsResources(window);
+  }
+  if (in.ShadowFramebuffer)
+  {
+    in.ShadowFramebuffer->ReleaseGraphicsResources(window);
+  }
+  if (in.ShadowDummy)
+  {
+    in.ShadowDummy->ReleaseGraphicsResources(window);
+  }
+  in.ShadowDummy = nullptr;
+  in.ShadowMap = nullptr;
+  in.ShadowFramebuffer = nullptr;
+  in.ShadowSize = 0;
+  in.LastShadowKey.clear();
   in.MeshBytes = 0;
   in.MeshSides = 0;
   in.LastView.clear();
@@ -246,6 +282,14 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
     segment += tubeNodes[t] - 1;
   }
   starts[numTubes] = static_cast<vtkTypeUInt32>(numNodes);
+  in.WholeFirsts.resize(static_cast<size_t>(numTubes));
+  in.WholeCounts.resize(static_cast<size_t>(numTubes));
+  for (vtkIdType t = 0; t < numTubes; ++t)
+  {
+    in.WholeFirsts[t] = static_cast<int>(2 * tubeFirst[t]);
+    in.WholeCounts[t] = static_cast<int>(2 * tubeNodes[t]);
+  }
+  in.LastShadowKey.clear();
   ok =
     in.TubeStarts.Upload(window, starts.data(), numTubes + 1, 1, VTK_TYPE_UINT32, GL_R32UI) && ok;
   ok = this->TubesBuffer->Upload(window, tubes.data(), numTubes, 2, VTK_TYPE_INT32, GL_RG32I) && ok;
@@ -417,11 +461,230 @@ void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
+bool vtkStylizedLineMapper::UpdateShadowMap(
+  vtkRenderer* ren, vtkActor* act, vtkOpenGLHelper& helper)
+{
+  vtkInternals& in = *this->Internals;
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkShaderProgram* program = helper.Program;
+
+  // The light's direction (world): the first switched-on light that is not
+  // a headlight, else a virtual one above and right of the camera.
+  vtkCamera* camera = ren->GetActiveCamera();
+  double dir[3] = { 0.0, 0.0, 0.0 };
+  bool found = false;
+  vtkCollectionSimpleIterator it;
+  vtkLightCollection* lights = ren->GetLights();
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+  {
+    if (light->GetSwitch() && !light->LightTypeIsHeadlight())
+    {
+      const double* position = light->GetTransformedPosition();
+      const double* focal = light->GetTransformedFocalPoint();
+      for (int c = 0; c < 3; ++c)
+      {
+        dir[c] = focal[c] - position[c];
+      }
+      found = vtkMath::Norm(dir) > 0.0;
+      if (found)
+      {
+        break;
+      }
+    }
+  }
+  if (!found)
+  {
+    double forward[3];
+    double up[3];
+    double right[3];
+    camera->GetDirectionOfProjection(forward);
+    camera->GetViewUp(up);
+    vtkMath::Cross(forward, up, right);
+    vtkMath::Normalize(right);
+    vtkMath::Cross(right, forward, up);
+    for (int c = 0; c < 3; ++c)
+    {
+      dir[c] = forward[c] - up[c] - 0.6 * right[c];
+    }
+  }
+  vtkMath::Normalize(dir);
+
+  // An orthographic light camera around the lines (world bounds).
+  double bounds[6];
+  act->GetBounds(bounds);
+  if (!vtkMath::AreBoundsInitialized(bounds))
+  {
+    return false;
+  }
+  double center[3];
+  double radius = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    center[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
+    radius += 0.25 * (bounds[2 * c + 1] - bounds[2 * c]) * (bounds[2 * c + 1] - bounds[2 * c]);
+  }
+  radius = std::max(std::sqrt(radius), 1e-12);
+  vtkNew<vtkCamera> light;
+  light->SetFocalPoint(center);
+  light->SetPosition(center[0] - 2.0 * radius * dir[0], center[1] - 2.0 * radius * dir[1],
+    center[2] - 2.0 * radius * dir[2]);
+  const vtkSplineTubeMath::vec3 up =
+    vtkSplineTubeMath::svAnyOrthogonal(vtkSplineTubeMath::vec3(dir[0], dir[1], dir[2]));
+  light->SetViewUp(up.x, up.y, up.z);
+  light->ParallelProjectionOn();
+  light->SetParallelScale(radius);
+  light->SetClippingRange(radius, 3.0 * radius);
+  vtkMatrix4x4* view = light->GetModelViewTransformMatrix();
+  vtkMatrix4x4* projection = light->GetProjectionTransformMatrix(1.0, -1.0, 1.0);
+  std::copy(&view->Element[0][0], &view->Element[0][0] + 16, in.ShadowView);
+  std::copy(&projection->Element[0][0], &projection->Element[0][0] + 16, in.ShadowProjection);
+  // Depth units per world unit: (far - near) = 2 radius maps to [0, 1].
+  const double texel = 2.0 * radius / this->ShadowMapResolution;
+  double actorScale = 1.0;
+  if (!act->GetIsIdentity())
+  {
+    double a[3][3];
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        a[r][c] = act->GetMatrix()->GetElement(r, c);
+      }
+    }
+    actorScale = std::cbrt(std::abs(vtkMath::Determinant3x3(a)));
+  }
+  in.ShadowBias = static_cast<float>(
+    (0.25 * this->Core->GetMaximumRadius() * actorScale + 2.0 * texel) / (2.0 * radius));
+
+  // Redraw the map only when what it shows changed.
+  std::vector<double> key(in.ShadowView, in.ShadowView + 16);
+  key.insert(key.end(),
+    { radius, static_cast<double>(this->ShadowMapResolution),
+      static_cast<double>(this->UploadTime.GetMTime()), static_cast<double>(act->GetMTime()) });
+  if (key == in.LastShadowKey && in.ShadowMap)
+  {
+    return true;
+  }
+
+  const int size = this->ShadowMapResolution;
+  if (!in.ShadowFramebuffer)
+  {
+    in.ShadowFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    in.ShadowFramebuffer->SetContext(window);
+  }
+  vtkOpenGLState* state = window->GetState();
+  in.ShadowFramebuffer->SaveCurrentBindingsAndBuffers();
+  in.ShadowFramebuffer->Bind();
+  if (!in.ShadowMap || in.ShadowSize != size)
+  {
+    if (in.ShadowMap)
+    {
+      in.ShadowMap->ReleaseGraphicsResources(window);
+    }
+    in.ShadowMap = vtkSmartPointer<vtkTextureObject>::New();
+    in.ShadowMap->SetContext(window);
+    in.ShadowMap->SetDepthTextureCompare(true);
+    in.ShadowMap->SetDepthTextureCompareFunction(vtkTextureObject::Lequal);
+    in.ShadowMap->SetMinificationFilter(vtkTextureObject::Linear);
+    in.ShadowMap->SetMagnificationFilter(vtkTextureObject::Linear);
+    in.ShadowMap->SetWrapS(vtkTextureObject::ClampToEdge);
+    in.ShadowMap->SetWrapT(vtkTextureObject::ClampToEdge);
+    if (!in.ShadowMap->AllocateDepth(size, size, vtkTextureObject::Float32))
+    {
+      vtkErrorMacro(<< "Could not allocate a " << size << "^2 shadow map; shadows are off.");
+      in.ShadowFramebuffer->RestorePreviousBindingsAndBuffers();
+      in.ShadowMap = nullptr;
+      in.ShadowSize = 0;
+      return false;
+    }
+    in.ShadowFramebuffer->AddDepthAttachment(in.ShadowMap);
+    in.ShadowSize = size;
+  }
+  in.ShadowFramebuffer->DeactivateDrawBuffers(); // depth only
+  in.ShadowFramebuffer->DeactivateReadBuffer();
+  const char* description = nullptr;
+  if (!vtkOpenGLFramebufferObject::GetFrameBufferStatus(
+        vtkOpenGLFramebufferObject::GetDrawMode(), description))
+  {
+    vtkErrorMacro(<< "The shadow map's framebuffer is incomplete (" << description
+                  << "); shadows are off.");
+    in.ShadowFramebuffer->RestorePreviousBindingsAndBuffers();
+    return false;
+  }
+  // The program's shadow sampler must not see the map being drawn: a
+  // 1 x 1 stand-in of the same kind meanwhile.
+  if (!in.ShadowDummy)
+  {
+    in.ShadowDummy = vtkSmartPointer<vtkTextureObject>::New();
+    in.ShadowDummy->SetContext(window);
+    in.ShadowDummy->SetDepthTextureCompare(true);
+    in.ShadowDummy->AllocateDepth(1, 1, vtkTextureObject::Float32);
+  }
+  in.ShadowDummy->Activate();
+  program->SetUniformi("lineShadowMap", in.ShadowDummy->GetTextureUnit());
+  {
+    vtkOpenGLState::ScopedglViewport viewport(state);
+    vtkOpenGLState::ScopedglScissor scissor(state);
+    vtkOpenGLState::ScopedglColorMask colorMask(state);
+    vtkOpenGLState::ScopedglDepthMask depthMask(state);
+    vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+    state->vtkglViewport(0, 0, size, size);
+    state->vtkglScissor(0, 0, size, size);
+    state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    state->vtkglDepthMask(GL_TRUE);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglClearDepth(1.0);
+    state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+
+    // The lines seen from the light: their quads extrude toward it.
+    float modelView[16];
+    float radiusScale = 1.0f;
+    this->ComputeTubeMatrices(view, act, modelView, nullptr, radiusScale);
+    float clip[16];
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        clip[4 * c + r] = static_cast<float>(in.ShadowProjection[4 * r + c]);
+      }
+    }
+    program->SetUniformMatrix4x4("tubeMCVC", modelView);
+    program->SetUniformf("tubeRadiusScale", radiusScale);
+    program->SetUniformMatrix4x4("VCDCMatrix", clip);
+    program->SetUniformi("cameraParallel", 1);
+    program->SetUniformi("lineShadowPass", 1);
+    program->SetUniformf("lineWiden", 1.0f);
+    program->SetUniformi("lineHaloPass", 0);
+    program->SetUniformi("lineMode", STRIPS);
+    glMultiDrawArrays(GL_TRIANGLE_STRIP, in.WholeFirsts.data(), in.WholeCounts.data(),
+      static_cast<GLsizei>(in.WholeFirsts.size()));
+    if (this->Capping)
+    {
+      in.Meshes->Bind();
+      program->SetUniformi("lineMode", CAPS);
+      glDrawElementsInstanced(GL_TRIANGLES, 3 * in.MeshSides, GL_UNSIGNED_SHORT,
+        reinterpret_cast<const void*>(6 * sizeof(unsigned short) * in.MeshSides),
+        static_cast<GLsizei>(2 * this->Core->GetNumberOfTubes()));
+      in.Meshes->Release();
+    }
+  }
+  in.ShadowFramebuffer->RestorePreviousBindingsAndBuffers();
+  in.ShadowDummy->Deactivate();
+  // Back to the camera.
+  this->SetCameraShaderParameters(helper, ren, act);
+  program->SetUniformf("lineWiden", static_cast<float>(1.0 + this->HaloWidth));
+  program->SetUniformi("lineShadowPass", 0);
+  in.LastShadowKey = key;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 std::string vtkStylizedLineMapper::ShaderKey(vtkRenderer*, vtkActor*)
 {
   std::ostringstream key;
   key << this->HaveColors << this->Internals->TextureData << this->Internals->ActorTexture
-      << (this->DepthCorrection || this->HaloWidth > 0.0);
+      << (this->DepthCorrection || this->HaloWidth > 0.0) << this->Shadows;
   return key.str();
 }
 
@@ -473,9 +736,14 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
   {
     defines += "#define LINE_ACTOR_TEXTURE\n";
   }
-  if (this->LastSelectionState >= vtkHardwareSelector::MIN_KNOWN_PASS)
+  const bool selecting = this->LastSelectionState >= vtkHardwareSelector::MIN_KNOWN_PASS;
+  if (selecting)
   {
     defines += "#define LINE_PICKING\n";
+  }
+  else if (this->Shadows)
+  {
+    defines += "#define LINE_SHADOWS\n";
   }
 
   vtkShaderProgram::Substitute(VSSource, "//VTK::System::Dec", "//VTK::System::Dec\n" + defines);
@@ -526,10 +794,7 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
   std::string style = "  lineStyle(ambientColor, diffuseColor, opacity);\n";
   if (this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity)
   {
-    style += "  if (lineHalo)\n"
-             "  {\n"
-             "    specularColor = vec3(0.0);\n"
-             "  }\n";
+    style += "  specularColor *= lineHalo ? 0.0 : lineLit;\n";
   }
   vtkShaderProgram::Substitute(FSSource, "//VTK::StylizedLine::Impl", style);
   if (writeDepth)
@@ -624,6 +889,53 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   // UpdateShaders() may have released the VAO after binding it (new
   // program); the draws have no attributes but core profiles need a VAO.
   helper.VAO->Bind();
+  const bool selecting = this->LastSelectionState >= vtkHardwareSelector::MIN_KNOWN_PASS;
+  bool shadows = false;
+  if (this->Shadows && !selecting)
+  {
+    vtkOpenGLState* shadowState =
+      static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+    vtkOpenGLState::ScopedglEnableDisable shadowCull(shadowState, GL_CULL_FACE);
+    shadowState->vtkglDisable(GL_CULL_FACE);
+    shadows = this->UpdateShadowMap(ren, act, helper);
+  }
+  if (shadows)
+  {
+    // View coordinates of this camera to shadow-map coordinates:
+    // [0, 1]^3 from the light's clip space, through world coordinates.
+    vtkInternals& sh = *this->Internals;
+    vtkNew<vtkMatrix4x4> toMap;
+    vtkNew<vtkMatrix4x4> light;
+    light->DeepCopy(sh.ShadowProjection);
+    vtkNew<vtkMatrix4x4> lightView;
+    lightView->DeepCopy(sh.ShadowView);
+    vtkMatrix4x4::Multiply4x4(light, lightView, light);
+    vtkNew<vtkMatrix4x4> viewToWorld;
+    viewToWorld->DeepCopy(ren->GetActiveCamera()->GetModelViewTransformMatrix());
+    viewToWorld->Invert();
+    vtkMatrix4x4::Multiply4x4(light, viewToWorld, light);
+    vtkNew<vtkMatrix4x4> bias;
+    for (int r = 0; r < 3; ++r)
+    {
+      bias->SetElement(r, r, 0.5);
+      bias->SetElement(r, 3, 0.5);
+    }
+    vtkMatrix4x4::Multiply4x4(bias, light, toMap);
+    float matrix[16];
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        matrix[4 * c + r] = static_cast<float>(toMap->GetElement(r, c));
+      }
+    }
+    program->SetUniformMatrix4x4("lineShadowMatrix", matrix);
+    program->SetUniformf("lineShadowBias", sh.ShadowBias);
+    program->SetUniformf("lineShadowTexel", 1.0f / static_cast<float>(sh.ShadowSize));
+    program->SetUniformi("lineShadowPass", 0);
+    sh.ShadowMap->Activate();
+    program->SetUniformi("lineShadowMap", sh.ShadowMap->GetTextureUnit());
+  }
   // Strips alternate their winding; the geometry is seen from both sides.
   vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
   vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
@@ -668,6 +980,10 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
     }
   }
   in.Meshes->Release();
+  if (shadows)
+  {
+    in.ShadowMap->Deactivate();
+  }
 
   this->DeactivateTubeBuffers();
   for (vtkSplineVizGPUBuffer* buffer : { &in.Nodes, &in.Tangents, &in.Colors, &in.TexCoords,

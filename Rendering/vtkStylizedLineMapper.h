@@ -71,10 +71,20 @@
  *   most the half of the profile disk facing the eye and its depth is not
  *   continuous (Stoll §4.4). Line ends are closed by flat caps (drawn for the
  *   polylines' ends turned to the eye). See vtkStylizedLineFixUp.
- * - **Shadows** (§4.2): the mapper renders into vtkShadowMapBakerPass /
- *   vtkShadowMapPass like polygonal geometry: seen from the light its quads
- *   extrude toward the light (Stoll's shadow map), the lit pass looks its
- *   fragments up at their corrected surface points.
+ * - **Shadows** (§4.2), two ways. With Shadows on, the mapper keeps a shadow
+ *   map of its own (Stoll's method: the lines rendered from the light, their
+ *   quads extruded toward the light, into a ShadowMapResolution^2 depth
+ *   texture, redrawn only when the light, the camera of a camera light or
+ *   the data change), so that lines shadow each other wherever the mapper
+ *   is used, ParaView included: the light is the renderer's first switched-on
+ *   light that is not a headlight (a light of ParaView's light kit), else a
+ *   virtual light above and right of the camera; it is treated as
+ *   directional (an orthographic shadow camera around the lines); in shadow
+ *   the diffuse and specular light is dimmed to 40 % (3x3 percentage-closer
+ *   filtering). Or, for shadows on other geometry too, the mapper renders
+ *   into VTK's vtkShadowMapBakerPass / vtkShadowMapPass like polygonal
+ *   geometry: seen from the light its quads extrude toward the light, the
+ *   lit pass looks its fragments up at their corrected surface points.
  *
  * Limits: the lines are straight between their points (resample coarse
  * polylines, e.g. with vtkSplineFilter); the depth of the quads is the
@@ -189,6 +199,24 @@ public:
    */
   vtkSetClampMacro(FixUpSides, int, 3, 256);
   vtkGetMacro(FixUpSides, int);
+  ///@}
+
+  ///@{
+  /**
+   * Lines shadow each other (the mapper's own shadow map, see the class
+   * documentation). Default off.
+   */
+  vtkSetMacro(Shadows, bool);
+  vtkGetMacro(Shadows, bool);
+  vtkBooleanMacro(Shadows, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Size of the shadow map (texels per side). Default 1024.
+   */
+  vtkSetClampMacro(ShadowMapResolution, int, 64, 8192);
+  vtkGetMacro(ShadowMapResolution, int);
   ///@}
 
   ///@{
@@ -329,6 +357,8 @@ protected:
   double FixUpEpsilon = 0.025;
   int FixUpSides = 64;
   bool Capping = true;
+  bool Shadows = false;
+  int ShadowMapResolution = 1024;
   int TexturePattern = NO_PATTERN;
   double TextureRepeat = 8.0;
   int TextureRepeatUnits = RADII;
@@ -348,6 +378,8 @@ private:
   /// Per view: the fix-up classification, the strip and cylinder draws.
   void UpdateDraws(vtkRenderer* ren, vtkActor* act);
   bool BuildMeshes();
+  /// The shadow map for this frame (when Shadows is on); false without one.
+  bool UpdateShadowMap(vtkRenderer* ren, vtkActor* act, vtkOpenGLHelper& helper);
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -58,6 +58,13 @@ public:
   void SetMaximumIterations(int n);
   ///@}
 
+  /**
+   * Selection ids: nothing to set (the glyph mapper is not the
+   * vtkCompositePolyDataMapper2 the superclass' version expects, which made
+   * every selection in a view with this representation crash).
+   */
+  void SetArrayIdNames(const char*, const char*) override {}
+
   /// The mapper (for tests and scripting).
   vtkSuperquadricGlyphMapper* GetGlyphMapper();
 

@@ -27,6 +27,14 @@ uniform int linePattern;         // 1 stripes, 2 arrows, 3 dashes (0 with an act
 uniform int lineNormalMapping;
 #endif
 
+#ifdef LINE_SHADOWS
+uniform sampler2DShadow lineShadowMap; // the lines' depth seen from the light
+uniform mat4 lineShadowMatrix;         // view coordinates to shadow-map coordinates
+uniform int lineShadowPass;            // 1 while the shadow map is drawn
+uniform float lineShadowBias;          // in shadow-map depth units
+uniform float lineShadowTexel;         // one texel in shadow-map coordinates
+#endif
+
 uniform mat4 VCDCMatrix;
 uniform int lineDepthCorrection;
 uniform vec3 lineHaloColor;
@@ -73,6 +81,7 @@ float linePatternInk(int pattern, float u, float v, float wu, float wv)
 bool lineHalo = false; // a halo fragment
 float lineInk = 0.0;   // coverage of the built-in pattern
 vec4 lineTexel = vec4(1.0); // the actor texture's sample
+float lineLit = 1.0;        // the light's share that reaches the point (shadows)
 
 // The per-fragment part of Stoll §4.2-4.3. vertexVC (in: the point of the
 // quad or geometry) becomes the surface point (the depth-corrected one for
@@ -169,6 +178,27 @@ void lineFragment(inout vec4 vertexVC, out vec3 normal)
 #endif
   }
 #endif
+#ifdef LINE_SHADOWS
+  // 3x3 percentage-closer filtering of the shadow map; points outside it are lit.
+  if (lineShadowPass == 0 && !lineHalo)
+  {
+    vec4 sc = lineShadowMatrix * vertexVC;
+    vec3 s = sc.xyz / sc.w;
+    if (s.x >= 0.0 && s.x <= 1.0 && s.y >= 0.0 && s.y <= 1.0 && s.z <= 1.0)
+    {
+      float lit = 0.0;
+      for (int i = -1; i <= 1; ++i)
+      {
+        for (int j = -1; j <= 1; ++j)
+        {
+          lit += texture(lineShadowMap,
+            vec3(s.xy + lineShadowTexel * vec2(float(i), float(j)), s.z - lineShadowBias));
+        }
+      }
+      lineLit = mix(0.4, 1.0, lit / 9.0);
+    }
+  }
+#endif
 #ifdef LINE_PICKING
   if (lineHalo)
   {
@@ -197,4 +227,5 @@ void lineStyle(inout vec3 ambient, inout vec3 diffuse, inout float opacity)
     opacity *= lineTexel.a;
   }
 #endif
+  diffuse *= lineLit;
 }

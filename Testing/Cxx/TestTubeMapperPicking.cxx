@@ -128,8 +128,8 @@ void CheckPicks(SplineVizTestStatus& status, vtkRenderWindow* window, vtkSplineT
       // (It is drawn there: the depth buffer of a normal render is covered.)
       window->Render();
       SV_CHECK_MSG(status,
-        window->GetZbufferDataAtPoint(static_cast<int>(position[0]),
-          static_cast<int>(position[1])) < 1.0f,
+        window->GetZbufferDataAtPoint(
+          static_cast<int>(position[0]), static_cast<int>(position[1])) < 1.0f,
         what << ": no halo where the pick was tested");
     }
   }
