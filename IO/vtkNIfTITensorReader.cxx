@@ -323,33 +323,30 @@ inline int InternalSlice(const Volume& v, int k)
   return v.InternalFlip ? v.Dims[2] - 1 - k : k;
 }
 
-// Reads the voxels of extent [x0, x1] x [y0, y1] x NIfTI slices [k0, k1].
-vtkSmartPointer<vtkImageData> ReadVoxels(const Volume& v, const int extent[6], std::string& error)
+// Reads all voxels of a volume. (Not a sub-extent: VTK 9.2's NIfTI reader
+// returns the mirrored slab for sub-extents of files it stores in reverse
+// slice order, qfac = -1; the whole file is decompressed anyway.)
+vtkSmartPointer<vtkImageData> ReadVoxels(const Volume& v, std::string& error)
 {
   vtkNew<vtkNIFTIImageReader> reader;
   MessageCatcher catcher;
   catcher.Watch(reader);
   reader->SetFileName(v.FileName.c_str());
   reader->SetTimeAsVector(v.TimeAsVector);
-  reader->UpdateInformation();
-  int internal[6] = { extent[0], extent[1], extent[2], extent[3], InternalSlice(v, extent[4]),
-    InternalSlice(v, extent[5]) };
-  if (internal[4] > internal[5])
-  {
-    std::swap(internal[4], internal[5]);
-  }
-  reader->UpdateExtent(internal);
+  reader->Update();
   vtkImageData* image = reader->GetOutput();
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
-  const vtkIdType expected = vtkIdType(internal[1] - internal[0] + 1) *
-    (internal[3] - internal[2] + 1) * (internal[5] - internal[4] + 1);
-  if (!catcher.Text.empty() || !scalars || scalars->GetNumberOfTuples() != expected)
+  const vtkIdType expected = vtkIdType(v.Dims[0]) * v.Dims[1] * v.Dims[2];
+  const int* e = image ? image->GetExtent() : nullptr;
+  if (!catcher.Text.empty() || !scalars || scalars->GetNumberOfTuples() != expected || e[0] != 0 ||
+    e[2] != 0 || e[4] != 0)
   {
     error = "cannot read the voxels of \"" + v.FileName + "\": " +
       (catcher.Text.empty() ? std::string("the file is truncated or damaged") : catcher.Text);
     return nullptr;
   }
-  return image;
+  vtkSmartPointer<vtkImageData> result = image;
+  return result;
 }
 }
 
@@ -440,8 +437,13 @@ int vtkNIfTITensorReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   this->LastError.clear();
-  auto fail = [this](const std::string& msg)
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  auto fail = [this, outInfo](const std::string& msg)
   {
+    if (vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT()))
+    {
+      output->Initialize(); // no stale data from an earlier read
+    }
     this->LastError = msg;
     vtkErrorMacro(<< msg);
     return 0;
@@ -584,7 +586,6 @@ int vtkNIfTITensorReader::RequestInformation(
     }
   }
 
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
   const int whole[6] = { 0, v.Dims[0] - 1, 0, v.Dims[1] - 1, 0, v.Dims[2] - 1 };
   outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole, 6);
   outInfo->Set(vtkDataObject::ORIGIN(), in.Origin, 3);
@@ -627,13 +628,8 @@ int vtkNIfTITensorReader::RequestData(
   }
   // Output slice k' is NIfTI slice k = nz - 1 - k' when flipped.
   auto niftiSlice = [&v](int kOut) { return v.Flip ? v.Dims[2] - 1 - kOut : kOut; };
-  int niftiExt[6] = { ext[0], ext[1], ext[2], ext[3], niftiSlice(ext[4]), niftiSlice(ext[5]) };
-  if (niftiExt[4] > niftiExt[5])
-  {
-    std::swap(niftiExt[4], niftiExt[5]);
-  }
   std::string error;
-  vtkSmartPointer<vtkImageData> raw = ReadVoxels(v, niftiExt, error);
+  vtkSmartPointer<vtkImageData> raw = ReadVoxels(v, error);
   if (!raw)
   {
     return fail(error);
@@ -748,12 +744,7 @@ int vtkNIfTITensorReader::RequestData(
         sameGrid = std::abs(cv.A[p][q] - v.A[p][q]) <= tolerance;
       }
     }
-    int whole[6] = { 0, cv.Dims[0] - 1, 0, cv.Dims[1] - 1, 0, cv.Dims[2] - 1 };
-    if (sameGrid)
-    {
-      std::copy(niftiExt, niftiExt + 6, whole);
-    }
-    vtkSmartPointer<vtkImageData> image = ReadVoxels(cv, whole, error);
+    vtkSmartPointer<vtkImageData> image = ReadVoxels(cv, error);
     if (!image)
     {
       return fail("companion volume: " + error);

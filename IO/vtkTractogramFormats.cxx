@@ -288,7 +288,7 @@ bool vtkTractogramFormats::ReadMRtrixHeader(
     {
       if (header.Fields.empty())
       {
-        error = "header line \"" + line + "\" is not \"key: value\"";
+        error = "header line \"" + line + "\" is neither \"key: value\" nor END";
         return false;
       }
       header.Fields.back().second += "\n" + line; // continuation of the last key
