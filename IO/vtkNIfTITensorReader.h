@@ -180,7 +180,7 @@ public:
   const char* GetLastErrorMessage() const { return this->LastError.c_str(); }
 
   /// The voxel to world affine used by the last read (row-major 4x4, NIfTI voxel indices).
-  const double* GetAffine() const { return this->Affine; }
+  vtkGetVectorMacro(Affine, double, 16);
 
 protected:
   vtkNIfTITensorReader();
