@@ -19,6 +19,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
+#include "vtkTypeInt32Array.h"
 
 #include <algorithm>
 #include <atomic>
@@ -27,6 +28,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <vector>
 
 vtkStandardNewMacro(vtkTractogramReader);
@@ -69,8 +71,9 @@ struct MRtrixStructure
   std::vector<vtkIdType> Count;     // its number of tuples
 };
 
-bool ScanMRtrix(const std::string& data, int valueSize, bool swap, int tupleSize,
-  MRtrixStructure& out, std::string& error, bool& trailing)
+template <typename Buffer>
+bool ScanMRtrix(const Buffer& data, int valueSize, bool swap, int tupleSize, MRtrixStructure& out,
+  std::string& error, bool& trailing)
 {
   const std::size_t tupleBytes = static_cast<std::size_t>(valueSize) * tupleSize;
   const std::uint64_t tuples = data.size() / tupleBytes;
@@ -95,6 +98,22 @@ bool ScanMRtrix(const std::string& data, int valueSize, bool swap, int tupleSize
         for (std::uint64_t t = t0; t < t1; ++t)
         {
           const char* p = data.data() + t * tupleBytes;
+          if (valueSize == 4)
+          {
+            // fast path: a float32 is NaN or infinite iff its exponent bits are all set
+            const std::uint32_t mask = swap ? 0x0000807fu : 0x7f800000u; // byte-reversed
+            bool special = false;
+            for (int k = 0; k < tupleSize; ++k)
+            {
+              std::uint32_t w;
+              std::memcpy(&w, p + 4 * k, 4);
+              special = special || (w & mask) == mask;
+            }
+            if (!special)
+            {
+              continue;
+            }
+          }
           int nan = 0, inf = 0;
           for (int k = 0; k < tupleSize; ++k)
           {
@@ -201,6 +220,21 @@ std::string StripExtension(const std::string& name, const char* ext)
 }
 
 //------------------------------------------------------------------------------
+// The bytes of a data section (not zero-initialized: they are read over).
+struct vtkTractogramReader::DataBuffer
+{
+  std::unique_ptr<char[]> Bytes;
+  std::size_t Size = 0;
+  const char* data() const { return this->Bytes.get(); }
+  char* data() { return this->Bytes.get(); }
+  std::size_t size() const { return this->Size; }
+  void clear()
+  {
+    this->Bytes.reset();
+    this->Size = 0;
+  }
+};
+
 struct vtkTractogramReader::Internals
 {
   std::vector<std::string> ScalarFileNames;
@@ -210,7 +244,7 @@ struct vtkTractogramReader::Internals
 struct vtkTractogramReader::Streamlines
 {
   int Format = TF::UNKNOWN;
-  std::string Data;
+  DataBuffer Data;
   std::vector<std::uint64_t> Start; // .tck: first triplet; .trk: byte offset of the count
   std::vector<vtkIdType> Count;     // points
   int ValueSize = 4;
@@ -224,7 +258,7 @@ struct vtkTractogramReader::Streamlines
   struct Scalars
   {
     std::string Name;
-    std::string Data;
+    DataBuffer Data;
     std::vector<std::uint64_t> Start;
     int ValueSize = 4;
     bool Swap = false;
@@ -316,35 +350,51 @@ int vtkTractogramReader::RequestInformation(
 
 //------------------------------------------------------------------------------
 bool vtkTractogramReader::ReadChunked(const std::string& fileName, unsigned long long offset,
-  unsigned long long size, std::string& buffer, double progressBegin, double progressEnd,
+  unsigned long long size, DataBuffer& buffer, double progressBegin, double progressEnd,
   std::string& error)
 {
-  std::ifstream in(fileName, std::ios::in | std::ios::binary);
-  if (!in)
-  {
-    error = "cannot open \"" + fileName + "\"";
-    return false;
-  }
+  buffer.clear();
   try
   {
-    buffer.resize(static_cast<std::size_t>(size));
+    buffer.Bytes.reset(new char[std::max<unsigned long long>(size, 1)]);
+    buffer.Size = static_cast<std::size_t>(size);
   }
   catch (const std::bad_alloc&)
   {
     error = "not enough memory for " + std::to_string(size) + " bytes of data";
     return false;
   }
-  in.seekg(static_cast<std::streamoff>(offset), std::ios::beg);
-  for (unsigned long long done = 0; done < size;)
+  // Chunks of 16 MiB, read by all threads in batches (each thread with its
+  // own stream), with a progress report after each batch.
+  const unsigned long long chunks = (size + ReadChunkBytes - 1) / ReadChunkBytes;
+  const unsigned long long batch =
+    2 * static_cast<unsigned long long>(std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()));
+  std::atomic<bool> failed(false);
+  for (unsigned long long b0 = 0; b0 < chunks; b0 += batch)
   {
-    const unsigned long long n = std::min(ReadChunkBytes, size - done);
-    if (!in.read(&buffer[static_cast<std::size_t>(done)], static_cast<std::streamsize>(n)))
+    const unsigned long long b1 = std::min(chunks, b0 + batch);
+    vtkSMPTools::For(static_cast<vtkIdType>(b0), static_cast<vtkIdType>(b1), 1,
+      [&](vtkIdType c0, vtkIdType c1)
+      {
+        std::ifstream in(fileName, std::ios::in | std::ios::binary);
+        for (vtkIdType c = c0; c < c1 && in; ++c)
+        {
+          const unsigned long long at = static_cast<unsigned long long>(c) * ReadChunkBytes;
+          const unsigned long long n = std::min(ReadChunkBytes, size - at);
+          in.seekg(static_cast<std::streamoff>(offset + at), std::ios::beg);
+          in.read(buffer.data() + at, static_cast<std::streamsize>(n));
+        }
+        if (!in)
+        {
+          failed = true;
+        }
+      });
+    if (failed)
     {
       error = "cannot read the data of \"" + fileName + "\"";
       return false;
     }
-    done += n;
-    this->UpdateProgress(progressBegin + (progressEnd - progressBegin) * done / double(size));
+    this->UpdateProgress(progressBegin + (progressEnd - progressBegin) * b1 / double(chunks));
     if (this->GetAbortExecute())
     {
       error = "aborted";
@@ -708,6 +758,20 @@ int vtkTractogramReader::RequestData(
     }
   }
 
+  // Raw pointers of the arrays (no virtual calls in the loops below).
+  std::vector<float*> pointTargets, cellTargets;
+  std::vector<int> pointComponents, cellComponents;
+  for (auto& a : pointArrays)
+  {
+    pointTargets.push_back(a->GetPointer(0));
+    pointComponents.push_back(a->GetNumberOfComponents());
+  }
+  for (auto& a : cellArrays)
+  {
+    cellTargets.push_back(a->GetPointer(0));
+    cellComponents.push_back(a->GetNumberOfComponents());
+  }
+
   // Convert and copy, in parallel batches of about BatchPoints points.
   std::atomic<vtkIdType> badLine(-1);
   float* pf =
@@ -749,7 +813,7 @@ int vtkTractogramReader::RequestData(
         {
           const auto& sc = lines.PointScalars[k];
           const char* q = sc.Data.data() + sc.Start[s] * sc.ValueSize;
-          float* dst = pointArrays[k]->GetPointer(0) + o;
+          float* dst = pointTargets[k] + o;
           for (vtkIdType j = 0; j < m; ++j)
           {
             dst[j] = static_cast<float>(Value(q + j * sc.ValueSize, sc.ValueSize, sc.Swap));
@@ -761,13 +825,15 @@ int vtkTractogramReader::RequestData(
         const int perPoint = 3 + lines.ScalarsPerPoint;
         const char* p = data + lines.Start[s] + 4;
         const double(*a)[4] = lines.ToRAS;
+        float record[3 + 32767 + 32767];
         for (vtkIdType j = 0; j < m; ++j, p += 4 * perPoint)
         {
-          double x[3];
-          for (int c = 0; c < 3; ++c)
+          std::memcpy(record, p, 4 * static_cast<std::size_t>(perPoint));
+          if (lines.Swap)
           {
-            x[c] = Value(p + 4 * c, 4, lines.Swap);
+            TF::SwapBytes(record, 4, static_cast<std::size_t>(perPoint));
           }
+          const double x[3] = { record[0], record[1], record[2] };
           if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
           {
             vtkIdType expected = -1;
@@ -779,23 +845,25 @@ int vtkTractogramReader::RequestData(
           {
             dst[r] = static_cast<float>(a[r][0] * x[0] + a[r][1] * x[1] + a[r][2] * x[2] + a[r][3]);
           }
-          for (std::size_t k = 0; k < pointArrays.size(); ++k)
+          for (std::size_t k = 0; k < pointTargets.size(); ++k)
           {
-            const int nc = pointArrays[k]->GetNumberOfComponents();
-            float* v = pointArrays[k]->GetPointer(0) + nc * (o + j);
-            for (int c = 0; c < nc; ++c)
-            {
-              v[c] = static_cast<float>(Value(p + 4 * (3 + pointArrayFirst[k] + c), 4, lines.Swap));
-            }
+            const int nc = pointComponents[k];
+            std::memcpy(pointTargets[k] + nc * (o + j), record + 3 + pointArrayFirst[k],
+              4 * static_cast<std::size_t>(nc));
           }
         }
-        for (std::size_t k = 0; k < cellArrays.size(); ++k)
+        if (!cellTargets.empty())
         {
-          const int nc = cellArrays[k]->GetNumberOfComponents();
-          float* v = cellArrays[k]->GetPointer(0) + nc * i;
-          for (int c = 0; c < nc; ++c)
+          std::memcpy(record, p, 4 * static_cast<std::size_t>(lines.PropertiesPerLine));
+          if (lines.Swap)
           {
-            v[c] = static_cast<float>(Value(p + 4 * (cellArrayFirst[k] + c), 4, lines.Swap));
+            TF::SwapBytes(record, 4, static_cast<std::size_t>(lines.PropertiesPerLine));
+          }
+          for (std::size_t k = 0; k < cellTargets.size(); ++k)
+          {
+            const int nc = cellComponents[k];
+            std::memcpy(cellTargets[k] + nc * i, record + cellArrayFirst[k],
+              4 * static_cast<std::size_t>(nc));
           }
         }
       }
@@ -827,21 +895,50 @@ int vtkTractogramReader::RequestData(
     return fail(where + "streamline " + std::to_string(badLine.load()) +
       " has NaN or infinite coordinates (a damaged file)");
   }
-  std::string().swap(lines.Data);
+  lines.Data.clear();
 
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(nPoints);
-  vtkIdType* conn = connectivity->GetPointer(0);
-  vtkSMPTools::For(0, nPoints,
-    [conn](vtkIdType b, vtkIdType e)
-    {
-      for (vtkIdType k = b; k < e; ++k)
-      {
-        conn[k] = k;
-      }
-    });
+  // Polylines over consecutive points; 32-bit storage when it fits (half the memory).
   vtkNew<vtkCellArray> cells;
-  cells->SetData(offsets, connectivity);
+  if (nPoints < std::numeric_limits<std::int32_t>::max())
+  {
+    vtkNew<vtkTypeInt32Array> offsets32, connectivity;
+    offsets32->SetNumberOfValues(nLines + 1);
+    connectivity->SetNumberOfValues(nPoints);
+    std::int32_t* o32 = offsets32->GetPointer(0);
+    std::int32_t* conn = connectivity->GetPointer(0);
+    vtkSMPTools::For(0, nLines + 1,
+      [o32, off](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          o32[k] = static_cast<std::int32_t>(off[k]);
+        }
+      });
+    vtkSMPTools::For(0, nPoints,
+      [conn](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          conn[k] = static_cast<std::int32_t>(k);
+        }
+      });
+    cells->SetData(offsets32, connectivity);
+  }
+  else
+  {
+    vtkNew<vtkIdTypeArray> connectivity;
+    connectivity->SetNumberOfValues(nPoints);
+    vtkIdType* conn = connectivity->GetPointer(0);
+    vtkSMPTools::For(0, nPoints,
+      [conn](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          conn[k] = k;
+        }
+      });
+    cells->SetData(offsets, connectivity);
+  }
   output->SetPoints(points);
   output->SetLines(cells);
   for (auto& a : pointArrays)

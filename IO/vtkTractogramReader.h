@@ -128,10 +128,11 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   struct Streamlines;
+  struct DataBuffer;
   bool ReadTCK(Streamlines& lines, std::string& error);
   bool ReadTRK(Streamlines& lines, std::string& error);
   bool ReadChunked(const std::string& fileName, unsigned long long offset, unsigned long long size,
-    std::string& buffer, double progressBegin, double progressEnd, std::string& error);
+    DataBuffer& buffer, double progressBegin, double progressEnd, std::string& error);
 
   char* FileName = nullptr;
   int FileFormat = AUTOMATIC;
