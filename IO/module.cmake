@@ -14,3 +14,5 @@ list(APPEND splineviz_classes
 # formats, byte order, the TrackVis voxel-mm to RAS+ mm map.
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkTractogramFormats")
+list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizNameList.h")

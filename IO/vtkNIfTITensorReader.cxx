@@ -1,5 +1,6 @@
 #include "vtkNIfTITensorReader.h"
 
+#include "vtkSplineVizNameList.h"
 #include "vtkSplineVizTensorMath.h"
 
 #include "vtkCallbackCommand.h"
@@ -11,6 +12,7 @@
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkMatrix4x4.h"
 #include "vtkIntArray.h"
 #include "vtkNIFTIImageHeader.h"
 #include "vtkNIFTIImageReader.h"
@@ -100,29 +102,14 @@ struct Volume
   double InvA[4][4];
 };
 
+// Inverts an affine (4x4, row-major); false when it is singular.
 bool Invert(const double m[4][4], double inv[4][4])
 {
-  const double a = m[0][0], b = m[0][1], c = m[0][2];
-  const double d = m[1][0], e = m[1][1], f = m[1][2];
-  const double g = m[2][0], h = m[2][1], k = m[2][2];
-  const double det = a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
-  if (!(std::abs(det) > 0.0) || !std::isfinite(det))
+  if (!(std::abs(vtkMatrix4x4::Determinant(&m[0][0])) > 0.0))
   {
     return false;
   }
-  const double r[3][3] = { { (e * k - f * h) / det, (c * h - b * k) / det, (b * f - c * e) / det },
-    { (f * g - d * k) / det, (a * k - c * g) / det, (c * d - a * f) / det },
-    { (d * h - e * g) / det, (b * g - a * h) / det, (a * e - b * d) / det } };
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      inv[i][j] = r[i][j];
-    }
-    inv[i][3] = -(r[i][0] * m[0][3] + r[i][1] * m[1][3] + r[i][2] * m[2][3]);
-  }
-  inv[3][0] = inv[3][1] = inv[3][2] = 0.0;
-  inv[3][3] = 1.0;
+  vtkMatrix4x4::Invert(&m[0][0], &inv[0][0]);
   return true;
 }
 
@@ -353,7 +340,7 @@ vtkSmartPointer<vtkImageData> ReadVoxels(const Volume& v, std::string& error)
 //------------------------------------------------------------------------------
 struct vtkNIfTITensorReader::Internals
 {
-  std::vector<std::string> Companions;
+  vtkSplineVizNameList Companions;
   Volume Tensors;
   int Layout = -1;
   double R[3][3]; // tensor frame -> world
@@ -376,32 +363,28 @@ vtkNIfTITensorReader::~vtkNIfTITensorReader()
 
 void vtkNIfTITensorReader::AddCompanionFileName(const char* fileName)
 {
-  if (fileName && *fileName)
+  if (this->Internal->Companions.Add(fileName))
   {
-    this->Internal->Companions.emplace_back(fileName);
     this->Modified();
   }
 }
 
 void vtkNIfTITensorReader::RemoveAllCompanionFileNames()
 {
-  if (!this->Internal->Companions.empty())
+  if (this->Internal->Companions.Clear())
   {
-    this->Internal->Companions.clear();
     this->Modified();
   }
 }
 
 int vtkNIfTITensorReader::GetNumberOfCompanionFileNames() const
 {
-  return static_cast<int>(this->Internal->Companions.size());
+  return this->Internal->Companions.Size();
 }
 
 const char* vtkNIfTITensorReader::GetCompanionFileName(int i) const
 {
-  return (i >= 0 && i < this->GetNumberOfCompanionFileNames())
-    ? this->Internal->Companions[static_cast<std::size_t>(i)].c_str()
-    : nullptr;
+  return this->Internal->Companions.Get(i);
 }
 
 std::string vtkNIfTITensorReader::CompanionArrayName(const std::string& fileName)
@@ -727,11 +710,11 @@ int vtkNIfTITensorReader::RequestData(
   this->UpdateProgress(0.7);
 
   // Companion volumes, on this grid or resampled onto it.
-  const std::size_t nCompanions = in.Companions.size();
+  const std::size_t nCompanions = in.Companions.Names.size();
   for (std::size_t f = 0; f < nCompanions; ++f)
   {
     Volume cv;
-    if (!ReadVolume(in.Companions[f], this->AffineSource, false, cv, error))
+    if (!ReadVolume(in.Companions.Names[f], this->AffineSource, false, cv, error))
     {
       return fail("companion volume: " + error);
     }
@@ -760,7 +743,7 @@ int vtkNIfTITensorReader::RequestData(
     {
       array = vtkSmartPointer<vtkFloatArray>::New();
     }
-    array->SetName(CompanionArrayName(in.Companions[f]).c_str());
+    array->SetName(CompanionArrayName(in.Companions.Names[f]).c_str());
     array->SetNumberOfComponents(ncc);
     array->SetNumberOfTuples(n);
     const int* iext = image->GetExtent();
@@ -910,9 +893,5 @@ void vtkNIfTITensorReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TensorArrayName: " << (this->TensorArrayName ? this->TensorArrayName : "(none)")
      << "\n";
   os << indent << "CompanionFileNames:";
-  for (const auto& c : this->Internal->Companions)
-  {
-    os << " " << c;
-  }
-  os << "\n";
+  this->Internal->Companions.Print(os);
 }

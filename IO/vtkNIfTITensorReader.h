@@ -75,9 +75,9 @@
  * (CAN_PRODUCE_SUB_EXTENT), so ParaView's parallel pipeline splits the
  * volume; each piece reads the whole file and keeps its part (VTK 9.2's
  * vtkNIFTIImageReader returns the mirrored slab for sub-extents of files it
- * stores in reverse slice order, and a .nii.gz is decompressed whole anyway). Bad input (no file, not NIfTI, a truncated file, a volume without
- * 6 or 9 components, more than 2^31 voxels, a missing qform/sform asked
- * for, a singular affine, unreadable companions) is an error (vtkErrorMacro,
+ * stores in reverse slice order, and a .nii.gz is decompressed whole anyway). Bad input (no file,
+ * not NIfTI, a truncated file, a volume without 6 or 9 components, more than 2^31 voxels, a missing
+ * qform/sform asked for, a singular affine, unreadable companions) is an error (vtkErrorMacro,
  * RequestInformation/RequestData return 0) with an empty output.
  */
 

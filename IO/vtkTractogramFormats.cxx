@@ -1,5 +1,7 @@
 #include "vtkTractogramFormats.h"
 
+#include "vtkMatrix4x4.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -605,29 +607,14 @@ std::string vtkTractogramFormats::AxisCodes(const double m[4][4])
   return codes;
 }
 
-bool vtkTractogramFormats::InvertAffine(const double m[4][4], double inv[4][4])
+bool vtkTractogramFormats::InvertAffine(const double m[4][4], double inverse[4][4])
 {
-  const double a = m[0][0], b = m[0][1], c = m[0][2];
-  const double d = m[1][0], e = m[1][1], f = m[1][2];
-  const double g = m[2][0], h = m[2][1], k = m[2][2];
-  const double det = a * (e * k - f * h) - b * (d * k - f * g) + c * (d * h - e * g);
+  const double det = vtkMatrix4x4::Determinant(&m[0][0]);
   if (!(std::abs(det) > 0.0) || !std::isfinite(det))
   {
     return false;
   }
-  double r[3][3] = { { (e * k - f * h) / det, (c * h - b * k) / det, (b * f - c * e) / det },
-    { (f * g - d * k) / det, (a * k - c * g) / det, (c * d - a * f) / det },
-    { (d * h - e * g) / det, (b * g - a * h) / det, (a * e - b * d) / det } };
-  for (int i = 0; i < 3; ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      inv[i][j] = r[i][j];
-    }
-    inv[i][3] = -(r[i][0] * m[0][3] + r[i][1] * m[1][3] + r[i][2] * m[2][3]);
-  }
-  inv[3][0] = inv[3][1] = inv[3][2] = 0.0;
-  inv[3][3] = 1.0;
+  vtkMatrix4x4::Invert(&m[0][0], &inverse[0][0]);
   return true;
 }
 

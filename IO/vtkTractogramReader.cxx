@@ -1,5 +1,6 @@
 #include "vtkTractogramReader.h"
 
+#include "vtkSplineVizNameList.h"
 #include "vtkTractogramFormats.h"
 
 #include "vtkCellArray.h"
@@ -237,7 +238,7 @@ struct vtkTractogramReader::DataBuffer
 
 struct vtkTractogramReader::Internals
 {
-  std::vector<std::string> ScalarFileNames;
+  vtkSplineVizNameList ScalarFileNames;
 };
 
 // What a parser found: the raw data and where each streamline is in it.
@@ -281,32 +282,28 @@ vtkTractogramReader::~vtkTractogramReader()
 
 void vtkTractogramReader::AddScalarFileName(const char* fileName)
 {
-  if (fileName && *fileName)
+  if (this->Internal->ScalarFileNames.Add(fileName))
   {
-    this->Internal->ScalarFileNames.emplace_back(fileName);
     this->Modified();
   }
 }
 
 void vtkTractogramReader::RemoveAllScalarFileNames()
 {
-  if (!this->Internal->ScalarFileNames.empty())
+  if (this->Internal->ScalarFileNames.Clear())
   {
-    this->Internal->ScalarFileNames.clear();
     this->Modified();
   }
 }
 
 int vtkTractogramReader::GetNumberOfScalarFileNames() const
 {
-  return static_cast<int>(this->Internal->ScalarFileNames.size());
+  return this->Internal->ScalarFileNames.Size();
 }
 
 const char* vtkTractogramReader::GetScalarFileName(int i) const
 {
-  return (i >= 0 && i < this->GetNumberOfScalarFileNames())
-    ? this->Internal->ScalarFileNames[static_cast<std::size_t>(i)].c_str()
-    : nullptr;
+  return this->Internal->ScalarFileNames.Get(i);
 }
 
 std::string vtkTractogramReader::ScalarArrayName(
@@ -423,7 +420,7 @@ bool vtkTractogramReader::ReadTCK(Streamlines& lines, std::string& error)
     return false;
   }
   const unsigned long long size = FileSize(this->FileName);
-  const double readShare = this->Internal->ScalarFileNames.empty() ? 0.4 : 0.25;
+  const double readShare = this->Internal->ScalarFileNames.Size() == 0 ? 0.4 : 0.25;
   if (!this->ReadChunked(this->FileName, header.DataOffset, size - header.DataOffset, lines.Data,
         0.0, readShare, error))
   {
@@ -458,10 +455,10 @@ bool vtkTractogramReader::ReadTCK(Streamlines& lines, std::string& error)
   lines.Field->AddArray(fields);
 
   // Companion .tsf files: the same streamline structure, one value per point.
-  const std::size_t nScalarFiles = this->Internal->ScalarFileNames.size();
+  const std::size_t nScalarFiles = this->Internal->ScalarFileNames.Names.size();
   for (std::size_t f = 0; f < nScalarFiles; ++f)
   {
-    const std::string& name = this->Internal->ScalarFileNames[f];
+    const std::string& name = this->Internal->ScalarFileNames.Names[f];
     TF::MRtrixHeader th;
     std::string e;
     if (!TF::ReadMRtrixHeader(name, "mrtrix track scalars", th, e))
@@ -722,30 +719,26 @@ int vtkTractogramReader::RequestData(
   points->SetNumberOfPoints(nPoints);
   std::vector<vtkSmartPointer<vtkFloatArray>> pointArrays, cellArrays;
   std::vector<int> pointArrayFirst, cellArrayFirst; // first value of each array in a record
-  if (lines.Format == TF::TRK)
+  // one float array per named .trk scalar / property, with its first value in a record
+  auto makeArrays = [](const std::vector<std::pair<std::string, int>>& names, vtkIdType tuples,
+                      std::vector<vtkSmartPointer<vtkFloatArray>>& arrays, std::vector<int>& firsts)
   {
     int first = 0;
-    for (const auto& s : lines.Trk.Scalars)
+    for (const auto& n : names)
     {
       auto a = vtkSmartPointer<vtkFloatArray>::New();
-      a->SetName(s.first.c_str());
-      a->SetNumberOfComponents(s.second);
-      a->SetNumberOfTuples(nPoints);
-      pointArrays.push_back(a);
-      pointArrayFirst.push_back(first);
-      first += s.second;
+      a->SetName(n.first.c_str());
+      a->SetNumberOfComponents(n.second);
+      a->SetNumberOfTuples(tuples);
+      arrays.push_back(a);
+      firsts.push_back(first);
+      first += n.second;
     }
-    first = 0;
-    for (const auto& p : lines.Trk.Properties)
-    {
-      auto a = vtkSmartPointer<vtkFloatArray>::New();
-      a->SetName(p.first.c_str());
-      a->SetNumberOfComponents(p.second);
-      a->SetNumberOfTuples(nLines);
-      cellArrays.push_back(a);
-      cellArrayFirst.push_back(first);
-      first += p.second;
-    }
+  };
+  if (lines.Format == TF::TRK)
+  {
+    makeArrays(lines.Trk.Scalars, nPoints, pointArrays, pointArrayFirst);
+    makeArrays(lines.Trk.Properties, nLines, cellArrays, cellArrayFirst);
   }
   else
   {
@@ -966,10 +959,6 @@ void vtkTractogramReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileFormat: " << this->FileFormat << "\n";
   os << indent << "KeepEmptyStreamlines: " << this->KeepEmptyStreamlines << "\n";
   os << indent << "ScalarFileNames:";
-  for (const auto& n : this->Internal->ScalarFileNames)
-  {
-    os << " " << n;
-  }
-  os << "\n";
+  this->Internal->ScalarFileNames.Print(os);
   os << indent << "NumberOfStreamlinesInFile: " << this->NumberOfStreamlinesInFile << "\n";
 }

@@ -1,5 +1,6 @@
 #include "vtkTractogramWriter.h"
 
+#include "vtkSplineVizNameList.h"
 #include "vtkTractogramFormats.h"
 
 #include "vtkCellArray.h"
@@ -38,8 +39,8 @@ using TF = vtkTractogramFormats;
 
 struct vtkTractogramWriter::Internals
 {
-  std::vector<std::string> PointArrays;
-  std::vector<std::string> CellArrays;
+  vtkSplineVizNameList PointArrays;
+  vtkSplineVizNameList CellArrays;
 };
 
 // The input's lines, flattened: line l has the points Ids[Offsets[l] ..
@@ -149,55 +150,47 @@ int vtkTractogramWriter::FillInputPortInformation(int, vtkInformation* info)
 
 void vtkTractogramWriter::AddPointArrayName(const char* name)
 {
-  if (name && *name)
+  if (this->Internal->PointArrays.Add(name))
   {
-    this->Internal->PointArrays.emplace_back(name);
     this->Modified();
   }
 }
 void vtkTractogramWriter::RemoveAllPointArrayNames()
 {
-  if (!this->Internal->PointArrays.empty())
+  if (this->Internal->PointArrays.Clear())
   {
-    this->Internal->PointArrays.clear();
     this->Modified();
   }
 }
 int vtkTractogramWriter::GetNumberOfPointArrayNames() const
 {
-  return static_cast<int>(this->Internal->PointArrays.size());
+  return this->Internal->PointArrays.Size();
 }
 const char* vtkTractogramWriter::GetPointArrayName(int i) const
 {
-  return (i >= 0 && i < this->GetNumberOfPointArrayNames())
-    ? this->Internal->PointArrays[static_cast<std::size_t>(i)].c_str()
-    : nullptr;
+  return this->Internal->PointArrays.Get(i);
 }
 void vtkTractogramWriter::AddCellArrayName(const char* name)
 {
-  if (name && *name)
+  if (this->Internal->CellArrays.Add(name))
   {
-    this->Internal->CellArrays.emplace_back(name);
     this->Modified();
   }
 }
 void vtkTractogramWriter::RemoveAllCellArrayNames()
 {
-  if (!this->Internal->CellArrays.empty())
+  if (this->Internal->CellArrays.Clear())
   {
-    this->Internal->CellArrays.clear();
     this->Modified();
   }
 }
 int vtkTractogramWriter::GetNumberOfCellArrayNames() const
 {
-  return static_cast<int>(this->Internal->CellArrays.size());
+  return this->Internal->CellArrays.Size();
 }
 const char* vtkTractogramWriter::GetCellArrayName(int i) const
 {
-  return (i >= 0 && i < this->GetNumberOfCellArrayNames())
-    ? this->Internal->CellArrays[static_cast<std::size_t>(i)].c_str()
-    : nullptr;
+  return this->Internal->CellArrays.Get(i);
 }
 
 std::string vtkTractogramWriter::ScalarFileName(
@@ -349,13 +342,13 @@ void vtkTractogramWriter::WriteData()
     }
     return true;
   };
-  if (!gather(this->Internal->PointArrays, true, lines.PointArrays, lines.PointComponents) ||
+  if (!gather(this->Internal->PointArrays.Names, true, lines.PointArrays, lines.PointComponents) ||
     (format == TF::TRK &&
-      !gather(this->Internal->CellArrays, false, lines.CellArrays, lines.CellComponents)))
+      !gather(this->Internal->CellArrays.Names, false, lines.CellArrays, lines.CellComponents)))
   {
     return;
   }
-  if (format == TF::TCK && !this->Internal->CellArrays.empty())
+  if (format == TF::TCK && this->Internal->CellArrays.Size() > 0)
   {
     vtkWarningMacro(<< "a .tck file has no per-streamline properties: cell arrays not written");
   }
@@ -491,7 +484,7 @@ bool vtkTractogramWriter::WriteTCK(const Lines& lines, std::string& error)
   // One .tsf per named point array, with the tractogram's timestamp.
   for (std::size_t k = 0; k < lines.PointArrays.size(); ++k)
   {
-    const std::string name = this->Internal->PointArrays[k];
+    const std::string name = this->Internal->PointArrays.Names[k];
     if (lines.PointComponents[k] != 1)
     {
       error = "the point array \"" + name + "\" has " + std::to_string(lines.PointComponents[k]) +
@@ -601,12 +594,12 @@ bool vtkTractogramWriter::WriteTRK(const Lines& lines, std::string& error)
   int ns = 0, np = 0;
   for (std::size_t k = 0; k < lines.PointArrays.size(); ++k)
   {
-    h.Scalars.emplace_back(this->Internal->PointArrays[k], lines.PointComponents[k]);
+    h.Scalars.emplace_back(this->Internal->PointArrays.Names[k], lines.PointComponents[k]);
     ns += lines.PointComponents[k];
   }
   for (std::size_t k = 0; k < lines.CellArrays.size(); ++k)
   {
-    h.Properties.emplace_back(this->Internal->CellArrays[k], lines.CellComponents[k]);
+    h.Properties.emplace_back(this->Internal->CellArrays.Names[k], lines.CellComponents[k]);
     np += lines.CellComponents[k];
   }
   unsigned char bytes[TF::TRK_HEADER_SIZE];
@@ -694,16 +687,10 @@ void vtkTractogramWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "FileFormat: " << this->FileFormat << "\n";
   os << indent << "PointArrayNames:";
-  for (const auto& n : this->Internal->PointArrays)
-  {
-    os << " " << n;
-  }
-  os << "\n" << indent << "CellArrayNames:";
-  for (const auto& n : this->Internal->CellArrays)
-  {
-    os << " " << n;
-  }
-  os << "\n" << indent << "VoxelToRAS:";
+  this->Internal->PointArrays.Print(os);
+  os << indent << "CellArrayNames:";
+  this->Internal->CellArrays.Print(os);
+  os << indent << "VoxelToRAS:";
   for (double v : this->VoxelToRAS)
   {
     os << " " << v;

@@ -431,8 +431,7 @@ int TestNIfTITensorReader(int, char*[])
     same.Write(fa);
     // another grid: axis-aligned, 1.5 mm, covering the tensor volume's bounds
     double lo[3], hi[3];
-    img5->GetBounds(); // (bounds of the points, direction matrix included)
-    const double* b = img5->GetBounds();
+    const double* b = img5->GetBounds(); // of the points, direction matrix included
     NIfTIFile other;
     for (int r = 0; r < 3; ++r)
     {

@@ -33,7 +33,7 @@ from paraview.simple import *  # noqa: F401,F403
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
-from splineviz_testing import coverage, output_dir
+from splineviz_testing import coverage, output_dir, white_view
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 out = output_dir()
@@ -89,11 +89,7 @@ print("Tensor Analysis FA vs DIPY's: %.2g" % np.abs(fa - fa_companion).max())
 check(np.abs(fa - fa_companion).max() < 1e-5, "Tensor Analysis on the reader: DIPY's FA")
 
 # Superquadric Glyphs of the volume and of a slice
-view = CreateRenderView()  # noqa: F405
-view.ViewSize = [500, 420]
-view.UseColorPaletteForBackground = 0
-view.Background = [1, 1, 1]
-view.OrientationAxesVisibility = 0
+view = white_view((500, 420))
 glyphs = Show(dti, view)  # noqa: F405
 glyphs.SetRepresentationType("Superquadric Glyphs")
 glyphs.SuperquadricTensors = "Tensors"
