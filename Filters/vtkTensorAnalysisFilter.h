@@ -28,8 +28,8 @@
  * arrays are read as full 3x3 matrices (symmetrized) and 7-component arrays
  * as Teem/NRRD (confidence first); for 6-component arrays TensorLayout picks
  * the order: SYMMETRIC_VTK (XX YY ZZ XY YZ XZ, VTK and ParaView, the
- * default), SYMMETRIC_LOWER (XX XY YY XZ YZ ZZ, DIPY and FSL) or
- * SYMMETRIC_UPPER (XX XY XZ YY YZ ZZ, MFEM).
+ * default), SYMMETRIC_LOWER (XX XY YY XZ YZ ZZ, NIfTI and DIPY) or
+ * SYMMETRIC_UPPER (XX XY XZ YY YZ ZZ, FSL dtifit and MFEM).
  *
  * Output arrays are double when the tensors are double, float otherwise.
  * Tuples with a NaN or infinite component give NaN in every output (one

@@ -20,8 +20,8 @@
  * array is selected with SetInputArrayToProcess(0, ...) (default: the active
  * point tensors); its components are read by vtkSplineVizTensorMath: 9
  * components as a 3x3 matrix (symmetrized), 7 as Teem/NRRD (the confidence
- * is ignored), 6 in the TensorLayout order (VTK's XX YY ZZ XY YZ XZ, DIPY's
- * and FSL's lower triangle, MFEM's upper triangle). An optional point array
+ * is ignored), 6 in the TensorLayout order (VTK's XX YY ZZ XY YZ XZ, the
+ * lower triangle of NIfTI and DIPY, the upper triangle of FSL and MFEM). An optional point array
  * MaskArrayName restricts the tracking to where its interpolated value is at
  * least 0.5 (a 0/1 mask ends halfway between voxels).
  *
@@ -166,7 +166,7 @@ public:
   /**
    * Order of the components of 6-component tensor arrays
    * (vtkSplineVizTensorMath::TensorLayout: SYMMETRIC_VTK = 1, the default,
-   * SYMMETRIC_LOWER = 2 for DIPY and FSL, SYMMETRIC_UPPER = 3). 9- and
+   * SYMMETRIC_LOWER = 2 for NIfTI and DIPY, SYMMETRIC_UPPER = 3 for FSL). 9- and
    * 7-component arrays are always read as FULL_9 and TEEM_7.
    */
   vtkSetClampMacro(TensorLayout, int, 0, 4);

@@ -11,7 +11,8 @@ build="${SPLINEVIZ_BUILD_DIR:-$here/build}"
 # ParaView 5.11 with its own VTK 9.2 and the development packages its CMake
 # package needs for the components SplineViz uses; Xvfb for headless
 # rendering (Mesa llvmpipe: OpenGL 4.5 with tessellation); GLM; DIPY for the
-# real diffusion data of the tensor examples.
+# real diffusion data of the tensor examples; NiBabel, the independent
+# implementation the neuroimaging IO tests compare with.
 packages=(
   build-essential cmake
   paraview-dev python3-paraview
@@ -22,7 +23,7 @@ packages=(
   libgl-dev libopengl-dev libglx-dev python3-dev python3-numpy
   libglm-dev
   xvfb xauth x11-utils
-  python3-dipy
+  python3-dipy python3-nibabel
 )
 
 if [ -z "${SPLINEVIZ_SKIP_INSTALL:-}" ]; then

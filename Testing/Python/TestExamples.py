@@ -43,3 +43,23 @@ else:
         if drawn < 0.08:
             print("ERROR: the superquadric example drew (almost) nothing")
             sys.exit(1)
+
+# neuroimaging_io.py: DIPY's real scan through NIfTI, glyphs, fibres, .tck back
+# to nibabel (the example checks the round trip itself). Needs DIPY and nibabel.
+try:
+    import nibabel  # noqa: F401
+except ImportError:
+    nibabel = None
+if dipy is None or nibabel is None:
+    print("DIPY or nibabel not available: neuroimaging_io.py skipped")
+else:
+    neuro_out = os.path.join(out, "TestExamples-neuroimaging")
+    sys.argv = ["neuroimaging_io.py", neuro_out]
+    runpy.run_path(os.path.join(source, "Examples", "Python", "neuroimaging_io.py"),
+                   run_name="__main__")
+    drawn = drawn_fraction(os.path.join(neuro_out, "neuroimaging-dipy.png"),
+                           background=(255, 255, 255), tolerance=15)
+    print("neuroimaging example: fraction drawn %.3f" % drawn)
+    if drawn < 0.15:
+        print("ERROR: the neuroimaging example drew (almost) nothing")
+        sys.exit(1)

@@ -31,6 +31,19 @@ def fibers_scene(ns, size=(600, 450)):
     return fibers, view, display
 
 
+def white_view(size=(500, 420)):
+    """A ParaView render view of the given size on white, without orientation
+    axes (what coverage() measures against)."""
+    from paraview import simple
+
+    view = simple.CreateRenderView()
+    view.ViewSize = list(size)
+    view.UseColorPaletteForBackground = 0
+    view.Background = [1, 1, 1]
+    view.OrientationAxesVisibility = 0
+    return view
+
+
 def coverage(view, name, stride=3, background=(255.0, 255.0, 255.0)):
     """Save a screenshot of `view` as `name` in output_dir() and return
     (fraction of the sampled pixels that differ from the background, the
