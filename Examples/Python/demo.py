@@ -6,6 +6,7 @@ SplineViz renderers to PNG files.
 (scripts/demo.sh sets up, builds and runs this under an X display.)
 """
 import os
+import runpy
 import sys
 
 from vtkmodules.vtkFiltersCore import vtkTubeFilter
@@ -152,6 +153,40 @@ tube_actor.GetProperty().SetSpecular(0.4)
 tube_actor.GetProperty().SetSpecularPower(40)
 fiber_view(tube_actor, "fibers-vtk-tube-filter-closeup.png", camera_position=(0.08, 0.05, 0.32),
            focal=(0.0, 0.0, 0.0))
+
+# --- Stylized lines (Stoll et al.) -------------------------------------------
+# The same fibers as lit generalized cylinders splatted as silhouette quads
+# (one quad per segment, per-pixel normal and depth), with a halo in the
+# background color that cuts the lines behind; then with stripes along the
+# lines and their own shadows.
+stylized = splineviz.vtkStylizedLineMapper()
+stylized.SetInputConnection(fibers.GetOutputPort())
+stylized.SetRadiusArray("Radius")
+stylized.SetScalarRange(0, 1)
+stylized.SetHaloWidth(0.4)
+stylized_actor = vtkActor()
+stylized_actor.SetMapper(stylized)
+stylized_actor.GetProperty().SetSpecular(0.4)
+stylized_actor.GetProperty().SetSpecularPower(40)
+render([stylized_actor], "fibers-stylized-lines-halo.png", (0.25, 0.35, 1.9), (0, 0, 0),
+       background=(1, 1, 1), samples=0, reset_camera=False)
+textured = splineviz.vtkStylizedLineMapper()
+textured.SetInputConnection(fibers.GetOutputPort())
+textured.SetRadiusArray("Radius")
+textured.SetScalarRange(0, 1)
+textured.SetTexturePatternToStripes()
+textured.SetShadows(True)
+textured_actor = vtkActor()
+textured_actor.SetMapper(textured)
+textured_actor.GetProperty().SetSpecular(0.4)
+textured_actor.GetProperty().SetSpecularPower(40)
+fiber_view(textured_actor, "fibers-stylized-lines-closeup.png", camera_position=(0.08, 0.05, 0.32),
+           focal=(0.0, 0.0, 0.0))
+# Stoll Fig. 11 on streamlines VTK traces: velocity to color, integrated
+# divergence to radius, rotation to the stripes' orientation, a halo
+# (Examples/Python/stylized_lines.py; with the plugin also in ParaView).
+runpy.run_path(os.path.join(os.path.dirname(os.path.abspath(__file__)), "stylized_lines.py"),
+               init_globals={"__doc__": None}, run_name="stylized_lines")
 
 # --- LR-spline volumes (Fuchs et al.) --------------------------------------
 # The real locally refined volume, read as exact Bezier hexahedra: its

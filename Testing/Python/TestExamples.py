@@ -63,3 +63,18 @@ else:
     if drawn < 0.15:
         print("ERROR: the neuroimaging example drew (almost) nothing")
         sys.exit(1)
+
+# stylized_lines.py: Stoll's Fig. 11 encodings on streamlines VTK traces
+# (VTK part; the ParaView part runs when SPLINEVIZ_PLUGIN is set).
+lines_out = os.path.join(out, "TestExamples-stylized")
+sys.argv = ["stylized_lines.py", lines_out]
+runpy.run_path(os.path.join(source, "Examples", "Python", "stylized_lines.py"), run_name="__main__")
+pictures = ["stylized-lines.png"]
+if os.environ.get("SPLINEVIZ_PLUGIN"):
+    pictures.append("stylized-lines-paraview.png")
+for picture in pictures:
+    drawn = drawn_fraction(os.path.join(lines_out, picture), tolerance=15)
+    print("stylized lines example, %s: fraction drawn %.3f" % (picture, drawn))
+    if drawn < 0.05:
+        print("ERROR: the stylized lines example drew (almost) nothing in", picture)
+        sys.exit(1)

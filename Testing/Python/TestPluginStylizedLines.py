@@ -38,6 +38,15 @@ reference = coverage("TestPluginStylizedLines-raycast.png")[0]
 display.SetRepresentationType("Stylized Lines")
 display.TubeRadiusArray = "Radius"
 stylized, plainPixels = coverage("TestPluginStylizedLines.png")
+# The radius properties are shared with the tube representations: set while
+# "Stylized Lines" is shown, they reach its mappers (not only the tubes').
+display.TubeRadiusArray = "None"
+display.TubeRadius = 0.02
+Render(view)  # noqa: F405
+if display.GetClientSideObject().GetActiveRepresentation().GetActor().GetMapper().GetRadius() != 0.02:
+    fail("Tube Radius does not reach the stylized line mapper")
+display.TubeRadiusArray = "Radius"
+display.TubeRadius = 0.01
 print("coverage: lines %.4f, ray-cast tubes %.4f, stylized lines %.4f" % (lines, reference, stylized))
 if stylized < 2.0 * lines or stylized < 0.1:
     fail("the stylized lines did not render")
@@ -53,6 +62,7 @@ print("GPU bytes per segment: %.1f" % (mapper.GetGPUMemorySize() / 3530.0))
 
 # Every documented property reaches both mappers (ParaView name -> mapper getter).
 settings = {
+    "TubeRadiusScale": ("RadiusScale", 1.25),
     "HaloWidth": ("HaloWidth", 0.3),
     "HaloColorFromBackground": ("HaloColorFromBackground", 0),
     "HaloDepthOffset": ("HaloDepthOffset", 3.0),
@@ -89,6 +99,7 @@ coverage("TestPluginStylizedLines-settings.png")
 # Back to the defaults, then a halo (background color) and a pattern each
 # change the picture (the halo only where lines cross).
 for name, value in {
+    "TubeRadiusScale": 1.0,
     "HaloWidth": 0.0,
     "HaloColorFromBackground": 1,
     "LineTexturePattern": 0,
