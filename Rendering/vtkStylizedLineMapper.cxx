@@ -81,6 +81,14 @@ struct vtkStylizedLineMapper::vtkInternals
   std::vector<int> StripCounts;
   std::vector<std::uint32_t> FixedSegments;
   std::vector<std::uint32_t> Joints;
+  std::vector<std::uint32_t> UploadedSegments; // what the buffers hold
+  std::vector<float> StageNodes;               // upload staging, kept between uploads
+  std::vector<vtkTypeInt16> StageTangents;
+  std::vector<unsigned char> StageColors;
+  std::vector<float> StageCoords;
+  std::vector<vtkTypeInt16> StageFrames;
+  std::vector<std::uint32_t> UploadedJoints;
+  bool ListsUploaded = false;
   std::vector<double> LastView;
 
   // Whole polylines as strips (the shadow map's draw), per data.
@@ -197,6 +205,7 @@ void vtkStylizedLineMapper::ReleaseGraphicsResources(vtkWindow* window)
   in.MeshBytes = 0;
   in.MeshSides = 0;
   in.LastView.clear();
+  in.ListsUploaded = false;
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
@@ -232,6 +241,7 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   const vtkIdType numTubes = core->GetNumberOfTubes();
   in.LastView.clear();
   in.FixedSegments.clear();
+  in.ListsUploaded = false;
   if (numNodes >= (vtkIdType(1) << 30))
   {
     vtkErrorMacro(<< "Too many line vertices (" << numNodes << "); at most 2^30 are supported.");
@@ -247,8 +257,11 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   const float* M = in.FixUp.GetTangents().data();
 
   // Positions (relative to the shift) and radii; unit tangents, octahedral.
-  std::vector<float> nodes(static_cast<size_t>(4 * numNodes));
-  std::vector<vtkTypeInt16> tangents(static_cast<size_t>(2 * numNodes));
+  // Staging arrays kept between uploads (moving lines upload every frame).
+  std::vector<float>& nodes = in.StageNodes;
+  std::vector<vtkTypeInt16>& tangents = in.StageTangents;
+  nodes.resize(static_cast<size_t>(4 * numNodes));
+  tangents.resize(static_cast<size_t>(2 * numNodes));
   vtkSMPTools::For(0, numNodes,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -298,7 +311,8 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   if (this->HaveColors)
   {
     const float* C = core->GetNodeColors()->GetPointer(0);
-    std::vector<unsigned char> colors(static_cast<size_t>(4 * numNodes));
+    std::vector<unsigned char>& colors = in.StageColors;
+    colors.resize(static_cast<size_t>(4 * numNodes));
     vtkSMPTools::For(0, 4 * numNodes,
       [&](vtkIdType begin, vtkIdType end)
       {
@@ -326,8 +340,10 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
     const float* O =
       scalars->GetNumberOfTuples() == numNodes && numNodes > 0 ? scalars->GetPointer(0) : nullptr;
     const bool radii = this->TextureRepeatUnits == RADII;
-    std::vector<float> coords(static_cast<size_t>(2 * numNodes));
-    std::vector<vtkTypeInt16> frames(static_cast<size_t>(2 * numNodes));
+    std::vector<float>& coords = in.StageCoords;
+    std::vector<vtkTypeInt16>& frames = in.StageFrames;
+    coords.resize(static_cast<size_t>(2 * numNodes));
+    frames.resize(static_cast<size_t>(2 * numNodes));
     vtkSMPTools::For(0, numTubes,
       [&](vtkIdType begin, vtkIdType end)
       {
@@ -447,15 +463,23 @@ void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   // Sides of about 3 pixels for the largest cap or cylinder on screen.
   const double sides = std::ceil(2.0 * vtkMath::Pi() * in.FixUp.GetMaximumScreenRadius() / 3.0);
   in.Sides = static_cast<int>(std::max(8.0, std::min<double>(this->FixUpSides, sides)));
+  // Upload the lists only when they changed (a turning camera often keeps them).
   auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  if (!in.Segments.Upload(
-        window, in.FixedSegments.data(), in.FixedSegments.size(), 1, VTK_TYPE_UINT32, GL_R32UI) ||
-    !in.JointsBuffer.Upload(
-      window, in.Joints.data(), in.Joints.size(), 1, VTK_TYPE_UINT32, GL_R32UI))
+  if (!in.ListsUploaded || in.FixedSegments != in.UploadedSegments ||
+    in.Joints != in.UploadedJoints)
   {
-    vtkErrorMacro(<< "Could not upload the fix-up's segment lists.");
-    in.FixedSegments.clear();
-    in.Joints.clear();
+    if (!in.Segments.Upload(
+          window, in.FixedSegments.data(), in.FixedSegments.size(), 1, VTK_TYPE_UINT32, GL_R32UI) ||
+      !in.JointsBuffer.Upload(
+        window, in.Joints.data(), in.Joints.size(), 1, VTK_TYPE_UINT32, GL_R32UI))
+    {
+      vtkErrorMacro(<< "Could not upload the fix-up's segment lists.");
+      in.FixedSegments.clear();
+      in.Joints.clear();
+    }
+    in.UploadedSegments = in.FixedSegments;
+    in.UploadedJoints = in.Joints;
+    in.ListsUploaded = true;
   }
   in.LastView = view;
 }

@@ -90,14 +90,15 @@ void lineFragment(inout vec4 vertexVC, out vec3 normal)
 {
   int kind = lineInfoVSOutput.y & 3;
   lineHalo = (lineInfoVSOutput.y & 4) != 0 || (kind == 0 && abs(lineTexVSOutput.y) > 1.0);
-  vec3 x = normalize(lineXVSOutput);
+  // The interpolated frame vectors are nearly unit (neighbouring vertices'
+  // frames are close): Eq. 10 normalizes the sum only (the hot path of
+  // every fragment; normalized x, y are made where textures need them).
+  vec3 x = lineXVSOutput;
   vec3 y = lineYVSOutput;
-  float yl = length(y);
-  y = yl > 0.0 ? y / yl : svAnyOrthogonal(x);
-  normal = kind == 0 ? slNormal(x, y, lineTexVSOutput.x) : x;
-  vec3 dir = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(vertexVC.xyz);
+  normal = kind == 0 ? slNormal(x, y, lineTexVSOutput.x) : normalize(x);
   if (kind == 3)
   {
+    vec3 dir = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(vertexVC.xyz);
     // The joint sphere: the view ray's entry point.
     vec3 origin = cameraParallel != 0 ? vec3(vertexVC.xy, 0.0) : vec3(0.0);
     vec3 oc = origin - lineSphereVSOutput.xyz;
@@ -120,6 +121,7 @@ void lineFragment(inout vec4 vertexVC, out vec3 normal)
   }
   if (lineHalo)
   {
+    vec3 dir = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(vertexVC.xyz);
     vertexVC.xyz += (lineHaloDepth * lineRadiusVSOutput) * dir;
   }
   else if (kind == 0 && lineDepthCorrection != 0)
@@ -130,6 +132,9 @@ void lineFragment(inout vec4 vertexVC, out vec3 normal)
 #ifdef LINE_TEXTURE
   // u along the line, v around it (a rotation-minimizing frame vector of the
   // line, turned by the orientation angle, is v = 0), both in repeats.
+  x = normalize(x);
+  float yl = length(y);
+  y = yl > 0.0 ? y / yl : svAnyOrthogonal(x);
   float u = lineUVSOutput.x / lineTextureRepeat;
   vec3 t = normalize(cross(y, x));
   vec3 f = lineFrameVSOutput - dot(lineFrameVSOutput, t) * t;
