@@ -10,6 +10,7 @@ list(APPEND splineviz_classes
 # LR-spline volumes (Fuchs et al.): plain C++ shared by the filters, the
 # reader and the renderers.
 list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineBezierGrid"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineBezierVolume"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineBuilder"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineElementLocator"
