@@ -73,8 +73,28 @@ public:
   /// Structured refinement of basis function i (see the class documentation).
   bool RefineFunction(vtkIdType i, double ratio, std::string* error);
 
+  /**
+   * Structured refinement of several basis functions at once (the adaptive
+   * fitting of vtkLRSplineImageFitter): the rectangles RefineFunction() would
+   * insert for each listed function are inserted together, the elements are
+   * split once and every basis function the new rectangles traverse is split
+   * (the LR B-splines of the resulting mesh, the same as inserting the
+   * rectangles one by one, but the mesh is scanned once). Knot intervals not
+   * longer than `minimumLength` are not split (a function all of whose
+   * intervals are that short is left alone); dead or repeated ids are skipped.
+   * `inserted` (may be null) receives the number of rectangles inserted.
+   */
+  bool RefineFunctions(const std::vector<vtkIdType>& ids, double ratio, double minimumLength,
+    std::string* error, vtkIdType* inserted = nullptr);
+
   /// Refine the basis function with the smallest support containing p.
   bool RefineAt(const double p[3], double ratio, std::string* error);
+
+  /**
+   * Replace the coefficients: Dimension values per basis function, in the
+   * order of GetPatch() (which is called first, removing dead functions).
+   */
+  void SetCoefficients(const std::vector<double>& coefficients);
 
   /// The current LR spline (dead functions removed).
   const vtkLRSplinePatch& GetPatch();
@@ -90,11 +110,24 @@ private:
   {
     double A0, A1, B0, B1; // extents in the two other directions (ascending order)
   };
+  struct Rectangle
+  {
+    int Dir;
+    double Value;
+    double Box[6];
+  };
   bool Covered(int dir, double value, const double support[6]) const;
   vtkIdType AddFunction(const double* knots, const double* coeff, double gamma);
   void Split(std::vector<vtkIdType>& work);
   void Compact();
   std::string Key(const double* knots) const;
+  // The rectangles of the structured refinement of function i.
+  void FunctionRectangles(
+    vtkIdType i, double ratio, double minimumLength, std::vector<Rectangle>& out) const;
+  // Insert rectangles (multiplicity 1) together: planes, elements, functions.
+  bool InsertRectangles(std::vector<Rectangle>& rects, std::string* error);
+  // Add r to the rectangles of its plane, merged with those it extends.
+  static void AddToPlane(std::vector<Rect2>& plane, Rect2 r);
 
   vtkLRSplinePatch Patch;
   std::vector<char> Alive;
