@@ -534,7 +534,7 @@ bool vtkLRSplineBuilder::InsertMeshRectangle(
 
 //------------------------------------------------------------------------------
 void vtkLRSplineBuilder::FunctionRectangles(
-  vtkIdType i, double ratio, double minimumLength, std::vector<Rectangle>& out) const
+  vtkIdType i, const RefineOptions& options, std::vector<Rectangle>& out) const
 {
   Rectangle r;
   for (int d = 0; d < 3; ++d)
@@ -548,18 +548,41 @@ void vtkLRSplineBuilder::FunctionRectangles(
     const double* t = this->Patch.GetKnots(i, d);
     for (int k = 0; k < this->Patch.Order[d]; ++k)
     {
-      if (t[k] < t[k + 1] && t[k + 1] - t[k] > minimumLength)
+      if (SplitValue(t[k], t[k + 1], d, options, &r.Value))
       {
-        const double z = t[k] + ratio * (t[k + 1] - t[k]);
-        if (z > t[k] && z < t[k + 1])
-        {
-          r.Dir = d;
-          r.Value = z;
-          out.push_back(r);
-        }
+        r.Dir = d;
+        out.push_back(r);
       }
     }
   }
+}
+
+bool vtkLRSplineBuilder::SplitValue(
+  double a, double b, int d, const RefineOptions& options, double* value)
+{
+  if (!(a < b))
+  {
+    return false;
+  }
+  const double step = options.GridStep[d], origin = options.GridOffset[d];
+  double z = a + options.Ratio * (b - a);
+  if (step > 0)
+  {
+    // the nearest grid point strictly inside (a, b), if any
+    const double lo = std::floor((a - origin) / step) + 1.0;
+    const double hi = std::ceil((b - origin) / step) - 1.0;
+    if (lo > hi)
+    {
+      return false;
+    }
+    z = origin + std::min(hi, std::max(lo, std::round((z - origin) / step))) * step;
+  }
+  if (z > a && z < b && z - a >= options.MinimumPart[d] && b - z >= options.MinimumPart[d])
+  {
+    *value = z;
+    return true;
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -577,7 +600,9 @@ bool vtkLRSplineBuilder::RefineFunction(vtkIdType i, double ratio, std::string* 
   // One rectangle after the other (the same LR spline as all at once, and
   // the order of the functions that generated volumes have always had).
   std::vector<Rectangle> rects;
-  this->FunctionRectangles(i, ratio, 0.0, rects);
+  RefineOptions options;
+  options.Ratio = ratio;
+  this->FunctionRectangles(i, options, rects);
   for (const Rectangle& r : rects)
   {
     std::vector<Rectangle> one{ r };
@@ -589,14 +614,14 @@ bool vtkLRSplineBuilder::RefineFunction(vtkIdType i, double ratio, std::string* 
   return true;
 }
 
-bool vtkLRSplineBuilder::RefineFunctions(const std::vector<vtkIdType>& ids, double ratio,
-  double minimumLength, std::string* error, vtkIdType* inserted)
+bool vtkLRSplineBuilder::RefineFunctions(const std::vector<vtkIdType>& ids,
+  const RefineOptions& options, std::string* error, vtkIdType* inserted)
 {
   if (inserted)
   {
     *inserted = 0;
   }
-  if (!(ratio > 0 && ratio < 1))
+  if (!(options.Ratio > 0 && options.Ratio < 1))
   {
     if (error)
     {
@@ -613,7 +638,7 @@ bool vtkLRSplineBuilder::RefineFunctions(const std::vector<vtkIdType>& ids, doub
       continue;
     }
     seen[i] = 1;
-    this->FunctionRectangles(i, ratio, minimumLength, rects);
+    this->FunctionRectangles(i, options, rects);
   }
   if (inserted)
   {
