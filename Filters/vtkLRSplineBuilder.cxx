@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <queue>
 
 namespace
 {
@@ -263,15 +264,92 @@ bool vtkLRSplineBuilder::Covered(int dir, double value, const double support[6])
 }
 
 //------------------------------------------------------------------------------
-void vtkLRSplineBuilder::Split(std::vector<vtkIdType>& work)
+void vtkLRSplineBuilder::Split(std::vector<vtkIdType>& work, bool parentsFirst)
 {
   const int kpf = this->Patch.GetKnotsPerFunction();
   const int dim = this->Patch.Dimension;
   std::vector<double> knots(kpf), k1(kpf), k2(kpf), coeff(dim);
-  while (!work.empty())
+  // Parents first: a split child has a smaller support, or the same support
+  // with one more knot inside it, so taking the largest support (fewest
+  // inner knots) first splits every function once, with all its
+  // contributions gathered. (In any other order a function reached along
+  // many split paths, as after inserting many rectangles at once, is split
+  // again for every path.)
+  struct Entry
   {
-    const vtkIdType f = work.back();
-    work.pop_back();
+    double Volume;
+    int Inner;
+    vtkIdType Id;
+  };
+  auto later = [](const Entry& a, const Entry& b)
+  {
+    return a.Volume < b.Volume ||
+      (a.Volume == b.Volume && (a.Inner > b.Inner || (a.Inner == b.Inner && a.Id > b.Id)));
+  };
+  std::priority_queue<Entry, std::vector<Entry>, decltype(later)> heap(later);
+  std::vector<char> queued;
+  auto push = [&](vtkIdType f)
+  {
+    if (!parentsFirst)
+    {
+      work.push_back(f);
+      return;
+    }
+    if (static_cast<vtkIdType>(queued.size()) <= f)
+    {
+      queued.resize(f + 1, 0);
+    }
+    if (queued[f])
+    {
+      return;
+    }
+    queued[f] = 1;
+    Entry entry{ 1.0, 0, f };
+    for (int d = 0; d < 3; ++d)
+    {
+      const double* t = this->Patch.GetKnots(f, d);
+      const int o = this->Patch.Order[d];
+      entry.Volume *= t[o] - t[0];
+      for (int j = 1; j < o; ++j)
+      {
+        entry.Inner += (t[j] > t[0] && t[j] < t[o]) ? 1 : 0;
+      }
+    }
+    heap.push(entry);
+  };
+  auto pop = [&](vtkIdType& f)
+  {
+    if (!parentsFirst)
+    {
+      if (work.empty())
+      {
+        return false;
+      }
+      f = work.back();
+      work.pop_back();
+      return true;
+    }
+    if (heap.empty())
+    {
+      return false;
+    }
+    f = heap.top().Id;
+    heap.pop();
+    queued[f] = 0;
+    return true;
+  };
+  if (parentsFirst)
+  {
+    std::vector<vtkIdType> initial;
+    initial.swap(work);
+    for (vtkIdType f : initial)
+    {
+      push(f);
+    }
+  }
+  vtkIdType f;
+  while (pop(f))
+  {
     if (!this->Alive[f])
     {
       continue;
@@ -335,11 +413,11 @@ void vtkLRSplineBuilder::Split(std::vector<vtkIdType>& work)
     this->Index.erase(this->Key(knots.data()));
     if (a1 > 0)
     {
-      work.push_back(this->AddFunction(k1.data(), coeff.data(), a1 * gamma));
+      push(this->AddFunction(k1.data(), coeff.data(), a1 * gamma));
     }
     if (a2 > 0)
     {
-      work.push_back(this->AddFunction(k2.data(), coeff.data(), a2 * gamma));
+      push(this->AddFunction(k2.data(), coeff.data(), a2 * gamma));
     }
   }
 }
@@ -391,7 +469,8 @@ void vtkLRSplineBuilder::AddToPlane(std::vector<Rect2>& plane, Rect2 r)
 }
 
 //------------------------------------------------------------------------------
-bool vtkLRSplineBuilder::InsertRectangles(std::vector<Rectangle>& rects, std::string* error)
+bool vtkLRSplineBuilder::InsertRectangles(
+  std::vector<Rectangle>& rects, bool parentsFirst, std::string* error)
 {
   if (rects.empty())
   {
@@ -517,7 +596,7 @@ bool vtkLRSplineBuilder::InsertRectangles(std::vector<Rectangle>& rects, std::st
       work.push_back(f);
     }
   }
-  this->Split(work);
+  this->Split(work, parentsFirst);
   return true;
 }
 
@@ -529,7 +608,7 @@ bool vtkLRSplineBuilder::InsertMeshRectangle(
   rects[0].Dir = dir;
   rects[0].Value = value;
   std::copy(box, box + 6, rects[0].Box);
-  return this->InsertRectangles(rects, error);
+  return this->InsertRectangles(rects, false, error);
 }
 
 //------------------------------------------------------------------------------
@@ -606,7 +685,7 @@ bool vtkLRSplineBuilder::RefineFunction(vtkIdType i, double ratio, std::string* 
   for (const Rectangle& r : rects)
   {
     std::vector<Rectangle> one{ r };
-    if (!this->InsertRectangles(one, error))
+    if (!this->InsertRectangles(one, false, error))
     {
       return false;
     }
@@ -644,7 +723,7 @@ bool vtkLRSplineBuilder::RefineFunctions(const std::vector<vtkIdType>& ids,
   {
     *inserted = static_cast<vtkIdType>(rects.size());
   }
-  return this->InsertRectangles(rects, error);
+  return this->InsertRectangles(rects, true, error);
 }
 
 bool vtkLRSplineBuilder::RefineAt(const double p[3], double ratio, std::string* error)

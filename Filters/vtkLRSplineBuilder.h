@@ -138,14 +138,16 @@ private:
   };
   bool Covered(int dir, double value, const double support[6]) const;
   vtkIdType AddFunction(const double* knots, const double* coeff, double gamma);
-  void Split(std::vector<vtkIdType>& work);
+  // Split the functions of `work` (and their children) until no mesh plane
+  // traverses them; parentsFirst: largest supports first (see the .cxx).
+  void Split(std::vector<vtkIdType>& work, bool parentsFirst);
   void Compact();
   std::string Key(const double* knots) const;
   // The rectangles of the structured refinement of function i.
   void FunctionRectangles(
     vtkIdType i, const RefineOptions& options, std::vector<Rectangle>& out) const;
   // Insert rectangles (multiplicity 1) together: planes, elements, functions.
-  bool InsertRectangles(std::vector<Rectangle>& rects, std::string* error);
+  bool InsertRectangles(std::vector<Rectangle>& rects, bool parentsFirst, std::string* error);
   // Add r to the rectangles of its plane, merged with those it extends.
   static void AddToPlane(std::vector<Rect2>& plane, Rect2 r);
 

@@ -160,8 +160,9 @@ public:
       breaks[d].push_back(length);
       // No part shorter than MinimumElementSize voxels, or finer than
       // MaximumRefinementLevels halvings of the initial elements.
-      this->Options.MinimumPart[d] = (1.0 - 1e-9) *
-        std::max(minimumSize, this->InitialSide[d] * std::ldexp(1.0, -maximumLevels));
+      // (a side s is at level round(log2(InitialSide / s))).
+      this->Options.MinimumPart[d] = std::max(minimumSize * (1.0 - 1e-9),
+        this->InitialSide[d] * std::pow(2.0, -(maximumLevels + 0.5)) * (1.0 + 1e-9));
     }
     this->Options.Ratio = 0.5;
     if (!this->Builder.InitializeTensorProduct(this->Degree, breaks, 1, error))
@@ -515,7 +516,7 @@ public:
       }
       picks.clear();
       vtkIdType best = -1;
-      double bestVolume = 0.0;
+      double bestVolume = 0.0, bestOffCentre = 0.0;
       for (vtkIdType s = this->SupportOffsets[e]; s < this->SupportOffsets[e + 1]; ++s)
       {
         const vtkIdType f = this->SupportIds[s];
@@ -527,16 +528,24 @@ public:
           }
           continue;
         }
-        double volume = 1.0;
+        // the smallest support; among equal ones the best centred on the
+        // element (a choice that does not depend on the functions' order)
+        double volume = 1.0, offCentre = 0.0;
         for (int d = 0; d < 3; ++d)
         {
           const double* t = patch.GetKnots(f, d);
-          volume *= t[patch.Order[d]] - t[0];
+          const double length = t[patch.Order[d]] - t[0];
+          volume *= length;
+          const double c = (0.5 * (t[0] + t[patch.Order[d]]) - 0.5 * (b[d] + b[d + 3])) / length;
+          offCentre += c * c;
         }
-        if ((best < 0 || volume < bestVolume) && canSplit(f))
+        const bool smaller = best < 0 || volume < bestVolume * (1 - 1e-12) ||
+          (volume <= bestVolume * (1 + 1e-12) && offCentre < bestOffCentre);
+        if (smaller && canSplit(f))
         {
           best = f;
           bestVolume = volume;
+          bestOffCentre = offCentre;
         }
       }
       if (best >= 0)
@@ -1093,9 +1102,21 @@ int vtkLRSplineImageFitter::RequestData(
     vtkDataArray* array = this->GetInputArrayToProcess(0, image, association);
     if (!array)
     {
-      vtkErrorMacro(<< which
-                    << "no point-data array to fit: choose one with SetInputArrayToProcess "
-                       "(the image has no active scalars)");
+      vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
+      const char* name = arrayInfo && arrayInfo->Has(vtkDataObject::FIELD_NAME())
+        ? arrayInfo->Get(vtkDataObject::FIELD_NAME())
+        : nullptr;
+      if (name)
+      {
+        vtkErrorMacro(<< which << "no point-data array to fit: the image has no array \"" << name
+                      << "\" (SetInputArrayToProcess)");
+      }
+      else
+      {
+        vtkErrorMacro(<< which
+                      << "no point-data array to fit: the image has no active scalars; choose "
+                         "an array with SetInputArrayToProcess");
+      }
       return 0;
     }
     if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
@@ -1271,7 +1292,8 @@ int vtkLRSplineImageFitter::RequestData(
       vtkWarningMacro(<< which << "the tolerance " << tolerance
                       << " is not met everywhere: maximum error " << fit.Stats.MaxError << " (RMS "
                       << rms << ") with " << patch.GetNumberOfElements() << " elements after "
-                      << iteration + 1 << " fits, because " << stopReason);
+                      << iteration + 1 << (iteration == 0 ? " fit" : " fits") << ", because "
+                      << stopReason);
     }
     this->MaximumError = std::max(this->MaximumError, fit.Stats.MaxError);
     sumSquares += fit.Stats.SumSquares;
