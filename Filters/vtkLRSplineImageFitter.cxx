@@ -187,7 +187,9 @@ public:
     this->BuildTables(patch);
 
     // Sparsity: functions overlap when they share an element.
-    std::vector<std::vector<int>> rows(nf);
+    // (the lists are kept between fits: their memory is reused)
+    std::vector<std::vector<int>>& rows = this->Rows;
+    rows.resize(nf);
     vtkSMPThreadLocal<std::vector<vtkIdType>> tlMark;
     vtkSMPTools::For(0, nf,
       [&](vtkIdType begin, vtkIdType end)
@@ -200,6 +202,7 @@ public:
         for (vtkIdType f = begin; f < end; ++f)
         {
           std::vector<int>& row = rows[f];
+          row.clear();
           for (vtkIdType k = this->FunctionElementOffsets[f];
                k < this->FunctionElementOffsets[f + 1]; ++k)
           {
@@ -251,7 +254,6 @@ public:
             }
             ++out;
           }
-          std::vector<int>().swap(row);
           // Right-hand side and data weight: sums over the support's voxels.
           const Table& tu = this->Tables[0][tf[0]];
           const Table& tv = this->Tables[1][tf[1]];
@@ -603,6 +605,7 @@ private:
   std::vector<vtkIdType> SupportOffsets, SupportIds;
   std::vector<vtkIdType> FunctionElementOffsets, FunctionElements;
   std::vector<vtkIdType> RowOffsets;
+  std::vector<std::vector<int>> Rows, ElementLists;
   std::vector<int> Columns;
   std::vector<double> Entries;
 
@@ -701,124 +704,134 @@ private:
     }
   }
 
-  // The elements in every function's support and the functions on every
-  // element, through a grid of voxel-sized cells (the builder's meshes are
-  // valid: every support is a union of elements).
+  // The functions on every element and the elements in every function's
+  // support (the builder's meshes are valid: every support is a union of
+  // elements). Each function is registered in the cells of a grid that its
+  // support overlaps; the functions containing an element are among those of
+  // the cell of its lower corner. The cells are as large as keeps the
+  // registrations to a few per function.
   void ComputeSupports(const vtkLRSplinePatch& patch)
   {
     const vtkIdType ne = patch.GetNumberOfElements();
     const vtkIdType nf = patch.GetNumberOfBasisFunctions();
+    double volume = 0.0;
+    for (vtkIdType f = 0; f < nf; ++f)
+    {
+      double v = 1.0;
+      for (int d = 0; d < 3; ++d)
+      {
+        const double* t = patch.GetKnots(f, d);
+        v *= t[patch.Order[d]] - t[0] + 1.0;
+      }
+      volume += v;
+    }
+    const double cell = std::max(1.0, std::cbrt(volume / (8.0 * std::max<vtkIdType>(1, nf))));
     int G[3];
     for (int d = 0; d < 3; ++d)
     {
-      G[d] = std::max(1, this->N[d] - 1);
+      G[d] = std::max(1, static_cast<int>(std::ceil((this->N[d] - 1) / cell)));
     }
-    auto cellRange = [&G](double a, double b, int d, int& c0, int& c1)
+    auto cellOf = [&](double x, int d)
+    { return std::min(G[d] - 1, std::max(0, static_cast<int>(std::floor(x / cell)))); };
+    auto cellRange = [&](const vtkIdType f, int c0[3], int c1[3])
     {
-      c0 = std::min(G[d] - 1, std::max(0, static_cast<int>(std::floor(a))));
-      c1 = std::min(G[d] - 1, std::max(c0, static_cast<int>(std::ceil(b)) - 1));
+      for (int d = 0; d < 3; ++d)
+      {
+        const double* t = patch.GetKnots(f, d);
+        c0[d] = cellOf(t[0], d);
+        c1[d] = std::max(
+          c0[d], std::min(G[d] - 1, static_cast<int>(std::ceil(t[patch.Order[d]] / cell)) - 1));
+      }
     };
     const vtkIdType cells = static_cast<vtkIdType>(G[0]) * G[1] * G[2];
     std::vector<vtkIdType> cellOffsets(cells + 1, 0);
-    std::vector<int> range(6 * ne);
-    for (vtkIdType e = 0; e < ne; ++e)
+    for (vtkIdType f = 0; f < nf; ++f)
     {
-      const double* b = patch.ElementBoxes.data() + 6 * e;
-      int* r = &range[6 * e];
-      for (int d = 0; d < 3; ++d)
-      {
-        cellRange(b[d], b[d + 3], d, r[d], r[d + 3]);
-      }
-      for (int k = r[2]; k <= r[5]; ++k)
-        for (int j = r[1]; j <= r[4]; ++j)
-          for (int i = r[0]; i <= r[3]; ++i)
+      int c0[3], c1[3];
+      cellRange(f, c0, c1);
+      for (int k = c0[2]; k <= c1[2]; ++k)
+        for (int j = c0[1]; j <= c1[1]; ++j)
+          for (int i = c0[0]; i <= c1[0]; ++i)
             ++cellOffsets[(static_cast<vtkIdType>(k) * G[1] + j) * G[0] + i + 1];
     }
     for (vtkIdType c = 0; c < cells; ++c)
     {
       cellOffsets[c + 1] += cellOffsets[c];
     }
-    std::vector<vtkIdType> cellElements(cellOffsets[cells]);
+    std::vector<int> cellFunctions(cellOffsets[cells]);
     {
       std::vector<vtkIdType> fill(cellOffsets.begin(), cellOffsets.end() - 1);
-      for (vtkIdType e = 0; e < ne; ++e)
+      for (vtkIdType f = 0; f < nf; ++f)
       {
-        const int* r = &range[6 * e];
-        for (int k = r[2]; k <= r[5]; ++k)
-          for (int j = r[1]; j <= r[4]; ++j)
-            for (int i = r[0]; i <= r[3]; ++i)
-              cellElements[fill[(static_cast<vtkIdType>(k) * G[1] + j) * G[0] + i]++] = e;
+        int c0[3], c1[3];
+        cellRange(f, c0, c1);
+        for (int k = c0[2]; k <= c1[2]; ++k)
+          for (int j = c0[1]; j <= c1[1]; ++j)
+            for (int i = c0[0]; i <= c1[0]; ++i)
+              cellFunctions[fill[(static_cast<vtkIdType>(k) * G[1] + j) * G[0] + i]++] =
+                static_cast<int>(f);
       }
     }
-    std::vector<std::vector<vtkIdType>> perFunction(nf);
-    vtkSMPTools::For(0, nf,
+    // Functions per element (in increasing order, as registered).
+    std::vector<vtkIdType> counts(ne + 1, 0);
+    std::vector<std::vector<int>>& perElement = this->ElementLists;
+    perElement.resize(ne);
+    vtkSMPTools::For(0, ne,
       [&](vtkIdType begin, vtkIdType end)
       {
-        for (vtkIdType f = begin; f < end; ++f)
+        for (vtkIdType e = begin; e < end; ++e)
         {
-          double a[3], b[3];
-          int c0[3], c1[3];
-          for (int d = 0; d < 3; ++d)
+          const double* b = patch.ElementBoxes.data() + 6 * e;
+          const vtkIdType c =
+            (static_cast<vtkIdType>(cellOf(b[2], 2)) * G[1] + cellOf(b[1], 1)) * G[0] +
+            cellOf(b[0], 0);
+          std::vector<int>& list = perElement[e];
+          list.clear();
+          for (vtkIdType s = cellOffsets[c]; s < cellOffsets[c + 1]; ++s)
           {
-            const double* t = patch.GetKnots(f, d);
-            a[d] = t[0];
-            b[d] = t[patch.Order[d]];
-            cellRange(a[d], b[d], d, c0[d], c1[d]);
+            const int f = cellFunctions[s];
+            bool inside = true;
+            for (int d = 0; d < 3 && inside; ++d)
+            {
+              const double* t = patch.GetKnots(f, d);
+              inside = t[0] <= b[d] && b[d + 3] <= t[patch.Order[d]];
+            }
+            if (inside)
+            {
+              list.push_back(f);
+            }
           }
-          std::vector<vtkIdType>& list = perFunction[f];
-          for (int k = c0[2]; k <= c1[2]; ++k)
-            for (int j = c0[1]; j <= c1[1]; ++j)
-              for (int i = c0[0]; i <= c1[0]; ++i)
-              {
-                const vtkIdType c = (static_cast<vtkIdType>(k) * G[1] + j) * G[0] + i;
-                for (vtkIdType s = cellOffsets[c]; s < cellOffsets[c + 1]; ++s)
-                {
-                  const vtkIdType e = cellElements[s];
-                  const int* r = &range[6 * e];
-                  // once per element: in the first cell it shares with the support
-                  if (i != std::max(r[0], c0[0]) || j != std::max(r[1], c0[1]) ||
-                    k != std::max(r[2], c0[2]))
-                  {
-                    continue;
-                  }
-                  const double* eb = patch.ElementBoxes.data() + 6 * e;
-                  if (eb[0] >= a[0] && eb[3] <= b[0] && eb[1] >= a[1] && eb[4] <= b[1] &&
-                    eb[2] >= a[2] && eb[5] <= b[2])
-                  {
-                    list.push_back(e);
-                  }
-                }
-              }
+          counts[e + 1] = static_cast<vtkIdType>(list.size());
         }
       });
-    this->FunctionElementOffsets.assign(nf + 1, 0);
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      this->FunctionElementOffsets[f + 1] =
-        this->FunctionElementOffsets[f] + static_cast<vtkIdType>(perFunction[f].size());
-    }
-    this->FunctionElements.resize(this->FunctionElementOffsets[nf]);
     this->SupportOffsets.assign(ne + 1, 0);
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      std::copy(perFunction[f].begin(), perFunction[f].end(),
-        this->FunctionElements.begin() + this->FunctionElementOffsets[f]);
-      for (vtkIdType e : perFunction[f])
-      {
-        ++this->SupportOffsets[e + 1];
-      }
-    }
     for (vtkIdType e = 0; e < ne; ++e)
     {
-      this->SupportOffsets[e + 1] += this->SupportOffsets[e];
+      this->SupportOffsets[e + 1] = this->SupportOffsets[e] + counts[e + 1];
     }
     this->SupportIds.resize(this->SupportOffsets[ne]);
-    std::vector<vtkIdType> fill(this->SupportOffsets.begin(), this->SupportOffsets.end() - 1);
+    this->FunctionElementOffsets.assign(nf + 1, 0);
+    for (vtkIdType e = 0; e < ne; ++e)
+    {
+      std::copy(perElement[e].begin(), perElement[e].end(),
+        this->SupportIds.begin() + this->SupportOffsets[e]);
+      for (int f : perElement[e])
+      {
+        ++this->FunctionElementOffsets[f + 1];
+      }
+    }
     for (vtkIdType f = 0; f < nf; ++f)
     {
-      for (vtkIdType e : perFunction[f])
+      this->FunctionElementOffsets[f + 1] += this->FunctionElementOffsets[f];
+    }
+    this->FunctionElements.resize(this->FunctionElementOffsets[nf]);
+    std::vector<vtkIdType> fill(
+      this->FunctionElementOffsets.begin(), this->FunctionElementOffsets.end() - 1);
+    for (vtkIdType e = 0; e < ne; ++e)
+    {
+      for (int f : perElement[e])
       {
-        this->SupportIds[fill[e]++] = f;
+        this->FunctionElements[fill[f]++] = e;
       }
     }
   }
