@@ -118,7 +118,7 @@ public:
   const std::vector<double>* Values = nullptr;
   int N[3] = { 0, 0, 0 };
   int Degree[3] = { 2, 2, 2 };
-  double Regularization = 0.01;
+  double Regularization = 1.0;
   double Tolerance = 0.0; // absolute
 
   vtkLRSplineBuilder Builder;

@@ -22,40 +22,48 @@
  * at integer parameters and element sides are measured in voxels; the
  * physical map is x = origin + spacing * u ("LRPhysicalTransform"). It starts
  * from a tensor-product spline of tri-degree Degree (default 2, 2, 2) with
- * InitialNumberOfElements uniform elements per direction and repeats:
+ * InitialNumberOfElements elements per direction and repeats:
  *
  * 1. Least squares on the voxel values: minimize
  *      sum_v (s(x_v) - f_v)^2 + sum_i delta_i (c_i - c_i^prev)^2
  *    over the coefficients c_i. The normal equations are assembled sparse
- *    (one row per basis function, an entry per overlapping pair; the voxel
- *    grid is a tensor grid, so every entry is a product of three 1D sums) and
- *    solved by conjugate gradients with a Jacobi preconditioner, starting from
- *    c^prev. c^prev is the previous fit carried exactly through the refinement
- *    (the refinement does not change the spline), and, on the initial mesh,
- *    the image sampled (trilinearly) at the Greville points. The
+ *    (one row per basis function, an entry per pair sharing an element; the
+ *    voxels form a tensor grid, so every entry is a product of three 1D
+ *    sums) and solved by conjugate gradients with a Jacobi preconditioner,
+ *    starting from c^prev, until the error the solve leaves in the voxel
+ *    values (its energy norm, estimated from the last 10 steps after
+ *    Hestenes and Stiefel / Strakos and Tichy) is below 1e-4 times the
+ *    tolerance. c^prev is the previous fit carried exactly through the
+ *    refinement (refinement does not change the spline) and, on the initial
+ *    mesh, the image sampled trilinearly at the Greville points. The
  *    regularization acts on basis functions with little data only: with
- *    w_i = sum_v gamma_i N_i(x_v) (the number of voxels the function "sees")
- *    and A_ii its diagonal entry, delta_i = A_ii (1e-12 + Regularization *
- *    max(0, 1 - w_i / 8)); functions that see fewer than 8 voxels (an element
- *    side of about 2 voxels) are pulled towards the previous, coarser fit,
- *    which removes the null space of voxel-sized elements (sampled at
- *    integers, a quadratic spline with unit knot spacing cannot see an
- *    alternating coefficient pattern). Functions seeing 8 voxels or more are
- *    fitted by plain least squares, so a polynomial of the spline's degree is
+ *    w_i the smallest over the three directions of the sum of the function's
+ *    1D B-spline over the voxel coordinates (how many voxels it sees along
+ *    its worst direction; 1 for a one-voxel element, less only at the image's
+ *    faces and below voxel size), delta_i = A_ii (1e-12 + Regularization *
+ *    max(0, 1 - w_i)). This pins the null space that appears when there are
+ *    more functions than voxels (at the faces of fully refined regions)
+ *    to the coarser fit; functions that see a voxel or more are fitted by
+ *    plain least squares, so a polynomial of the spline's degree is
  *    reproduced exactly.
- * 2. The error |s(x_v) - f_v| at every voxel, from the Bezier form of the
- *    spline (vtkLRSplinePatch::ExtractBezier, the form of the output), in
- *    parallel over elements (vtkSMPTools); maximum and RMS over all voxels.
+ * 2. The error |s(x_v) - f_v| at every voxel, element by element in parallel
+ *    (vtkSMPTools); maximum and RMS over all voxels. The final errors are
+ *    those of the output's Bezier form (vtkLRSplinePatch::ExtractBezier).
  * 3. Stop when the maximum error is at most the tolerance (Tolerance, in data
  *    units (ABSOLUTE) or as a fraction of the data range (RELATIVE, default,
  *    2 %)). Otherwise every element whose largest voxel error exceeds it is
- *    marked, and the basis function of smallest support on each marked
- *    element is refined by structured mesh refinement (every knot interval of
- *    its support halved, vtkLRSplineBuilder::RefineFunctions; Johannessen et
- *    al. 2014), which splits the element and its neighbours only: the
- *    refinement is local. Intervals that would get shorter than
- *    MinimumElementSize voxels, or finer than MaximumRefinementLevels halvings
- *    of the initial elements, are not split.
+ *    marked, and on each the basis function of smallest support that can
+ *    still be refined (the best centred on the element among equal ones) is
+ *    refined by structured mesh refinement (every knot interval of its
+ *    support halved, vtkLRSplineBuilder::RefineFunctions; Johannessen,
+ *    Kvamsdal and Dokken 2014), which splits the element and its neighbours
+ *    only: the refinement is local. A marked element that is already as
+ *    small as allowed gets all the functions on it refined that can be. With
+ *    AlignKnotsToVoxels (default) the splits are rounded to voxel faces (even
+ *    degrees) or centres (odd degrees), so that the finest elements are one
+ *    voxel, which the spline can interpolate. No split leaves a side shorter
+ *    than MinimumElementSize voxels or finer than MaximumRefinementLevels
+ *    halvings of the initial elements.
  *
  * The loop also ends (with a warning saying which limit and the error
  * reached) when MaximumNumberOfElements or MaximumRefinementLevels is
@@ -177,7 +185,8 @@ public:
   ///@{
   /**
    * Weight of the pull towards the previous fit for basis functions that see
-   * fewer than 8 voxels (see the class documentation). Default 0.01.
+   * less than one voxel along some direction (see the class documentation).
+   * Default 1.
    */
   vtkSetClampMacro(Regularization, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Regularization, double);

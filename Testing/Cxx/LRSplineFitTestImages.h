@@ -25,13 +25,15 @@
 
 namespace fittest
 {
-/// An image of f(x) (physical coordinates) in a double point array `name`.
+/// An image of f(x) (physical coordinates) in a double point array `name`;
+/// its extent starts at `start` (null: 0 0 0).
 inline vtkSmartPointer<vtkImageData> MakeImage(const int dims[3], const double spacing[3],
   const double origin[3], const std::function<double(const double x[3])>& f,
-  const char* name = "density")
+  const char* name = "density", const int* start = nullptr)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(dims[0], dims[1], dims[2]);
+  const int s[3] = { start ? start[0] : 0, start ? start[1] : 0, start ? start[2] : 0 };
+  image->SetExtent(s[0], s[0] + dims[0] - 1, s[1], s[1] + dims[1] - 1, s[2], s[2] + dims[2] - 1);
   image->SetSpacing(spacing[0], spacing[1], spacing[2]);
   image->SetOrigin(origin[0], origin[1], origin[2]);
   vtkNew<vtkDoubleArray> values;

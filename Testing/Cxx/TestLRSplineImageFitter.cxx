@@ -449,11 +449,13 @@ void TestKnotsAndComposite(SplineVizTestStatus& status)
     }
   }
 
-  // Composite input: one patch per image, each placed where its image is.
+  // Composite input: one patch per image, each placed where its image is
+  // (the second's extent does not start at 0, as after vtkExtractVOI).
   const double origin2[3] = { 100, -50, 7 }, spacing2[3] = { 2, 3, 0.5 };
-  const int dims2[3] = { 12, 10, 9 };
+  const int dims2[3] = { 12, 10, 9 }, start2[3] = { 5, -3, 2 };
   auto second = MakeImage(
-    dims2, spacing2, origin2, [](const double x[3]) { return 0.01 * x[0] * x[1] + x[2]; });
+    dims2, spacing2, origin2, [](const double x[3]) { return 0.01 * x[0] * x[1] + x[2]; },
+    "density", start2);
   vtkNew<vtkMultiBlockDataSet> both;
   both->SetBlock(0, image);
   both->SetBlock(1, second);
