@@ -118,7 +118,7 @@ public:
   const std::vector<double>* Values = nullptr;
   int N[3] = { 0, 0, 0 };
   int Degree[3] = { 2, 2, 2 };
-  double Regularization = 1.0;
+  double Regularization = 0.1;
   double Tolerance = 0.0; // absolute
 
   vtkLRSplineBuilder Builder;
@@ -134,7 +134,10 @@ public:
     std::vector<double> breaks[3];
     for (int d = 0; d < 3; ++d)
     {
-      const int m = std::max(1, std::min(elements[d], this->N[d] - 1));
+      // at most one element per voxel interval, or per voxel with knots on
+      // voxel faces
+      const bool faces = align && this->Degree[d] % 2 == 0;
+      const int m = std::max(1, std::min(elements[d], this->N[d] - (faces ? 0 : 1)));
       const double length = this->N[d] - 1;
       this->InitialSide[d] = length / m;
       // Voxel-aligned knots: at voxel faces (half-integers) for even degrees,
