@@ -97,3 +97,9 @@ else:
     if not os.path.getsize(os.path.join(fit_out, "aniso_vox.lr")):
         print("ERROR: the fitting example wrote no .lr file")
         sys.exit(1)
+    drawn = drawn_fraction(os.path.join(fit_out, "lr-spline-fit-aniso-vox.png"),
+                           background=(255, 255, 255), tolerance=15)
+    print("fitting example: fraction drawn %.3f" % drawn)
+    if drawn < 0.6:
+        print("ERROR: the fitting example's slices are (almost) blank")
+        sys.exit(1)
