@@ -21,7 +21,6 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
-#include "vtkPointData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
@@ -32,10 +31,9 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cstring>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
-#include <sstream>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -746,16 +744,20 @@ private:
           c0[d], std::min(G[d] - 1, static_cast<int>(std::ceil(t[patch.Order[d]] / cell)) - 1));
       }
     };
-    const vtkIdType cells = static_cast<vtkIdType>(G[0]) * G[1] * G[2];
-    std::vector<vtkIdType> cellOffsets(cells + 1, 0);
-    for (vtkIdType f = 0; f < nf; ++f)
+    auto forCells = [&](vtkIdType f, const std::function<void(vtkIdType)>& visit)
     {
       int c0[3], c1[3];
       cellRange(f, c0, c1);
       for (int k = c0[2]; k <= c1[2]; ++k)
         for (int j = c0[1]; j <= c1[1]; ++j)
           for (int i = c0[0]; i <= c1[0]; ++i)
-            ++cellOffsets[(static_cast<vtkIdType>(k) * G[1] + j) * G[0] + i + 1];
+            visit((static_cast<vtkIdType>(k) * G[1] + j) * G[0] + i);
+    };
+    const vtkIdType cells = static_cast<vtkIdType>(G[0]) * G[1] * G[2];
+    std::vector<vtkIdType> cellOffsets(cells + 1, 0);
+    for (vtkIdType f = 0; f < nf; ++f)
+    {
+      forCells(f, [&](vtkIdType c) { ++cellOffsets[c + 1]; });
     }
     for (vtkIdType c = 0; c < cells; ++c)
     {
@@ -766,13 +768,7 @@ private:
       std::vector<vtkIdType> fill(cellOffsets.begin(), cellOffsets.end() - 1);
       for (vtkIdType f = 0; f < nf; ++f)
       {
-        int c0[3], c1[3];
-        cellRange(f, c0, c1);
-        for (int k = c0[2]; k <= c1[2]; ++k)
-          for (int j = c0[1]; j <= c1[1]; ++j)
-            for (int i = c0[0]; i <= c1[0]; ++i)
-              cellFunctions[fill[(static_cast<vtkIdType>(k) * G[1] + j) * G[0] + i]++] =
-                static_cast<int>(f);
+        forCells(f, [&](vtkIdType c) { cellFunctions[fill[c]++] = static_cast<int>(f); });
       }
     }
     // Functions per element (in increasing order, as registered).

@@ -31,12 +31,13 @@ except ImportError as error:
     sys.exit(125)
 
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import VTK_BEZIER_HEXAHEDRON, vtkPolyData, vtkStaticCellLocator
 from vtkmodules.vtkFiltersCore import vtkProbeFilter
 from vtkmodules.vtkIOImage import vtkNIFTIImageReader
 
 import splineviz
+from splineviz_testing import Observed
 
 failures = []
 
@@ -45,17 +46,6 @@ def check(condition, what):
     print(("ok   " if condition else "FAIL ") + what)
     if not condition:
         failures.append(what)
-
-
-class Warnings:
-    """Collects an algorithm's warnings (expected ones are not failures)."""
-
-    def __init__(self, algorithm):
-        self.messages = []
-        algorithm.AddObserver(vtkCommand.WarningEvent, self)
-
-    def __call__(self, caller, event):
-        self.messages.append(event)
 
 
 def fit(name, tolerance, levels=10):
@@ -67,11 +57,11 @@ def fit(name, tolerance, levels=10):
     fitter.SetInputConnection(reader.GetOutputPort())
     fitter.SetTolerance(tolerance)  # relative to the data range (the default mode)
     fitter.SetMaximumRefinementLevels(levels)
-    warnings = Warnings(fitter)
+    observed = Observed(fitter)
     start = time.perf_counter()
     fitter.Update()
     seconds = time.perf_counter() - start
-    return path, reader, fitter, seconds, warnings
+    return path, reader, fitter, seconds, observed
 
 
 def voxel_errors(reader, spline, reference):
@@ -89,7 +79,7 @@ def voxel_errors(reader, spline, reference):
 
 
 def run(name, tolerance):
-    path, reader, fitter, seconds, warnings = fit(name, tolerance)
+    path, reader, fitter, seconds, observed = fit(name, tolerance)
     image = reader.GetOutput()
     nib_values = np.asarray(nib.load(path).dataobj, dtype=np.float64).squeeze()
     nx, ny, nz = image.GetDimensions()
@@ -108,7 +98,8 @@ def run(name, tolerance):
              fitter.GetNumberOfBasisFunctions(), fitter.GetNumberOfRefinementLevels(),
              fitter.GetNumberOfIterations(), seconds, errors.max(), np.sqrt((errors ** 2).mean()), tol))
     check(inside, "%s: every voxel is inside the spline" % name)
-    check(fitter.GetToleranceMet() and not warnings.messages, "%s: the fitter met the tolerance" % name)
+    check(fitter.GetToleranceMet() and not observed.warnings and not observed.errors,
+          "%s: the fitter met the tolerance" % name)
     check(errors.max() <= tol * (1 + 1e-9), "%s: every voxel within the tolerance (independent probe)" % name)
     check(abs(errors.max() - fitter.GetMaximumError()) <= 1e-9 * tol
           and abs(np.sqrt((errors ** 2).mean()) - fitter.GetRMSError()) <= 1e-9 * tol,
@@ -148,9 +139,9 @@ def run(name, tolerance):
           % (name, valid.sum(), agree.max()))
 
     # Negative control: the initial spline alone does not meet the tolerance.
-    _, coarse_reader, coarse, _, coarse_warnings = fit(name, tolerance, levels=0)
+    _, coarse_reader, coarse, _, coarse_observed = fit(name, tolerance, levels=0)
     coarse_errors, _, _ = voxel_errors(coarse_reader, coarse.GetOutput(), nib_values)
-    check(not coarse.GetToleranceMet() and coarse_warnings.messages and coarse_errors.max() > 5 * tol,
+    check(not coarse.GetToleranceMet() and coarse_observed.warnings and coarse_errors.max() > 5 * tol,
           "%s: negative control: the initial spline misses by %.4g" % (name, coarse_errors.max()))
 
 

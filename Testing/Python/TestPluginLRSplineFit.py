@@ -10,8 +10,7 @@ import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
-from vtkmodules.vtkCommonCore import vtkCommand
-from splineviz_testing import coverage, output_dir
+from splineviz_testing import Observed, coverage, output_dir
 
 plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -82,17 +81,13 @@ if difference > 1e-9 * (high - low):
     sys.exit(1)
 
 # A bad setting fails with the fitter's message.
-errors = []
 bad = LRSplineFitImage(Input=wavelet, Tolerance=0.0)  # noqa: F405
-observer = bad.GetClientSideObject().AddObserver(
-    vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
-bad.GetClientSideObject().GetExecutive().AddObserver(
-    vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
+observed = Observed(bad.GetClientSideObject())
 bad.UpdatePipeline()
-if bad.GetDataInformation().GetNumberOfCells() != 0:
-    print("ERROR: a zero tolerance gave an output")
+if bad.GetDataInformation().GetNumberOfCells() != 0 or not observed.errors:
+    print("ERROR: a zero tolerance gave an output or no error")
     sys.exit(1)
-print("zero tolerance: refused (%d error events)" % len(errors))
+print("zero tolerance: refused (%d error events)" % len(observed.errors))
 
 view = CreateRenderView()  # noqa: F405
 view.ViewSize = [400, 300]
