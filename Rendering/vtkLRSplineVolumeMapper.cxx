@@ -765,6 +765,8 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
             << "\n#define LR_TRIM "
             << (this->GetNumberOfInputConnections(1) > 0 || this->GetInputDataObject(1, 0) ? 1 : 0)
             << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0)
+            << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_SUPERSAMPLING "
+            << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
             << "\n#define LR_MAX_PATCHES " << MaximumPatches << "\n#define LR_ISO "
             << MaximumIsoValues << "\n";
     vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str());
@@ -1081,7 +1083,6 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       starts.insert(starts.end(), p.Starts, p.Starts + 4);
       locators.push_back(p.Locator);
     }
-    program->SetUniformi("lrNumberOfPatches", np);
     auto set3f = [&](const char* name, std::vector<float>& v)
     { program->SetUniform3fv(name, np, reinterpret_cast<const float(*)[3]>(v.data())); };
     set3f("lrPatchLo", lo);
@@ -1150,8 +1151,24 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniformi("lrAdaptive", this->AdaptiveSteps ? 1 : 0);
   program->SetUniformf("lrStepScale", static_cast<float>(this->StepScale));
   program->SetUniformf("lrSampleDistance", static_cast<float>(sampleDistance));
-  program->SetUniformi("lrSupersampling", this->Supersampling);
-  program->SetUniformi("lrMaxSteps", this->MaximumNumberOfSteps);
+  int maxSteps = this->MaximumNumberOfSteps;
+  if (maxSteps <= 0)
+  {
+    // Automatic: the box's diagonal at the finest step, plus the gaps.
+    double dataDiagonal = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+      dataDiagonal += (box[d + 3] - box[d]) * (box[d + 3] - box[d]);
+    }
+    dataDiagonal = std::sqrt(dataDiagonal);
+    const int maxDegree = std::max(in.Degree[0], std::max(in.Degree[1], in.Degree[2]));
+    const double steps = this->AdaptiveSteps
+      ? dataDiagonal / (this->StepScale * in.MinimumSide / (1 << maxDegree))
+      : diagonal / sampleDistance;
+    maxSteps = static_cast<int>(std::min(
+      1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
+  }
+  program->SetUniformi("lrMaxSteps", maxSteps);
   program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
 
   // Transfer function and lighting.
