@@ -135,6 +135,7 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   bool Valid = false;
   std::string Error;
   std::string ReportedError;
+  std::string FailedShader;
   int Degree[3] = { 1, 1, 1 };
   int NumberOfComponents = 1;
   double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
@@ -327,7 +328,14 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     this->GetInputAlgorithm(0, 0)->Update(this->GetInputConnection(0, 0)->GetIndex());
   }
   vtkDataObject* input = this->GetInputDataObject(0, 0);
-  auto done = [](bool ok) { return ok; };
+  auto done = [&](bool ok)
+  {
+    if (!ok)
+    {
+      this->ReportError();
+    }
+    return ok;
+  };
   if (!input)
   {
     in.BuildKey.clear();
@@ -579,17 +587,9 @@ void vtkLRSplineVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   vtkInternals& in = *this->Internals;
-  auto report = [&]()
-  {
-    if (in.Error != in.ReportedError)
-    {
-      vtkErrorMacro(<< in.Error);
-      in.ReportedError = in.Error;
-    }
-  };
+  auto report = [this]() { this->ReportError(); };
   if (!this->UpdateSpline())
   {
-    report();
     return;
   }
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -742,11 +742,6 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       isoValues.push_back(static_cast<float>(contours->GetValue(i)));
     }
   }
-  if (!in.Error.empty())
-  {
-    in.Error.clear();
-    in.ReportedError.clear();
-  }
 
   // The program.
   const bool shade = property->GetShade(0) != 0 && !this->CountSamples;
@@ -773,10 +768,13 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   const bool trim = fs.find("#define LR_TRIM 1") != std::string::npos;
   const std::string vs = this->GetVertexShaderSource();
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  // A source that failed once is not compiled again every frame.
+  vtkShaderProgram* program = (vs + fs) == in.FailedShader
+    ? nullptr
+    : window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
   if (!program)
   {
+    in.FailedShader = vs + fs;
     in.Error = "the volume shader did not compile or link (see the message above)";
     report();
     return;
@@ -1310,6 +1308,20 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     in.TrimTextures[1]->Deactivate();
   }
   vtkOpenGLCheckErrorMacro("failed after Render");
+  // A good frame: a problem that comes back is reported again.
+  in.Error.clear();
+  in.ReportedError.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::ReportError()
+{
+  vtkInternals& in = *this->Internals;
+  if (!in.Error.empty() && in.Error != in.ReportedError)
+  {
+    vtkErrorMacro(<< in.Error);
+    in.ReportedError = in.Error;
+  }
 }
 
 //------------------------------------------------------------------------------

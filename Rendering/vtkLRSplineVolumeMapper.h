@@ -314,6 +314,9 @@ private:
   vtkLRSplineVolumeMapper(const vtkLRSplineVolumeMapper&) = delete;
   void operator=(const vtkLRSplineVolumeMapper&) = delete;
 
+  // vtkErrorMacro for the current error unless it was reported already.
+  void ReportError();
+
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
 };
