@@ -70,7 +70,9 @@ constexpr int MaximumClipPlanes = 6;
 struct PatchInfo
 {
   float Lo[3], Hi[3];             // parameter domain
-  float Scale[3], Offset[3];      // x = offset + scale u
+  float Inverse[9];               // u = Inverse (x - offset), row-major
+  float Offset[3];                // x = A u + offset
+  float Edge[3];                  // |A e_d|: data length of a unit parameter step
   float BoxLo[3], BoxHi[3];       // data box
   int Blocks[3] = { 1, 1, 1 };    // forest resolution
   int Starts[4] = { 0, 0, 0, 0 }; // heads, nodes, octree, first element
@@ -489,16 +491,25 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     }
     PatchInfo info;
     const double* domain = locator.GetDomain();
-    const double* scale = patch.GetScale();
+    const double* A = patch.GetMatrix();
+    const double* inverse = patch.GetInverseMatrix();
     const double* offset = patch.GetOffset();
+    double patchBounds[6];
+    patch.GetBounds(patchBounds);
+    double edge[3];
     for (int k = 0; k < 3; ++k)
     {
+      edge[k] = std::sqrt(A[k] * A[k] + A[3 + k] * A[3 + k] + A[6 + k] * A[6 + k]);
       info.Lo[k] = static_cast<float>(domain[k]);
       info.Hi[k] = static_cast<float>(domain[k + 3]);
-      info.Scale[k] = static_cast<float>(scale[k]);
       info.Offset[k] = static_cast<float>(offset[k]);
-      info.BoxLo[k] = static_cast<float>(offset[k] + scale[k] * domain[k]);
-      info.BoxHi[k] = static_cast<float>(offset[k] + scale[k] * domain[k + 3]);
+      info.Edge[k] = static_cast<float>(edge[k]);
+      info.BoxLo[k] = static_cast<float>(patchBounds[2 * k]);
+      info.BoxHi[k] = static_cast<float>(patchBounds[2 * k + 1]);
+    }
+    for (int k = 0; k < 9; ++k)
+    {
+      info.Inverse[k] = static_cast<float>(inverse[k]);
     }
     info.Starts[0] = static_cast<int>(in.Heads.size());
     info.Starts[1] = static_cast<int>(in.NodeWords.size());
@@ -537,7 +548,7 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
       }
       for (int k = 0; k < 3; ++k)
       {
-        in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * scale[k]);
+        in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * edge[k]);
       }
     }
     firstElement += ne;
@@ -1067,13 +1078,13 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniform3f("lrBoxHi", boxHi);
   {
     const int np = static_cast<int>(in.Patches.size());
-    std::vector<float> lo, hi, scale, offset, boxLoP, boxHiP;
+    std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
     std::vector<int> blocks, starts, locators;
     for (const PatchInfo& p : in.Patches)
     {
       lo.insert(lo.end(), p.Lo, p.Lo + 3);
       hi.insert(hi.end(), p.Hi, p.Hi + 3);
-      scale.insert(scale.end(), p.Scale, p.Scale + 3);
+      edge.insert(edge.end(), p.Edge, p.Edge + 3);
       offset.insert(offset.end(), p.Offset, p.Offset + 3);
       boxLoP.insert(boxLoP.end(), p.BoxLo, p.BoxLo + 3);
       boxHiP.insert(boxHiP.end(), p.BoxHi, p.BoxHi + 3);
@@ -1085,7 +1096,20 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     { program->SetUniform3fv(name, np, reinterpret_cast<const float(*)[3]>(v.data())); };
     set3f("lrPatchLo", lo);
     set3f("lrPatchHi", hi);
-    set3f("lrPatchScale", scale);
+    set3f("lrPatchEdge", edge);
+    for (int p = 0; p < np; ++p)
+    {
+      // GLSL matrices are column-major: the transpose of the row-major array.
+      float columns[9];
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          columns[3 * c + r] = in.Patches[p].Inverse[3 * r + c];
+        }
+      }
+      program->SetUniformMatrix3x3(("lrPatchInverse[" + std::to_string(p) + "]").c_str(), columns);
+    }
     set3f("lrPatchOffset", offset);
     set3f("lrPatchBoxLo", boxLoP);
     set3f("lrPatchBoxHi", boxHiP);

@@ -36,11 +36,12 @@
 #define SV_OUT(T) out T
 #define SV_INOUT(T) inout T
 
-// Patches (data coordinates x = offset + scale * u).
+// Patches (data coordinates x = A u + offset; lrPatchInverse is A^-1).
 uniform vec3 lrPatchLo[LR_MAX_PATCHES];     // parameter domain
 uniform vec3 lrPatchHi[LR_MAX_PATCHES];
-uniform vec3 lrPatchScale[LR_MAX_PATCHES];
+uniform mat3 lrPatchInverse[LR_MAX_PATCHES];
 uniform vec3 lrPatchOffset[LR_MAX_PATCHES];
+uniform vec3 lrPatchEdge[LR_MAX_PATCHES]; // data length of a unit parameter step, per direction
 uniform vec3 lrPatchBoxLo[LR_MAX_PATCHES];    // the patch's box, data coordinates
 uniform vec3 lrPatchBoxHi[LR_MAX_PATCHES];
 uniform int lrPatchBlocks[3 * LR_MAX_PATCHES]; // forest resolution (3 per patch)
@@ -156,7 +157,7 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
   {
     // Points within a rounding tolerance of the domain count as inside and
     // are moved onto it (ray ends computed on the box faces).
-    vec3 uq = (x - lrPatchOffset[q]) / lrPatchScale[q];
+    vec3 uq = lrPatchInverse[q] * (x - lrPatchOffset[q]);
     vec3 tol = 1e-5 * (lrPatchHi[q] - lrPatchLo[q]);
     if (all(greaterThanEqual(uq, lrPatchLo[q] - tol)) && all(lessThanEqual(uq, lrPatchHi[q] + tol)))
     {
@@ -191,8 +192,9 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
   vec3 s = clamp((u - lrCurrentLo) / size, 0.0, 1.0);
   vec3 g;
   value = lrValue(lrCurrentOffset, s, g);
-  vec3 side = size * lrPatchScale[p];
-  gradient = g / side;
+  // d/dx = (d/du) A^-1 (a row vector times the inverse).
+  gradient = (g / size) * lrPatchInverse[p];
+  vec3 side = size * lrPatchEdge[p];
   minSide = min(side.x, min(side.y, side.z));
   return true;
 }
