@@ -145,6 +145,12 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   std::vector<PatchInfo> Patches;
   std::vector<std::uint32_t> Heads, NodeWords, Octree, Offsets;
   std::vector<float> NodeSplits, Boxes, Coefficients;
+  // Per element, the range of its Bezier coefficients (which bounds its
+  // values: convex hull property): per component, and bounds of the
+  // magnitude (2 values each).
+  std::vector<float> ComponentRanges, MagnitudeRanges;
+  std::string SkipKey; // what the skip flags in Boxes were computed for
+  vtkIdType SkippedElements = 0;
   vtkTimeStamp BuildTime;
 
   // GPU side.
@@ -295,6 +301,11 @@ vtkIdType vtkLRSplineVolumeMapper::GetNumberOfElements()
   return this->Internals->Valid ? this->Internals->Field.GetNumberOfElements() : 0;
 }
 
+vtkIdType vtkLRSplineVolumeMapper::GetNumberOfSkippedElements()
+{
+  return this->Internals->Valid ? this->Internals->SkippedElements : 0;
+}
+
 const char* vtkLRSplineVolumeMapper::GetLastErrorMessage()
 {
   return this->Internals->Error.c_str();
@@ -362,6 +373,9 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   in.Boxes.clear();
   in.Offsets.clear();
   in.Coefficients.clear();
+  in.ComponentRanges.clear();
+  in.MagnitudeRanges.clear();
+  in.SkipKey.clear();
   in.BuildTime.Modified();
 
   // What kind of input is this?
@@ -546,6 +560,31 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
       {
         in.Coefficients.push_back(static_cast<float>(c[i]));
       }
+      // Coefficient ranges (the element's values lie within them).
+      double magnitudeLow = 0.0, magnitudeHigh = 0.0;
+      for (int comp = 0; comp < nc; ++comp)
+      {
+        double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
+        for (int i = comp; i < per; i += nc)
+        {
+          lo = std::min(lo, c[i]);
+          hi = std::max(hi, c[i]);
+        }
+        in.ComponentRanges.push_back(static_cast<float>(lo));
+        in.ComponentRanges.push_back(static_cast<float>(hi));
+        magnitudeLow = std::max(magnitudeLow, lo > 0 ? lo : (hi < 0 ? -hi : 0.0));
+      }
+      for (int i = 0; i < per; i += nc)
+      {
+        double m2 = 0.0;
+        for (int comp = 0; comp < nc; ++comp)
+        {
+          m2 += c[i + comp] * c[i + comp];
+        }
+        magnitudeHigh = std::max(magnitudeHigh, std::sqrt(m2));
+      }
+      in.MagnitudeRanges.push_back(static_cast<float>(magnitudeLow));
+      in.MagnitudeRanges.push_back(static_cast<float>(magnitudeHigh));
       for (int k = 0; k < 3; ++k)
       {
         in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * edge[k]);
@@ -751,6 +790,78 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     for (int i = 0; i < std::min(n, MaximumIsoValues); ++i)
     {
       isoValues.push_back(static_cast<float>(contours->GetValue(i)));
+    }
+  }
+
+  // Empty-space skipping: flag the elements whose coefficient range (which
+  // bounds their values) maps to zero opacity (composite) or holds no iso
+  // value (isosurfaces); the rays jump over them. Recomputed when the
+  // transfer function, the iso values, the blend or vector mode change.
+  {
+    std::ostringstream key;
+    key << in.BuildTime.GetMTime() << ' ' << in.TransferKey << ' ' << this->BlendMode << ' '
+        << this->VectorMode << ' ' << this->VectorComponent << ' ' << this->EmptySpaceSkipping;
+    for (float v : isoValues)
+    {
+      key << ' ' << v;
+    }
+    if (key.str() != in.SkipKey)
+    {
+      const vtkIdType ne = static_cast<vtkIdType>(in.Offsets.size());
+      const int nc = in.NumberOfComponents;
+      const bool magnitude = nc > 1 && this->VectorMode == MAGNITUDE;
+      const int comp = nc == 1 ? 0 : this->VectorComponent;
+      // Values are looked up in a linearly filtered table: widen by a texel.
+      const double texel = (in.TransferRange[1] - in.TransferRange[0]) / (TransferFunctionSize - 1);
+      const bool skipping = this->EmptySpaceSkipping &&
+        (this->BlendMode == COMPOSITE_BLEND || this->BlendMode == ISOSURFACE_BLEND);
+      vtkIdType skipped = 0;
+      for (vtkIdType e = 0; e < ne; ++e)
+      {
+        const float* r =
+          magnitude ? &in.MagnitudeRanges[2 * e] : &in.ComponentRanges[2 * (nc * e + comp)];
+        bool skip = false;
+        if (skipping && this->BlendMode == COMPOSITE_BLEND)
+        {
+          const double a = std::max(static_cast<double>(r[0]) - texel, in.TransferRange[0]);
+          const double b = std::min(static_cast<double>(r[1]) + texel, in.TransferRange[1]);
+          // Outside the table's range the end values hold (clamping).
+          double maxOpacity =
+            opacity->GetValue(std::min(std::max(a, in.TransferRange[0]), in.TransferRange[1]));
+          maxOpacity = std::max(maxOpacity,
+            opacity->GetValue(std::max(std::min(b, in.TransferRange[1]), in.TransferRange[0])));
+          double node[4];
+          for (int i = 0; i < opacity->GetSize(); ++i)
+          {
+            opacity->GetNodeValue(i, node);
+            if (node[0] > a && node[0] < b)
+            {
+              maxOpacity = std::max(maxOpacity, node[1]);
+            }
+          }
+          skip = a <= b && maxOpacity <= 0.0;
+        }
+        else if (skipping)
+        {
+          skip = true;
+          for (float v : isoValues)
+          {
+            skip = skip && !(v >= r[0] && v <= r[1]);
+          }
+        }
+        in.Boxes[8 * e + 3] = skip ? 1.0f : 0.0f;
+        skipped += skip ? 1 : 0;
+      }
+      in.SkippedElements = skipped;
+      if (in.UploadTime.GetMTime() > 0 &&
+        !in.BoxesBuffer.Upload(
+          window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F))
+      {
+        in.Error = "the spline's element boxes could not be uploaded to the GPU";
+        report();
+        return;
+      }
+      in.SkipKey = key.str();
     }
   }
 
@@ -1369,6 +1480,7 @@ void vtkLRSplineVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StepScale: " << this->StepScale << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "Supersampling: " << this->Supersampling << "\n";
+  os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
   os << indent << "UseJittering: " << this->UseJittering << "\n";
   os << indent << "ShadingModel: " << (this->ShadingModel == FUCHS ? "Fuchs" : "Phong") << "\n";
   os << indent << "IsosurfaceBisections: " << this->IsosurfaceBisections << "\n";

@@ -186,6 +186,21 @@ public:
 
   ///@{
   /**
+   * Empty-space skipping (default on): rays jump over the elements whose
+   * Bezier coefficients (which bound the element's values: convex hull
+   * property) map to zero opacity, or, for isosurfaces, hold no iso value.
+   * Exact: skipped elements add nothing.
+   */
+  vtkSetMacro(EmptySpaceSkipping, bool);
+  vtkGetMacro(EmptySpaceSkipping, bool);
+  vtkBooleanMacro(EmptySpaceSkipping, bool);
+  ///@}
+
+  /// Elements skipped in the last render (empty-space skipping).
+  vtkIdType GetNumberOfSkippedElements();
+
+  ///@{
+  /**
    * Transfer-function samples per spline step (§4.1). Default 4; 1 turns the
    * supersampling off.
    */
@@ -304,6 +319,7 @@ protected:
   double StepScale = 1.0;
   double SampleDistance = 0.0;
   int Supersampling = 4;
+  bool EmptySpaceSkipping = true;
   bool UseJittering = false;
   int ShadingModel = PHONG;
   int IsosurfaceBisections = 16;

@@ -52,7 +52,7 @@ uniform usamplerBuffer lrHeads;
 uniform usamplerBuffer lrNodeWords;
 uniform samplerBuffer lrNodeSplits;
 uniform usamplerBuffer lrOctree;
-uniform samplerBuffer lrBoxes;        // per element: lo (xyz), hi (xyz), parameter space
+uniform samplerBuffer lrBoxes;        // per element: lo (xyz) + skip flag, hi (xyz), parameter space
 uniform usamplerBuffer lrOffsets;     // per element: first coefficient
 uniform samplerBuffer lrCoefficients; // Bernstein coefficients
 
@@ -121,6 +121,7 @@ int lrCurrentPatch = -1;
 vec3 lrCurrentLo = vec3(1.0);
 vec3 lrCurrentHi = vec3(0.0);
 int lrCurrentOffset = 0;
+bool lrCurrentSkip = false; // the element adds nothing (empty-space skipping)
 int lrSamples = 0;
 float lrWorldPerData = 1.0; // world length of a data unit along the ray
 
@@ -184,7 +185,9 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
     }
     e += starts.w;
     lrCurrentPatch = p;
-    lrCurrentLo = texelFetch(lrBoxes, 2 * e).xyz;
+    vec4 lo = texelFetch(lrBoxes, 2 * e);
+    lrCurrentLo = lo.xyz;
+    lrCurrentSkip = lo.w > 0.5;
     lrCurrentHi = texelFetch(lrBoxes, 2 * e + 1).xyz;
     lrCurrentOffset = int(texelFetch(lrOffsets, e).x);
   }
@@ -260,6 +263,18 @@ float lrStep(float minSide)
     return lrStepScale * minSide / float(1 << max(LR_DU, max(LR_DV, LR_DW)));
   }
   return lrSampleDistance / lrWorldPerData;
+}
+
+// The ray parameter where the ray leaves the current element.
+float lrElementExit(vec3 origin, vec3 dir)
+{
+  mat3 m = lrPatchInverse[lrCurrentPatch];
+  vec3 u0 = m * (origin - lrPatchOffset[lrCurrentPatch]);
+  vec3 ud = m * dir;
+  vec3 ta = (lrCurrentLo - u0) / ud;
+  vec3 tb = (lrCurrentHi - u0) / ud;
+  vec3 tf = max(ta, tb);
+  return min(min(tf.x, tf.y), tf.z);
 }
 
 // The next ray parameter after t inside some patch box (the ray crosses a gap
@@ -483,7 +498,19 @@ void main()
       break;
     }
     float eps = 1e-6 * (t1 - t0);
-    t = valid ? t + max(lrStep(minSide), eps) : lrNextEntry(origin, dir, t, 10.0 * eps);
+    if (valid && lrCurrentSkip)
+    {
+      // Empty-space skipping: by the convex hull property of the Bezier
+      // form the element's values lie in its coefficients' range, over which
+      // the transfer function is transparent (or which holds no iso value):
+      // jump to its exit; nothing is composited across it.
+      t = max(lrElementExit(origin, dir), t) + 10.0 * eps;
+      prevValid = false;
+    }
+    else
+    {
+      t = valid ? t + max(lrStep(minSide), eps) : lrNextEntry(origin, dir, t, 10.0 * eps);
+    }
     if (t > 1e29)
     {
       break;
