@@ -1,13 +1,13 @@
 """pvbatch: the "LR-Spline Volume" representation of the SplineViz plugin on the
 real 3-patch LR-spline file, read by the plugin's reader.
 
-The independent check: every picture ParaView renders (composite, maximum
-and minimum intensity, isosurface, a vector component, shading, hidden
-patches, a trimming sphere) is rendered a second time in plain VTK by
-vtkLRSplineVolumeMapper from the file read by vtkLRSplineReader, with the
+The independent check: the pictures ParaView renders (composite, maximum
+intensity, isosurface, a vector component, shading, a moved and scaled
+actor, hidden patches, a trimming sphere) are rendered a second time in
+plain VTK by vtkLRSplineVolumeMapper from the file read by vtkLRSplineReader, with the
 transfer functions rebuilt from the values ParaView shows (the lookup
 table's RGBPoints, the opacity function's Points, the unit distance, the iso
-values) and ParaView's camera and first light; the two must agree to an RMS
+values) and ParaView's camera and first light; each pair must agree to an RMS
 of at most 1 (0-255 scale). Negative controls: references with a wrong field
 (a component instead of the magnitude), a wrong unit distance or the
 untrimmed volume are far from ParaView's pictures, so the comparison can
@@ -175,7 +175,7 @@ def first_light():
 
 
 def vtk_image(name, blend=0, component=-1, iso=(), shade=False, unit=None, blocks=None,
-              sphere=None):
+              sphere=None, position=(0, 0, 0), scale=(1, 1, 1)):
     """The picture vtkLRSplineVolumeMapper renders on its own with ParaView's
     camera, first light, and transfer functions rebuilt from the values
     ParaView shows."""
@@ -226,6 +226,8 @@ def vtk_image(name, blend=0, component=-1, iso=(), shade=False, unit=None, block
     volume = vtkVolume()
     volume.SetMapper(m)
     volume.SetProperty(prop)
+    volume.SetPosition(position)
+    volume.SetScale(scale)
     ren = REFERENCE["renderer"]
     ren.RemoveAllViewProps()
     ren.AddVolume(volume)
@@ -389,6 +391,16 @@ def serial_checks():
     display.Specular = 0.0
     display.Diffuse = 1.0
     display.Ambient = 0.0
+
+    # The actor's transform.
+    display.Position = [0.15, -0.1, 0.0]
+    display.Scale = [1.0, 0.8, 1.2]
+    moved = paraview_image("transformed")
+    compare("transformed", moved, position=(0.15, -0.1, 0.0), scale=(1.0, 0.8, 1.2))
+    if changed(moved, composite) < 0.1:
+        fail("Position and Scale do not move the volume")
+    display.Position = [0.0, 0.0, 0.0]
+    display.Scale = [1.0, 1.0, 1.0]
 
     # Patch 0 holds (x, y, z), patch 1 (-y, x, z): the same magnitude, other components.
     ColorBy(display, ("POINTS", "Field", "X"))  # noqa: F405
