@@ -70,7 +70,9 @@ constexpr int MaximumClipPlanes = 6;
 struct PatchInfo
 {
   float Lo[3], Hi[3];             // parameter domain
-  float Scale[3], Offset[3];      // x = offset + scale u
+  float Inverse[9];               // u = Inverse (x - offset), row-major
+  float Offset[3];                // x = A u + offset
+  float Edge[3];                  // |A e_d|: data length of a unit parameter step
   float BoxLo[3], BoxHi[3];       // data box
   int Blocks[3] = { 1, 1, 1 };    // forest resolution
   int Starts[4] = { 0, 0, 0, 0 }; // heads, nodes, octree, first element
@@ -135,6 +137,7 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   bool Valid = false;
   std::string Error;
   std::string ReportedError;
+  std::string FailedShader;
   int Degree[3] = { 1, 1, 1 };
   int NumberOfComponents = 1;
   double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
@@ -327,7 +330,14 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     this->GetInputAlgorithm(0, 0)->Update(this->GetInputConnection(0, 0)->GetIndex());
   }
   vtkDataObject* input = this->GetInputDataObject(0, 0);
-  auto done = [](bool ok) { return ok; };
+  auto done = [&](bool ok)
+  {
+    if (!ok)
+    {
+      this->ReportError();
+    }
+    return ok;
+  };
   if (!input)
   {
     in.BuildKey.clear();
@@ -481,16 +491,25 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     }
     PatchInfo info;
     const double* domain = locator.GetDomain();
-    const double* scale = patch.GetScale();
+    const double* A = patch.GetMatrix();
+    const double* inverse = patch.GetInverseMatrix();
     const double* offset = patch.GetOffset();
+    double patchBounds[6];
+    patch.GetBounds(patchBounds);
+    double edge[3];
     for (int k = 0; k < 3; ++k)
     {
+      edge[k] = std::sqrt(A[k] * A[k] + A[3 + k] * A[3 + k] + A[6 + k] * A[6 + k]);
       info.Lo[k] = static_cast<float>(domain[k]);
       info.Hi[k] = static_cast<float>(domain[k + 3]);
-      info.Scale[k] = static_cast<float>(scale[k]);
       info.Offset[k] = static_cast<float>(offset[k]);
-      info.BoxLo[k] = static_cast<float>(offset[k] + scale[k] * domain[k]);
-      info.BoxHi[k] = static_cast<float>(offset[k] + scale[k] * domain[k + 3]);
+      info.Edge[k] = static_cast<float>(edge[k]);
+      info.BoxLo[k] = static_cast<float>(patchBounds[2 * k]);
+      info.BoxHi[k] = static_cast<float>(patchBounds[2 * k + 1]);
+    }
+    for (int k = 0; k < 9; ++k)
+    {
+      info.Inverse[k] = static_cast<float>(inverse[k]);
     }
     info.Starts[0] = static_cast<int>(in.Heads.size());
     info.Starts[1] = static_cast<int>(in.NodeWords.size());
@@ -529,7 +548,7 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
       }
       for (int k = 0; k < 3; ++k)
       {
-        in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * scale[k]);
+        in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * edge[k]);
       }
     }
     firstElement += ne;
@@ -579,17 +598,9 @@ void vtkLRSplineVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   vtkInternals& in = *this->Internals;
-  auto report = [&]()
-  {
-    if (in.Error != in.ReportedError)
-    {
-      vtkErrorMacro(<< in.Error);
-      in.ReportedError = in.Error;
-    }
-  };
+  auto report = [this]() { this->ReportError(); };
   if (!this->UpdateSpline())
   {
-    report();
     return;
   }
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -742,11 +753,6 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       isoValues.push_back(static_cast<float>(contours->GetValue(i)));
     }
   }
-  if (!in.Error.empty())
-  {
-    in.Error.clear();
-    in.ReportedError.clear();
-  }
 
   // The program.
   const bool shade = property->GetShade(0) != 0 && !this->CountSamples;
@@ -765,16 +771,21 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
             << "\n#define LR_TRIM "
             << (this->GetNumberOfInputConnections(1) > 0 || this->GetInputDataObject(1, 0) ? 1 : 0)
             << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0)
+            << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_SUPERSAMPLING "
+            << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
             << "\n#define LR_MAX_PATCHES " << MaximumPatches << "\n#define LR_ISO "
             << MaximumIsoValues << "\n";
     vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str());
   }
   const bool trim = fs.find("#define LR_TRIM 1") != std::string::npos;
   const std::string vs = this->GetVertexShaderSource();
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  // A source that failed once is not compiled again every frame.
+  vtkShaderProgram* program = (vs + fs) == in.FailedShader
+    ? nullptr
+    : window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
   if (!program)
   {
+    in.FailedShader = vs + fs;
     in.Error = "the volume shader did not compile or link (see the message above)";
     report();
     return;
@@ -1067,13 +1078,13 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniform3f("lrBoxHi", boxHi);
   {
     const int np = static_cast<int>(in.Patches.size());
-    std::vector<float> lo, hi, scale, offset, boxLoP, boxHiP;
+    std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
     std::vector<int> blocks, starts, locators;
     for (const PatchInfo& p : in.Patches)
     {
       lo.insert(lo.end(), p.Lo, p.Lo + 3);
       hi.insert(hi.end(), p.Hi, p.Hi + 3);
-      scale.insert(scale.end(), p.Scale, p.Scale + 3);
+      edge.insert(edge.end(), p.Edge, p.Edge + 3);
       offset.insert(offset.end(), p.Offset, p.Offset + 3);
       boxLoP.insert(boxLoP.end(), p.BoxLo, p.BoxLo + 3);
       boxHiP.insert(boxHiP.end(), p.BoxHi, p.BoxHi + 3);
@@ -1081,12 +1092,24 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       starts.insert(starts.end(), p.Starts, p.Starts + 4);
       locators.push_back(p.Locator);
     }
-    program->SetUniformi("lrNumberOfPatches", np);
     auto set3f = [&](const char* name, std::vector<float>& v)
     { program->SetUniform3fv(name, np, reinterpret_cast<const float(*)[3]>(v.data())); };
     set3f("lrPatchLo", lo);
     set3f("lrPatchHi", hi);
-    set3f("lrPatchScale", scale);
+    set3f("lrPatchEdge", edge);
+    for (int p = 0; p < np; ++p)
+    {
+      // GLSL matrices are column-major: the transpose of the row-major array.
+      float columns[9];
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          columns[3 * c + r] = in.Patches[p].Inverse[3 * r + c];
+        }
+      }
+      program->SetUniformMatrix3x3(("lrPatchInverse[" + std::to_string(p) + "]").c_str(), columns);
+    }
     set3f("lrPatchOffset", offset);
     set3f("lrPatchBoxLo", boxLoP);
     set3f("lrPatchBoxHi", boxHiP);
@@ -1150,8 +1173,24 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniformi("lrAdaptive", this->AdaptiveSteps ? 1 : 0);
   program->SetUniformf("lrStepScale", static_cast<float>(this->StepScale));
   program->SetUniformf("lrSampleDistance", static_cast<float>(sampleDistance));
-  program->SetUniformi("lrSupersampling", this->Supersampling);
-  program->SetUniformi("lrMaxSteps", this->MaximumNumberOfSteps);
+  int maxSteps = this->MaximumNumberOfSteps;
+  if (maxSteps <= 0)
+  {
+    // Automatic: the box's diagonal at the finest step, plus the gaps.
+    double dataDiagonal = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+      dataDiagonal += (box[d + 3] - box[d]) * (box[d + 3] - box[d]);
+    }
+    dataDiagonal = std::sqrt(dataDiagonal);
+    const int maxDegree = std::max(in.Degree[0], std::max(in.Degree[1], in.Degree[2]));
+    const double steps = this->AdaptiveSteps
+      ? dataDiagonal / (this->StepScale * in.MinimumSide / (1 << maxDegree))
+      : diagonal / sampleDistance;
+    maxSteps = static_cast<int>(std::min(
+      1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
+  }
+  program->SetUniformi("lrMaxSteps", maxSteps);
   program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
 
   // Transfer function and lighting.
@@ -1293,6 +1332,20 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     in.TrimTextures[1]->Deactivate();
   }
   vtkOpenGLCheckErrorMacro("failed after Render");
+  // A good frame: a problem that comes back is reported again.
+  in.Error.clear();
+  in.ReportedError.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::ReportError()
+{
+  vtkInternals& in = *this->Internals;
+  if (!in.Error.empty() && in.Error != in.ReportedError)
+  {
+    vtkErrorMacro(<< in.Error);
+    in.ReportedError = in.Error;
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -230,9 +230,12 @@ public:
 
   ///@{
   /**
-   * Largest number of samples per ray. Default 8192.
+   * Largest number of samples per ray. 0 (default): automatic, enough for a
+   * ray across the whole box at the finest step (adaptive: the smallest
+   * element's step times StepScale; fixed: SampleDistance), so that no ray is
+   * cut short; a positive value caps the work per pixel (rays stop there).
    */
-  vtkSetClampMacro(MaximumNumberOfSteps, int, 16, 1000000);
+  vtkSetClampMacro(MaximumNumberOfSteps, int, 0, VTK_INT_MAX);
   vtkGetMacro(MaximumNumberOfSteps, int);
   ///@}
 
@@ -251,6 +254,7 @@ public:
    */
   vtkSetMacro(CountSamples, bool);
   vtkGetMacro(CountSamples, bool);
+  vtkBooleanMacro(CountSamples, bool);
 
   /**
    * Bytes of spline data on the GPU: coefficients, element boxes and
@@ -303,12 +307,15 @@ protected:
   bool UseJittering = false;
   int ShadingModel = PHONG;
   int IsosurfaceBisections = 16;
-  int MaximumNumberOfSteps = 8192;
+  int MaximumNumberOfSteps = 0;
   bool CountSamples = false;
 
 private:
   vtkLRSplineVolumeMapper(const vtkLRSplineVolumeMapper&) = delete;
   void operator=(const vtkLRSplineVolumeMapper&) = delete;
+
+  // vtkErrorMacro for the current error unless it was reported already.
+  void ReportError();
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
