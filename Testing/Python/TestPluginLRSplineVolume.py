@@ -415,6 +415,18 @@ def serial_checks():
     display.BlockSelectors = ["/"]
     ColorBy(display, ("POINTS", "Field", "Magnitude"))  # noqa: F405
 
+    # A cell array cannot be rendered (the field is the points' Bezier
+    # coefficients): a warning, and the spline's default field.
+    vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_ERROR)  # the expected warning only
+    ColorBy(display, ("CELLS", "LRElementMinSide"))  # noqa: F405
+    cell_colored = paraview_image("cell-array")
+    vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_INFO)
+    print("colored by a cell array: field %r, drawn %.3f" % (
+        mapper.GetFieldArrayName(), drawn(cell_colored).mean()))
+    if mapper.GetFieldArrayName() is not None or drawn(cell_colored).mean() < 0.15:
+        fail("coloring by a cell array does not fall back to the spline's field")
+    ColorBy(display, ("POINTS", "Field", "Magnitude"))  # noqa: F405
+
     # --- every property reaches the mapper or the volume property -------------------------
     settings = {
         "ElementLocator": ("ElementLocator", 1),
