@@ -82,7 +82,8 @@ vtkLRSplineVolumeRepresentation::vtkLRSplineVolumeRepresentation()
   this->SetNumberOfInputPorts(2);
   this->BlockExtractor->SetAssemblyName("Hierarchy");
   this->BlockExtractor->AddSelector("/");
-  this->Actor->SetMapper(this->VolumeMapper);
+  // The volume mapper joins the actor in REQUEST_RENDER, once it has data
+  // (the view asks the actor for bounds before that).
   this->Actor->SetLODMapper(this->LODMapper);
   this->LODMapper->SetScalarVisibility(1);
   this->LODMapper->SetColorModeToDirectScalars();
@@ -245,6 +246,9 @@ int vtkLRSplineVolumeRepresentation::ProcessViewRequest(
     vtkNew<vtkMatrix4x4> matrix;
     this->Actor->GetMatrix(matrix);
     vtkPVRenderView::SetGeometryBounds(inInfo, this, bounds, matrix);
+    // Until REQUEST_RENDER connects the delivered data, the mapper's input is
+    // stale or a placeholder: keep it out of the view's bounds and renders.
+    this->Actor->SetMapper(nullptr);
   }
   else if (request_type == vtkPVView::REQUEST_UPDATE_LOD())
   {
