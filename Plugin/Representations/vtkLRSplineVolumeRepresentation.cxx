@@ -5,6 +5,7 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkContourValues.h"
+#include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkDataSet.h"
 #include "vtkExtractBlockUsingDataAssembly.h"
@@ -17,6 +18,7 @@
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutlineSource.h"
+#include "vtkPiecewiseFunction.h"
 #include "vtkPVLODVolume.h"
 #include "vtkPVRenderView.h"
 #include "vtkPartitionedDataSetCollection.h"
@@ -29,6 +31,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolumeProperty.h"
 
+#include <algorithm>
 #include <string>
 
 namespace
@@ -262,9 +265,9 @@ int vtkLRSplineVolumeRepresentation::ProcessViewRequest(
   }
   else if (request_type == vtkPVView::REQUEST_RENDER())
   {
-    this->UpdateMapperParameters();
     vtkAlgorithmOutput* producer = vtkPVRenderView::GetPieceProducer(inInfo, this, 0);
     vtkAlgorithmOutput* trimProducer = vtkPVRenderView::GetPieceProducer(inInfo, this, 1);
+    this->UpdateMapperParameters(ProducedData(producer));
     if (producer && HasCells(ProducedData(producer)))
     {
       this->VolumeMapper->SetInputConnection(producer);
@@ -284,7 +287,7 @@ int vtkLRSplineVolumeRepresentation::ProcessViewRequest(
 }
 
 //------------------------------------------------------------------------------
-void vtkLRSplineVolumeRepresentation::UpdateMapperParameters()
+void vtkLRSplineVolumeRepresentation::UpdateMapperParameters(vtkDataObject* data)
 {
   // The color array selects the field (a point array of Bezier coefficients).
   const char* name = nullptr;
@@ -305,6 +308,12 @@ void vtkLRSplineVolumeRepresentation::UpdateMapperParameters()
     name = nullptr;
   }
   this->VolumeMapper->SetFieldArrayName(name && name[0] ? name : nullptr);
+  if (!name || !name[0])
+  {
+    // No color array (ParaView picks one for its own "Volume" only): the
+    // spline's default field, in gray with an opacity ramp over its range.
+    this->UseDefaultTransferFunction(data);
+  }
 
   // Magnitude or one component, from the lookup table (as ParaView's volume
   // representations do).
@@ -335,6 +344,74 @@ void vtkLRSplineVolumeRepresentation::UpdateMapperParameters()
     vtkWarningMacro(<< warning);
   }
   this->LastWarning = warning;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeRepresentation::UseDefaultTransferFunction(vtkDataObject* data)
+{
+  // The mapper's default field: the active vectors, else the active scalars,
+  // else the first point array; the range of its magnitude over all patches
+  // (Bezier coefficients bound the spline's values).
+  double range[2] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
+  auto add = [&range](vtkDataSet* ds)
+  {
+    vtkPointData* pd = ds ? ds->GetPointData() : nullptr;
+    vtkDataArray* field = nullptr;
+    if (pd)
+    {
+      field = pd->GetVectors() ? pd->GetVectors()
+                               : (pd->GetScalars() ? pd->GetScalars() : pd->GetArray(0));
+    }
+    if (field && field->GetNumberOfTuples() > 0)
+    {
+      double r[2];
+      field->GetRange(r, field->GetNumberOfComponents() > 1 ? -1 : 0);
+      range[0] = std::min(range[0], r[0]);
+      range[1] = std::max(range[1], r[1]);
+    }
+  };
+  if (auto* cd = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(cd->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      add(vtkDataSet::SafeDownCast(it->GetCurrentDataObject()));
+    }
+  }
+  else
+  {
+    add(vtkDataSet::SafeDownCast(data));
+  }
+  if (!(range[1] >= range[0]))
+  {
+    range[0] = 0.0;
+    range[1] = 1.0;
+  }
+  if (range[1] == range[0])
+  {
+    range[1] = range[0] + 1.0;
+  }
+  if (this->DefaultColor->GetSize() != 2 || this->DefaultRange[0] != range[0] ||
+    this->DefaultRange[1] != range[1])
+  {
+    this->DefaultColor->RemoveAllPoints();
+    this->DefaultColor->AddRGBPoint(range[0], 0.2, 0.2, 0.2);
+    this->DefaultColor->AddRGBPoint(range[1], 1.0, 1.0, 1.0);
+    this->DefaultOpacity->RemoveAllPoints();
+    this->DefaultOpacity->AddPoint(range[0], 0.0);
+    this->DefaultOpacity->AddPoint(range[1], 0.5);
+    this->DefaultRange[0] = range[0];
+    this->DefaultRange[1] = range[1];
+  }
+  if (this->Property->GetRGBTransferFunction(0) != this->DefaultColor.GetPointer())
+  {
+    this->Property->SetColor(this->DefaultColor);
+  }
+  if (this->Property->GetScalarOpacity(0) != this->DefaultOpacity.GetPointer())
+  {
+    this->Property->SetScalarOpacity(this->DefaultOpacity);
+  }
 }
 
 //------------------------------------------------------------------------------

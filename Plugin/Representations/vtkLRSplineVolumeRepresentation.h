@@ -57,8 +57,10 @@
 #include "vtkSmartPointer.h"         // for vtkSmartPointer
 #include "vtkVolumeRepresentation.h"
 
+class vtkColorTransferFunction;
 class vtkExtractBlockUsingDataAssembly;
 class vtkLRSplineVolumeMapper;
+class vtkPiecewiseFunction;
 class vtkPolyData;
 class vtkPolyDataMapper;
 
@@ -150,12 +152,22 @@ protected:
   bool AddToView(vtkView* view) override;
   bool RemoveFromView(vtkView* view) override;
 
-  /// Color array, vector mode, warnings: before each render.
-  void UpdateMapperParameters();
+  /// Color array, vector mode, warnings: before each render (`data`: the delivered spline).
+  void UpdateMapperParameters(vtkDataObject* data);
+
+  /**
+   * Without a color array: the spline's default field (the mapper's) through a
+   * gray ramp and an opacity ramp (0 to 0.5) over the range of its
+   * coefficients, instead of vtkVolumeProperty's defaults for 0-1024 data.
+   */
+  void UseDefaultTransferFunction(vtkDataObject* data);
 
   vtkNew<vtkLRSplineVolumeMapper> VolumeMapper;
   vtkNew<vtkPolyDataMapper> LODMapper;
   vtkNew<vtkExtractBlockUsingDataAssembly> BlockExtractor;
+  vtkNew<vtkColorTransferFunction> DefaultColor;
+  vtkNew<vtkPiecewiseFunction> DefaultOpacity;
+  double DefaultRange[2] = { 0.0, 0.0 };
   vtkSmartPointer<vtkDataObject> Spline;        // what this rank delivers on port 0
   vtkSmartPointer<vtkPolyData> TrimmingSurface; // what this rank delivers on port 1
   vtkSmartPointer<vtkPolyData> Outline;         // the LOD picture
