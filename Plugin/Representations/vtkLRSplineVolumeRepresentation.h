@@ -20,7 +20,9 @@
  *   (ColorArrayName, a point array of Bezier coefficients) selects the
  *   mapper's FieldArrayName, and the lookup table's vector mode and
  *   component (Magnitude, X, Y, Z) its VectorMode / VectorComponent, as
- *   ParaView's image and unstructured volume representations do;
+ *   ParaView's image and unstructured volume representations do (without a
+ *   color array: the mapper's default field through a gray and an opacity
+ *   ramp over its range);
  * - Shade with Ambient, Diffuse, Specular, SpecularPower; BlendMode
  *   (composite, maximum and minimum intensity, isosurface) and the iso values
  *   (IsosurfaceValues, as ParaView's image volume representation names them);
