@@ -51,6 +51,7 @@
 #include <vtk_glew.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <sstream>
@@ -138,6 +139,7 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   std::string Error;
   std::string ReportedError;
   std::string FailedShader;
+  bool Quiet = false; // UpdateSpline() from GetBounds(): no error report
   int Degree[3] = { 1, 1, 1 };
   int NumberOfComponents = 1;
   double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
@@ -343,7 +345,7 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   vtkDataObject* input = this->GetInputDataObject(0, 0);
   auto done = [&](bool ok)
   {
-    if (!ok)
+    if (!ok && !in.Quiet)
     {
       this->ReportError();
     }
@@ -602,7 +604,11 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
 //------------------------------------------------------------------------------
 double* vtkLRSplineVolumeMapper::GetBounds()
 {
+  // Quietly: views ask for bounds before the input is ready (the error, if
+  // it persists, is reported by the render).
+  this->Internals->Quiet = true;
   this->UpdateSpline();
+  this->Internals->Quiet = false;
   if (this->Internals->Valid)
   {
     std::copy(this->Internals->Bounds, this->Internals->Bounds + 6, this->Bounds);
@@ -865,6 +871,44 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
   }
 
+  // The lights (VTK's volume mappers sum them): every switched-on light,
+  // directional (toward the light from its focal point), at most 8; none:
+  // a headlight.
+  std::vector<std::array<float, 6>> lightList;
+  {
+    vtkLightCollection* lights = ren->GetLights();
+    lights->InitTraversal();
+    for (vtkLight* l = lights->GetNextItem(); l && lightList.size() < 8; l = lights->GetNextItem())
+    {
+      if (!l->GetSwitch() || !(l->GetIntensity() > 0))
+      {
+        continue;
+      }
+      double p[3], f[3], toLight[3];
+      l->GetTransformedPosition(p);
+      l->GetTransformedFocalPoint(f);
+      vtkMath::Subtract(p, f, toLight);
+      if (vtkMath::Normalize(toLight) == 0.0)
+      {
+        continue;
+      }
+      const double* c = l->GetDiffuseColor();
+      const double i = l->GetIntensity();
+      lightList.push_back({ static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
+        static_cast<float>(toLight[2]), static_cast<float>(c[0] * i), static_cast<float>(c[1] * i),
+        static_cast<float>(c[2] * i) });
+    }
+    if (lightList.empty())
+    {
+      double toLight[3];
+      vtkMath::Subtract(
+        ren->GetActiveCamera()->GetPosition(), ren->GetActiveCamera()->GetFocalPoint(), toLight);
+      vtkMath::Normalize(toLight);
+      lightList.push_back({ static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
+        static_cast<float>(toLight[2]), 1.0f, 1.0f, 1.0f });
+    }
+  }
+
   // The program.
   const bool shade = property->GetShade(0) != 0 && !this->CountSamples;
   std::string fs = this->GetFragmentShaderSource();
@@ -884,8 +928,8 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
             << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0)
             << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_SUPERSAMPLING "
             << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
-            << "\n#define LR_MAX_PATCHES " << MaximumPatches << "\n#define LR_ISO "
-            << MaximumIsoValues << "\n";
+            << "\n#define LR_LIGHTS " << lightList.size() << "\n#define LR_MAX_PATCHES "
+            << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
     vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str());
   }
   const bool trim = fs.find("#define LR_TRIM 1") != std::string::npos;
@@ -1315,47 +1359,16 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniformf("lrSpecular", static_cast<float>(property->GetSpecular(0)));
   program->SetUniformf("lrSpecularPower", static_cast<float>(property->GetSpecularPower(0)));
   {
-    double toLight[3] = { 0, 0, 1 };
-    double lightColor[3] = { 1, 1, 1 };
-    vtkLightCollection* lights = ren->GetLights();
-    vtkLight* light = nullptr;
-    lights->InitTraversal();
-    for (vtkLight* l = lights->GetNextItem(); l; l = lights->GetNextItem())
+    std::vector<float> directions, colors;
+    for (const auto& l : lightList)
     {
-      if (l->GetSwitch() && l->GetIntensity() > 0)
-      {
-        light = l;
-        break;
-      }
+      directions.insert(directions.end(), l.begin(), l.begin() + 3);
+      colors.insert(colors.end(), l.begin() + 3, l.end());
     }
-    if (light)
-    {
-      double p[3], f[3];
-      light->GetTransformedPosition(p);
-      light->GetTransformedFocalPoint(f);
-      vtkMath::Subtract(p, f, toLight);
-      const double* c = light->GetDiffuseColor();
-      for (int k = 0; k < 3; ++k)
-      {
-        lightColor[k] = c[k] * light->GetIntensity();
-      }
-    }
-    else
-    {
-      const double* p = camera->GetPosition();
-      const double* f = camera->GetFocalPoint();
-      vtkMath::Subtract(p, f, toLight);
-    }
-    if (vtkMath::Normalize(toLight) == 0.0)
-    {
-      toLight[2] = 1.0;
-    }
-    const float l3[3] = { static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
-      static_cast<float>(toLight[2]) };
-    const float c3[3] = { static_cast<float>(lightColor[0]), static_cast<float>(lightColor[1]),
-      static_cast<float>(lightColor[2]) };
-    program->SetUniform3f("lrLightDirection", l3);
-    program->SetUniform3f("lrLightColor", c3);
+    program->SetUniform3fv("lrLightDirections", static_cast<int>(lightList.size()),
+      reinterpret_cast<const float(*)[3]>(directions.data()));
+    program->SetUniform3fv("lrLightColors", static_cast<int>(lightList.size()),
+      reinterpret_cast<const float(*)[3]>(colors.data()));
   }
   {
     float iso[MaximumIsoValues] = {};

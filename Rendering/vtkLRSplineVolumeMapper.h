@@ -35,8 +35,9 @@
  *   rays stop at 99 % opacity.
  * - **vtkVolumeProperty**: the color transfer function and scalar opacity
  *   (sampled into a 1D texture over their ranges), Shade with the exact
- *   gradient: VTK's ambient / diffuse / specular model (two-sided, the
- *   renderer's first light) or Fuchs' diffuse model max(0.4, |l.n|)
+ *   gradient: VTK's ambient / diffuse / specular model (two-sided, summed
+ *   over the renderer's lights, at most 8, as directional lights) or Fuchs'
+ *   diffuse model max(0.4, |l.n|) (the first light)
  *   (ShadingModel); the iso values of the isosurface blend mode.
  * - **Blend modes**: composite, maximum and minimum intensity, and
  *   isosurface: the crossings found between samples are refined by

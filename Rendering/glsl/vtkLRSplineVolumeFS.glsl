@@ -26,7 +26,7 @@
 // Constants the mapper defines: LR_DU, LR_DV, LR_DW (degrees, <= 3), LR_NC
 // (components), LR_COMPONENT (-1: the vector's magnitude), LR_BLEND,
 // LR_SHADE, LR_FUCHS, LR_TRIM, LR_SAMPLE_COUNT, LR_MAX_PATCHES, LR_ISO,
-// LR_PATCHES (the number of patches) and LR_SUPERSAMPLING: loop bounds known
+// LR_PATCHES (the number of patches), LR_SUPERSAMPLING and LR_LIGHTS: loop bounds known
 // at compile time, so that the compiler unrolls those loops (llvmpipe caps the
 // loop iterations of a whole invocation at 65535, shared by all loops).
 
@@ -87,8 +87,8 @@ uniform float lrAmbient;
 uniform float lrDiffuse;
 uniform float lrSpecular;
 uniform float lrSpecularPower;
-uniform vec3 lrLightDirection; // world coordinates, toward the light
-uniform vec3 lrLightColor;     // diffuse color times intensity
+uniform vec3 lrLightDirections[LR_LIGHTS]; // world coordinates, toward each light
+uniform vec3 lrLightColors[LR_LIGHTS];     // diffuse color times intensity
 uniform float lrIsoValues[8];
 uniform int lrNumberOfIsoValues;
 uniform int lrBisections;
@@ -227,13 +227,21 @@ vec3 lrShade(vec3 color, vec3 gradient, vec3 dir)
     n = -n;
   }
 #if LR_FUCHS
-  return color * max(0.4, abs(dot(lrLightDirection, n)));
+  // Fuchs' model has one light: the first.
+  return color * max(0.4, abs(dot(lrLightDirections[0], n)));
 #else
-  float diffuse = max(dot(lrLightDirection, n), 0.0);
-  vec3 h = normalize(lrLightDirection + toEye);
-  float specular = diffuse > 0.0 ? pow(max(dot(h, n), 0.0), lrSpecularPower) : 0.0;
-  return color * (lrAmbient + lrDiffuse * diffuse * lrLightColor) +
-    lrSpecular * specular * lrLightColor;
+  // VTK's model, summed over the lights (as VTK's volume mappers do).
+  vec3 diffuse = vec3(0.0);
+  vec3 specular = vec3(0.0);
+  for (int i = 0; i < LR_LIGHTS; ++i)
+  {
+    float d = max(dot(lrLightDirections[i], n), 0.0);
+    vec3 h = normalize(lrLightDirections[i] + toEye);
+    float sp = d > 0.0 ? pow(max(dot(h, n), 0.0), lrSpecularPower) : 0.0;
+    diffuse += d * lrLightColors[i];
+    specular += sp * lrLightColors[i];
+  }
+  return color * (lrAmbient + lrDiffuse * diffuse) + lrSpecular * specular;
 #endif
 #else
   return color;

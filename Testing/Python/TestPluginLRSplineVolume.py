@@ -7,7 +7,7 @@ actor, hidden patches, a trimming sphere) are rendered a second time in
 plain VTK by vtkLRSplineVolumeMapper from the file read by vtkLRSplineReader, with the
 transfer functions rebuilt from the values ParaView shows (the lookup
 table's RGBPoints, the opacity function's Points, the unit distance, the iso
-values) and ParaView's camera and first light; each pair must agree to an RMS
+values) and ParaView's camera and lights; each pair must agree to an RMS
 of at most 1 (0-255 scale). Negative controls: references with a wrong field
 (a component instead of the magnitude), a wrong unit distance or the
 untrimmed volume are far from ParaView's pictures, so the comparison can
@@ -167,17 +167,24 @@ def reference_window():
 REFERENCE = reference_window()
 
 
-def first_light():
+def view_lights():
+    """ParaView's lights (its light kit and headlight), switched on."""
     ren = view.GetClientSideObject().GetRenderer()
     lights = ren.GetLights()
     lights.InitTraversal()
-    return lights.GetNextItem()
+    found = []
+    light = lights.GetNextItem()
+    while light is not None:
+        if light.GetSwitch():
+            found.append(light)
+        light = lights.GetNextItem()
+    return found
 
 
 def vtk_image(name, blend=0, component=-1, iso=(), shade=False, unit=None, blocks=None,
               sphere=None, position=(0, 0, 0), scale=(1, 1, 1)):
     """The picture vtkLRSplineVolumeMapper renders on its own with ParaView's
-    camera, first light, and transfer functions rebuilt from the values
+    camera, lights, and transfer functions rebuilt from the values
     ParaView shows."""
     data = vtk_reader.GetOutput()
     if blocks is not None:
@@ -232,15 +239,16 @@ def vtk_image(name, blend=0, component=-1, iso=(), shade=False, unit=None, block
     ren.RemoveAllViewProps()
     ren.AddVolume(volume)
     ren.RemoveAllLights()
-    pv_light = first_light()
-    light = vtkLight()
-    light.SetLightType(pv_light.GetLightType())
-    light.SetPosition(pv_light.GetPosition())
-    light.SetFocalPoint(pv_light.GetFocalPoint())
-    light.SetIntensity(pv_light.GetIntensity())
-    light.SetDiffuseColor(pv_light.GetDiffuseColor())
-    light.SetSpecularColor(pv_light.GetSpecularColor())
-    ren.AddLight(light)
+    for pv_light in view_lights():  # the mapper sums all lights
+        light = vtkLight()
+        light.SetLightType(pv_light.GetLightType())
+        light.SetPosition(pv_light.GetPosition())
+        light.SetFocalPoint(pv_light.GetFocalPoint())
+        light.SetIntensity(pv_light.GetIntensity())
+        light.SetDiffuseColor(pv_light.GetDiffuseColor())
+        light.SetSpecularColor(pv_light.GetSpecularColor())
+        light.SetPositional(pv_light.GetPositional())
+        ren.AddLight(light)
     cam = ren.GetActiveCamera()
     cam.SetPosition(view.CameraPosition)
     cam.SetFocalPoint(view.CameraFocalPoint)
