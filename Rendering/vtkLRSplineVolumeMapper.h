@@ -32,7 +32,12 @@
  *   the transfer function is supersampled Supersampling times between two
  *   spline samples along the linear interpolant of their values (§4.1,
  *   against wood-grain; optional jittering of the start as in VTK);
- *   rays stop at 99 % opacity.
+ *   rays stop at 99 % opacity. **Empty-space skipping** (EmptySpaceSkipping,
+ *   on): by the convex hull property of the Bezier form an element's values
+ *   lie within its coefficients' range; rays jump over the elements whose
+ *   range maps to zero opacity (or, for isosurfaces, holds no iso value),
+ *   which is exact. Patches may be placed by any invertible affine map
+ *   (vtkLRSplineField: "LRPhysicalTransform" with 12 values).
  * - **vtkVolumeProperty**: the color transfer function and scalar opacity
  *   (sampled into a 1D texture over their ranges), Shade with the exact
  *   gradient: VTK's ambient / diffuse / specular model (two-sided, summed
