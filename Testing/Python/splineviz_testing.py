@@ -3,6 +3,24 @@ plugin tests draw, and measures of how much of a rendered image is drawn."""
 import os
 
 
+class Observed:
+    """Collects an algorithm's errors and warnings (its executive's errors
+    too), so that expected ones are not printed as failures."""
+
+    def __init__(self, algorithm):
+        self.errors = []
+        self.warnings = []
+        algorithm.AddObserver("ErrorEvent", self._error)
+        algorithm.AddObserver("WarningEvent", self._warning)
+        algorithm.GetExecutive().AddObserver("ErrorEvent", self._error)
+
+    def _error(self, caller, event):
+        self.errors.append(event)
+
+    def _warning(self, caller, event):
+        self.warnings.append(event)
+
+
 def output_dir():
     """Where the tests write their images (ctest: build/Testing/Temporary)."""
     out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
