@@ -71,6 +71,20 @@ public:
   vtkGetStringMacro(FileName);
   ///@}
 
+  ///@{
+  /**
+   * Read from InputString instead of FileName (as vtkDataReader's
+   * ReadFromInputString): the whole text of a .lr or .g2 file held in memory
+   * (it may contain any bytes). Default off.
+   */
+  vtkSetMacro(ReadFromInputString, vtkTypeBool);
+  vtkGetMacro(ReadFromInputString, vtkTypeBool);
+  vtkBooleanMacro(ReadFromInputString, vtkTypeBool);
+  void SetInputString(const std::string& text);
+  void SetInputString(const char* text, std::size_t length);
+  const std::string& GetInputString() const { return this->InputString; }
+  ///@}
+
   enum FileFormats
   {
     AUTOMATIC = 0, ///< from the content ('#' first: LRSplines, a number: g2)
@@ -130,6 +144,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   char* FileName = nullptr;
+  vtkTypeBool ReadFromInputString = 0;
+  std::string InputString;
   int FileFormat = AUTOMATIC;
   vtkTypeBool GeometryMode = 0;
   double PhysicalBounds[6] = { 0, -1, 0, -1, 0, -1 };
