@@ -2,8 +2,8 @@
  * Progress, abort and size checks shared by the SplineViz filters and readers.
  *
  * - vtkSplineVizProgress::For(): a vtkSMPTools::For over [first, last) run in
- *   a few batches (at most about 100, each large enough to keep both cores
- *   busy): between batches, on the calling thread, the algorithm's
+ *   a few batches (at most about 25, i.e. 4 % steps of the progress bar, each
+ *   large enough to keep all threads busy): between batches, on the calling thread, the algorithm's
  *   UpdateProgress() (so ParaView's progress bar moves and Python sees
  *   vtkCommand::ProgressEvent) and CheckAbort() (AbortExecute, or an abort
  *   upstream). The worker threads never touch the algorithm, and the cost is
@@ -64,7 +64,7 @@ bool For(vtkAlgorithm* algorithm, vtkIdType first, vtkIdType last, vtkIdType gra
   }
   const vtkIdType threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
   const vtkIdType perBatch =
-    std::max<vtkIdType>({ (n + 99) / 100, minimumBatch, threads * std::max<vtkIdType>(grain, 1) });
+    std::max<vtkIdType>({ (n + 24) / 25, minimumBatch, threads * std::max<vtkIdType>(grain, 1) });
   for (vtkIdType begin = first; begin < last;)
   {
     if (algorithm->CheckAbort())

@@ -92,7 +92,16 @@
  * Parallel over seeds (vtkSMPTools); the output is the same for any number
  * of threads and any SMP backend. Seeds are processed in batches, so the
  * temporary memory does not grow with the number of seeds. Piece requests
- * split the seed list (the field is needed whole).
+ * split the seed list (the field is needed whole). Progress is reported and
+ * abort honoured after every batch (an aborted run gives an empty output);
+ * more seeds than this machine's memory could hold lines for are refused
+ * before anything is allocated, and the tracing stops with an error when
+ * the output outgrows the memory.
+ *
+ * Unlike vtkStreamTracer (IntegrationDirection, default FORWARD), every seed
+ * is traced in both directions. vtkStreamTracer's setters are here too
+ * (SetIntegratorTypeToRungeKutta2/4, SetIntegrationStepUnitToLengthUnit /
+ * ToCellLengthUnit), and ...To... setters for the other choices.
  *
  * The tensor math (layouts, eigen-decomposition, FA, Westin metrics, sign
  * policies, matrix log/exp) is vtkSplineVizTensorMath, shared with

@@ -45,6 +45,10 @@
  * [p N / n, (p + 1) N / n) of every patch (the Bezier form of an element does
  * not depend on the others, so the pieces are exact too).
  *
+ * Progress is reported per patch and abort honoured between patches (an
+ * aborted read gives an empty output). ReadFromInputString reads the text
+ * from memory (used by the fuzz target Testing/Fuzz/FuzzLRSplineReader).
+ *
  * Bad input gives an error naming the file and the line (truncated files,
  * wrong counts, unknown headers, non-finite numbers, knot vectors of the
  * wrong length, inconsistent meshes) and an empty output; RequestData returns 0.

@@ -69,7 +69,7 @@ run_target() {
   mkdir -p "$work/corpus-$t"
   log="$work/$t.log"
   start=$(date +%s)
-  if "$exe" "${limit[@]}" -timeout=1 -rss_limit_mb=2048 -max_len=16384 \
+  if "$exe" "${limit[@]}" -timeout=1 -rss_limit_mb=2048 -max_len=4096 \
       -print_final_stats=1 -artifact_prefix="$work/$t-" \
       "$work/corpus-$t" "${seeds[@]}" "$ext" >"$log" 2>&1; then
     echo "== $t (${limit[*]}): ok after $(( $(date +%s) - start )) s"

@@ -9,7 +9,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   const std::string text(reinterpret_cast<const char*>(data), size);
   std::vector<vtkLRSplinePatch> patches;
   std::string error;
-  if (vtkLRSplineParser::ParseG2(text, patches, &error))
+  if (vtkLRSplineParser::Parse(text, vtkLRSplineParser::G2, patches, &error))
   {
     SplineVizFuzz::ExtractAll(patches);
   }
