@@ -10,7 +10,8 @@
  * contains the point wins.
  *
  * The physical placement comes from the field data the reader writes
- * ("LRPhysicalTransform": scale xyz then offset xyz; identity if absent).
+ * ("LRPhysicalTransform": scale xyz then offset xyz, or a row-major 3x3
+ * matrix A then offset xyz for x = A u + offset; identity if absent).
  * Patches read in geometry mode ("LRMode" = 1) can only be evaluated in
  * parameter space (ParameterSpace = true).
  */

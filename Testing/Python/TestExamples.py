@@ -78,3 +78,17 @@ for picture in pictures:
     if drawn < 0.05:
         print("ERROR: the stylized lines example drew (almost) nothing in", picture)
         sys.exit(1)
+
+# lr_spline_volume.py: direct volume rendering of a real LR spline (volume
+# with streamline tubes inside; isosurfaces).
+volume_out = os.path.join(out, "TestExamples-lr-spline-volume")
+sys.argv = ["lr_spline_volume.py", volume_out]
+runpy.run_path(os.path.join(source, "Examples", "Python", "lr_spline_volume.py"),
+               run_name="__main__")
+for picture in ["lr-spline-volume-streamlines.png", "lr-spline-volume-isosurfaces.png"]:
+    drawn = drawn_fraction(os.path.join(volume_out, picture), background=(20, 23, 31),
+                           tolerance=6)
+    print("LR-spline volume example, %s: fraction drawn %.3f" % (picture, drawn))
+    if drawn < 0.1:
+        print("ERROR: the LR-spline volume example drew (almost) nothing in", picture)
+        sys.exit(1)

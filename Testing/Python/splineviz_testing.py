@@ -62,16 +62,24 @@ def coverage(view, name, stride=3, background=(255.0, 255.0, 255.0)):
     return hit / float(len(pixels)), pixels
 
 
-def drawn_fraction(png, background=None, tolerance=30):
-    """Fraction of the pixels of the image file `png` whose RGB differs from
-    `background` (default: the first pixel) by more than `tolerance` in
-    some channel."""
+def png_rgb(png):
+    """The RGB pixels of the image file `png` as an int numpy array of shape
+    (height, width, 3), the first row at the bottom (VTK's order)."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
     from vtkmodules.vtkIOImage import vtkPNGReader
 
     reader = vtkPNGReader()
     reader.SetFileName(png)
     reader.Update()
+    width, height, _ = reader.GetOutput().GetDimensions()
     rgb = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    return rgb.reshape(height, width, 3)
+
+
+def drawn_fraction(png, background=None, tolerance=30):
+    """Fraction of the pixels of the image file `png` whose RGB differs from
+    `background` (default: the first pixel) by more than `tolerance` in
+    some channel."""
+    rgb = png_rgb(png).reshape(-1, 3)
     reference = rgb[0] if background is None else background
     return float((abs(rgb - reference).max(axis=1) > tolerance).mean())
