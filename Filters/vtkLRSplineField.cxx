@@ -11,6 +11,7 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkSplineVizProgress.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -326,11 +327,11 @@ int vtkLRSplineField::EvaluateWithHint(
 //------------------------------------------------------------------------------
 vtkIdType vtkLRSplineField::EvaluatePoints(vtkIdType n,
   const std::function<void(vtkIdType, double[3])>& point, double* values, double* gradients,
-  char* mask) const
+  char* mask, vtkAlgorithm* progress) const
 {
   const int nc = this->NumberOfComponents;
   vtkSMPThreadLocal<vtkIdType> inside(0);
-  vtkSMPTools::For(0, n,
+  const bool done = vtkSplineVizProgress::For(progress, 0, n, 0, 4096,
     [&](vtkIdType begin, vtkIdType end)
     {
       vtkIdType& count = inside.Local();
@@ -361,6 +362,10 @@ vtkIdType vtkLRSplineField::EvaluatePoints(vtkIdType n,
         }
       }
     });
+  if (!done)
+  {
+    return -1;
+  }
   vtkIdType total = 0;
   for (vtkIdType c : inside)
   {
@@ -372,7 +377,7 @@ vtkIdType vtkLRSplineField::EvaluatePoints(vtkIdType n,
 //------------------------------------------------------------------------------
 vtkIdType vtkLRSplineField::EvaluateIntoPointData(vtkPointData* pd, vtkIdType n,
   const std::function<void(vtkIdType, double[3])>& point, const char* gradientName,
-  const char* maskName) const
+  const char* maskName, vtkAlgorithm* progress) const
 {
   const int nc = this->NumberOfComponents;
   vtkNew<vtkDoubleArray> values;
@@ -393,7 +398,11 @@ vtkIdType vtkLRSplineField::EvaluateIntoPointData(vtkPointData* pd, vtkIdType n,
   if (n > 0)
   {
     inside = this->EvaluatePoints(n, point, values->GetPointer(0),
-      gradientName ? gradients->GetPointer(0) : nullptr, mask->GetPointer(0));
+      gradientName ? gradients->GetPointer(0) : nullptr, mask->GetPointer(0), progress);
+    if (inside < 0)
+    {
+      return -1; // aborted
+    }
   }
   pd->AddArray(values);
   if (nc == 3)

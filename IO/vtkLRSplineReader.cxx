@@ -68,6 +68,21 @@ vtkLRSplineReader::~vtkLRSplineReader()
 }
 
 //------------------------------------------------------------------------------
+void vtkLRSplineReader::SetInputString(const std::string& text)
+{
+  if (text != this->InputString)
+  {
+    this->InputString = text;
+    this->Modified();
+  }
+}
+
+void vtkLRSplineReader::SetInputString(const char* text, std::size_t length)
+{
+  this->SetInputString(text ? std::string(text, length) : std::string());
+}
+
+//------------------------------------------------------------------------------
 int vtkLRSplineReader::CanReadFile(const char* fileName)
 {
   if (!fileName)
@@ -119,13 +134,18 @@ int vtkLRSplineReader::RequestData(
     vtkErrorMacro(<< msg);
     return 0;
   };
-  if (!this->FileName || !*this->FileName)
+  std::string text, error;
+  const char* inputName = this->ReadFromInputString ? "the input string" : this->FileName;
+  if (this->ReadFromInputString)
+  {
+    text = this->InputString;
+  }
+  else if (!this->FileName || !*this->FileName)
   {
     return fail("no file name was given");
   }
-  const std::string where = std::string("cannot read \"") + this->FileName + "\": ";
-  std::string text, error;
-  if (!ReadWholeFile(this->FileName, text, error))
+  const std::string where = std::string("cannot read \"") + inputName + "\": ";
+  if (!this->ReadFromInputString && !ReadWholeFile(this->FileName, text, error))
   {
     return fail(where + error);
   }
@@ -191,8 +211,20 @@ int vtkLRSplineReader::RequestData(
   options.FieldName = (this->FieldName && *this->FieldName) ? this->FieldName : "Field";
   options.SourceFormat = formatName;
   output->SetNumberOfBlocks(static_cast<unsigned int>(patches.size()));
+  this->UpdateProgress(0.1);
   for (std::size_t p = 0; p < patches.size(); ++p)
   {
+    // Progress per patch (the Bezier extraction of one patch is parallel);
+    // abort between patches gives an empty output.
+    if (this->CheckAbort())
+    {
+      output->Initialize();
+      return 1;
+    }
+    if (p > 0)
+    {
+      this->UpdateProgress(0.1 + 0.9 * static_cast<double>(p) / patches.size());
+    }
     const vtkLRSplinePatch& patch = patches[p];
     const vtkIdType ne = patch.GetNumberOfElements();
     options.PatchIndex = static_cast<int>(p);
@@ -203,7 +235,7 @@ int vtkLRSplineReader::RequestData(
       vtkLRSplineBezierGrid::Build(patch, options, &error, &warning);
     if (!warning.empty())
     {
-      vtkWarningMacro(<< "\"" << this->FileName << "\": patch " << p << ": " << warning);
+      vtkWarningMacro(<< "\"" << inputName << "\": patch " << p << ": " << warning);
     }
     if (!grid)
     {
@@ -222,6 +254,8 @@ void vtkLRSplineReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "ReadFromInputString: " << this->ReadFromInputString << " ("
+     << this->InputString.size() << " bytes)\n";
   os << indent << "FileFormat: " << this->FileFormat << "\n";
   os << indent << "GeometryMode: " << this->GeometryMode << "\n";
   os << indent << "PhysicalBounds: " << this->PhysicalBounds[0] << " " << this->PhysicalBounds[1]
