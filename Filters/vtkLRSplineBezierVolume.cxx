@@ -8,6 +8,7 @@
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
+#include "vtkSMPTools.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -330,6 +331,79 @@ void vtkLRSplineBezierVolume::ElevateToAtLeastLinear()
   {
     this->MakeFloatCoefficients();
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineBezierVolume::ElevateDegree(const int degree[3])
+{
+  for (int d = 0; d < 3; ++d)
+  {
+    if (degree[d] < this->Degree[d] || degree[d] > MaximumDegree)
+    {
+      return false;
+    }
+  }
+  const int nc = this->NumberOfComponents;
+  const vtkIdType ne = this->GetNumberOfElements();
+  for (int d = 0; d < 3; ++d)
+  {
+    while (this->Degree[d] < degree[d])
+    {
+      // One degree up along direction d: n = Degree[d] -> n + 1.
+      const int n = this->Degree[d];
+      int old[3] = { this->Degree[0] + 1, this->Degree[1] + 1, this->Degree[2] + 1 };
+      int neu[3] = { old[0], old[1], old[2] };
+      neu[d] = old[d] + 1;
+      const std::size_t oldPer = static_cast<std::size_t>(old[0]) * old[1] * old[2] * nc;
+      const std::size_t newPer = static_cast<std::size_t>(neu[0]) * neu[1] * neu[2] * nc;
+      std::vector<double> out(newPer * ne);
+      vtkSMPTools::For(0, ne,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType e = begin; e < end; ++e)
+          {
+            const double* src = this->Coefficients.data() + oldPer * e;
+            double* dst = out.data() + newPer * e;
+            for (int k = 0; k < neu[2]; ++k)
+            {
+              for (int j = 0; j < neu[1]; ++j)
+              {
+                for (int i = 0; i < neu[0]; ++i)
+                {
+                  const int idx[3] = { i, j, k };
+                  const int m = idx[d]; // 0 .. n + 1
+                  const double a = static_cast<double>(m) / (n + 1);
+                  int lo[3] = { i, j, k }, hi[3] = { i, j, k };
+                  lo[d] = m - 1;
+                  hi[d] = m;
+                  double* c = dst + ((k * neu[1] + j) * neu[0] + i) * nc;
+                  for (int comp = 0; comp < nc; ++comp)
+                  {
+                    double v = 0.0;
+                    if (m >= 1)
+                    {
+                      v += a * src[((lo[2] * old[1] + lo[1]) * old[0] + lo[0]) * nc + comp];
+                    }
+                    if (m <= n)
+                    {
+                      v += (1.0 - a) * src[((hi[2] * old[1] + hi[1]) * old[0] + hi[0]) * nc + comp];
+                    }
+                    c[comp] = v;
+                  }
+                }
+              }
+            }
+          }
+        });
+      this->Coefficients.swap(out);
+      ++this->Degree[d];
+    }
+  }
+  if (!this->CoefficientsFloat.empty())
+  {
+    this->MakeFloatCoefficients();
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

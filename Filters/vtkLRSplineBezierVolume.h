@@ -70,6 +70,15 @@ public:
   void ElevateToAtLeastLinear();
 
   /**
+   * Raise the degrees to `degree` (each at least the current one) by exact
+   * Bernstein degree elevation, one degree at a time per direction:
+   * c'_i = i / (n + 1) c_{i-1} + (1 - i / (n + 1)) c_i. The polynomial of
+   * every element does not change. False (nothing changed) when a target is
+   * below the current degree or above MaximumDegree.
+   */
+  bool ElevateDegree(const int degree[3]);
+
+  /**
    * Value and derivatives with respect to the element-local coordinates
    * s in [0,1]^3 of element e. `value` has NumberOfComponents entries;
    * `dlocal` (may be null) 3*NumberOfComponents entries, d value_c / d s_j at

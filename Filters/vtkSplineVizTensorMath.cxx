@@ -65,9 +65,9 @@ const char* GetLayoutName(int layout)
     case SYMMETRIC_VTK:
       return "6 components XX YY ZZ XY YZ XZ (VTK, ParaView)";
     case SYMMETRIC_LOWER:
-      return "6 components XX XY YY XZ YZ ZZ (DIPY, FSL)";
+      return "6 components XX XY YY XZ YZ ZZ (NIfTI, DIPY)";
     case SYMMETRIC_UPPER:
-      return "6 components XX XY XZ YY YZ ZZ (MFEM)";
+      return "6 components XX XY XZ YY YZ ZZ (FSL, MFEM)";
     case TEEM_7:
       return "7 components CONF XX XY XZ YY YZ ZZ (Teem, NRRD)";
     default:

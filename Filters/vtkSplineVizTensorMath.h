@@ -49,13 +49,20 @@ namespace vtkSplineVizTensorMath
 /**
  * Component layouts of tensor arrays.
  *
- * | layout            | comps | order                                   | used by            |
- * |-------------------|-------|-----------------------------------------|--------------------|
- * | FULL_9            | 9     | xx xy xz yx yy yz zx zy zz (row-major)  | VTK 9-comp tensors |
- * | SYMMETRIC_VTK     | 6     | xx yy zz xy yz xz                       | VTK, ParaView      |
- * | SYMMETRIC_LOWER   | 6     | xx xy yy xz yz zz (lower triangle)      | DIPY, FSL          |
- * | SYMMETRIC_UPPER   | 6     | xx xy xz yy yz zz (upper triangle)      | MFEM               |
- * | TEEM_7            | 7     | conf xx xy xz yy yz zz                  | Teem / NRRD        |
+ * | layout            | comps | order                                   | used by              |
+ * |-------------------|-------|-----------------------------------------|----------------------|
+ * | FULL_9            | 9     | xx xy xz yx yy yz zx zy zz (row-major)  | VTK 9-comp tensors   |
+ * | SYMMETRIC_VTK     | 6     | xx yy zz xy yz xz                       | VTK, ParaView        |
+ * | SYMMETRIC_LOWER   | 6     | xx xy yy xz yz zz (lower triangle)      | NIfTI standard, DIPY |
+ * | SYMMETRIC_UPPER   | 6     | xx xy xz yy yz zz (upper triangle)      | FSL dtifit, MFEM     |
+ * | TEEM_7            | 7     | conf xx xy xz yy yz zz                  | Teem / NRRD          |
+ *
+ * The lower triangle row by row is the NIfTI standard's order for symmetric
+ * matrices (NIFTI_INTENT_SYMMATRIX, in the 5th dimension) and DIPY's default;
+ * FSL's `dtifit --save_tensor` writes a 4D volume in the upper-triangular
+ * order Dxx Dxy Dxz Dyy Dyz Dzz (FSL's fslpy, fsl/data/dtifit.py, and DIPY's
+ * `nifti_tensor=False` output "used by other software (e.g., FSL)"), so
+ * SYMMETRIC_NIFTI and SYMMETRIC_FSL name the same two layouts.
  *
  * A 9-component tensor is symmetrized, (A + A^T)/2.
  */
@@ -65,7 +72,10 @@ enum TensorLayout
   SYMMETRIC_VTK = 1,
   SYMMETRIC_LOWER = 2,
   SYMMETRIC_UPPER = 3,
-  TEEM_7 = 4
+  TEEM_7 = 4,
+  /// Aliases: the NIfTI standard's (and DIPY's) order, FSL dtifit's order.
+  SYMMETRIC_NIFTI = SYMMETRIC_LOWER,
+  SYMMETRIC_FSL = SYMMETRIC_UPPER
 };
 
 /// Number of components of a layout (0 for an unknown layout).

@@ -41,15 +41,17 @@
  * arrays are read as full 3x3 matrices (symmetrized) and 7-component arrays
  * as Teem/NRRD (confidence first); for 6-component arrays TensorLayout picks
  * the order: SYMMETRIC_VTK (XX YY ZZ XY YZ XZ, VTK and ParaView, the
- * default), SYMMETRIC_LOWER (XX XY YY XZ YZ ZZ, DIPY and FSL) or
- * SYMMETRIC_UPPER (XX XY XZ YY YZ ZZ, MFEM).
+ * default), SYMMETRIC_LOWER (XX XY YY XZ YZ ZZ, NIfTI and DIPY) or
+ * SYMMETRIC_UPPER (XX XY XZ YY YZ ZZ, FSL dtifit and MFEM).
  *
  * Output arrays are double when the tensors are double, float otherwise.
  * Tuples with a NaN or infinite component give NaN in every output (one
  * warning with their count). A missing tensor array, or one whose number of
  * components does not fit the layout, is an error (RequestData returns 0).
  * Composite inputs are processed block by block; pieces pass through.
- * The work is multi-threaded with vtkSMPTools.
+ * The work is multi-threaded with vtkSMPTools, in batches between which
+ * progress is reported and abort honoured (an aborted run gives an empty
+ * output).
  */
 #ifndef vtkTensorAnalysisFilter_h
 #define vtkTensorAnalysisFilter_h

@@ -1,6 +1,18 @@
-# IO/: readers of the SplineViz module (included from cmake/module/CMakeLists.txt).
+# IO/: readers and writers of the SplineViz module (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineReader")
 # Plain C++ parser of the LRSplines text and GoTools g2 formats.
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineParser")
+# Neuroimaging: NIfTI diffusion tensor volumes (on top of VTK's NIfTI reader)
+# and MRtrix .tck / TrackVis .trk tractograms, read and written.
+list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkNIfTITensorReader"
+  "${SPLINEVIZ_FOLDER}/vtkTractogramReader"
+  "${SPLINEVIZ_FOLDER}/vtkTractogramWriter")
+# Plain C++ shared by the tractogram reader and writer: the headers of the
+# formats, byte order, the TrackVis voxel-mm to RAS+ mm map.
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkTractogramFormats")
+list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizNameList.h")

@@ -8,6 +8,19 @@ list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkTessellatedTubeMapper")
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineVizGPUBuffer")
+# Stylized lines (Stoll et al.): the mapper, its CPU fix-up and the math
+# shared by both and the shaders (vtkStylizedLineMath.h compiles
+# glsl/vtkStylizedLineMathShared.glsl as C++).
+list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkStylizedLineMapper")
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkStylizedLineFixUp")
+list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkStylizedLineMath.h")
+list(APPEND splineviz_shaders
+  "${SPLINEVIZ_FOLDER}/glsl/vtkStylizedLineMathShared.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkStylizedLineVS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkStylizedLineFS.glsl")
 list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkSplineTubeMath.h")
 list(APPEND splineviz_shaders
@@ -37,3 +50,17 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkSuperquadricGlyphVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSuperquadricGlyphGS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSuperquadricGlyphFS.glsl")
+
+# LR-spline direct volume rendering (Fuchs et al. §4): the mapper and its
+# shaders; the element search and Bezier evaluation shared by the fragment
+# stage and the CPU check (vtkLRSplineVolumeMath.h compiles
+# glsl/vtkLRSplineVolumeShared.glsl as C++).
+list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineVolumeMapper")
+list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineVolumeMath.h")
+list(APPEND splineviz_shaders
+  "${SPLINEVIZ_FOLDER}/glsl/vtkLRSplineVolumeShared.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkLRSplineVolumeVS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkLRSplineVolumeFS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkLRSplineVolumeTrimFS.glsl")

@@ -36,10 +36,6 @@ vtkStandardNewMacro(vtkRayCastTubeMapper);
 
 namespace
 {
-// Marks the end of the code that wrote gl_FragDepth; see ReplaceShaderValues.
-const char* const DepthWrittenMarker =
-  "// SplineViz: gl_FragDepth is the tube's depth from here on\n";
-
 std::string TubeMathSource()
 {
   return std::string(vtkSplineTubeMathPrelude) + vtkSplineTubeMathShared;
@@ -160,7 +156,7 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
   {
     depth += GetTubeColorImplementation("tubeInfoVSOutput.x", "tubeT");
   }
-  depth += DepthWrittenMarker;
+  depth += GetFragDepthWrittenMarker();
   vtkShaderProgram::Substitute(FSSource, "//VTK::Depth::Impl", depth);
   // The normal comes from the intersection.
   vtkShaderProgram::Substitute(FSSource, "//VTK::Normal::Impl", "");
@@ -176,14 +172,8 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
   // Render passes (depth peeling) compare gl_FragCoord.z with their depth
   // textures; for ray-cast fragments the depth is the one written above.
   FSSource = shaders[vtkShader::Fragment]->GetSource();
-  const size_t marker = FSSource.find(DepthWrittenMarker);
-  if (marker != std::string::npos)
-  {
-    std::string tail = FSSource.substr(marker);
-    vtkShaderProgram::Substitute(tail, "gl_FragCoord.z", "gl_FragDepth", true);
-    FSSource = FSSource.substr(0, marker) + tail;
-    shaders[vtkShader::Fragment]->SetSource(FSSource);
-  }
+  UseWrittenFragDepth(FSSource);
+  shaders[vtkShader::Fragment]->SetSource(FSSource);
   DumpShaderSources({ { "VS", shaders[vtkShader::Vertex]->GetSource() },
     { "FS", shaders[vtkShader::Fragment]->GetSource() } });
 }

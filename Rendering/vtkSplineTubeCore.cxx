@@ -3,6 +3,7 @@
 #include "vtkSplineTubeMath.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
@@ -112,6 +113,8 @@ vtkSplineTubeCore::vtkSplineTubeCore()
   this->NodeColorDerivatives->SetName("ColorDerivatives");
   this->NodeFrames->SetNumberOfComponents(3);
   this->NodeFrames->SetName("Frames");
+  this->NodeScalars->SetNumberOfComponents(1);
+  this->NodeScalars->SetName("Scalars");
   this->SegmentFirstNodes->SetName("SegmentFirstNodes");
   this->SegmentFlags->SetName("SegmentFlags");
   this->SegmentCellIds->SetName("SegmentCellIds");
@@ -124,6 +127,9 @@ vtkSplineTubeCore::vtkSplineTubeCore()
 vtkSplineTubeCore::~vtkSplineTubeCore()
 {
   this->SetRadiusArrayName(nullptr);
+  this->SetNodeScalarArrayName(nullptr);
+  this->SetNodeScalarRole(nullptr);
+  this->SetCellIdArrayName(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -135,6 +141,7 @@ void vtkSplineTubeCore::Initialize()
   this->NodeColors->SetNumberOfTuples(0);
   this->NodeColorDerivatives->SetNumberOfTuples(0);
   this->NodeFrames->SetNumberOfTuples(0);
+  this->NodeScalars->SetNumberOfTuples(0);
   this->SegmentFirstNodes->SetNumberOfTuples(0);
   this->SegmentFlags->SetNumberOfTuples(0);
   this->SegmentCellIds->SetNumberOfTuples(0);
@@ -176,30 +183,43 @@ bool vtkSplineTubeCore::AddPolyData(
   }
   const vtkIdType numPoints = input->GetNumberOfPoints();
 
-  vtkDataArray* radiusArray = nullptr;
-  if (this->RadiusArrayName && this->RadiusArrayName[0])
+  // A named one-component numeric point array, or an error.
+  auto findArray = [&](const char* name, const char* what, vtkDataArray*& array)
   {
-    vtkAbstractArray* abstractArray =
-      input->GetPointData()->GetAbstractArray(this->RadiusArrayName);
+    array = nullptr;
+    if (!name || !name[0])
+    {
+      return true;
+    }
+    vtkAbstractArray* abstractArray = input->GetPointData()->GetAbstractArray(name);
     if (!abstractArray)
     {
-      vtkErrorMacro(<< "The radius array \"" << this->RadiusArrayName
+      vtkErrorMacro(<< "The " << what << " array \"" << name
                     << "\" is not a point array of the input.");
       return false;
     }
-    radiusArray = vtkDataArray::SafeDownCast(abstractArray);
-    if (!radiusArray)
+    array = vtkDataArray::SafeDownCast(abstractArray);
+    if (!array)
     {
-      vtkErrorMacro(<< "The radius array \"" << this->RadiusArrayName << "\" is not numeric.");
+      vtkErrorMacro(<< "The " << what << " array \"" << name << "\" is not numeric.");
       return false;
     }
-    if (radiusArray->GetNumberOfComponents() != 1)
+    if (array->GetNumberOfComponents() != 1)
     {
-      vtkErrorMacro(<< "The radius array \"" << this->RadiusArrayName << "\" has "
-                    << radiusArray->GetNumberOfComponents()
-                    << " components; a radius array needs exactly one.");
+      vtkErrorMacro(<< "The " << what << " array \"" << name << "\" has "
+                    << array->GetNumberOfComponents() << " components; a " << what
+                    << " array needs exactly one.");
       return false;
     }
+    return true;
+  };
+  vtkDataArray* radiusArray = nullptr;
+  vtkDataArray* scalarArray = nullptr;
+  if (!findArray(this->RadiusArrayName, "radius", radiusArray) ||
+    !findArray(this->NodeScalarArrayName,
+      this->NodeScalarRole ? this->NodeScalarRole : "node scalar", scalarArray))
+  {
+    return false;
   }
   if (colors && (colors->GetNumberOfComponents() != 4 || colors->GetNumberOfTuples() < numPoints))
   {
@@ -225,6 +245,20 @@ bool vtkSplineTubeCore::AddPolyData(
   vtkCellArray* lines = input->GetLines();
   const vtkIdType numLines = lines->GetNumberOfCells();
   const vtkIdType firstCellId = input->GetNumberOfVerts(); // line cell ids follow the verts
+  // Original cell ids, when the input carries them (one component, integer).
+  vtkDataArray* originalIds = nullptr;
+  if (this->CellIdArrayName && this->CellIdArrayName[0])
+  {
+    originalIds = input->GetCellData()->GetArray(this->CellIdArrayName);
+    if (originalIds &&
+      (originalIds->GetNumberOfComponents() != 1 ||
+        vtkDataArray::GetDataTypeMin(originalIds->GetDataType()) == VTK_DOUBLE_MIN ||
+        vtkDataArray::GetDataTypeMin(originalIds->GetDataType()) == VTK_FLOAT_MIN ||
+        originalIds->GetNumberOfTuples() != input->GetNumberOfCells()))
+    {
+      originalIds = nullptr;
+    }
+  }
   const double constantRadius = this->Radius;
   const double radiusScale = this->RadiusScale;
 
@@ -233,6 +267,7 @@ bool vtkSplineTubeCore::AddPolyData(
     LINE_OK,
     LINE_NONFINITE_POINT,
     LINE_BAD_RADIUS,
+    LINE_BAD_SCALAR,
   };
   struct LineScan
   {
@@ -272,6 +307,12 @@ bool vtkSplineTubeCore::AddPolyData(
           scan.BadRadius = r;
           return;
         }
+      }
+      if (scalarArray && !IsFinite(scalarArray->GetComponent(pts[k], 0)))
+      {
+        scan.Status = LINE_BAD_SCALAR;
+        scan.BadPoint = pts[k];
+        return;
       }
       // Merge repeated consecutive points (the spline needs distinct nodes).
       if (scan.Kept > 0)
@@ -332,6 +373,15 @@ bool vtkSplineTubeCore::AddPolyData(
       ++this->NumberOfSkippedLines;
       continue;
     }
+    if (scan.Status == LINE_BAD_SCALAR)
+    {
+      vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << scan.BadPoint
+                      << " has a NaN or infinite value in the "
+                      << (this->NodeScalarRole ? this->NodeScalarRole : "node scalar")
+                      << " array \"" << this->NodeScalarArrayName << "\".");
+      ++this->NumberOfSkippedLines;
+      continue;
+    }
     if (scan.Kept < 2)
     {
       ++shortLines;
@@ -353,6 +403,11 @@ bool vtkSplineTubeCore::AddPolyData(
   this->NodeRadii->SetNumberOfTuples(numNodes);
   this->NodeColors->Resize(numNodes);
   this->NodeColors->SetNumberOfTuples(numNodes);
+  if (scalarArray)
+  {
+    this->NodeScalars->Resize(numNodes);
+    this->NodeScalars->SetNumberOfTuples(numNodes);
+  }
   this->SegmentFirstNodes->Resize(numSegments);
   this->SegmentFirstNodes->SetNumberOfTuples(numSegments);
   this->SegmentFlags->Resize(numSegments);
@@ -369,6 +424,7 @@ bool vtkSplineTubeCore::AddPolyData(
   float* positions = this->NodePositions->GetPointer(0);
   float* radii = this->NodeRadii->GetPointer(0);
   float* nodeColors = this->NodeColors->GetPointer(0);
+  float* nodeScalars = scalarArray ? this->NodeScalars->GetPointer(0) : nullptr;
   vtkTypeUInt32* segmentFirst = this->SegmentFirstNodes->GetPointer(0);
   unsigned char* segmentFlags = this->SegmentFlags->GetPointer(0);
   vtkIdType* segmentCells = this->SegmentCellIds->GetPointer(0);
@@ -407,6 +463,10 @@ bool vtkSplineTubeCore::AddPolyData(
             radii[2 * i] = static_cast<float>(r);
             radii[2 * i + 1] = 0.0f;
             rMax = std::max(rMax, r);
+            if (nodeScalars)
+            {
+              nodeScalars[i] = static_cast<float>(scalarArray->GetComponent(pointId, 0));
+            }
             float* c = nodeColors + 4 * i;
             if (colorBytes)
             {
@@ -438,7 +498,8 @@ bool vtkSplineTubeCore::AddPolyData(
           const vtkIdType s = firstSegment + k;
           segmentFirst[s] = static_cast<vtkTypeUInt32>(first + k);
           segmentFlags[s] = flags;
-          segmentCells[s] = cellId;
+          segmentCells[s] =
+            originalIds ? static_cast<vtkIdType>(originalIds->GetComponent(cellId, 0)) : cellId;
           segmentBlocks[s] = blockId;
         }
       }

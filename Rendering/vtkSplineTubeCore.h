@@ -42,6 +42,11 @@
  * two distinct points are skipped (one warning with the count). A missing,
  * non-numeric or multi-component radius array is an error (AddPolyData()
  * returns false and adds nothing).
+ *
+ * An optional one-component point array (NodeScalarArrayName, e.g. the
+ * stylized lines' orientation angles) is carried to the nodes the same way
+ * (NodeScalars); polylines with a NaN or infinite value in it are skipped with
+ * a warning, and a missing, non-numeric or multi-component array is an error.
  */
 
 #ifndef vtkSplineTubeCore_h
@@ -94,6 +99,36 @@ public:
    */
   vtkSetClampMacro(RadiusScale, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(RadiusScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Name of a one-component point array whose values are carried to the
+   * nodes (GetNodeScalars()). nullptr (default): none.
+   */
+  vtkSetStringMacro(NodeScalarArrayName);
+  vtkGetStringMacro(NodeScalarArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Name of an integer cell array of original cell ids (ParaView's
+   * "vtkOriginalCellIds" of geometry filtered input): when a block has it,
+   * the segments' cell ids (GetSegmentCellIds(), what picking reports) are
+   * its values instead of the cell's index in the block. nullptr (default):
+   * the index.
+   */
+  vtkSetStringMacro(CellIdArrayName);
+  vtkGetStringMacro(CellIdArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * What the node scalars are, for messages ("The <role> array ..."). Default
+   * "node scalar".
+   */
+  vtkSetStringMacro(NodeScalarRole);
+  vtkGetStringMacro(NodeScalarRole);
   ///@}
 
   ///@{
@@ -164,6 +199,8 @@ public:
   vtkFloatArray* GetNodeColors() { return this->NodeColors; }
   vtkFloatArray* GetNodeColorDerivatives() { return this->NodeColorDerivatives; }
   vtkFloatArray* GetNodeFrames() { return this->NodeFrames; }
+  /// The values of NodeScalarArrayName per node (empty without that array).
+  vtkFloatArray* GetNodeScalars() { return this->NodeScalars; }
   ///@}
 
   ///@{
@@ -227,6 +264,9 @@ protected:
   double Radius = 0.01;
   char* RadiusArrayName = nullptr;
   double RadiusScale = 1.0;
+  char* NodeScalarArrayName = nullptr;
+  char* NodeScalarRole = nullptr;
+  char* CellIdArrayName = nullptr;
   double MaximumFrameStepAngle = 0.1;
   bool ComputeFrames = true;
 
@@ -236,6 +276,7 @@ protected:
   vtkNew<vtkFloatArray> NodeColors;
   vtkNew<vtkFloatArray> NodeColorDerivatives;
   vtkNew<vtkFloatArray> NodeFrames;
+  vtkNew<vtkFloatArray> NodeScalars;
   vtkNew<vtkTypeUInt32Array> SegmentFirstNodes;
   vtkNew<vtkUnsignedCharArray> SegmentFlags;
   vtkNew<vtkIdTypeArray> SegmentCellIds;

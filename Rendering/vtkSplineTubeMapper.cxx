@@ -58,6 +58,7 @@ vtkSplineTubeMapper::vtkSplineTubeMapper()
 vtkSplineTubeMapper::~vtkSplineTubeMapper()
 {
   this->SetRadiusArray(nullptr);
+  this->SetCellIdArrayName(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -87,11 +88,13 @@ std::string vtkSplineTubeMapper::BuildSignature()
   std::ostringstream s;
   s.precision(17);
   s << this->Radius << '|' << (this->RadiusArray ? this->RadiusArray : "") << '|'
-    << this->RadiusScale << '|' << this->ScalarVisibility << '|' << this->ScalarMode << '|'
-    << this->ArrayAccessMode << '|' << this->ArrayId << '|' << this->ArrayName << '|'
-    << this->ArrayComponent << '|' << this->ColorMode << '|' << this->UseLookupTableScalarRange
-    << '|' << this->ScalarRange[0] << '|' << this->ScalarRange[1] << '|' << this->FieldDataTupleId
-    << '|' << this->LookupTable << '|' << (this->LookupTable ? this->LookupTable->GetMTime() : 0);
+    << this->RadiusScale << '|' << (this->CellIdArrayName ? this->CellIdArrayName : "") << '|'
+    << this->ScalarVisibility << '|' << this->ScalarMode << '|' << this->ArrayAccessMode << '|'
+    << this->ArrayId << '|' << this->ArrayName << '|' << this->ArrayComponent << '|'
+    << this->ColorMode << '|' << this->UseLookupTableScalarRange << '|' << this->ScalarRange[0]
+    << '|' << this->ScalarRange[1] << '|' << this->FieldDataTupleId << '|' << this->LookupTable
+    << '|' << (this->LookupTable ? this->LookupTable->GetMTime() : 0);
+  this->AppendBuildSignature(s);
   return s.str();
 }
 
@@ -111,6 +114,8 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
   this->Core->SetRadiusArrayName(
     this->RadiusArray && this->RadiusArray[0] ? this->RadiusArray : nullptr);
   this->Core->SetRadiusScale(this->RadiusScale);
+  this->Core->SetCellIdArrayName(this->CellIdArrayName);
+  this->ConfigureTubeCore(this->Core);
 
   vtkIdType inputCells = 0;
   auto addLeaf = [this, &inputCells](vtkPolyData* pd, unsigned int blockId)
@@ -264,10 +269,11 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   this->UpdateTubeCore();
   if (this->NeedToUploadTubes())
   {
+    this->UploadFailed = false;
     this->UploadTubes(window);
     this->UploadTime.Modified();
   }
-  if (this->Core->GetNumberOfSegments() == 0)
+  if (this->Core->GetNumberOfSegments() == 0 || this->UploadFailed)
   {
     return;
   }
@@ -396,7 +402,9 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
   }
   if (!ok)
   {
-    vtkErrorMacro(<< "Could not upload the tubes buffer to the GPU.");
+    vtkErrorMacro(<< "Could not upload the tubes buffer to the GPU: "
+                  << vtkSplineVizGPUBuffer::GetLastUploadError());
+    this->UploadFailed = true;
   }
   return ok;
 }
@@ -612,6 +620,26 @@ void vtkSplineTubeMapper::ReplaceShaderTubeClip(
 }
 
 //------------------------------------------------------------------------------
+const char* vtkSplineTubeMapper::GetFragDepthWrittenMarker()
+{
+  return "// SplineViz: gl_FragDepth is the primitive's depth from here on\n";
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::UseWrittenFragDepth(std::string& FSSource)
+{
+  const size_t marker = FSSource.find(GetFragDepthWrittenMarker());
+  if (marker == std::string::npos)
+  {
+    return;
+  }
+  std::string tail = FSSource.substr(marker);
+  vtkShaderProgram::Substitute(tail, "gl_FragCoord.z", "gl_FragDepth", true);
+  vtkShaderProgram::Substitute(tail, "1.0/gl_FragCoord.w", "(-vertexVC.z)", true);
+  FSSource = FSSource.substr(0, marker) + tail;
+}
+
+//------------------------------------------------------------------------------
 void vtkSplineTubeMapper::DumpShaderSources(
   const std::vector<std::pair<std::string, std::string>>& stages)
 {
@@ -667,8 +695,16 @@ double* vtkSplineTubeMapper::GetBounds()
 void vtkSplineTubeMapper::ComputeTubeMatrices(
   vtkRenderer* ren, vtkActor* act, float modelView[16], float viewModel[16], float& radiusScale)
 {
+  this->ComputeTubeMatrices(
+    ren->GetActiveCamera()->GetModelViewTransformMatrix(), act, modelView, viewModel, radiusScale);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::ComputeTubeMatrices(vtkMatrix4x4* worldToView, vtkActor* act,
+  float modelView[16], float viewModel[16], float& radiusScale)
+{
   vtkNew<vtkMatrix4x4> m;
-  m->DeepCopy(ren->GetActiveCamera()->GetModelViewTransformMatrix());
+  m->DeepCopy(worldToView);
   if (!act->GetIsIdentity())
   {
     vtkMatrix4x4::Multiply4x4(m, act->GetMatrix(), m);
@@ -700,7 +736,10 @@ void vtkSplineTubeMapper::ComputeTubeMatrices(
     for (int c = 0; c < 4; ++c)
     {
       modelView[c * 4 + r] = static_cast<float>(m->GetElement(r, c));
-      viewModel[c * 4 + r] = static_cast<float>(inverse->GetElement(r, c));
+      if (viewModel)
+      {
+        viewModel[c * 4 + r] = static_cast<float>(inverse->GetElement(r, c));
+      }
     }
   }
 }
@@ -712,5 +751,7 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "RadiusArray: " << (this->RadiusArray ? this->RadiusArray : "(none)") << "\n";
   os << indent << "RadiusScale: " << this->RadiusScale << "\n";
+  os << indent << "CellIdArrayName: " << (this->CellIdArrayName ? this->CellIdArrayName : "(none)")
+     << "\n";
   os << indent << "Segments: " << this->Core->GetNumberOfSegments() << "\n";
 }

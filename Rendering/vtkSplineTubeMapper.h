@@ -40,6 +40,7 @@
 #include "vtkNew.h"          // for vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 
+#include <iosfwd>  // for std::ostream
 #include <memory>  // for std::unique_ptr
 #include <string>  // for std::string
 #include <utility> // for std::pair
@@ -84,6 +85,18 @@ public:
    */
   vtkSetClampMacro(RadiusScale, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(RadiusScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Name of an integer cell array of original cell ids: when a block has it,
+   * picking reports its value for the picked polyline instead of the
+   * polyline's index (ParaView's geometry representations pass
+   * "vtkOriginalCellIds" through vtkPVDataRepresentation::SetArrayIdNames).
+   * nullptr (default): the index.
+   */
+  vtkSetStringMacro(CellIdArrayName);
+  vtkGetStringMacro(CellIdArrayName);
   ///@}
 
   /**
@@ -203,9 +216,42 @@ protected:
   /// True when the data on the GPU is older than the core.
   bool NeedToUploadTubes() const { return this->UploadTime < this->CoreBuildTime; }
 
+  /**
+   * Set by UploadTubes() (and UploadTubeBuffers()) when the data could not be
+   * put on the GPU (too large for its limits, out of memory): then nothing is
+   * drawn until the data changes. Reset before every upload.
+   */
+  bool UploadFailed = false;
+
   /// Rebuild the core if the input, settings or coloring changed. Returns
   /// true when it was rebuilt.
   bool UpdateTubeCore();
+
+  /**
+   * Subclasses set the core's own options (frames, node scalars) here; called
+   * by UpdateTubeCore() before the input is added. What it depends on must be
+   * in AppendBuildSignature().
+   */
+  virtual void ConfigureTubeCore(vtkSplineTubeCore*) {}
+
+  /**
+   * Subclasses append the settings their tube data depends on (beyond the
+   * radius and coloring settings): a change rebuilds the core.
+   */
+  virtual void AppendBuildSignature(std::ostream&) {}
+
+  ///@{
+  /**
+   * For shaders that write gl_FragDepth: mark the end of that code with
+   * GetFragDepthWrittenMarker(), then, after VTK's replacements, call
+   * UseWrittenFragDepth(): from the marker on, render-pass code that reads
+   * the fragment's depth (depth peeling, the shadow-map baker) reads the
+   * written depth (gl_FragDepth; -vertexVC.z for 1/gl_FragCoord.w, the eye
+   * distance of a perspective camera) instead of the rasterized one.
+   */
+  static const char* GetFragDepthWrittenMarker();
+  static void UseWrittenFragDepth(std::string& FSSource);
+  ///@}
 
   // The buffer objects are ours: the superclass' VBO/IBO path is not used.
   bool GetNeedToRebuildBufferObjects(vtkRenderer*, vtkActor*) override { return false; }
@@ -220,6 +266,9 @@ protected:
    */
   void ComputeTubeMatrices(
     vtkRenderer* ren, vtkActor* act, float modelView[16], float viewModel[16], float& radiusScale);
+  /// The same for another camera (its world-to-view matrix); viewModel may be nullptr.
+  void ComputeTubeMatrices(vtkMatrix4x4* worldToView, vtkActor* act, float modelView[16],
+    float viewModel[16], float& radiusScale);
 
   /**
    * The camera's view-to-display matrix (the projection, stored transposed
@@ -230,6 +279,7 @@ protected:
   double Radius = 0.01;
   char* RadiusArray = nullptr;
   double RadiusScale = 1.0;
+  char* CellIdArrayName = nullptr;
 
   vtkNew<vtkSplineTubeCore> Core;
   vtkNew<vtkPolyData> EmptyInput; ///< stands in for CurrentInput in superclass code

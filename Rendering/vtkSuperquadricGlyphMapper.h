@@ -143,8 +143,8 @@ public:
   /**
    * Component order of 6-component tensor arrays, a
    * vtkSplineVizTensorMath::TensorLayout: SYMMETRIC_VTK (1, default: XX YY ZZ
-   * XY YZ XZ), SYMMETRIC_LOWER (2: XX XY YY XZ YZ ZZ, DIPY and FSL) or
-   * SYMMETRIC_UPPER (3: XX XY XZ YY YZ ZZ, MFEM). 9-component arrays are read
+   * XY YZ XZ), SYMMETRIC_LOWER (2: XX XY YY XZ YZ ZZ, NIfTI and DIPY) or
+   * SYMMETRIC_UPPER (3: XX XY XZ YY YZ ZZ, FSL dtifit and MFEM). 9-component arrays are read
    * as row-major 3x3 matrices (symmetrized), 7-component arrays as Teem/NRRD
    * (confidence first, ignored); FULL_9 (0) and TEEM_7 (4) demand them.
    */

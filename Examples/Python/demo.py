@@ -6,6 +6,7 @@ SplineViz renderers to PNG files.
 (scripts/demo.sh sets up, builds and runs this under an X display.)
 """
 import os
+import runpy
 import sys
 
 from vtkmodules.vtkFiltersCore import vtkTubeFilter
@@ -153,6 +154,40 @@ tube_actor.GetProperty().SetSpecularPower(40)
 fiber_view(tube_actor, "fibers-vtk-tube-filter-closeup.png", camera_position=(0.08, 0.05, 0.32),
            focal=(0.0, 0.0, 0.0))
 
+# --- Stylized lines (Stoll et al.) -------------------------------------------
+# The same fibers as lit generalized cylinders splatted as silhouette quads
+# (one quad per segment, per-pixel normal and depth), with a halo in the
+# background color that cuts the lines behind; then with stripes along the
+# lines and their own shadows.
+stylized = splineviz.vtkStylizedLineMapper()
+stylized.SetInputConnection(fibers.GetOutputPort())
+stylized.SetRadiusArray("Radius")
+stylized.SetScalarRange(0, 1)
+stylized.SetHaloWidth(0.4)
+stylized_actor = vtkActor()
+stylized_actor.SetMapper(stylized)
+stylized_actor.GetProperty().SetSpecular(0.4)
+stylized_actor.GetProperty().SetSpecularPower(40)
+render([stylized_actor], "fibers-stylized-lines-halo.png", (0.25, 0.35, 1.9), (0, 0, 0),
+       background=(1, 1, 1), samples=0, reset_camera=False)
+textured = splineviz.vtkStylizedLineMapper()
+textured.SetInputConnection(fibers.GetOutputPort())
+textured.SetRadiusArray("Radius")
+textured.SetScalarRange(0, 1)
+textured.SetTexturePatternToStripes()
+textured.SetShadows(True)
+textured_actor = vtkActor()
+textured_actor.SetMapper(textured)
+textured_actor.GetProperty().SetSpecular(0.4)
+textured_actor.GetProperty().SetSpecularPower(40)
+fiber_view(textured_actor, "fibers-stylized-lines-closeup.png", camera_position=(0.08, 0.05, 0.32),
+           focal=(0.0, 0.0, 0.0))
+# Stoll Fig. 11 on streamlines VTK traces: velocity to color, integrated
+# divergence to radius, rotation to the stripes' orientation, a halo
+# (Examples/Python/stylized_lines.py; with the plugin also in ParaView).
+runpy.run_path(os.path.join(os.path.dirname(os.path.abspath(__file__)), "stylized_lines.py"),
+               init_globals={"__doc__": None}, run_name="stylized_lines")
+
 # --- LR-spline volumes (Fuchs et al.) --------------------------------------
 # The real locally refined volume, read as exact Bezier hexahedra: its
 # surface with the element edges, coloured by the element size (the local
@@ -249,6 +284,13 @@ if os.path.exists(lr_file):
     # the streamlines and the LR mesh of the spline
     render([stream_actor, mesh1_actor], "lr-spline-streamlines.png", (2.4, -1.6, 1.9),
            (0.45, 0.45, 0.4), view_up=(0, 0, 1))
+
+# Direct volume rendering of the spline itself (Fuchs §4: exact evaluation on
+# the GPU, no resampling): |v| of patch 1 with streamline tubes inside, and
+# isosurfaces refined on the exact spline (Examples/Python/lr_spline_volume.py).
+if hasattr(splineviz, "vtkLRSplineVolumeMapper"):
+    runpy.run_path(os.path.join(os.path.dirname(os.path.abspath(__file__)), "lr_spline_volume.py"),
+                   init_globals={"__doc__": None}, run_name="lr_spline_volume")
 
 # -- Superquadric tensor glyphs (Hlawitschka et al.; Kindlmann 2004) ---------
 # A synthetic tensor volume whose principal direction winds around the z axis

@@ -91,7 +91,7 @@ volume = dti_volume()
 mapper = splineviz.vtkSuperquadricGlyphMapper()
 mapper.SetInputData(volume)
 mapper.SetTensorArrayName("DTI")
-mapper.SetTensorLayout(2)  # vtkSplineVizTensorMath::SYMMETRIC_LOWER (DIPY, FSL)
+mapper.SetTensorLayout(2)  # vtkSplineVizTensorMath::SYMMETRIC_LOWER (NIfTI, DIPY)
 mapper.SetScaleMode(mapper.SCALE_NORMALIZED)  # every glyph 2 mm long: shape only
 mapper.SetScaleFactor(0.95)
 mapper.SetAnisotropyThreshold(0.15)
@@ -133,7 +133,7 @@ source = simple.TrivialProducer()
 source.GetClientSideObject().SetOutput(volume)
 analysis = simple.TensorAnalysis(Input=source)
 analysis.Tensors = ["POINTS", "DTI"]
-analysis.TensorLayout = 2  # DIPY / FSL
+analysis.TensorLayout = 2  # NIfTI / DIPY order
 view = simple.CreateRenderView()
 view.ViewSize = [900, 700]
 view.OrientationAxesVisibility = 0

@@ -34,7 +34,7 @@ dti = OpenDataFile(data)  # noqa: F405
 
 fibers = TensorLineTracer(Input=dti)  # noqa: F405
 fibers.Tensors = ["POINTS", "DTI"]
-fibers.TensorLayout = "XX XY YY XZ YZ ZZ (DIPY, FSL)"
+fibers.TensorLayout = "XX XY YY XZ YZ ZZ (NIfTI, DIPY)"
 fibers.Seeding = "Voxels above the seed FA threshold"
 fibers.SeedFAThreshold = 0.3
 fibers.StoppingFAThreshold = 0.15
@@ -77,7 +77,7 @@ glyph_display = Show(tensor_slice, view)  # noqa: F405
 if "Superquadric Glyphs" in glyph_display.GetProperty("Representation").Available:
     glyph_display.SetRepresentationType("Superquadric Glyphs")
     glyph_display.SuperquadricTensors = "DTI"
-    glyph_display.SuperquadricTensorLayout = 2  # DIPY / FSL
+    glyph_display.SuperquadricTensorLayout = 2  # NIfTI / DIPY order
     glyph_display.SuperquadricScaleMode = 1  # Normalized: shape only
     glyph_display.SuperquadricScaleFactor = 0.95
     glyph_display.SuperquadricGamma = 3.0
@@ -88,7 +88,7 @@ else:
     Hide(tensor_slice, view)  # noqa: F405
     analysis = TensorAnalysis(Input=tensor_slice)  # noqa: F405
     analysis.Tensors = ["POINTS", "DTI"]
-    analysis.TensorLayout = "XX XY YY XZ YZ ZZ (DIPY, FSL)"
+    analysis.TensorLayout = "XX XY YY XZ YZ ZZ (NIfTI, DIPY)"
     glyph_display = Show(analysis, view)  # noqa: F405
     glyph_display.SetRepresentationType("Surface")
     ColorBy(glyph_display, ("POINTS", "FractionalAnisotropy"))  # noqa: F405

@@ -64,6 +64,14 @@ void vtkSplineTubeRepresentation::SetRadiusScale(double scale)
 }
 
 //------------------------------------------------------------------------------
+void vtkSplineTubeRepresentation::SetArrayIdNames(const char*, const char* cellArray)
+{
+  const char* name = cellArray ? cellArray : "vtkOriginalCellIds";
+  this->GetTubeMapper()->SetCellIdArrayName(name);
+  this->GetLODTubeMapper()->SetCellIdArrayName(name);
+}
+
+//------------------------------------------------------------------------------
 void vtkSplineTubeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -35,6 +35,14 @@ public:
   void SetRadiusScale(double scale);
   ///@}
 
+  /**
+   * Selection ids: the tube mappers report the picked polyline's original
+   * cell id from `cellArray` (nullptr: "vtkOriginalCellIds"); tubes have no
+   * points to pick. (The superclass' version expects a
+   * vtkCompositePolyDataMapper2.)
+   */
+  void SetArrayIdNames(const char* pointArray, const char* cellArray) override;
+
 protected:
   vtkSplineTubeRepresentation();
   ~vtkSplineTubeRepresentation() override;

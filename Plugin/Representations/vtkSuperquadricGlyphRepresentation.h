@@ -63,6 +63,13 @@ public:
   void SetCulling(int culling);
   ///@}
 
+  /**
+   * Selection ids: nothing to set (the glyph mapper is not the
+   * vtkCompositePolyDataMapper2 the superclass' version expects, which made
+   * every selection in a view with this representation crash).
+   */
+  void SetArrayIdNames(const char*, const char*) override {}
+
   /// The mapper (for tests and scripting).
   vtkSuperquadricGlyphMapper* GetGlyphMapper();
 

@@ -697,6 +697,71 @@ void TestDegenerateInput(SplineVizTestStatus& status)
   SV_CHECK(status, !vtkMath::AreBoundsInitialized(b));
   SV_CHECK(status, !observer->GetError());
 }
+
+//------------------------------------------------------------------------------
+// The optional per-node values (NodeScalarArrayName): carried through the
+// merge of repeated points, NaN skips the line, a missing or 3-component
+// array is an error naming the role.
+void TestNodeScalars(SplineVizTestStatus& status)
+{
+  vtkNew<vtkTest::ErrorObserver> observer;
+  vtkNew<vtkSplineTubeCore> core;
+  core->AddObserver(vtkCommand::ErrorEvent, observer);
+  core->AddObserver(vtkCommand::WarningEvent, observer);
+  core->SetNodeScalarArrayName("Angle");
+  core->SetNodeScalarRole("orientation");
+  auto withAngles = [](vtkPolyData* line, const std::vector<double>& angles)
+  {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName("Angle");
+    for (double v : angles)
+    {
+      a->InsertNextValue(v);
+    }
+    line->GetPointData()->AddArray(a);
+  };
+  auto line = MakeLine({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 0, 0 }, { 2, 1, 0 } });
+  withAngles(line, { 0.5, 1.5, 2.5, 3.5 });
+  auto second = MakeLine({ { 5, 0, 0 }, { 6, 0, 0 } });
+  withAngles(second, { -1.0, -2.0 });
+  core->AddPolyData(line, nullptr);
+  core->AddPolyData(second, nullptr);
+  core->Build();
+  vtkFloatArray* values = core->GetNodeScalars();
+  SV_CHECK(status, core->GetNumberOfNodes() == 5);
+  SV_CHECK(status, values->GetNumberOfTuples() == 5);
+  // The merged point keeps the first of the repeated values.
+  const double expected[5] = { 0.5, 1.5, 3.5, -1.0, -2.0 };
+  for (int i = 0; i < 5 && values->GetNumberOfTuples() == 5; ++i)
+  {
+    SV_CHECK_NEAR(status, values->GetValue(i), expected[i], 1e-6);
+  }
+
+  // A NaN angle skips its line with a warning that names the role.
+  core->Initialize();
+  auto bad = MakeLine({ { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } });
+  withAngles(bad, { 0.0, std::nan(""), 0.0 });
+  core->AddPolyData(bad, nullptr);
+  core->Build();
+  SV_CHECK(status, core->GetNumberOfTubes() == 0);
+  SV_CHECK(status, observer->CheckWarningMessage("orientation array \"Angle\"") == 0);
+
+  // Missing: an error naming the role, nothing added.
+  core->Initialize();
+  SV_CHECK(status, !core->AddPolyData(MakeLine({ { 0, 0, 0 }, { 1, 0, 0 } }), nullptr));
+  SV_CHECK(status, observer->CheckErrorMessage("The orientation array \"Angle\" is not") == 0);
+  // Three components: an error.
+  auto vectorLine = MakeLine({ { 0, 0, 0 }, { 1, 0, 0 } });
+  vtkNew<vtkFloatArray> vectors;
+  vectors->SetName("Angle");
+  vectors->SetNumberOfComponents(3);
+  vectors->InsertNextTuple3(1, 1, 1);
+  vectors->InsertNextTuple3(1, 1, 1);
+  vectorLine->GetPointData()->AddArray(vectors);
+  SV_CHECK(status, !core->AddPolyData(vectorLine, nullptr));
+  SV_CHECK(status, observer->CheckErrorMessage("components") == 0);
+  SV_CHECK(status, core->GetNumberOfTubes() == 0);
+}
 }
 
 int TestSplineTubeCore(int, char*[])
@@ -708,5 +773,6 @@ int TestSplineTubeCore(int, char*[])
   TestBoxes(status);
   TestSegmentTable(status);
   TestDegenerateInput(status);
+  TestNodeScalars(status);
   return status.Result();
 }

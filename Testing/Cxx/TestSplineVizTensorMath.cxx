@@ -120,6 +120,27 @@ int TestSplineVizTensorMath(int, char*[])
       SV_CHECK(status, conf == (layouts[k] == TM::TEEM_7 ? 0.75 : 1.0));
       SV_CHECK(status, std::string(TM::GetLayoutName(layouts[k])) != "unknown");
     }
+    // The tools' names: NIfTI's SYMMATRIX and DIPY's order is the lower
+    // triangle, FSL dtifit's (Dxx Dxy Dxz Dyy Dyz Dzz) the upper one; the
+    // names shown in menus and messages say so (an earlier version called
+    // FSL's order lower-triangular).
+    SV_CHECK(status, TM::SYMMETRIC_NIFTI == TM::SYMMETRIC_LOWER);
+    SV_CHECK(status, TM::SYMMETRIC_FSL == TM::SYMMETRIC_UPPER);
+    const std::string lowerName = TM::GetLayoutName(TM::SYMMETRIC_LOWER);
+    const std::string upperName = TM::GetLayoutName(TM::SYMMETRIC_UPPER);
+    SV_CHECK(status, lowerName.find("NIfTI") != std::string::npos);
+    SV_CHECK(status, lowerName.find("DIPY") != std::string::npos);
+    SV_CHECK(status, lowerName.find("FSL") == std::string::npos);
+    SV_CHECK(status, upperName.find("FSL") != std::string::npos);
+    {
+      const double dtifit[6] = { xx, xy, xz, yy, yz, zz }; // FSL's documented order
+      double t[6];
+      SV_CHECK(status, TM::ToSymmetric(TM::SYMMETRIC_FSL, dtifit, t));
+      for (int i = 0; i < 6; ++i)
+      {
+        SV_CHECK_MSG(status, t[i] == vtk[i], "FSL order, component " << i);
+      }
+    }
     // A non-symmetric 9-component tensor is symmetrized.
     const double ns[9] = { 1, 2, 3, 4, 5, 6, 7, 8, 9 };
     double t[6];

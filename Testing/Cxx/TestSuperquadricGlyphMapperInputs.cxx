@@ -2,7 +2,7 @@
 // changes, thresholds, masks, scale modes and picking:
 //  - the same tensors in vtkImageData, vtkUnstructuredGrid (points only),
 //    vtkPolyData and a two-block vtkMultiBlockDataSet, and in every
-//    component layout (VTK, DIPY/FSL, MFEM, 9 and Teem's 7 components):
+//    component layout (VTK, NIfTI/DIPY, FSL/MFEM, 9 and Teem's 7 components):
 //    identical pictures;
 //  - bad input: a missing tensor array, no active tensors, a 3-component
 //    array (errors, nothing drawn); NaN, infinite and zero tensors (one

@@ -1,6 +1,7 @@
-// Bad input for both tube mappers (vtkTessellatedTubeMapper and
-// vtkRayCastTubeMapper): clear errors or warnings, no crash, and the good
-// tubes still drawn.
+// Bad input for the tube mappers (vtkTessellatedTubeMapper,
+// vtkRayCastTubeMapper and vtkStylizedLineMapper): clear errors or warnings,
+// no crash, and the good tubes still drawn. The stylized lines also with a
+// missing, three-component and NaN orientation array (with a texture).
 //  - no input at all: nothing drawn (the renderer culls the actor, whose
 //    bounds are uninitialized; a direct render reports "No input");
 //  - an empty polydata, a polydata with vertices only: nothing drawn, quietly;
@@ -12,6 +13,7 @@
 //    polylines drawn (counted in the tube core and seen in the image).
 #include "vtkRayCastTubeMapper.h"
 #include "vtkSplineTubeCore.h"
+#include "vtkStylizedLineMapper.h"
 #include "vtkTessellatedTubeMapper.h"
 
 #include "SplineTubeTestScenes.h"
@@ -200,6 +202,7 @@ int TestTubeMapperBadInput(int, char*[])
     mappers = {
       { "tessellated", [] { return vtkSmartPointer<vtkTessellatedTubeMapper>::New(); } },
       { "ray cast", [] { return vtkSmartPointer<vtkRayCastTubeMapper>::New(); } },
+      { "stylized", [] { return vtkSmartPointer<vtkStylizedLineMapper>::New(); } },
     };
   for (const auto& m : mappers)
   {
@@ -243,6 +246,47 @@ int TestTubeMapperBadInput(int, char*[])
         "Block 3 is not drawn", "Block 4 is not drawn", "Block 5 is not drawn" });
     SV_CHECK_MSG(status, r.Segments == 3 + 3 + 3, name << ": " << r.Segments << " segments");
     SV_CHECK_MSG(status, r.Covered > 1000, name << ": the good tubes are not drawn");
+  }
+
+  // The stylized lines' orientation array (used with a texture): missing or
+  // three components is an error for the block; NaN angles skip the line.
+  {
+    auto stylized = [](const char* orientation)
+    {
+      return [orientation]
+      {
+        auto mapper = vtkSmartPointer<vtkStylizedLineMapper>::New();
+        mapper->SetTexturePatternToStripes();
+        mapper->SetOrientationArray(orientation);
+        return vtkSmartPointer<vtkSplineTubeMapper>(mapper);
+      };
+    };
+    vtkSmartPointer<vtkPolyData> lines =
+      Lines({ Straight(-1.0), Straight(1.0) }, { { 0.1, 0.1, 0.1, 0.1 }, { 0.1, 0.1, 0.1, 0.1 } });
+    vtkNew<vtkDoubleArray> angles;
+    angles->SetName("Angle");
+    for (double v : { 0.0, 1.0, 2.0, 3.0, 0.0, nan, 2.0, 3.0 })
+    {
+      angles->InsertNextValue(v);
+    }
+    lines->GetPointData()->AddArray(angles);
+    vtkNew<vtkDoubleArray> vectors;
+    vectors->SetName("Vectors");
+    vectors->SetNumberOfComponents(3);
+    vectors->SetNumberOfTuples(8);
+    vectors->Fill(1.0);
+    lines->GetPointData()->AddArray(vectors);
+    Result r = Render(stylized("Angle"), lines, window);
+    Expect(status, "stylized, NaN orientation", r.Warnings,
+      { "has a NaN or infinite value in the orientation array \"Angle\"" });
+    SV_CHECK_MSG(status, r.Segments == 3, "stylized, NaN orientation: " << r.Segments);
+    r = Render(stylized("NoSuchAngle"), lines, window);
+    Expect(status, "stylized, missing orientation", r.Errors,
+      { "The orientation array \"NoSuchAngle\" is not a point array" });
+    SV_CHECK_MSG(status, r.Segments == 0 && r.Covered == 0, "stylized, missing orientation drew");
+    r = Render(stylized("Vectors"), lines, window);
+    Expect(status, "stylized, 3-component orientation", r.Errors, { "has 3 components" });
+    SV_CHECK_MSG(status, r.Segments == 0, "stylized, 3-component orientation drew");
   }
   window->Finalize();
   return status.Result();

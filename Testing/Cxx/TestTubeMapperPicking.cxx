@@ -1,11 +1,14 @@
-// Hardware picking with both tube mappers (vtkTessellatedTubeMapper and
-// vtkRayCastTubeMapper share the picking code of vtkSplineTubeMapper): a
+// Hardware picking with the tube mappers (vtkTessellatedTubeMapper,
+// vtkRayCastTubeMapper and vtkStylizedLineMapper share the picking code of
+// vtkSplineTubeMapper; the stylized lines with their halo on, which is not
+// part of the line and must not be picked): a
 // multiblock of two polydata blocks (the first starts with a vertex cell, so
 // that line cell ids do not start at 0) and a plain polydata. At the
 // projected middle of every polyline, vtkHardwareSelector must report the
 // actor, the polyline's cell id and the block's flat index (1 for the plain
 // polydata, as for VTK's own polydata mapper); on the background nothing.
 #include "vtkRayCastTubeMapper.h"
+#include "vtkStylizedLineMapper.h"
 #include "vtkTessellatedTubeMapper.h"
 
 #include "SplineVizTestUtilities.h"
@@ -108,6 +111,28 @@ void CheckPicks(SplineVizTestStatus& status, vtkRenderWindow* window, vtkSplineT
     SV_CHECK_MSG(status, info.CompositeID == target.Composite, what << ": wrong composite index");
     SV_CHECK_MSG(status, info.AttributeID == target.Cell, what << ": wrong cell id");
   }
+  // The halo band (a quarter radius outside the line, above the first
+  // target) is not part of the line.
+  if (auto* lines = vtkStylizedLineMapper::SafeDownCast(mapper))
+  {
+    if (lines->GetHaloWidth() > 0.0)
+    {
+      const Target& target = targets.front();
+      coordinate->SetValue(target.Point[0], target.Point[1] + 1.25 * 0.12, target.Point[2]);
+      const int* display = coordinate->GetComputedDisplayValue(renderer);
+      unsigned int position[2] = { static_cast<unsigned int>(display[0]),
+        static_cast<unsigned int>(display[1]) };
+      unsigned int out[2];
+      SV_CHECK_MSG(status, !selector->GetPixelInformation(position, 0, out).Valid,
+        what << ": the halo was picked");
+      // (It is drawn there: the depth buffer of a normal render is covered.)
+      window->Render();
+      SV_CHECK_MSG(status,
+        window->GetZbufferDataAtPoint(
+          static_cast<int>(position[0]), static_cast<int>(position[1])) < 1.0f,
+        what << ": no halo where the pick was tested");
+    }
+  }
   unsigned int corner[2] = { 2, 2 };
   unsigned int out[2];
   SV_CHECK_MSG(status, !selector->GetPixelInformation(corner, 0, out).Valid,
@@ -151,6 +176,11 @@ int TestTubeMapperPicking(int, char*[])
   CheckPicks(status, window, rayCast, blocks, compositeTargets, "ray cast, multiblock");
   vtkNew<vtkRayCastTubeMapper> rayCastPlain;
   CheckPicks(status, window, rayCastPlain, plain, plainTargets, "ray cast, polydata");
+  vtkNew<vtkStylizedLineMapper> stylized;
+  stylized->SetHaloWidth(0.5);
+  CheckPicks(status, window, stylized, blocks, compositeTargets, "stylized, multiblock");
+  vtkNew<vtkStylizedLineMapper> stylizedPlain;
+  CheckPicks(status, window, stylizedPlain, plain, plainTargets, "stylized, polydata");
   window->Finalize();
   return status.Result();
 }

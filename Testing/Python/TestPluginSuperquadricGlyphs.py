@@ -61,7 +61,7 @@ if display.GetXMLName() != "UniformGridRepresentation":
     sys.exit(1)
 display.SetRepresentationType("Superquadric Glyphs")
 display.SuperquadricTensors = "DTI"
-display.SuperquadricTensorLayout = 2  # DIPY / FSL
+display.SuperquadricTensorLayout = 2  # NIfTI / DIPY order
 display.SuperquadricScaleFactor = 0.45
 display.SuperquadricGamma = 3.0
 view.CameraPosition = [9, -13, 8]

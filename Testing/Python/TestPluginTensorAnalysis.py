@@ -25,6 +25,11 @@ lower = np.stack([t[:, 0, 0], t[:, 1, 0], t[:, 1, 1], t[:, 2, 0], t[:, 2, 1], t[
 arr = numpy_to_vtk(lower.copy(), deep=1)
 arr.SetName("DTI")
 out.GetPointData().AddArray(arr)
+# the same tensors in FSL dtifit's documented order Dxx Dxy Dxz Dyy Dyz Dzz
+upper = np.stack([t[:, 0, 0], t[:, 0, 1], t[:, 0, 2], t[:, 1, 1], t[:, 1, 2], t[:, 2, 2]], 1)
+arr = numpy_to_vtk(upper.copy(), deep=1)
+arr.SetName("FSL")
+out.GetPointData().AddArray(arr)
 """
 source.ScriptRequestInformation = """
 self.GetExecutive().GetOutputInformation(0).Set(
@@ -33,7 +38,7 @@ self.GetExecutive().GetOutputInformation(0).Set(
 
 analysis = TensorAnalysis(Input=source)  # noqa: F405
 analysis.Tensors = ["POINTS", "DTI"]
-analysis.TensorLayout = 2  # DIPY / FSL
+analysis.TensorLayout = 2  # NIfTI / DIPY order
 analysis.ComputeAllEigenvectors = 1
 analysis.UpdatePipeline()
 data = servermanager.Fetch(analysis)
@@ -86,5 +91,42 @@ analysis.UpdatePipeline()
 wrong = vtk_to_numpy(servermanager.Fetch(analysis).GetPointData().GetArray("Eigenvalues"))
 if np.abs(wrong - ref).max() < 1e-3:
     print("ERROR: the layout property has no effect")
+    sys.exit(1)
+
+# The menus name the layouts after the tools that write them: NIfTI's
+# SYMMATRIX and DIPY the lower triangle, FSL's dtifit the upper one; the same
+# labels in the Tensor Analysis, Tensor Line Tracer and glyph menus.
+def layout_entries(proxy, name):
+    domain = proxy.GetProperty(name).SMProperty.GetDomain("enum")
+    return {domain.GetEntryValue(i): domain.GetEntryText(i) for i in range(domain.GetNumberOfEntries())}
+
+
+expected_entries = {1: "XX YY ZZ XY YZ XZ (VTK, ParaView)", 2: "XX XY YY XZ YZ ZZ (NIfTI, DIPY)",
+                    3: "XX XY XZ YY YZ ZZ (FSL, MFEM)"}
+tracer = TensorLineTracer(Input=analysis)  # noqa: F405
+glyphs = Show(analysis)  # noqa: F405
+for proxy, name in ((analysis, "TensorLayout"), (tracer, "TensorLayout"),
+                    (glyphs, "SuperquadricTensorLayout")):
+    entries = layout_entries(proxy, name)
+    if entries != expected_entries:
+        print("ERROR: %s layout menu %s, expected %s" % (name, entries, expected_entries))
+        sys.exit(1)
+
+# The same tensors written in FSL's order, read with the FSL entry, give the
+# same eigenvalues; read as NIfTI/DIPY order they do not.
+analysis.Tensors = ["POINTS", "FSL"]
+analysis.TensorLayout = "XX XY XZ YY YZ ZZ (FSL, MFEM)"
+analysis.UpdatePipeline()
+fsl = vtk_to_numpy(servermanager.Fetch(analysis).GetPointData().GetArray("Eigenvalues"))
+err = np.abs(fsl - ref).max() / np.abs(ref).max()
+print("FSL order with the FSL layout: max relative eigenvalue error", err)
+if err > 1e-12:
+    print("ERROR: FSL-ordered tensors read with the FSL layout differ")
+    sys.exit(1)
+analysis.TensorLayout = "XX XY YY XZ YZ ZZ (NIfTI, DIPY)"
+analysis.UpdatePipeline()
+wrong = vtk_to_numpy(servermanager.Fetch(analysis).GetPointData().GetArray("Eigenvalues"))
+if np.abs(wrong - ref).max() < 1e-3:
+    print("ERROR: FSL-ordered tensors read as NIfTI order give the right eigenvalues")
     sys.exit(1)
 print("Tensor Analysis OK")

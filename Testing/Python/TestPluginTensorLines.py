@@ -19,7 +19,7 @@ dti = OpenDataFile(path)  # noqa: F405
 
 tracer = TensorLineTracer(Input=dti)  # noqa: F405
 tracer.Tensors = ["POINTS", "DTI"]
-tracer.TensorLayout = "XX XY YY XZ YZ ZZ (DIPY, FSL)"
+tracer.TensorLayout = "XX XY YY XZ YZ ZZ (NIfTI, DIPY)"
 tracer.Seeding = "Voxels above the seed FA threshold"
 tracer.SeedFAThreshold = 0.3
 tracer.StoppingFAThreshold = 0.15
@@ -46,7 +46,7 @@ for name in ("FractionalAnisotropy", "Tensors", "PrincipalDirection", "Direction
 # Seeds from a point cloud in the middle of the volume.
 cloud = TensorLineTracer(Input=dti, SeedType="Point Cloud")  # noqa: F405
 cloud.Tensors = ["POINTS", "DTI"]
-cloud.TensorLayout = "XX XY YY XZ YZ ZZ (DIPY, FSL)"
+cloud.TensorLayout = "XX XY YY XZ YZ ZZ (NIfTI, DIPY)"
 cloud.Seeding = "Seed source"
 cloud.SeedType.Center = [9, 9, 9]
 cloud.SeedType.Radius = 4

@@ -1,0 +1,552 @@
+//VTK::System::Dec
+
+// LR-spline volume ray casting (Fuchs et al. §4), fragment stage.
+//
+// Every fragment of the proxy box casts the ray of its pixel through the
+// patches (data coordinates) from the entry to the exit of the union of the
+// patch boxes, clipped by the clipping planes, ended by the opaque geometry
+// already drawn (its depth) and, with a trimming surface, kept between the
+// surface's nearest front and farthest back face (§4.1). Each sample finds
+// the first patch containing it, the element (the previous sample's, else
+// the k-d forest or octree of vtkLRSplineElementLocator) and evaluates the
+// element's Bezier form exactly, with its gradient (vtkLRSplineVolumeShared.glsl).
+//  - the step is adaptive (Eq. 4: the element's shortest side / 2^degree,
+//    times lrStepScale) or fixed (lrSampleDistance);
+//  - composite: front-to-back (Algorithm 2) with the opacity correction
+//    1 - (1 - a)^(ds / unit distance); between two spline samples the
+//    transfer function is supersampled at lrSupersampling points of the
+//    linear interpolant of the two values (§4.1), against wood-grain;
+//    early ray termination at 99 % opacity;
+//  - maximum / minimum intensity: the extreme of the samples;
+//  - isosurfaces: the crossings of the iso values between two samples,
+//    refined by bisection on the exact spline, lit by the exact normal,
+//    composited front to back (their depth written for the first one).
+// Shading uses the exact gradient: VTK's ambient / diffuse / specular model
+// (two-sided, as VTK's volume mappers) or Fuchs' diffuse max(0.4, |l . n|).
+// Constants the mapper defines: LR_DU, LR_DV, LR_DW (degrees, <= 3), LR_NC
+// (components), LR_COMPONENT (-1: the vector's magnitude), LR_BLEND,
+// LR_SHADE, LR_FUCHS, LR_TRIM, LR_SAMPLE_COUNT, LR_MAX_PATCHES, LR_ISO,
+// LR_PATCHES (the number of patches), LR_SUPERSAMPLING and LR_LIGHTS: loop bounds known
+// at compile time, so that the compiler unrolls those loops (llvmpipe caps the
+// loop iterations of a whole invocation at 65535, shared by all loops).
+
+//VTK::Output::Dec
+
+#define real float
+#define SV_OUT(T) out T
+#define SV_INOUT(T) inout T
+
+// Patches (data coordinates x = A u + offset; lrPatchInverse is A^-1).
+uniform vec3 lrPatchLo[LR_MAX_PATCHES];     // parameter domain
+uniform vec3 lrPatchHi[LR_MAX_PATCHES];
+uniform mat3 lrPatchInverse[LR_MAX_PATCHES];
+uniform vec3 lrPatchOffset[LR_MAX_PATCHES];
+uniform vec3 lrPatchEdge[LR_MAX_PATCHES]; // data length of a unit parameter step, per direction
+uniform vec3 lrPatchBoxLo[LR_MAX_PATCHES];    // the patch's box, data coordinates
+uniform vec3 lrPatchBoxHi[LR_MAX_PATCHES];
+uniform int lrPatchBlocks[3 * LR_MAX_PATCHES]; // forest resolution (3 per patch)
+uniform int lrPatchStarts[4 * LR_MAX_PATCHES]; // heads, nodes, octree, first element
+uniform int lrPatchLocator[LR_MAX_PATCHES];  // 0: forest (k-d tree, texture), 1: octree
+
+uniform usamplerBuffer lrHeads;
+uniform usamplerBuffer lrNodeWords;
+uniform samplerBuffer lrNodeSplits;
+uniform usamplerBuffer lrOctree;
+uniform samplerBuffer lrBoxes;        // per element: lo (xyz) + skip flag, hi (xyz), parameter space
+uniform usamplerBuffer lrOffsets;     // per element: first coefficient
+uniform samplerBuffer lrCoefficients; // Bernstein coefficients
+
+// The ray.
+uniform mat4 lrDCMCMatrix;  // clip space to data coordinates
+uniform mat4 lrMCDCMatrix;  // and back
+uniform mat3 lrDataToWorld; // lengths in world units (the volume's matrix)
+uniform mat3 lrNormalMatrix; // data gradients to world normals (inverse transpose)
+uniform vec4 lrViewport;    // x, y, width, height (pixels)
+uniform vec3 lrBoxLo;       // all patches (data coordinates)
+uniform vec3 lrBoxHi;
+uniform sampler2D lrDepth;  // the opaque geometry's depth
+uniform int lrNumberOfClipPlanes;
+uniform vec4 lrClipPlanes[6]; // data coordinates: kept where dot(n, x) + w >= 0
+#if LR_TRIM
+uniform sampler2D lrTrimFront; // nearest front face of the trimming surface
+uniform sampler2D lrTrimBack;  // farthest back face
+#endif
+
+// Sampling.
+uniform int lrAdaptive;         // Eq. 4 (1) or a fixed step (0)
+uniform float lrStepScale;      // times the element's shortest side / 2^degree
+uniform float lrSampleDistance; // fixed step, world units
+uniform int lrMaxSteps;
+uniform float lrJitter;         // 0: none, 1: a random start within the first step
+
+// Transfer functions and lighting.
+uniform sampler2D lrTransfer; // RGBA over lrRange
+uniform vec2 lrRange;
+uniform float lrUnitDistance; // world units
+uniform float lrAmbient;
+uniform float lrDiffuse;
+uniform float lrSpecular;
+uniform float lrSpecularPower;
+uniform vec3 lrLightDirections[LR_LIGHTS]; // world coordinates, toward each light
+uniform vec3 lrLightColors[LR_LIGHTS];     // diffuse color times intensity
+uniform float lrIsoValues[8];
+uniform int lrNumberOfIsoValues;
+uniform int lrBisections;
+
+uint lrHead(int i)
+{
+  return texelFetch(lrHeads, i).x;
+}
+uint lrNodeWord(int i)
+{
+  return texelFetch(lrNodeWords, i).x;
+}
+float lrNodeSplit(int i)
+{
+  return texelFetch(lrNodeSplits, i).x;
+}
+uint lrOctreeNode(int i)
+{
+  return texelFetch(lrOctree, i).x;
+}
+float lrCoefficient(int i)
+{
+  return texelFetch(lrCoefficients, i).x;
+}
+
+//VTK::LRSplineVolumeShared::Dec
+
+// The element of the previous sample.
+int lrCurrentPatch = -1;
+vec3 lrCurrentLo = vec3(1.0);
+vec3 lrCurrentHi = vec3(0.0);
+int lrCurrentOffset = 0;
+bool lrCurrentSkip = false; // the element adds nothing (empty-space skipping)
+int lrSamples = 0;
+float lrWorldPerData = 1.0; // world length of a data unit along the ray
+
+// The field's value (component LR_COMPONENT, or the magnitude) and its
+// derivatives with respect to the local coordinates.
+float lrValue(int offset, vec3 s, out vec3 grad)
+{
+#if LR_COMPONENT >= 0
+  return lrEvaluate(offset, LR_DU, LR_DV, LR_DW, LR_NC, LR_COMPONENT, s, grad);
+#else
+  float m2 = 0.0;
+  vec3 g = vec3(0.0);
+  for (int c = 0; c < LR_NC; ++c)
+  {
+    vec3 gc;
+    float v = lrEvaluate(offset, LR_DU, LR_DV, LR_DW, LR_NC, c, s, gc);
+    m2 += v * v;
+    g += v * gc;
+  }
+  float m = sqrt(m2);
+  grad = m > 0.0 ? g / m : vec3(0.0);
+  return m;
+#endif
+}
+
+// Value, gradient (data coordinates) and the element's shortest side (data
+// units) at data point x; false outside every patch.
+bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
+{
+  ++lrSamples;
+  int p = -1;
+  vec3 u = vec3(0.0);
+  for (int q = 0; q < LR_PATCHES; ++q)
+  {
+    // Points within a rounding tolerance of the domain count as inside and
+    // are moved onto it (ray ends computed on the box faces).
+    vec3 uq = lrPatchInverse[q] * (x - lrPatchOffset[q]);
+    vec3 tol = 1e-5 * (lrPatchHi[q] - lrPatchLo[q]);
+    if (all(greaterThanEqual(uq, lrPatchLo[q] - tol)) && all(lessThanEqual(uq, lrPatchHi[q] + tol)))
+    {
+      p = q;
+      u = clamp(uq, lrPatchLo[q], lrPatchHi[q]);
+      break;
+    }
+  }
+  if (p < 0)
+  {
+    return false;
+  }
+  if (p != lrCurrentPatch || any(lessThan(u, lrCurrentLo)) || any(greaterThan(u, lrCurrentHi)))
+  {
+    ivec4 starts = ivec4(lrPatchStarts[4 * p], lrPatchStarts[4 * p + 1],
+      lrPatchStarts[4 * p + 2], lrPatchStarts[4 * p + 3]);
+    ivec3 blocks = ivec3(lrPatchBlocks[3 * p], lrPatchBlocks[3 * p + 1], lrPatchBlocks[3 * p + 2]);
+    int e = lrPatchLocator[p] == 0
+      ? lrFindForest(u, lrPatchLo[p], lrPatchHi[p], blocks, starts.x, starts.y)
+      : lrFindOctree(u, lrPatchLo[p], lrPatchHi[p], starts.z);
+    if (e < 0)
+    {
+      return false;
+    }
+    e += starts.w;
+    lrCurrentPatch = p;
+    vec4 lo = texelFetch(lrBoxes, 2 * e);
+    lrCurrentLo = lo.xyz;
+    lrCurrentSkip = lo.w > 0.5;
+    lrCurrentHi = texelFetch(lrBoxes, 2 * e + 1).xyz;
+    lrCurrentOffset = int(texelFetch(lrOffsets, e).x);
+  }
+  vec3 size = lrCurrentHi - lrCurrentLo;
+  vec3 s = clamp((u - lrCurrentLo) / size, 0.0, 1.0);
+  vec3 g;
+  value = lrValue(lrCurrentOffset, s, g);
+  // d/dx = (d/du) A^-1 (a row vector times the inverse).
+  gradient = (g / size) * lrPatchInverse[p];
+  vec3 side = size * lrPatchEdge[p];
+  minSide = min(side.x, min(side.y, side.z));
+  return true;
+}
+
+vec4 lrTransferFunction(float v)
+{
+  float t = clamp((v - lrRange.x) / (lrRange.y - lrRange.x), 0.0, 1.0);
+  float n = float(textureSize(lrTransfer, 0).x);
+  return texture(lrTransfer, vec2((t * (n - 1.0) + 0.5) / n, 0.5));
+}
+
+// The color of a sample lit with the gradient (data coordinates), seen
+// along `dir` (data coordinates); two-sided: the normal faces the viewer.
+vec3 lrShade(vec3 color, vec3 gradient, vec3 dir)
+{
+#if LR_SHADE
+  vec3 nw = lrNormalMatrix * gradient;
+  float gl = length(nw);
+  if (gl <= 0.0)
+  {
+    return color;
+  }
+  vec3 n = nw / gl;
+  vec3 toEye = -normalize(lrDataToWorld * dir);
+  if (dot(n, toEye) < 0.0)
+  {
+    n = -n;
+  }
+#if LR_FUCHS
+  // Fuchs' model has one light: the first.
+  return color * max(0.4, abs(dot(lrLightDirections[0], n)));
+#else
+  // VTK's model, summed over the lights (as VTK's volume mappers do).
+  vec3 diffuse = vec3(0.0);
+  vec3 specular = vec3(0.0);
+  for (int i = 0; i < LR_LIGHTS; ++i)
+  {
+    float d = max(dot(lrLightDirections[i], n), 0.0);
+    vec3 h = normalize(lrLightDirections[i] + toEye);
+    float sp = d > 0.0 ? pow(max(dot(h, n), 0.0), lrSpecularPower) : 0.0;
+    diffuse += d * lrLightColors[i];
+    specular += sp * lrLightColors[i];
+  }
+  return color * (lrAmbient + lrDiffuse * diffuse) + lrSpecular * specular;
+#endif
+#else
+  return color;
+#endif
+}
+
+// The opacity of a step of `x` unit distances for opacity `a` per unit
+// distance, 1 - (1 - a)^x, accurate also for the tiny values of fine steps
+// (1 - pow() in single precision loses them: series for small terms).
+float lrCorrectedOpacity(float a, float x)
+{
+  if (a >= 1.0)
+  {
+    return 1.0;
+  }
+  float l = a < 0.05 ? -a * (1.0 + a * (0.5 + a * (1.0 / 3.0 + a * 0.25))) : log(1.0 - a);
+  float y = x * l; // log(1 - alpha) <= 0
+  return y > -0.05 ? -y * (1.0 + y * (0.5 + y * (1.0 / 6.0 + y / 24.0))) : 1.0 - exp(y);
+}
+
+// Step length (data units) after a sample in an element of shortest side
+// minSide.
+float lrStep(float minSide)
+{
+  if (lrAdaptive != 0)
+  {
+    return lrStepScale * minSide / float(1 << max(LR_DU, max(LR_DV, LR_DW)));
+  }
+  return lrSampleDistance / lrWorldPerData;
+}
+
+// The ray parameter where the ray leaves the current element.
+float lrElementExit(vec3 origin, vec3 dir)
+{
+  mat3 m = lrPatchInverse[lrCurrentPatch];
+  vec3 u0 = m * (origin - lrPatchOffset[lrCurrentPatch]);
+  vec3 ud = m * dir;
+  vec3 ta = (lrCurrentLo - u0) / ud;
+  vec3 tb = (lrCurrentHi - u0) / ud;
+  vec3 tf = max(ta, tb);
+  return min(min(tf.x, tf.y), tf.z);
+}
+
+// The next ray parameter after t inside some patch box (the ray crosses a gap
+// between patches), or 1e30 for none.
+float lrNextEntry(vec3 origin, vec3 dir, float t, float eps)
+{
+  float next = 1e30;
+  for (int q = 0; q < LR_PATCHES; ++q)
+  {
+    vec3 ta = (lrPatchBoxLo[q] - origin) / dir;
+    vec3 tb = (lrPatchBoxHi[q] - origin) / dir;
+    vec3 tn = min(ta, tb);
+    vec3 tf = max(ta, tb);
+    float a = max(max(tn.x, tn.y), tn.z);
+    float b = min(min(tf.x, tf.y), tf.z);
+    if (b > t + eps && b > a)
+    {
+      next = min(next, max(a, t + eps));
+    }
+  }
+  return next;
+}
+
+// The ray parameter where the ray meets window depth `depth` (clip space z).
+float lrRayDepth(vec2 ndc, float depth, vec3 origin, vec3 dir)
+{
+  vec4 p = lrDCMCMatrix * vec4(ndc, 2.0 * depth - 1.0, 1.0);
+  return dot(p.xyz / p.w - origin, dir);
+}
+
+void main()
+{
+  vec2 ndc = 2.0 * (gl_FragCoord.xy - lrViewport.xy) / lrViewport.zw - 1.0;
+  ivec2 pixel = ivec2(gl_FragCoord.xy - lrViewport.xy);
+#if LR_BLEND == 5
+  gl_FragDepth = gl_FragCoord.z;
+#endif
+  vec4 a = lrDCMCMatrix * vec4(ndc, -1.0, 1.0);
+  vec4 b = lrDCMCMatrix * vec4(ndc, 1.0, 1.0);
+  vec3 origin = a.xyz / a.w;
+  vec3 dir = normalize(b.xyz / b.w - origin);
+  // World length of a data unit along the ray (opacity correction).
+  lrWorldPerData = length(lrDataToWorld * dir);
+
+  // The interval: the union box, the opaque geometry, the clipping planes.
+  vec3 inv = 1.0 / dir;
+  vec3 ta = (lrBoxLo - origin) * inv;
+  vec3 tb = (lrBoxHi - origin) * inv;
+  vec3 tmin = min(ta, tb);
+  vec3 tmax = max(ta, tb);
+  float t0 = max(max(tmin.x, tmin.y), max(tmin.z, 0.0));
+  float t1 = min(min(tmax.x, tmax.y), tmax.z);
+  t1 = min(t1, lrRayDepth(ndc, texelFetch(lrDepth, pixel, 0).r, origin, dir));
+  for (int i = 0; i < lrNumberOfClipPlanes; ++i)
+  {
+    float denom = dot(lrClipPlanes[i].xyz, dir);
+    float dist = dot(lrClipPlanes[i].xyz, origin) + lrClipPlanes[i].w;
+    if (abs(denom) < 1e-20)
+    {
+      if (dist < 0.0)
+      {
+        discard;
+      }
+      continue;
+    }
+    float t = -dist / denom;
+    if (denom > 0.0)
+    {
+      t0 = max(t0, t);
+    }
+    else
+    {
+      t1 = min(t1, t);
+    }
+  }
+#if LR_TRIM
+  float front = texelFetch(lrTrimFront, pixel, 0).r;
+  float back = texelFetch(lrTrimBack, pixel, 0).r;
+  if (front >= 1.0 || back <= 0.0)
+  {
+    discard; // the trimming surface does not cover this pixel
+  }
+  t0 = max(t0, lrRayDepth(ndc, front, origin, dir));
+  t1 = min(t1, lrRayDepth(ndc, back, origin, dir));
+#endif
+  if (!(t1 > t0))
+  {
+    discard;
+  }
+
+  vec4 result = vec4(0.0);
+  float extreme = LR_BLEND == 2 ? 1e30 : -1e30;
+  bool found = false;
+  float t = t0;
+  float prevT = t0;
+  float prevValue = 0.0;
+  vec3 prevGradient = vec3(0.0);
+  bool prevValid = false;
+  float value;
+  vec3 gradient;
+  float minSide;
+  // A random start within the first step (VTK's jittering).
+  if (lrJitter > 0.0)
+  {
+    float r = fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
+    if (lrSample(origin + t * dir, value, gradient, minSide))
+    {
+      t = min(t1, t + r * lrStep(minSide));
+    }
+  }
+  for (int step = 0; step < lrMaxSteps; ++step)
+  {
+    bool last = t >= t1;
+    t = min(t, t1);
+    bool valid = lrSample(origin + t * dir, value, gradient, minSide);
+    if (valid && prevValid && t > prevT)
+    {
+#if LR_BLEND == 0
+      // Front-to-back compositing of [prevT, t], the transfer function
+      // supersampled along the linear interpolant of the two values.
+      float ds = (t - prevT) * lrWorldPerData / float(LR_SUPERSAMPLING);
+      for (int k = 0; k < LR_SUPERSAMPLING; ++k)
+      {
+        float f = (float(k) + 0.5) / float(LR_SUPERSAMPLING);
+        vec4 c = lrTransferFunction(mix(prevValue, value, f));
+        float alpha = lrCorrectedOpacity(c.a, ds / lrUnitDistance);
+        vec3 shaded = lrShade(c.rgb, mix(prevGradient, gradient, f), dir);
+        result.rgb += (1.0 - result.a) * alpha * shaded;
+        result.a += (1.0 - result.a) * alpha;
+      }
+      if (result.a > 0.99)
+      {
+        break;
+      }
+#elif LR_BLEND == 5
+      // The isosurfaces crossed in (prevT, t] (a value met exactly at a
+      // sample counts once, arriving), refined by bisection on the exact
+      // spline, composited nearest first.
+      float roots[LR_ISO];
+      int which[LR_ISO];
+      int count = 0;
+      for (int i = 0; i < lrNumberOfIsoValues; ++i)
+      {
+        float c = lrIsoValues[i];
+        if ((prevValue - c) * (value - c) < 0.0 || (value == c && prevValue != c))
+        {
+          float lo = prevT;
+          float hi = t;
+          float flo = prevValue - c;
+          for (int it = 0; it < lrBisections; ++it)
+          {
+            float mid = 0.5 * (lo + hi);
+            float v;
+            vec3 g;
+            float side;
+            float fm = lrSample(origin + mid * dir, v, g, side) ? v - c : flo;
+            if ((fm < 0.0) == (flo < 0.0))
+            {
+              lo = mid;
+              flo = fm;
+            }
+            else
+            {
+              hi = mid;
+            }
+          }
+          // Insertion into the sorted list.
+          float root = 0.5 * (lo + hi);
+          int k = count;
+          while (k > 0 && roots[k - 1] > root)
+          {
+            roots[k] = roots[k - 1];
+            which[k] = which[k - 1];
+            --k;
+          }
+          roots[k] = root;
+          which[k] = i;
+          ++count;
+        }
+      }
+      for (int k = 0; k < count; ++k)
+      {
+        float v;
+        vec3 g;
+        float side;
+        lrSample(origin + roots[k] * dir, v, g, side);
+        vec4 c = lrTransferFunction(lrIsoValues[which[k]]);
+        vec3 shaded = lrShade(c.rgb, g, dir);
+        result.rgb += (1.0 - result.a) * c.a * shaded;
+        result.a += (1.0 - result.a) * c.a;
+        if (!found)
+        {
+          found = true;
+          vec4 clip = lrMCDCMatrix * vec4(origin + roots[k] * dir, 1.0);
+          gl_FragDepth = 0.5 * (gl_DepthRange.diff * (clip.z / clip.w) + gl_DepthRange.near +
+            gl_DepthRange.far);
+        }
+      }
+      if (result.a > 0.99)
+      {
+        break;
+      }
+#endif
+    }
+    if (valid)
+    {
+#if LR_BLEND == 1
+      extreme = max(extreme, value);
+      found = true;
+#elif LR_BLEND == 2
+      extreme = min(extreme, value);
+      found = true;
+#endif
+      prevValue = value;
+      prevGradient = gradient;
+    }
+    prevValid = valid;
+    prevT = t;
+    if (last)
+    {
+      break;
+    }
+    float eps = 1e-6 * (t1 - t0);
+    if (valid && lrCurrentSkip)
+    {
+      // Empty-space skipping: by the convex hull property of the Bezier
+      // form the element's values lie in its coefficients' range, over which
+      // the transfer function is transparent (or which holds no iso value):
+      // jump to its exit; nothing is composited across it.
+      t = max(lrElementExit(origin, dir), t) + 10.0 * eps;
+      prevValid = false;
+    }
+    else
+    {
+      t = valid ? t + max(lrStep(minSide), eps) : lrNextEntry(origin, dir, t, 10.0 * eps);
+    }
+    if (t > 1e29)
+    {
+      break;
+    }
+  }
+#if LR_SAMPLE_COUNT
+  // The number of spline evaluations, as a 24-bit integer in RGB.
+  gl_FragData[0] = vec4(float(lrSamples % 256) / 255.0, float((lrSamples / 256) % 256) / 255.0,
+    float((lrSamples / 65536) % 256) / 255.0, 1.0);
+  return;
+#endif
+#if LR_BLEND == 1 || LR_BLEND == 2
+  if (!found)
+  {
+    discard;
+  }
+  vec4 c = lrTransferFunction(extreme);
+  result = vec4(c.rgb * c.a, c.a);
+#endif
+#if LR_BLEND == 5
+  if (!found)
+  {
+    discard;
+  }
+#endif
+  if (result.a <= 0.0)
+  {
+    discard;
+  }
+  gl_FragData[0] = result; // premultiplied: blended as src + (1 - src.a) dst
+}

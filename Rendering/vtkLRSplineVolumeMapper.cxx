@@ -1,0 +1,1504 @@
+#include "vtkLRSplineVolumeMapper.h"
+
+#include "vtkLRSplineField.h"
+#include "vtkSplineVizGPUBuffer.h"
+
+#include "vtkAlgorithmOutput.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkCommand.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkContourValues.h"
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkLight.h"
+#include "vtkLightCollection.h"
+#include "vtkMath.h"
+#include "vtkMatrix3x3.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLBufferObject.h"
+#include "vtkOpenGLCamera.h"
+#include "vtkOpenGLError.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtkTimeStamp.h"
+#include "vtkUnstructuredGrid.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include "vtkLRSplineVolumeFS.h"
+#include "vtkLRSplineVolumeShared.h"
+#include "vtkLRSplineVolumeTrimFS.h"
+#include "vtkLRSplineVolumeVS.h"
+
+#include <vtk_glew.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <vector>
+
+vtkStandardNewMacro(vtkLRSplineVolumeMapper);
+
+namespace
+{
+constexpr int MaximumPatches = 16;
+constexpr int MaximumIsoValues = 8;
+constexpr int TransferFunctionSize = 1024;
+constexpr int MaximumClipPlanes = 6;
+
+// Per patch: what the shader needs to map data points to parameters and to
+// find elements.
+struct PatchInfo
+{
+  float Lo[3], Hi[3];             // parameter domain
+  float Inverse[9];               // u = Inverse (x - offset), row-major
+  float Offset[3];                // x = A u + offset
+  float Edge[3];                  // |A e_d|: data length of a unit parameter step
+  float BoxLo[3], BoxHi[3];       // data box
+  int Blocks[3] = { 1, 1, 1 };    // forest resolution
+  int Starts[4] = { 0, 0, 0, 0 }; // heads, nodes, octree, first element
+  int Locator = 0;                // 0: forest-like, 1: octree
+};
+
+// Set a GLSL mat4 from a row-major vtkMatrix4x4 (vtkShaderProgram uploads
+// the elements as they are, i.e. expects the transpose).
+void SetMatrix(vtkShaderProgram* program, const char* name, vtkMatrix4x4* m)
+{
+  float columnMajor[16];
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      columnMajor[4 * c + r] = static_cast<float>(m->GetElement(r, c));
+    }
+  }
+  program->SetUniformMatrix4x4(name, columnMajor);
+}
+
+// Collect the VTK_BEZIER_HEXAHEDRON grids (and tell what else was found).
+void CollectGrids(vtkDataObject* input, std::vector<vtkUnstructuredGrid*>& grids, bool& surface)
+{
+  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(input))
+  {
+    if (grid->GetNumberOfCells() > 0)
+    {
+      const int type = grid->GetCellType(0);
+      if (type == VTK_BEZIER_QUADRILATERAL || type == VTK_BEZIER_TRIANGLE ||
+        type == VTK_LAGRANGE_QUADRILATERAL || type == VTK_QUAD || type == VTK_TRIANGLE)
+      {
+        surface = true;
+      }
+      grids.push_back(grid);
+    }
+    return;
+  }
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      CollectGrids(it->GetCurrentDataObject(), grids, surface);
+    }
+    return;
+  }
+  if (input && input->IsA("vtkPolyData"))
+  {
+    surface = true;
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+struct vtkLRSplineVolumeMapper::vtkInternals
+{
+  // CPU side, rebuilt when the input or the search settings change.
+  vtkLRSplineField Field;
+  std::string BuildKey;
+  bool Valid = false;
+  std::string Error;
+  std::string ReportedError;
+  std::string FailedShader;
+  bool Quiet = false; // UpdateSpline() from GetBounds(): no error report
+  int Degree[3] = { 1, 1, 1 };
+  int NumberOfComponents = 1;
+  double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
+  double MinimumSide = 0.0; // data units
+  std::vector<PatchInfo> Patches;
+  std::vector<std::uint32_t> Heads, NodeWords, Octree, Offsets;
+  std::vector<float> NodeSplits, Boxes, Coefficients;
+  // Per element, the range of its Bezier coefficients (which bounds its
+  // values: convex hull property): per component, and bounds of the
+  // magnitude (2 values each).
+  std::vector<float> ComponentRanges, MagnitudeRanges;
+  std::string SkipKey; // what the skip flags in Boxes were computed for
+  vtkIdType SkippedElements = 0;
+  vtkTimeStamp BuildTime;
+
+  // GPU side.
+  vtkOpenGLRenderWindow* Window = nullptr;
+  vtkTimeStamp UploadTime;
+  vtkSplineVizGPUBuffer HeadsBuffer, NodeWordsBuffer, NodeSplitsBuffer, OctreeBuffer, BoxesBuffer,
+    OffsetsBuffer, CoefficientsBuffer;
+  vtkSmartPointer<vtkTextureObject> TransferTexture;
+  std::string TransferKey;
+  double TransferRange[2] = { 0, 1 };
+  vtkSmartPointer<vtkTextureObject> DepthTexture;
+  vtkSmartPointer<vtkTextureObject> DepthColor;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> DepthFramebuffer;
+  bool DepthCopyWarned = false;
+  vtkSmartPointer<vtkTextureObject> TrimTextures[2];
+  vtkSmartPointer<vtkOpenGLFramebufferObject> TrimFramebuffers[2];
+  vtkSmartPointer<vtkOpenGLBufferObject> CubeBuffer;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> CubeArray;
+  vtkShaderProgram* CubeArrayProgram = nullptr;
+  vtkSmartPointer<vtkOpenGLBufferObject> TrimBuffer;
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> TrimArray;
+  vtkShaderProgram* TrimArrayProgram = nullptr;
+  vtkIdType TrimVertices = 0;
+  std::string TrimKey;
+  double CubeBox[6] = { 0, 0, 0, 0, 0, 0 };
+
+  bool Fail(const std::string& message)
+  {
+    this->Valid = false;
+    this->Error = message;
+    return false;
+  }
+
+  void ReleaseGPU(vtkWindow* window)
+  {
+    for (vtkSplineVizGPUBuffer* b :
+      { &this->HeadsBuffer, &this->NodeWordsBuffer, &this->NodeSplitsBuffer, &this->OctreeBuffer,
+        &this->BoxesBuffer, &this->OffsetsBuffer, &this->CoefficientsBuffer })
+    {
+      b->ReleaseGraphicsResources(window);
+    }
+    for (vtkTextureObject* t : { this->TransferTexture.Get(), this->DepthTexture.Get(),
+           this->DepthColor.Get(), this->TrimTextures[0].Get(), this->TrimTextures[1].Get() })
+    {
+      if (t)
+      {
+        t->ReleaseGraphicsResources(window);
+      }
+    }
+    for (vtkOpenGLFramebufferObject* f : { this->DepthFramebuffer.Get(),
+           this->TrimFramebuffers[0].Get(), this->TrimFramebuffers[1].Get() })
+    {
+      if (f)
+      {
+        f->ReleaseGraphicsResources(window);
+      }
+    }
+    for (vtkOpenGLBufferObject* b : { this->CubeBuffer.Get(), this->TrimBuffer.Get() })
+    {
+      if (b)
+      {
+        b->ReleaseGraphicsResources();
+      }
+    }
+    for (vtkOpenGLVertexArrayObject* a : { this->CubeArray.Get(), this->TrimArray.Get() })
+    {
+      if (a)
+      {
+        a->ReleaseGraphicsResources();
+      }
+    }
+    this->TransferTexture = nullptr;
+    this->DepthTexture = nullptr;
+    this->DepthColor = nullptr;
+    this->DepthFramebuffer = nullptr;
+    this->TrimTextures[0] = this->TrimTextures[1] = nullptr;
+    this->TrimFramebuffers[0] = this->TrimFramebuffers[1] = nullptr;
+    this->CubeBuffer = nullptr;
+    this->CubeArray = nullptr;
+    this->CubeArrayProgram = nullptr;
+    this->TrimBuffer = nullptr;
+    this->TrimArray = nullptr;
+    this->TrimArrayProgram = nullptr;
+    this->TransferKey.clear();
+    this->TrimKey.clear();
+    this->UploadTime = vtkTimeStamp();
+    this->Window = nullptr;
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkLRSplineVolumeMapper::vtkLRSplineVolumeMapper()
+  : Internals(new vtkInternals)
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+vtkLRSplineVolumeMapper::~vtkLRSplineVolumeMapper()
+{
+  this->SetFieldArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineVolumeMapper::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+    return 1;
+  }
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::SetBlendMode(int mode)
+{
+  if (mode != COMPOSITE_BLEND && mode != MAXIMUM_INTENSITY_BLEND &&
+    mode != MINIMUM_INTENSITY_BLEND && mode != ISOSURFACE_BLEND)
+  {
+    vtkErrorMacro(<< "Unsupported blend mode " << mode
+                  << " (composite 0, maximum intensity 1, minimum intensity 2, isosurface 5).");
+    return;
+  }
+  if (this->BlendMode != mode)
+  {
+    this->BlendMode = mode;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::SetTrimmingSurfaceConnection(vtkAlgorithmOutput* output)
+{
+  this->SetInputConnection(1, output);
+}
+
+void vtkLRSplineVolumeMapper::SetTrimmingSurfaceData(vtkPolyData* surface)
+{
+  this->SetInputDataInternal(1, surface);
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkLRSplineVolumeMapper::GetNumberOfElements()
+{
+  return this->Internals->Valid ? this->Internals->Field.GetNumberOfElements() : 0;
+}
+
+vtkIdType vtkLRSplineVolumeMapper::GetNumberOfSkippedElements()
+{
+  return this->Internals->Valid ? this->Internals->SkippedElements : 0;
+}
+
+const char* vtkLRSplineVolumeMapper::GetLastErrorMessage()
+{
+  return this->Internals->Error.c_str();
+}
+
+//------------------------------------------------------------------------------
+size_t vtkLRSplineVolumeMapper::GetGPUMemorySize()
+{
+  vtkInternals& in = *this->Internals;
+  if (in.UploadTime.GetMTime() > 0)
+  {
+    return in.HeadsBuffer.GetNumberOfBytes() + in.NodeWordsBuffer.GetNumberOfBytes() +
+      in.NodeSplitsBuffer.GetNumberOfBytes() + in.OctreeBuffer.GetNumberOfBytes() +
+      in.BoxesBuffer.GetNumberOfBytes() + in.OffsetsBuffer.GetNumberOfBytes() +
+      in.CoefficientsBuffer.GetNumberOfBytes();
+  }
+  if (!in.Valid)
+  {
+    return 0;
+  }
+  // Not uploaded yet: what the upload will hold.
+  return 4 *
+    (in.Heads.size() + in.NodeWords.size() + in.Octree.size() + in.Offsets.size() +
+      in.NodeSplits.size() + in.Boxes.size() + in.Coefficients.size());
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::UpdateSpline()
+{
+  vtkInternals& in = *this->Internals;
+  if (this->GetNumberOfInputConnections(0) > 0)
+  {
+    this->GetInputAlgorithm(0, 0)->Update(this->GetInputConnection(0, 0)->GetIndex());
+  }
+  vtkDataObject* input = this->GetInputDataObject(0, 0);
+  auto done = [&](bool ok)
+  {
+    if (!ok && !in.Quiet)
+    {
+      this->ReportError();
+    }
+    return ok;
+  };
+  if (!input)
+  {
+    in.BuildKey.clear();
+    return done(in.Fail("no input: connect the output of vtkLRSplineReader (or a "
+                        "vtkLRSplineImageFitter) to the mapper"));
+  }
+  std::ostringstream key;
+  key << input << ' ' << input->GetMTime() << ' '
+      << (this->FieldArrayName ? this->FieldArrayName : "") << ' ' << this->ElementLocator << ' '
+      << this->ForestResolution;
+  if (key.str() == in.BuildKey)
+  {
+    return done(in.Valid);
+  }
+  in.BuildKey = key.str();
+  in.Valid = false;
+  in.Patches.clear();
+  in.Heads.clear();
+  in.NodeWords.clear();
+  in.NodeSplits.clear();
+  in.Octree.clear();
+  in.Boxes.clear();
+  in.Offsets.clear();
+  in.Coefficients.clear();
+  in.ComponentRanges.clear();
+  in.MagnitudeRanges.clear();
+  in.SkipKey.clear();
+  in.BuildTime.Modified();
+
+  // What kind of input is this?
+  std::vector<vtkUnstructuredGrid*> grids;
+  bool surface = false;
+  CollectGrids(input, grids, surface);
+  if (surface)
+  {
+    return done(in.Fail("the input is a surface (2D) spline or a polygonal data set: the volume "
+                        "mapper renders trivariate LR-spline volumes only"));
+  }
+  if (grids.empty())
+  {
+    return done(in.Fail(std::string("the input (") + input->GetClassName() +
+      ") holds no LR-spline patch: expected the output of vtkLRSplineReader, a "
+      "vtkMultiBlockDataSet of VTK_BEZIER_HEXAHEDRON grids"));
+  }
+  if (static_cast<int>(grids.size()) > MaximumPatches)
+  {
+    return done(in.Fail("the input has " + std::to_string(grids.size()) +
+      " patches; the volume mapper renders at most " + std::to_string(MaximumPatches)));
+  }
+  for (std::size_t g = 0; g < grids.size(); ++g)
+  {
+    vtkPointData* pd = grids[g]->GetPointData();
+    vtkFieldData* fd = grids[g]->GetFieldData();
+    if (pd->GetRationalWeights() || pd->GetArray("RationalWeights") ||
+      (fd && fd->GetArray("LRRational")))
+    {
+      return done(in.Fail("patch " + std::to_string(g) +
+        " is rational (it has rational weights): the volume mapper renders polynomial "
+        "LR splines only"));
+    }
+    vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
+    if (mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1)
+    {
+      return done(in.Fail("patch " + std::to_string(g) +
+        " was read in geometry mode (its coefficients are the geometry, there is no field "
+        "to render): read it with the reader's GeometryMode off"));
+    }
+    if (pd->GetNumberOfArrays() == 0)
+    {
+      return done(in.Fail("patch " + std::to_string(g) +
+        " has no point-data array: there is no scalar or vector field to render"));
+    }
+  }
+
+  std::string message;
+  const int blocks[3] = { this->ForestResolution, this->ForestResolution, this->ForestResolution };
+  if (!in.Field.Build(input, this->FieldArrayName, this->ElementLocator,
+        this->ForestResolution > 0 ? blocks : nullptr, false, &message))
+  {
+    return done(in.Fail(message));
+  }
+  const int np = in.Field.GetNumberOfPatches();
+  const int nc = in.Field.GetNumberOfComponents();
+  if (nc > 3)
+  {
+    return done(in.Fail("the field \"" + in.Field.GetArrayName() + "\" has " + std::to_string(nc) +
+      " components; the volume mapper renders scalars and 2- or 3-vectors"));
+  }
+  if (this->VectorMode == COMPONENT && this->VectorComponent >= nc)
+  {
+    return done(in.Fail("VectorComponent " + std::to_string(this->VectorComponent) +
+      " does not exist: the field has " + std::to_string(nc) + " components"));
+  }
+  // Common degrees (raised exactly to the largest per direction).
+  int degree[3] = { 1, 1, 1 };
+  for (int p = 0; p < np; ++p)
+  {
+    const int* d = in.Field.GetPatch(p).GetVolume().Degree;
+    for (int k = 0; k < 3; ++k)
+    {
+      degree[k] = std::max(degree[k], d[k]);
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    if (degree[k] > 3)
+    {
+      return done(in.Fail("the spline has degree " + std::to_string(degree[k]) + " in direction " +
+        std::to_string(k) + "; the volume mapper renders degrees up to 3"));
+    }
+  }
+  std::copy(degree, degree + 3, in.Degree);
+  in.NumberOfComponents = nc;
+  in.Field.GetBounds(in.Bounds);
+  in.MinimumSide = VTK_DOUBLE_MAX;
+
+  // Flatten every patch into the GPU arrays.
+  const int per = (degree[0] + 1) * (degree[1] + 1) * (degree[2] + 1) * nc;
+  const vtkIdType totalElements = in.Field.GetNumberOfElements();
+  const double coefficientCount = static_cast<double>(totalElements) * per;
+  if (coefficientCount > 2.0e9)
+  {
+    return done(in.Fail("the spline has " + std::to_string(totalElements) +
+      " elements: too many coefficients for the GPU buffers (limit 2^31)"));
+  }
+  in.Coefficients.reserve(static_cast<std::size_t>(coefficientCount));
+  in.Boxes.reserve(static_cast<std::size_t>(8 * totalElements));
+  in.Offsets.reserve(static_cast<std::size_t>(totalElements));
+  vtkIdType firstElement = 0;
+  for (int p = 0; p < np; ++p)
+  {
+    const vtkLRSplineEvaluator& patch = in.Field.GetPatch(p);
+    const vtkLRSplineElementLocator& locator = patch.GetLocator();
+    const vtkLRSplineBezierVolume* volume = &patch.GetVolume();
+    vtkLRSplineBezierVolume raised;
+    if (volume->Degree[0] != degree[0] || volume->Degree[1] != degree[1] ||
+      volume->Degree[2] != degree[2])
+    {
+      raised = *volume;
+      raised.CoefficientsFloat.clear();
+      if (!raised.ElevateDegree(degree))
+      {
+        return done(in.Fail("patch " + std::to_string(p) + ": degree elevation failed"));
+      }
+      volume = &raised;
+    }
+    for (double c : volume->Coefficients)
+    {
+      if (!std::isfinite(c))
+      {
+        return done(in.Fail("patch " + std::to_string(p) +
+          " has NaN or infinite coefficients in \"" + in.Field.GetArrayName() + "\""));
+      }
+    }
+    PatchInfo info;
+    const double* domain = locator.GetDomain();
+    const double* A = patch.GetMatrix();
+    const double* inverse = patch.GetInverseMatrix();
+    const double* offset = patch.GetOffset();
+    double patchBounds[6];
+    patch.GetBounds(patchBounds);
+    double edge[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      edge[k] = std::sqrt(A[k] * A[k] + A[3 + k] * A[3 + k] + A[6 + k] * A[6 + k]);
+      info.Lo[k] = static_cast<float>(domain[k]);
+      info.Hi[k] = static_cast<float>(domain[k + 3]);
+      info.Offset[k] = static_cast<float>(offset[k]);
+      info.Edge[k] = static_cast<float>(edge[k]);
+      info.BoxLo[k] = static_cast<float>(patchBounds[2 * k]);
+      info.BoxHi[k] = static_cast<float>(patchBounds[2 * k + 1]);
+    }
+    for (int k = 0; k < 9; ++k)
+    {
+      info.Inverse[k] = static_cast<float>(inverse[k]);
+    }
+    info.Starts[0] = static_cast<int>(in.Heads.size());
+    info.Starts[1] = static_cast<int>(in.NodeWords.size());
+    info.Starts[2] = static_cast<int>(in.Octree.size());
+    info.Starts[3] = static_cast<int>(firstElement);
+    if (locator.GetType() == vtkLRSplineElementLocator::OCTREE)
+    {
+      info.Locator = 1;
+      const auto& oct = locator.GetOctreeNodes();
+      in.Octree.insert(in.Octree.end(), oct.begin(), oct.end());
+    }
+    else
+    {
+      info.Locator = 0;
+      const int* nb = locator.GetNumberOfBlocks();
+      std::copy(nb, nb + 3, info.Blocks);
+      const auto& heads = locator.GetHeads();
+      const auto& words = locator.GetNodeWords();
+      const std::vector<float> splits = locator.GetNodeSplitsFloat();
+      in.Heads.insert(in.Heads.end(), heads.begin(), heads.end());
+      in.NodeWords.insert(in.NodeWords.end(), words.begin(), words.end());
+      in.NodeSplits.insert(in.NodeSplits.end(), splits.begin(), splits.end());
+    }
+    const vtkIdType ne = volume->GetNumberOfElements();
+    for (vtkIdType e = 0; e < ne; ++e)
+    {
+      const double* b = volume->GetBox(e);
+      in.Boxes.insert(in.Boxes.end(),
+        { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]), 0.0f,
+          static_cast<float>(b[3]), static_cast<float>(b[4]), static_cast<float>(b[5]), 0.0f });
+      in.Offsets.push_back(static_cast<std::uint32_t>(in.Coefficients.size()));
+      const double* c = volume->GetElementCoefficients(e);
+      for (int i = 0; i < per; ++i)
+      {
+        in.Coefficients.push_back(static_cast<float>(c[i]));
+      }
+      // Coefficient ranges (the element's values lie within them).
+      double magnitudeLow = 0.0, magnitudeHigh = 0.0;
+      for (int comp = 0; comp < nc; ++comp)
+      {
+        double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
+        for (int i = comp; i < per; i += nc)
+        {
+          lo = std::min(lo, c[i]);
+          hi = std::max(hi, c[i]);
+        }
+        in.ComponentRanges.push_back(static_cast<float>(lo));
+        in.ComponentRanges.push_back(static_cast<float>(hi));
+        magnitudeLow = std::max(magnitudeLow, lo > 0 ? lo : (hi < 0 ? -hi : 0.0));
+      }
+      for (int i = 0; i < per; i += nc)
+      {
+        double m2 = 0.0;
+        for (int comp = 0; comp < nc; ++comp)
+        {
+          m2 += c[i + comp] * c[i + comp];
+        }
+        magnitudeHigh = std::max(magnitudeHigh, std::sqrt(m2));
+      }
+      in.MagnitudeRanges.push_back(static_cast<float>(magnitudeLow));
+      in.MagnitudeRanges.push_back(static_cast<float>(magnitudeHigh));
+      for (int k = 0; k < 3; ++k)
+      {
+        in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * edge[k]);
+      }
+    }
+    firstElement += ne;
+    in.Patches.push_back(info);
+  }
+  in.Valid = true;
+  in.Error.clear();
+  in.ReportedError.clear();
+  return done(true);
+}
+
+//------------------------------------------------------------------------------
+double* vtkLRSplineVolumeMapper::GetBounds()
+{
+  // Quietly: views ask for bounds before the input is ready (the error, if
+  // it persists, is reported by the render).
+  this->Internals->Quiet = true;
+  this->UpdateSpline();
+  this->Internals->Quiet = false;
+  if (this->Internals->Valid)
+  {
+    std::copy(this->Internals->Bounds, this->Internals->Bounds + 6, this->Bounds);
+  }
+  else
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+  }
+  return this->Bounds;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkLRSplineVolumeMapper::GetVertexShaderSource()
+{
+  return vtkLRSplineVolumeVS;
+}
+
+std::string vtkLRSplineVolumeMapper::GetFragmentShaderSource()
+{
+  std::string fs = vtkLRSplineVolumeFS;
+  vtkShaderProgram::Substitute(fs, "//VTK::LRSplineVolumeShared::Dec", vtkLRSplineVolumeShared);
+  return fs;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Internals->ReleaseGPU(window);
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  vtkInternals& in = *this->Internals;
+  auto report = [this]() { this->ReportError(); };
+  if (!this->UpdateSpline())
+  {
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkVolumeProperty* property = vol->GetProperty();
+  if (!window || !property)
+  {
+    return;
+  }
+  if (in.Window && in.Window != window)
+  {
+    in.ReleaseGPU(in.Window);
+  }
+  in.Window = window;
+  vtkOpenGLClearErrorMacro();
+
+  // The spline's data on the GPU, once per change.
+  if (in.UploadTime < in.BuildTime)
+  {
+    GLint maxTexels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    const std::size_t largest = std::max({ in.Coefficients.size(), in.Boxes.size() / 4,
+      in.NodeWords.size(), in.Heads.size(), in.Octree.size() });
+    if (maxTexels > 0 && largest > static_cast<std::size_t>(maxTexels))
+    {
+      in.Fail("the spline needs a buffer texture of " + std::to_string(largest) +
+        " texels; this OpenGL allows " + std::to_string(maxTexels));
+      in.BuildKey.clear();
+      report();
+      return;
+    }
+    bool ok = in.HeadsBuffer.Upload(
+                window, in.Heads.data(), in.Heads.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+      in.NodeWordsBuffer.Upload(
+        window, in.NodeWords.data(), in.NodeWords.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+      in.NodeSplitsBuffer.Upload(
+        window, in.NodeSplits.data(), in.NodeSplits.size(), 1, VTK_FLOAT, GL_R32F) &&
+      in.OctreeBuffer.Upload(
+        window, in.Octree.data(), in.Octree.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+      in.BoxesBuffer.Upload(
+        window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F) &&
+      in.OffsetsBuffer.Upload(
+        window, in.Offsets.data(), in.Offsets.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+      in.CoefficientsBuffer.Upload(
+        window, in.Coefficients.data(), in.Coefficients.size(), 1, VTK_FLOAT, GL_R32F);
+    if (!ok)
+    {
+      in.Fail("the spline's data could not be uploaded to the GPU");
+      in.BuildKey.clear();
+      report();
+      return;
+    }
+    in.UploadTime.Modified();
+  }
+
+  // The transfer function as a texture over the union of its ranges. (The
+  // property's getters create default functions and switch the channels:
+  // only the one in use is asked for.)
+  const bool rgbColor = property->GetColorChannels(0) == 3;
+  vtkColorTransferFunction* color = rgbColor ? property->GetRGBTransferFunction(0) : nullptr;
+  vtkPiecewiseFunction* gray = rgbColor ? nullptr : property->GetGrayTransferFunction(0);
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
+  if (!opacity || opacity->GetSize() == 0 || (rgbColor && (!color || color->GetSize() == 0)) ||
+    (!rgbColor && (!gray || gray->GetSize() == 0)))
+  {
+    in.Error = "the volume property's transfer function is empty (no scalar opacity or color "
+               "points): nothing to render";
+    report();
+    return;
+  }
+  {
+    std::ostringstream key;
+    key << color << ' ' << (color ? color->GetMTime() : 0) << ' ' << gray << ' '
+        << (gray ? gray->GetMTime() : 0) << ' ' << opacity << ' ' << opacity->GetMTime();
+    if (key.str() != in.TransferKey || !in.TransferTexture)
+    {
+      double range[2];
+      opacity->GetRange(range);
+      double colorRange[2];
+      if (color)
+      {
+        color->GetRange(colorRange);
+      }
+      else
+      {
+        gray->GetRange(colorRange);
+      }
+      range[0] = std::min(range[0], colorRange[0]);
+      range[1] = std::max(range[1], colorRange[1]);
+      if (!(range[1] > range[0]))
+      {
+        range[1] = range[0] + 1.0;
+      }
+      std::vector<float> table(4 * TransferFunctionSize);
+      for (int i = 0; i < TransferFunctionSize; ++i)
+      {
+        const double v = range[0] + (range[1] - range[0]) * i / (TransferFunctionSize - 1);
+        double rgb[3] = { 1, 1, 1 };
+        if (color)
+        {
+          color->GetColor(v, rgb);
+        }
+        else
+        {
+          rgb[0] = rgb[1] = rgb[2] = gray->GetValue(v);
+        }
+        table[4 * i] = static_cast<float>(rgb[0]);
+        table[4 * i + 1] = static_cast<float>(rgb[1]);
+        table[4 * i + 2] = static_cast<float>(rgb[2]);
+        table[4 * i + 3] = static_cast<float>(vtkMath::ClampValue(opacity->GetValue(v), 0.0, 1.0));
+      }
+      if (!in.TransferTexture)
+      {
+        in.TransferTexture = vtkSmartPointer<vtkTextureObject>::New();
+        in.TransferTexture->SetContext(window);
+        in.TransferTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+        in.TransferTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+        in.TransferTexture->SetMinificationFilter(vtkTextureObject::Linear);
+        in.TransferTexture->SetMagnificationFilter(vtkTextureObject::Linear);
+      }
+      in.TransferTexture->SetInternalFormat(GL_RGBA32F);
+      in.TransferTexture->SetFormat(GL_RGBA);
+      in.TransferTexture->SetDataType(GL_FLOAT);
+      in.TransferTexture->Create2DFromRaw(TransferFunctionSize, 1, 4, VTK_FLOAT, table.data());
+      in.TransferRange[0] = range[0];
+      in.TransferRange[1] = range[1];
+      in.TransferKey = key.str();
+    }
+  }
+
+  // Iso values.
+  std::vector<float> isoValues;
+  if (this->BlendMode == ISOSURFACE_BLEND)
+  {
+    vtkContourValues* contours = property->GetIsoSurfaceValues();
+    const int n = contours ? contours->GetNumberOfContours() : 0;
+    if (n == 0)
+    {
+      in.Error = "isosurface blend mode without iso values (vtkVolumeProperty::"
+                 "GetIsoSurfaceValues()->SetValue(0, value)): nothing to render";
+      report();
+      return;
+    }
+    if (n > MaximumIsoValues)
+    {
+      vtkWarningMacro(<< n << " iso values: only the first " << MaximumIsoValues
+                      << " are rendered.");
+    }
+    for (int i = 0; i < std::min(n, MaximumIsoValues); ++i)
+    {
+      isoValues.push_back(static_cast<float>(contours->GetValue(i)));
+    }
+  }
+
+  // Empty-space skipping: flag the elements whose coefficient range (which
+  // bounds their values) maps to zero opacity (composite) or holds no iso
+  // value (isosurfaces); the rays jump over them. Recomputed when the
+  // transfer function, the iso values, the blend or vector mode change.
+  {
+    std::ostringstream key;
+    key << in.BuildTime.GetMTime() << ' ' << in.TransferKey << ' ' << this->BlendMode << ' '
+        << this->VectorMode << ' ' << this->VectorComponent << ' ' << this->EmptySpaceSkipping;
+    for (float v : isoValues)
+    {
+      key << ' ' << v;
+    }
+    if (key.str() != in.SkipKey)
+    {
+      const vtkIdType ne = static_cast<vtkIdType>(in.Offsets.size());
+      const int nc = in.NumberOfComponents;
+      const bool magnitude = nc > 1 && this->VectorMode == MAGNITUDE;
+      const int comp = nc == 1 ? 0 : this->VectorComponent;
+      // Values are looked up in a linearly filtered table: widen by a texel.
+      const double texel = (in.TransferRange[1] - in.TransferRange[0]) / (TransferFunctionSize - 1);
+      const bool skipping = this->EmptySpaceSkipping &&
+        (this->BlendMode == COMPOSITE_BLEND || this->BlendMode == ISOSURFACE_BLEND);
+      vtkIdType skipped = 0;
+      for (vtkIdType e = 0; e < ne; ++e)
+      {
+        const float* r =
+          magnitude ? &in.MagnitudeRanges[2 * e] : &in.ComponentRanges[2 * (nc * e + comp)];
+        bool skip = false;
+        if (skipping && this->BlendMode == COMPOSITE_BLEND)
+        {
+          const double a = std::max(static_cast<double>(r[0]) - texel, in.TransferRange[0]);
+          const double b = std::min(static_cast<double>(r[1]) + texel, in.TransferRange[1]);
+          // Outside the table's range the end values hold (clamping).
+          double maxOpacity =
+            opacity->GetValue(std::min(std::max(a, in.TransferRange[0]), in.TransferRange[1]));
+          maxOpacity = std::max(maxOpacity,
+            opacity->GetValue(std::max(std::min(b, in.TransferRange[1]), in.TransferRange[0])));
+          double node[4];
+          for (int i = 0; i < opacity->GetSize(); ++i)
+          {
+            opacity->GetNodeValue(i, node);
+            if (node[0] > a && node[0] < b)
+            {
+              maxOpacity = std::max(maxOpacity, node[1]);
+            }
+          }
+          skip = a <= b && maxOpacity <= 0.0;
+        }
+        else if (skipping)
+        {
+          skip = true;
+          for (float v : isoValues)
+          {
+            skip = skip && !(v >= r[0] && v <= r[1]);
+          }
+        }
+        in.Boxes[8 * e + 3] = skip ? 1.0f : 0.0f;
+        skipped += skip ? 1 : 0;
+      }
+      in.SkippedElements = skipped;
+      if (in.UploadTime.GetMTime() > 0 &&
+        !in.BoxesBuffer.Upload(
+          window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F))
+      {
+        in.Error = "the spline's element boxes could not be uploaded to the GPU";
+        report();
+        return;
+      }
+      in.SkipKey = key.str();
+    }
+  }
+
+  // The lights (VTK's volume mappers sum them): every switched-on light,
+  // directional (toward the light from its focal point), at most 8; none:
+  // a headlight.
+  std::vector<std::array<float, 6>> lightList;
+  {
+    vtkLightCollection* lights = ren->GetLights();
+    lights->InitTraversal();
+    for (vtkLight* l = lights->GetNextItem(); l && lightList.size() < 8; l = lights->GetNextItem())
+    {
+      if (!l->GetSwitch() || !(l->GetIntensity() > 0))
+      {
+        continue;
+      }
+      double p[3], f[3], toLight[3];
+      l->GetTransformedPosition(p);
+      l->GetTransformedFocalPoint(f);
+      vtkMath::Subtract(p, f, toLight);
+      if (vtkMath::Normalize(toLight) == 0.0)
+      {
+        continue;
+      }
+      const double* c = l->GetDiffuseColor();
+      const double i = l->GetIntensity();
+      lightList.push_back({ static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
+        static_cast<float>(toLight[2]), static_cast<float>(c[0] * i), static_cast<float>(c[1] * i),
+        static_cast<float>(c[2] * i) });
+    }
+    if (lightList.empty())
+    {
+      double toLight[3];
+      vtkMath::Subtract(
+        ren->GetActiveCamera()->GetPosition(), ren->GetActiveCamera()->GetFocalPoint(), toLight);
+      vtkMath::Normalize(toLight);
+      lightList.push_back({ static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
+        static_cast<float>(toLight[2]), 1.0f, 1.0f, 1.0f });
+    }
+  }
+
+  // The program.
+  const bool shade = property->GetShade(0) != 0 && !this->CountSamples;
+  std::string fs = this->GetFragmentShaderSource();
+  {
+    std::ostringstream defines;
+    defines << "//VTK::System::Dec\n"
+            << "#define LR_DU " << in.Degree[0] << "\n#define LR_DV " << in.Degree[1]
+            << "\n#define LR_DW " << in.Degree[2] << "\n#define LR_NC " << in.NumberOfComponents
+            << "\n#define LR_COMPONENT "
+            << (in.NumberOfComponents == 1
+                   ? 0
+                   : (this->VectorMode == COMPONENT ? this->VectorComponent : -1))
+            << "\n#define LR_BLEND " << this->BlendMode << "\n#define LR_SHADE " << (shade ? 1 : 0)
+            << "\n#define LR_FUCHS " << (this->ShadingModel == FUCHS ? 1 : 0)
+            << "\n#define LR_TRIM "
+            << (this->GetNumberOfInputConnections(1) > 0 || this->GetInputDataObject(1, 0) ? 1 : 0)
+            << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0)
+            << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_SUPERSAMPLING "
+            << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
+            << "\n#define LR_LIGHTS " << lightList.size() << "\n#define LR_MAX_PATCHES "
+            << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
+    vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str());
+  }
+  const bool trim = fs.find("#define LR_TRIM 1") != std::string::npos;
+  const std::string vs = this->GetVertexShaderSource();
+  // A source that failed once is not compiled again every frame.
+  vtkShaderProgram* program = (vs + fs) == in.FailedShader
+    ? nullptr
+    : window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  if (!program)
+  {
+    in.FailedShader = vs + fs;
+    in.Error = "the volume shader did not compile or link (see the message above)";
+    report();
+    return;
+  }
+
+  // Matrices: data (the volume's model coordinates) to clip space and back.
+  int viewport[4];
+  ren->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
+  if (viewport[2] < 1 || viewport[3] < 1)
+  {
+    return;
+  }
+  vtkOpenGLCamera* camera = vtkOpenGLCamera::SafeDownCast(ren->GetActiveCamera());
+  vtkMatrix4x4* wcvc;
+  vtkMatrix3x3* norms;
+  vtkMatrix4x4* vcdc;
+  vtkMatrix4x4* wcdc;
+  camera->GetKeyMatrices(ren, wcvc, norms, vcdc, wcdc);
+  vtkNew<vtkMatrix4x4> worldToClip; // row-major (GetKeyMatrices gives them transposed)
+  vtkMatrix4x4::Transpose(wcdc, worldToClip);
+  vtkMatrix4x4* dataToWorld = vol->GetMatrix();
+  vtkNew<vtkMatrix4x4> dataToClip;
+  vtkMatrix4x4::Multiply4x4(worldToClip, dataToWorld, dataToClip);
+  vtkNew<vtkMatrix4x4> clipToData;
+  vtkMatrix4x4::Invert(dataToClip, clipToData);
+  float a3[9], n3[9];
+  {
+    vtkNew<vtkMatrix3x3> linear, normal;
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        linear->SetElement(r, c, dataToWorld->GetElement(r, c));
+      }
+    }
+    vtkMatrix3x3::Invert(linear, normal);
+    normal->Transpose();
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        // Column-major for GLSL.
+        a3[3 * c + r] = static_cast<float>(linear->GetElement(r, c));
+        n3[3 * c + r] = static_cast<float>(normal->GetElement(r, c));
+      }
+    }
+  }
+
+  vtkOpenGLState* state = window->GetState();
+
+  // The opaque geometry's depth (rays end there), copied as VTK's GPU ray
+  // caster does.
+  if (!in.DepthTexture)
+  {
+    in.DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
+    in.DepthTexture->SetContext(window);
+    in.DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    in.DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    in.DepthTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    in.DepthTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    in.DepthColor = vtkSmartPointer<vtkTextureObject>::New();
+    in.DepthColor->SetContext(window);
+  }
+  if (!in.DepthTexture->GetHandle() ||
+    static_cast<int>(in.DepthTexture->GetWidth()) != viewport[2] ||
+    static_cast<int>(in.DepthTexture->GetHeight()) != viewport[3])
+  {
+    in.DepthTexture->ReleaseGraphicsResources(window);
+    in.DepthColor->ReleaseGraphicsResources(window);
+    if (window->GetStencilCapable())
+    {
+      in.DepthTexture->AllocateDepthStencil(viewport[2], viewport[3]);
+    }
+    else
+    {
+      in.DepthTexture->AllocateDepth(viewport[2], viewport[3], vtkTextureObject::Fixed32);
+    }
+    in.DepthColor->Allocate2D(viewport[2], viewport[3], 4, VTK_UNSIGNED_CHAR);
+    in.DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    in.DepthFramebuffer->SetContext(window);
+    state->PushDrawFramebufferBinding();
+    in.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    in.DepthFramebuffer->AddDepthAttachment(in.DepthTexture);
+    in.DepthFramebuffer->AddColorAttachment(0, in.DepthColor);
+    state->PopDrawFramebufferBinding();
+  }
+  {
+    state->PushDrawFramebufferBinding();
+    in.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    vtkOpenGLClearErrorMacro();
+    state->vtkglBlitFramebuffer(viewport[0], viewport[1], viewport[0] + viewport[2],
+      viewport[1] + viewport[3], 0, 0, viewport[2], viewport[3], GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    if (glGetError() != GL_NO_ERROR)
+    {
+      // Incompatible depth formats: no opaque geometry is known.
+      if (!in.DepthCopyWarned)
+      {
+        vtkWarningMacro(<< "Could not copy the depth buffer: the volume ignores the opaque "
+                           "geometry of this render pass.");
+        in.DepthCopyWarned = true;
+      }
+      vtkOpenGLState::ScopedglDepthMask mask(state);
+      state->vtkglDepthMask(GL_TRUE);
+      state->vtkglClearDepth(1.0);
+      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    }
+    state->PopDrawFramebufferBinding();
+  }
+
+  // The proxy box (the union of the patches' boxes).
+  double box[6] = { in.Bounds[0], in.Bounds[2], in.Bounds[4], in.Bounds[1], in.Bounds[3],
+    in.Bounds[5] };
+  if (!in.CubeBuffer || !std::equal(box, box + 6, in.CubeBox))
+  {
+    // Slightly larger than the box, so its faces never clip the volume.
+    double pad[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      pad[d] = 1e-4 * (box[d + 3] - box[d]) + 1e-9;
+    }
+    std::vector<float> tri;
+    const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 5, 7, 3 }, { 0, 4, 5, 1 }, { 2, 3, 7, 6 },
+      { 0, 1, 3, 2 }, { 4, 6, 7, 5 } };
+    auto corner = [&](int c, int d)
+    {
+      const bool high = (c >> d) & 1;
+      return static_cast<float>(high ? box[d + 3] + pad[d] : box[d] - pad[d]);
+    };
+    for (const auto& f : faces)
+    {
+      for (int v : { 0, 1, 2, 0, 2, 3 })
+      {
+        for (int d = 0; d < 3; ++d)
+        {
+          tri.push_back(corner(f[v], d));
+        }
+      }
+    }
+    if (!in.CubeBuffer)
+    {
+      in.CubeBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    }
+    in.CubeBuffer->Upload(tri, vtkOpenGLBufferObject::ArrayBuffer);
+    std::copy(box, box + 6, in.CubeBox);
+    in.CubeArrayProgram = nullptr;
+  }
+
+  // Trimming: the nearest front faces and the farthest back faces.
+  if (trim)
+  {
+    if (this->GetNumberOfInputConnections(1) > 0)
+    {
+      this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
+    }
+    vtkPolyData* surface = vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
+    std::ostringstream key;
+    key << surface << ' ' << (surface ? surface->GetMTime() : 0);
+    if (key.str() != in.TrimKey)
+    {
+      std::vector<float> tri;
+      if (surface && surface->GetPolys())
+      {
+        vtkPoints* points = surface->GetPoints();
+        vtkCellArray* polys = surface->GetPolys();
+        const vtkIdType* ids;
+        vtkIdType n;
+        for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+        {
+          for (vtkIdType k = 1; k + 1 < n; ++k) // a fan (convex polygons)
+          {
+            for (vtkIdType v : { ids[0], ids[k], ids[k + 1] })
+            {
+              double x[3];
+              points->GetPoint(v, x);
+              tri.insert(tri.end(),
+                { static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2]) });
+            }
+          }
+        }
+      }
+      if (tri.empty())
+      {
+        in.Error = "the trimming surface has no polygons: nothing to render (remove it to "
+                   "render the whole volume)";
+        report();
+        return;
+      }
+      if (!in.TrimBuffer)
+      {
+        in.TrimBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+      }
+      in.TrimBuffer->Upload(tri, vtkOpenGLBufferObject::ArrayBuffer);
+      in.TrimVertices = static_cast<vtkIdType>(tri.size() / 3);
+      in.TrimArrayProgram = nullptr;
+      in.TrimKey = key.str();
+    }
+    vtkShaderProgram* trimProgram = window->GetShaderCache()->ReadyShaderProgram(
+      vtkLRSplineVolumeVS, vtkLRSplineVolumeTrimFS, "");
+    if (!trimProgram)
+    {
+      in.Error = "the trimming shader did not compile or link";
+      report();
+      return;
+    }
+    if (!in.TrimArray)
+    {
+      in.TrimArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+    }
+    if (in.TrimArrayProgram != trimProgram)
+    {
+      in.TrimArray->ShaderProgramChanged();
+      in.TrimArray->Bind();
+      in.TrimArray->AddAttributeArray(
+        trimProgram, in.TrimBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+      in.TrimArrayProgram = trimProgram;
+    }
+    SetMatrix(trimProgram, "lrMCDCMatrix", dataToClip);
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      vtkSmartPointer<vtkTextureObject>& texture = in.TrimTextures[pass];
+      vtkSmartPointer<vtkOpenGLFramebufferObject>& fbo = in.TrimFramebuffers[pass];
+      if (!texture || static_cast<int>(texture->GetWidth()) != viewport[2] ||
+        static_cast<int>(texture->GetHeight()) != viewport[3])
+      {
+        if (texture)
+        {
+          texture->ReleaseGraphicsResources(window);
+        }
+        texture = vtkSmartPointer<vtkTextureObject>::New();
+        texture->SetContext(window);
+        texture->SetMinificationFilter(vtkTextureObject::Nearest);
+        texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+        texture->AllocateDepth(viewport[2], viewport[3], vtkTextureObject::Float32);
+        fbo = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+        fbo->SetContext(window);
+        fbo->SaveCurrentBindingsAndBuffers();
+        fbo->Bind();
+        fbo->AddDepthAttachment(texture);
+        fbo->RestorePreviousBindingsAndBuffers();
+      }
+      fbo->SaveCurrentBindingsAndBuffers();
+      fbo->Bind();
+      fbo->DeactivateDrawBuffers();
+      fbo->DeactivateReadBuffer();
+      {
+        vtkOpenGLState::ScopedglViewport savedViewport(state);
+        vtkOpenGLState::ScopedglScissor savedScissor(state);
+        vtkOpenGLState::ScopedglColorMask savedColorMask(state);
+        vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+        vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+        vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+        vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+        vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+        state->vtkglViewport(0, 0, viewport[2], viewport[3]);
+        state->vtkglScissor(0, 0, viewport[2], viewport[3]);
+        state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        state->vtkglDepthMask(GL_TRUE);
+        state->vtkglEnable(GL_DEPTH_TEST);
+        state->vtkglDisable(GL_BLEND);
+        // Front faces and back faces both: the orientation of the surface's
+        // polygons is not trusted; the nearest and farthest hits are kept.
+        state->vtkglDisable(GL_CULL_FACE);
+        state->vtkglClearDepth(pass == 0 ? 1.0 : 0.0);
+        state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+        state->vtkglDepthFunc(pass == 0 ? GL_LESS : GL_GREATER);
+        in.TrimArray->Bind();
+        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(in.TrimVertices));
+        in.TrimArray->Release();
+        state->vtkglClearDepth(1.0);
+      }
+      fbo->RestorePreviousBindingsAndBuffers();
+    }
+    // The ray caster's program again.
+    window->GetShaderCache()->ReadyShaderProgram(program, nullptr);
+  }
+
+  // Uniforms.
+  SetMatrix(program, "lrMCDCMatrix", dataToClip);
+  SetMatrix(program, "lrDCMCMatrix", clipToData);
+  program->SetUniformMatrix3x3("lrDataToWorld", a3);
+  program->SetUniformMatrix3x3("lrNormalMatrix", n3);
+  const float viewportF[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
+    static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
+  program->SetUniform4f("lrViewport", viewportF);
+  const float boxLo[3] = { static_cast<float>(box[0]), static_cast<float>(box[1]),
+    static_cast<float>(box[2]) };
+  const float boxHi[3] = { static_cast<float>(box[3]), static_cast<float>(box[4]),
+    static_cast<float>(box[5]) };
+  program->SetUniform3f("lrBoxLo", boxLo);
+  program->SetUniform3f("lrBoxHi", boxHi);
+  {
+    const int np = static_cast<int>(in.Patches.size());
+    std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
+    std::vector<int> blocks, starts, locators;
+    for (const PatchInfo& p : in.Patches)
+    {
+      lo.insert(lo.end(), p.Lo, p.Lo + 3);
+      hi.insert(hi.end(), p.Hi, p.Hi + 3);
+      edge.insert(edge.end(), p.Edge, p.Edge + 3);
+      offset.insert(offset.end(), p.Offset, p.Offset + 3);
+      boxLoP.insert(boxLoP.end(), p.BoxLo, p.BoxLo + 3);
+      boxHiP.insert(boxHiP.end(), p.BoxHi, p.BoxHi + 3);
+      blocks.insert(blocks.end(), p.Blocks, p.Blocks + 3);
+      starts.insert(starts.end(), p.Starts, p.Starts + 4);
+      locators.push_back(p.Locator);
+    }
+    auto set3f = [&](const char* name, std::vector<float>& v)
+    { program->SetUniform3fv(name, np, reinterpret_cast<const float(*)[3]>(v.data())); };
+    set3f("lrPatchLo", lo);
+    set3f("lrPatchHi", hi);
+    set3f("lrPatchEdge", edge);
+    for (int p = 0; p < np; ++p)
+    {
+      // GLSL matrices are column-major: the transpose of the row-major array.
+      float columns[9];
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          columns[3 * c + r] = in.Patches[p].Inverse[3 * r + c];
+        }
+      }
+      program->SetUniformMatrix3x3(("lrPatchInverse[" + std::to_string(p) + "]").c_str(), columns);
+    }
+    set3f("lrPatchOffset", offset);
+    set3f("lrPatchBoxLo", boxLoP);
+    set3f("lrPatchBoxHi", boxHiP);
+    program->SetUniform1iv("lrPatchBlocks", 3 * np, blocks.data());
+    program->SetUniform1iv("lrPatchStarts", 4 * np, starts.data());
+    program->SetUniform1iv("lrPatchLocator", np, locators.data());
+  }
+
+  // Clipping planes, in data coordinates.
+  {
+    vtkPlaneCollection* planes = this->ClippingPlanes;
+    const int n = planes ? std::min(planes->GetNumberOfItems(), MaximumClipPlanes) : 0;
+    if (planes && planes->GetNumberOfItems() > MaximumClipPlanes)
+    {
+      vtkWarningMacro(<< "Only the first " << MaximumClipPlanes << " clipping planes are used.");
+    }
+    float equations[MaximumClipPlanes][4] = {};
+    for (int i = 0; i < n; ++i)
+    {
+      vtkPlane* plane = planes->GetItem(i);
+      double normal[3], origin[3];
+      plane->GetNormal(normal);
+      plane->GetOrigin(origin);
+      // Kept: n . (x_world - o) >= 0 with x_world = A x + t.
+      double d = -vtkMath::Dot(normal, origin);
+      for (int r = 0; r < 3; ++r)
+      {
+        d += normal[r] * dataToWorld->GetElement(r, 3);
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        double v = 0.0;
+        for (int r = 0; r < 3; ++r)
+        {
+          v += normal[r] * dataToWorld->GetElement(r, c);
+        }
+        equations[i][c] = static_cast<float>(v);
+      }
+      equations[i][3] = static_cast<float>(d);
+    }
+    program->SetUniformi("lrNumberOfClipPlanes", n);
+    program->SetUniform4fv("lrClipPlanes", MaximumClipPlanes, equations);
+  }
+
+  // Sampling.
+  double diagonal = 0.0;
+  for (int d = 0; d < 3; ++d)
+  {
+    double e[3] = { 0, 0, 0 };
+    e[d] = box[d + 3] - box[d];
+    double w[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      w[r] = dataToWorld->GetElement(r, 0) * e[0] + dataToWorld->GetElement(r, 1) * e[1] +
+        dataToWorld->GetElement(r, 2) * e[2];
+    }
+    diagonal += vtkMath::Dot(w, w);
+  }
+  diagonal = std::sqrt(diagonal);
+  const double sampleDistance = this->SampleDistance > 0 ? this->SampleDistance : diagonal / 100.0;
+  program->SetUniformi("lrAdaptive", this->AdaptiveSteps ? 1 : 0);
+  program->SetUniformf("lrStepScale", static_cast<float>(this->StepScale));
+  program->SetUniformf("lrSampleDistance", static_cast<float>(sampleDistance));
+  int maxSteps = this->MaximumNumberOfSteps;
+  if (maxSteps <= 0)
+  {
+    // Automatic: the box's diagonal at the finest step, plus the gaps.
+    double dataDiagonal = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+      dataDiagonal += (box[d + 3] - box[d]) * (box[d + 3] - box[d]);
+    }
+    dataDiagonal = std::sqrt(dataDiagonal);
+    const int maxDegree = std::max(in.Degree[0], std::max(in.Degree[1], in.Degree[2]));
+    const double steps = this->AdaptiveSteps
+      ? dataDiagonal / (this->StepScale * in.MinimumSide / (1 << maxDegree))
+      : diagonal / sampleDistance;
+    maxSteps = static_cast<int>(std::min(
+      1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
+  }
+  program->SetUniformi("lrMaxSteps", maxSteps);
+  program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
+
+  // Transfer function and lighting.
+  const float range[2] = { static_cast<float>(in.TransferRange[0]),
+    static_cast<float>(in.TransferRange[1]) };
+  program->SetUniform2f("lrRange", range);
+  program->SetUniformf("lrUnitDistance",
+    static_cast<float>(std::max(property->GetScalarOpacityUnitDistance(0), 1e-12)));
+  program->SetUniformf("lrAmbient", static_cast<float>(property->GetAmbient(0)));
+  program->SetUniformf("lrDiffuse", static_cast<float>(property->GetDiffuse(0)));
+  program->SetUniformf("lrSpecular", static_cast<float>(property->GetSpecular(0)));
+  program->SetUniformf("lrSpecularPower", static_cast<float>(property->GetSpecularPower(0)));
+  {
+    std::vector<float> directions, colors;
+    for (const auto& l : lightList)
+    {
+      directions.insert(directions.end(), l.begin(), l.begin() + 3);
+      colors.insert(colors.end(), l.begin() + 3, l.end());
+    }
+    program->SetUniform3fv("lrLightDirections", static_cast<int>(lightList.size()),
+      reinterpret_cast<const float(*)[3]>(directions.data()));
+    program->SetUniform3fv("lrLightColors", static_cast<int>(lightList.size()),
+      reinterpret_cast<const float(*)[3]>(colors.data()));
+  }
+  {
+    float iso[MaximumIsoValues] = {};
+    std::copy(isoValues.begin(), isoValues.end(), iso);
+    program->SetUniform1fv("lrIsoValues", MaximumIsoValues, iso);
+    program->SetUniformi("lrNumberOfIsoValues", static_cast<int>(isoValues.size()));
+    program->SetUniformi("lrBisections", this->IsosurfaceBisections);
+  }
+
+  // Textures.
+  in.HeadsBuffer.Activate(program, "lrHeads");
+  in.NodeWordsBuffer.Activate(program, "lrNodeWords");
+  in.NodeSplitsBuffer.Activate(program, "lrNodeSplits");
+  in.OctreeBuffer.Activate(program, "lrOctree");
+  in.BoxesBuffer.Activate(program, "lrBoxes");
+  in.OffsetsBuffer.Activate(program, "lrOffsets");
+  in.CoefficientsBuffer.Activate(program, "lrCoefficients");
+  in.TransferTexture->Activate();
+  program->SetUniformi("lrTransfer", in.TransferTexture->GetTextureUnit());
+  in.DepthTexture->Activate();
+  program->SetUniformi("lrDepth", in.DepthTexture->GetTextureUnit());
+  if (trim)
+  {
+    in.TrimTextures[0]->Activate();
+    in.TrimTextures[1]->Activate();
+    program->SetUniformi("lrTrimFront", in.TrimTextures[0]->GetTextureUnit());
+    program->SetUniformi("lrTrimBack", in.TrimTextures[1]->GetTextureUnit());
+  }
+
+  // Draw the back faces of the proxy box: every pixel the volume may cover
+  // runs its ray once, also with the camera inside the box.
+  if (!in.CubeArray)
+  {
+    in.CubeArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+  }
+  if (in.CubeArrayProgram != program)
+  {
+    in.CubeArray->ShaderProgramChanged();
+    in.CubeArray->Bind();
+    in.CubeArray->AddAttributeArray(
+      program, in.CubeBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    in.CubeArrayProgram = program;
+  }
+  {
+    vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+    vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
+    state->vtkglEnable(GL_CULL_FACE);
+    state->vtkglCullFace(GL_FRONT);
+    if (this->CountSamples)
+    {
+      state->vtkglDisable(GL_BLEND);
+    }
+    else
+    {
+      state->vtkglEnable(GL_BLEND);
+      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    }
+    // The depth test is done by the rays (the opaque depth texture); the
+    // isosurfaces write their depth.
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_ALWAYS);
+    state->vtkglDepthMask(this->BlendMode == ISOSURFACE_BLEND ? GL_TRUE : GL_FALSE);
+    in.CubeArray->Bind();
+    glDrawArrays(GL_TRIANGLES, 0, 36);
+    in.CubeArray->Release();
+    state->vtkglCullFace(GL_BACK);
+  }
+
+  in.HeadsBuffer.Deactivate();
+  in.NodeWordsBuffer.Deactivate();
+  in.NodeSplitsBuffer.Deactivate();
+  in.OctreeBuffer.Deactivate();
+  in.BoxesBuffer.Deactivate();
+  in.OffsetsBuffer.Deactivate();
+  in.CoefficientsBuffer.Deactivate();
+  in.TransferTexture->Deactivate();
+  in.DepthTexture->Deactivate();
+  if (trim)
+  {
+    in.TrimTextures[0]->Deactivate();
+    in.TrimTextures[1]->Deactivate();
+  }
+  vtkOpenGLCheckErrorMacro("failed after Render");
+  // A good frame: a problem that comes back is reported again.
+  in.Error.clear();
+  in.ReportedError.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::ReportError()
+{
+  vtkInternals& in = *this->Internals;
+  if (!in.Error.empty() && in.Error != in.ReportedError)
+  {
+    vtkErrorMacro(<< in.Error);
+    in.ReportedError = in.Error;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  const char* blend = this->BlendMode == COMPOSITE_BLEND ? "Composite"
+    : this->BlendMode == MAXIMUM_INTENSITY_BLEND         ? "MaximumIntensity"
+    : this->BlendMode == MINIMUM_INTENSITY_BLEND         ? "MinimumIntensity"
+                                                         : "IsoSurface";
+  os << indent << "BlendMode: " << blend << "\n";
+  os << indent << "FieldArrayName: " << (this->FieldArrayName ? this->FieldArrayName : "(auto)")
+     << "\n";
+  os << indent << "VectorMode: " << (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component")
+     << "\n";
+  os << indent << "VectorComponent: " << this->VectorComponent << "\n";
+  os << indent << "ElementLocator: " << vtkLRSplineElementLocator::GetTypeName(this->ElementLocator)
+     << "\n";
+  os << indent << "ForestResolution: " << this->ForestResolution << "\n";
+  os << indent << "AdaptiveSteps: " << this->AdaptiveSteps << "\n";
+  os << indent << "StepScale: " << this->StepScale << "\n";
+  os << indent << "SampleDistance: " << this->SampleDistance << "\n";
+  os << indent << "Supersampling: " << this->Supersampling << "\n";
+  os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
+  os << indent << "UseJittering: " << this->UseJittering << "\n";
+  os << indent << "ShadingModel: " << (this->ShadingModel == FUCHS ? "Fuchs" : "Phong") << "\n";
+  os << indent << "IsosurfaceBisections: " << this->IsosurfaceBisections << "\n";
+  os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
+  os << indent << "CountSamples: " << this->CountSamples << "\n";
+  os << indent << "NumberOfElements: " << this->GetNumberOfElements() << "\n";
+  os << indent << "LastErrorMessage: " << this->Internals->Error << "\n";
+}

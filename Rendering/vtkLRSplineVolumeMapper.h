@@ -1,0 +1,346 @@
+/**
+ * @class   vtkLRSplineVolumeMapper
+ * @brief   Direct volume rendering of LR-spline volumes on the GPU, exact to the spline: no
+ * resampling.
+ *
+ * Implements Fuchs, Barrowclough, Hjelmervik and Dahl, "Direct interactive
+ * visualization of locally refined spline volumes for scalar and vector
+ * fields" (Computers & Graphics 2018), §3.2 and §4. A VTK volume mapper:
+ * use it with a vtkVolume and a vtkVolumeProperty like any VTK volume mapper.
+ * Its input is the output of vtkLRSplineReader (a vtkMultiBlockDataSet of
+ * one VTK_BEZIER_HEXAHEDRON grid per patch, field mode; several patches per
+ * file; the first patch containing a point wins, as in
+ * vtkLRSplineProbeFilter), or one such grid, or anything
+ * vtkLRSplineField::Build accepts (e.g. vtkLRSplineImageFitter's output).
+ *
+ * - **On the GPU once per data change** (§3.2): the Bernstein coefficients of
+ *   every element (float), the element boxes, and the element search
+ *   structure of each patch in vtkLRSplineElementLocator's flat arrays
+ *   (ElementLocator: the k-d forest of Algorithm 1 with ForestResolution^3
+ *   trees, one k-d tree, the octree of §3.2.2 or the look-up texture of §3.2,
+ *   the last two for dyadic knots only), so that Fuchs' tables (Figs. 4-6)
+ *   can be reproduced. Patches of lower degree are raised to the highest
+ *   degree (exactly, by degree elevation). GetGPUMemorySize() counts the
+ *   bytes.
+ * - **Per ray** (Algorithm 2): from the entry to the exit of the patches'
+ *   boxes; each sample finds its element (the previous sample's when it
+ *   still contains it, else the search structure) and evaluates the value
+ *   and the exact gradient. The step is adaptive (Eq. 4: the element's
+ *   shortest side over 2^degree, times StepScale; AdaptiveSteps on, the
+ *   default) or fixed (SampleDistance). Composite blending is front to back
+ *   with the opacity correction 1 - (1 - a)^(step / ScalarOpacityUnitDistance);
+ *   the transfer function is supersampled Supersampling times between two
+ *   spline samples along the linear interpolant of their values (§4.1,
+ *   against wood-grain; optional jittering of the start as in VTK);
+ *   rays stop at 99 % opacity. **Empty-space skipping** (EmptySpaceSkipping,
+ *   on): by the convex hull property of the Bezier form an element's values
+ *   lie within its coefficients' range; rays jump over the elements whose
+ *   range maps to zero opacity (or, for isosurfaces, holds no iso value),
+ *   which is exact. Patches may be placed by any invertible affine map
+ *   (vtkLRSplineField: "LRPhysicalTransform" with 12 values).
+ * - **vtkVolumeProperty**: the color transfer function and scalar opacity
+ *   (sampled into a 1D texture over their ranges), Shade with the exact
+ *   gradient: VTK's ambient / diffuse / specular model (two-sided, summed
+ *   over the renderer's lights, at most 8, as directional lights) or Fuchs'
+ *   diffuse model max(0.4, |l.n|) (the first light)
+ *   (ShadingModel); the iso values of the isosurface blend mode.
+ * - **Blend modes**: composite, maximum and minimum intensity, and
+ *   isosurface: the crossings found between samples are refined by
+ *   bisection on the exact spline (IsosurfaceBisections steps) and lit by
+ *   the exact normal, composited front to back; the first crossing writes
+ *   its depth.
+ * - **Vector fields**: the magnitude or one component (VectorMode, as
+ *   vtkSmartVolumeMapper).
+ * - **Opaque geometry** drawn before the volume ends the rays at its depth
+ *   (streamline tubes inside the volume look right); **clipping planes**.
+ * - **Trimming** (§4.1): an optional closed surface on input port 1
+ *   (SetTrimmingSurfaceConnection, e.g. a vtkSTLReader): only its inside is
+ *   rendered, between its nearest front face and its farthest back face
+ *   along each ray (a depth pre-pass of both; exact for surfaces that a ray
+ *   enters and leaves once).
+ *
+ * Bad input (no scalars, a surface spline, rational data or patches read in
+ * geometry mode, NaN coefficients, degrees above 3, an empty transfer
+ * function) is an error naming the problem; nothing is drawn.
+ *
+ * Limits: degrees up to 3 per direction; at most 16 patches; the whole
+ * spline on each rank in parallel (no ordered compositing of pieces).
+ *
+ * @sa vtkLRSplineReader vtkLRSplineField vtkLRSplineElementLocator
+ */
+#ifndef vtkLRSplineVolumeMapper_h
+#define vtkLRSplineVolumeMapper_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkAbstractVolumeMapper.h"
+
+#include <memory> // for std::unique_ptr
+#include <string> // for std::string
+
+class vtkPolyData;
+class vtkRenderer;
+class vtkVolume;
+class vtkWindow;
+
+class SPLINEVIZ_EXPORT vtkLRSplineVolumeMapper : public vtkAbstractVolumeMapper
+{
+public:
+  static vtkLRSplineVolumeMapper* New();
+  vtkTypeMacro(vtkLRSplineVolumeMapper, vtkAbstractVolumeMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// The blend modes (the values of vtkVolumeMapper's).
+  enum BlendModes
+  {
+    COMPOSITE_BLEND = 0,
+    MAXIMUM_INTENSITY_BLEND = 1,
+    MINIMUM_INTENSITY_BLEND = 2,
+    ISOSURFACE_BLEND = 5
+  };
+
+  ///@{
+  /**
+   * Blend mode. Default COMPOSITE_BLEND.
+   */
+  void SetBlendMode(int mode);
+  vtkGetMacro(BlendMode, int);
+  void SetBlendModeToComposite() { this->SetBlendMode(COMPOSITE_BLEND); }
+  void SetBlendModeToMaximumIntensity() { this->SetBlendMode(MAXIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToMinimumIntensity() { this->SetBlendMode(MINIMUM_INTENSITY_BLEND); }
+  void SetBlendModeToIsoSurface() { this->SetBlendMode(ISOSURFACE_BLEND); }
+  ///@}
+
+  ///@{
+  /**
+   * Name of the point-data array of coefficients (the reader's FieldName,
+   * "Field" by default). nullptr or "" (default): the active vectors, else the
+   * active scalars, else the first array.
+   */
+  vtkSetStringMacro(FieldArrayName);
+  vtkGetStringMacro(FieldArrayName);
+  ///@}
+
+  enum VectorModes
+  {
+    MAGNITUDE = -1, ///< the length of the vector field
+    COMPONENT = 0   ///< one component (VectorComponent)
+  };
+
+  ///@{
+  /**
+   * For fields with several components: their MAGNITUDE (default) or one
+   * COMPONENT (VectorComponent). A scalar field is rendered as it is.
+   */
+  vtkSetClampMacro(VectorMode, int, MAGNITUDE, COMPONENT);
+  vtkGetMacro(VectorMode, int);
+  void SetVectorModeToMagnitude() { this->SetVectorMode(MAGNITUDE); }
+  void SetVectorModeToComponent() { this->SetVectorMode(COMPONENT); }
+  vtkSetClampMacro(VectorComponent, int, 0, 2);
+  vtkGetMacro(VectorComponent, int);
+  ///@}
+
+  enum Locators
+  {
+    KD_FOREST = 2, ///< vtkLRSplineElementLocator::KD_FOREST (default)
+    KD_TREE = 1,
+    OCTREE = 3, ///< dyadic knots only
+    TEXTURE = 4 ///< dyadic knots only
+  };
+
+  ///@{
+  /**
+   * Element search structure on the GPU (the values of
+   * vtkLRSplineElementLocator::LocatorType). Default KD_FOREST.
+   */
+  vtkSetClampMacro(ElementLocator, int, KD_TREE, TEXTURE);
+  vtkGetMacro(ElementLocator, int);
+  void SetElementLocatorToKdForest() { this->SetElementLocator(KD_FOREST); }
+  void SetElementLocatorToKdTree() { this->SetElementLocator(KD_TREE); }
+  void SetElementLocatorToOctree() { this->SetElementLocator(OCTREE); }
+  void SetElementLocatorToTexture() { this->SetElementLocator(TEXTURE); }
+  ///@}
+
+  ///@{
+  /**
+   * Trees per direction of the k-d forest (0, default: automatic, about
+   * 2 x the cube root of the element count, at most 64).
+   */
+  vtkSetClampMacro(ForestResolution, int, 0, 512);
+  vtkGetMacro(ForestResolution, int);
+  ///@}
+
+  ///@{
+  /**
+   * Adaptive steps (Eq. 4: the current element's shortest side / 2^degree,
+   * times StepScale; default on) or fixed steps of SampleDistance.
+   */
+  vtkSetMacro(AdaptiveSteps, bool);
+  vtkGetMacro(AdaptiveSteps, bool);
+  vtkBooleanMacro(AdaptiveSteps, bool);
+  vtkSetClampMacro(StepScale, double, 1e-3, 100.0);
+  vtkGetMacro(StepScale, double);
+  ///@}
+
+  ///@{
+  /**
+   * Fixed step in world units (AdaptiveSteps off). 0 (default): a hundredth of
+   * the diagonal of the patches' box.
+   */
+  vtkSetClampMacro(SampleDistance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SampleDistance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Empty-space skipping (default on): rays jump over the elements whose
+   * Bezier coefficients (which bound the element's values: convex hull
+   * property) map to zero opacity, or, for isosurfaces, hold no iso value.
+   * Exact: skipped elements add nothing.
+   */
+  vtkSetMacro(EmptySpaceSkipping, bool);
+  vtkGetMacro(EmptySpaceSkipping, bool);
+  vtkBooleanMacro(EmptySpaceSkipping, bool);
+  ///@}
+
+  /// Elements skipped in the last render (empty-space skipping).
+  vtkIdType GetNumberOfSkippedElements();
+
+  ///@{
+  /**
+   * Transfer-function samples per spline step (§4.1). Default 4; 1 turns the
+   * supersampling off.
+   */
+  vtkSetClampMacro(Supersampling, int, 1, 64);
+  vtkGetMacro(Supersampling, int);
+  ///@}
+
+  ///@{
+  /**
+   * Start each ray at a random point of its first step (VTK's jittering,
+   * against wood-grain). Default off.
+   */
+  vtkSetMacro(UseJittering, bool);
+  vtkGetMacro(UseJittering, bool);
+  vtkBooleanMacro(UseJittering, bool);
+  ///@}
+
+  enum ShadingModels
+  {
+    PHONG = 0, ///< VTK's ambient, diffuse and specular (the volume property's)
+    FUCHS = 1  ///< Fuchs et al.'s diffuse model max(0.4, |l . n|)
+  };
+
+  ///@{
+  /**
+   * Shading model when the volume property's Shade is on. Default PHONG.
+   */
+  vtkSetClampMacro(ShadingModel, int, PHONG, FUCHS);
+  vtkGetMacro(ShadingModel, int);
+  void SetShadingModelToPhong() { this->SetShadingModel(PHONG); }
+  void SetShadingModelToFuchs() { this->SetShadingModel(FUCHS); }
+  ///@}
+
+  ///@{
+  /**
+   * Bisection steps refining an isosurface crossing on the exact spline.
+   * Default 16.
+   */
+  vtkSetClampMacro(IsosurfaceBisections, int, 1, 40);
+  vtkGetMacro(IsosurfaceBisections, int);
+  ///@}
+
+  ///@{
+  /**
+   * Largest number of samples per ray. 0 (default): automatic, enough for a
+   * ray across the whole box at the finest step (adaptive: the smallest
+   * element's step times StepScale; fixed: SampleDistance), so that no ray is
+   * cut short; a positive value caps the work per pixel (rays stop there).
+   */
+  vtkSetClampMacro(MaximumNumberOfSteps, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumNumberOfSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * The trimming surface (input port 1, optional): a closed vtkPolyData of
+   * polygons in the volume's data coordinates.
+   */
+  void SetTrimmingSurfaceConnection(vtkAlgorithmOutput* output);
+  void SetTrimmingSurfaceData(vtkPolyData* surface);
+  ///@}
+
+  /**
+   * Debugging and tests: instead of colors, write the number of spline
+   * evaluations of each pixel's ray as a 24-bit integer in RGB (R lowest).
+   */
+  vtkSetMacro(CountSamples, bool);
+  vtkGetMacro(CountSamples, bool);
+  vtkBooleanMacro(CountSamples, bool);
+
+  /**
+   * Bytes of spline data on the GPU: coefficients, element boxes and
+   * coefficient offsets, search structures (not the transfer function and
+   * depth textures, which depend on the window).
+   */
+  size_t GetGPUMemorySize();
+
+  /**
+   * Build the GPU-side data for the current input now (also done by the first
+   * render): false when the input cannot be rendered (GetLastErrorMessage()
+   * says why).
+   */
+  bool UpdateSpline();
+
+  /// Number of elements of all patches (after UpdateSpline()).
+  vtkIdType GetNumberOfElements();
+
+  /// The message of the last failure (empty when the last render worked).
+  const char* GetLastErrorMessage();
+
+  void Render(vtkRenderer* ren, vtkVolume* vol) override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
+  double* GetBounds() override;
+  void GetBounds(double bounds[6]) override { this->vtkAbstractVolumeMapper::GetBounds(bounds); }
+
+protected:
+  vtkLRSplineVolumeMapper();
+  ~vtkLRSplineVolumeMapper() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  /**
+   * The shaders' sources (with the shared evaluation code). Tests override
+   * them to check that broken shaders are caught.
+   */
+  virtual std::string GetVertexShaderSource();
+  virtual std::string GetFragmentShaderSource();
+
+  int BlendMode = COMPOSITE_BLEND;
+  char* FieldArrayName = nullptr;
+  int VectorMode = MAGNITUDE;
+  int VectorComponent = 0;
+  int ElementLocator = KD_FOREST;
+  int ForestResolution = 0;
+  bool AdaptiveSteps = true;
+  double StepScale = 1.0;
+  double SampleDistance = 0.0;
+  int Supersampling = 4;
+  bool EmptySpaceSkipping = true;
+  bool UseJittering = false;
+  int ShadingModel = PHONG;
+  int IsosurfaceBisections = 16;
+  int MaximumNumberOfSteps = 0;
+  bool CountSamples = false;
+
+private:
+  vtkLRSplineVolumeMapper(const vtkLRSplineVolumeMapper&) = delete;
+  void operator=(const vtkLRSplineVolumeMapper&) = delete;
+
+  // vtkErrorMacro for the current error unless it was reported already.
+  void ReportError();
+
+  struct vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

@@ -1,0 +1,130 @@
+/**
+ * @class   vtkStylizedLineFixUp
+ * @brief   The CPU part of the hybrid rendering of stylized lines (Stoll et al. §4.4): batches
+ * of segments, their per-view classification and the draw lists.
+ *
+ * Plain C++ (not a vtkObject), used by vtkStylizedLineMapper. It also owns the
+ * vertex tangents of the lines (slPolylineTangent(): the bisectors of the
+ * straight segments, the segments' directions at the ends), which the
+ * mapper uploads, so that the shaders and the classification use the same.
+ * Where a line's
+ * tangent nearly points at the viewer, the silhouette quads of Stoll §4.1
+ * degenerate and flip (§4.3); those places are drawn as real geometry
+ * instead. Per data change, Build() cuts every polyline of a
+ * vtkSplineTubeCore into batches: runs of at most MaximumBatchSegments
+ * consecutive segments whose vertex tangents stay within MaximumBatchAngle
+ * of the batch's first tangent (Stoll: 10-15 degrees), each with its tangent
+ * cone and a bounding sphere. Per view change, Classify() decides for every
+ * batch (in parallel, vtkSMPTools) whether one of its vertices needs the
+ * fix-up (slNeedsFixUp() of vtkStylizedLineMath.h, the same criterion the
+ * tests use): a conservative cone test rejects most batches at once (the
+ * smallest angle any of its vertices can make with its view ray, from the
+ * angle between the sphere's direction and the cone's axis minus the cone's
+ * and the sphere's angular radii, exceeds the threshold, and the eye is
+ * further than the near-axis distance that this angle allows); the rest are
+ * tested vertex by vertex. Then it writes the draw lists: the triangle
+ * strips (two vertices per point) of the polyline pieces between fixed-up
+ * batches, and the first points of the fixed-up segments.
+ */
+#ifndef vtkStylizedLineFixUp_h
+#define vtkStylizedLineFixUp_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkType.h"
+
+#include <cstdint>
+#include <vector>
+
+class vtkSplineTubeCore;
+
+class SPLINEVIZ_EXPORT vtkStylizedLineFixUp
+{
+public:
+  /// Longest batch, in segments.
+  static constexpr int MaximumBatchSegments = 16;
+  /// Largest angle (radians) between a batch's vertex tangents and its first one (12 degrees).
+  static constexpr double MaximumBatchAngle = 0.20943951023931953;
+
+  /// What the classification depends on.
+  struct View
+  {
+    double ModelView[16]; ///< column-major: uploaded (shifted) model coordinates to view
+    double RadiusScale;   ///< model to view scale of radii
+    bool Parallel;        ///< parallel projection
+    double Epsilon;       ///< threshold of |t . u_hat| > 1 - Epsilon
+    double JointRadius;   ///< joint spheres' radius in line radii (1 + halo width)
+    double PixelsPerUnit; ///< pixels per view unit (perspective: at distance 1)
+  };
+
+  /**
+   * Cut the polylines of `core` into batches. Positions are taken relative
+   * to `shift` (the mapper's upload shift). Call again whenever the core is
+   * rebuilt: Classify() reads the core's arrays.
+   */
+  void Build(vtkSplineTubeCore* core, const double shift[3]);
+
+  /**
+   * Classify the batches for `view` (when `enabled`; otherwise none is fixed
+   * up) and write the draw lists: per strip its first vertex (2 x first
+   * point) and its vertex count (2 x points), the first point of every
+   * fixed-up segment, and the joints: the points of the fixed-up segments
+   * (each once) whose sphere of JointRadius line radii stays behind the
+   * polyline's end caps (further than that from both ends).
+   */
+  void Classify(const View& view, bool enabled, std::vector<int>& stripFirsts,
+    std::vector<int>& stripCounts, std::vector<std::uint32_t>& segments,
+    std::vector<std::uint32_t>& joints);
+
+  /// Unit tangent per line vertex (3 floats each), made by Build().
+  const std::vector<float>& GetTangents() const { return this->Tangents; }
+
+  /**
+   * The largest radius on screen, in pixels, of the polylines' ends (the
+   * caps, in front of the eye) and of the fixed-up segments' points, found
+   * by the last Classify(); the mapper tessellates the caps and cylinders
+   * from it.
+   */
+  double GetMaximumScreenRadius() const { return this->MaximumScreenRadius; }
+
+  /// Per batch: 1 when the last Classify() fixed it up.
+  const std::vector<unsigned char>& GetBatchFlags() const { return this->Flags; }
+
+  /**
+   * The reference classification: every vertex tested, no cone test
+   * (for the tests; same output as GetBatchFlags()).
+   */
+  std::vector<unsigned char> ClassifyAllVertices(const View& view) const;
+
+  vtkIdType GetNumberOfBatches() const { return static_cast<vtkIdType>(this->Batches.size()); }
+  /// Batches the last Classify() tested vertex by vertex (those the cone test kept).
+  vtkIdType GetNumberOfCandidateBatches() const { return this->Candidates; }
+  /// First point and segment count of batch b.
+  vtkIdType GetBatchFirstNode(vtkIdType b) const { return this->Batches[b].FirstNode; }
+  int GetBatchNumberOfSegments(vtkIdType b) const { return this->Batches[b].Segments; }
+
+private:
+  struct Batch
+  {
+    std::uint32_t FirstNode;
+    std::uint32_t Tube;
+    int Segments;
+    float Axis[3];   ///< unit tangent of the first vertex
+    float Cone;      ///< largest angle of a vertex tangent to Axis
+    float Center[3]; ///< bounding sphere of the vertices (shifted model coordinates)
+    float Radius;    ///< its radius (vertex positions only)
+    float MaxRadius; ///< largest line radius in the batch
+  };
+  bool TestVertices(const Batch& batch, const View& view) const;
+
+  vtkSplineTubeCore* Core = nullptr;
+  double Shift[3] = { 0.0, 0.0, 0.0 };
+  std::vector<float> Tangents;
+  std::vector<Batch> Batches;
+  std::vector<vtkIdType> TubeFirstBatch; ///< tubes + 1
+  std::vector<unsigned char> Flags;
+  vtkIdType Candidates = 0;
+  double MaximumScreenRadius = 0.0;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkStylizedLineFixUp.h
