@@ -41,6 +41,27 @@
  * testing both sub-segments, was measured too: no faster, since the
  * per-fragment root finding, not the rectangles, dominates.)
  *
+ * **Occlusion culling** (OcclusionCulling, on by default). On a software
+ * rasterizer such as Mesa llvmpipe a fragment stage that writes gl_FragDepth
+ * gets no early depth test, so without culling every fragment of every
+ * overlapping rectangle runs the root finding. A depth pre-pass first draws,
+ * into a depth texture of the mapper's own the size of the viewport, one
+ * quad per segment that lies inside the tube (a band around the segment's
+ * chord, narrower than the tube by the chord's distance from the
+ * sub-segments, see svInnerBandHalfWidth; facing the eye and moved toward
+ * it), with a fragment stage that writes nothing, so that the rasterizer's
+ * own early depth test applies. The ray-cast pass then starts every
+ * fragment with an explicit depth test: its rectangle lies in front of its
+ * whole sub-segment, so when the pre-pass depth at the pixel is nearer,
+ * something inside a tube, hence a tube's surface, hides the sub-segment
+ * there and the fragment is discarded before any root finding. The result
+ * is exactly that of the ray caster without culling (only fragments that
+ * would lose the depth test are dropped). The pre-pass is skipped (and the
+ * tubes drawn as without it) for translucent tubes (they do not hide each
+ * other), with clipping planes (a clipped tube hides nothing) and when the
+ * ray origin may be inside a segment's tube (that segment's band is left
+ * out). GetLastRenderCulled() says whether the last render used it.
+ *
  * Data on the GPU (uploaded once per data change): per node the position,
  * radius, tangent and radius derivative (32 bytes) and, with scalar coloring,
  * the color and its derivative (8 bytes); per segment the first node and flags
@@ -59,9 +80,14 @@
 
 #include "SplineVizModule.h" // for export macro
 #include "vtkNew.h"          // for vtkNew
+#include "vtkSmartPointer.h" // for vtkSmartPointer
 #include "vtkSplineTubeMapper.h"
 
 class vtkOpenGLBufferObject;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLVertexArrayObject;
+class vtkShaderProgram;
+class vtkTextureObject;
 
 class SPLINEVIZ_EXPORT vtkRayCastTubeMapper : public vtkSplineTubeMapper
 {
@@ -98,6 +124,45 @@ public:
   vtkGetMacro(RootSamples, int);
   ///@}
 
+  ///@{
+  /**
+   * Segments and quadratic sub-segments that are straight to within this
+   * fraction of their smallest radius (and a quarter pixel) are intersected
+   * with the round cone on their chord in closed form instead of by root
+   * finding (see the class comment); 0 always finds the roots, as Salm does.
+   * Default 0.02.
+   */
+  vtkSetClampMacro(StraightTolerance, double, 0.0, 1.0);
+  vtkGetMacro(StraightTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Cull hidden fragments before the root finding with a depth pre-pass of
+   * bands inside the tubes (see the class comment). Default on.
+   */
+  vtkSetMacro(OcclusionCulling, bool);
+  vtkGetMacro(OcclusionCulling, bool);
+  vtkBooleanMacro(OcclusionCulling, bool);
+  ///@}
+
+  /**
+   * True when the last render drew the culling pre-pass.
+   */
+  vtkGetMacro(LastRenderCulled, bool);
+
+  ///@{
+  /**
+   * For tests only: scale of the culling bands' half-width. 1 (the default)
+   * is the proved bound (svInnerBandHalfWidth); larger values let the bands
+   * stick out of the tubes, so that visible fragments are culled and the
+   * picture is wrong. TestRayCastTubeCulling uses this as a negative control
+   * (a comparison of culling on and off must notice it). Do not change.
+   */
+  vtkSetClampMacro(CullingBandScale, double, 0.0, 4.0);
+  vtkGetMacro(CullingBandScale, double);
+  ///@}
+
   size_t GetGPUMemorySize() override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
@@ -116,18 +181,41 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   int SubSegments = 2;
   int RootIterations = 10;
   int RootSamples = 3;
+  double StraightTolerance = 0.02;
+  bool OcclusionCulling = true;
+  bool LastRenderCulled = false;
+  double CullingBandScale = 1.0;
 
 private:
   vtkRayCastTubeMapper(const vtkRayCastTubeMapper&) = delete;
   void operator=(const vtkRayCastTubeMapper&) = delete;
 
+  /// Draw `quads` quads of 4 vertices (gl_VertexID = 4 * quad + corner) with
+  /// the shared index pattern (QuadIndices bound by the caller).
+  static void DrawQuads(vtkIdType quads);
+  /// The culling pre-pass into CullDepth; false when it could not be drawn.
+  bool RenderCullingPass(vtkRenderer* ren, vtkActor* act);
+
   static constexpr int QuadsPerDraw = 16384; ///< 65536 vertices: 16-bit indices
   vtkNew<vtkOpenGLBufferObject> QuadIndices;
   bool QuadIndicesUploaded = false;
+
+  // Occlusion culling: the pre-pass program, its framebuffer and depth
+  // texture (the viewport's size), and whether this draw uses it.
+  vtkShaderProgram* CullProgram = nullptr; ///< owned by the window's shader cache
+  vtkNew<vtkOpenGLVertexArrayObject> CullVAO;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> CullFramebuffer;
+  vtkSmartPointer<vtkTextureObject> CullDepth;
+  int CullSize[2] = { 0, 0 };
+  int CullOrigin[2] = { 0, 0 };
+  bool CullThisDraw = false;
+  bool CullShaders = false; ///< the ray-cast program was made with the culling test
+  bool CullFailed = false;  ///< reported once; culling stays off for this context
 };
 
 #endif
