@@ -26,6 +26,8 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
+#include "vtkLogger.h"
+#include "vtkStringOutputWindow.h"
 #include "vtkTestErrorObserver.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
@@ -127,6 +129,21 @@ void Expect(SplineVizTestStatus& status, const std::string& name, const Outcome&
     name + ": the error is not reported exactly once");
 }
 
+// Messages of other objects (VTK's pipeline, the shader compiler) during
+// `run`, captured instead of printed (they are expected).
+std::string Captured(const std::function<void()>& run)
+{
+  vtkNew<vtkStringOutputWindow> window;
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  vtkOutputWindow::SetInstance(window);
+  run();
+  vtkOutputWindow::SetInstance(previous);
+  vtkLogger::SetStderrVerbosity(verbosity);
+  return window->GetOutput();
+}
+
 // A shallow copy of the reader's output (blocks copied so they can be changed).
 vtkSmartPointer<vtkMultiBlockDataSet> Copy(vtkMultiBlockDataSet* in, bool deep = false)
 {
@@ -166,10 +183,16 @@ int TestLRSplineVolumeBadInput(int, char*[])
     SV_CHECK(status, o.Drawn > 500 && o.Errors.empty());
   }
   {
+    // (VTK's pipeline also says that the required input is not connected.)
     vtkNew<vtkLRSplineVolumeMapper> mapper;
-    Expect(status, "no input",
-      Render(mapper, nullptr, property, [](vtkLRSplineVolumeMapper* m) { m->UpdateSpline(); }),
-      "no input");
+    Outcome o;
+    const std::string others = Captured(
+      [&]() {
+        o =
+          Render(mapper, nullptr, property, [](vtkLRSplineVolumeMapper* m) { m->UpdateSpline(); });
+      });
+    std::cout << "  (VTK: " << others.substr(0, others.find('\n')) << ")" << std::endl;
+    Expect(status, "no input", o, "no input");
   }
   {
     vtkNew<vtkLRSplineVolumeMapper> mapper;
@@ -335,8 +358,11 @@ int TestLRSplineVolumeBadInput(int, char*[])
   }
   {
     vtkNew<BrokenShaderMapper> mapper;
-    Expect(
-      status, "a shader that does not compile", Render(mapper, good, property), "did not compile");
+    Outcome o;
+    const std::string compiler = Captured([&]() { o = Render(mapper, good, property); });
+    Expect(status, "a shader that does not compile", o, "did not compile");
+    SV_CHECK_MSG(status, compiler.find("syntax error") != std::string::npos,
+      "the compiler's message is not shown");
   }
   // Recovery: a mapper that had bad input renders once the input is good.
   {
