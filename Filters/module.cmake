@@ -1,6 +1,7 @@
 # Filters/: VTK filters and sources of the SplineViz module, and the plain C++
 # numerical code they share (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineImageFitter"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineProbeFilter"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineResampleToImage"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineStreamTracer"
@@ -10,6 +11,7 @@ list(APPEND splineviz_classes
 # LR-spline volumes (Fuchs et al.): plain C++ shared by the filters, the
 # reader and the renderers.
 list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineBezierGrid"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineBezierVolume"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineBuilder"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineElementLocator"
@@ -23,3 +25,6 @@ list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineVizTensorMath")
 list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkTensorMathShared.glsl")
+# Progress, abort and output-size checks shared by the filters and readers.
+list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizProgress.h")

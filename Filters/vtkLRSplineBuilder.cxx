@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <queue>
 
 namespace
 {
@@ -203,26 +204,36 @@ bool vtkLRSplineBuilder::Covered(int dir, double value, const double support[6])
   int e1, e2;
   OtherDirections(dir, e1, e2);
   const double a0 = support[e1], a1 = support[e1 + 3], b0 = support[e2], b1 = support[e2 + 3];
-  const std::vector<Rect2>& rects = it->second;
-  for (const Rect2& r : rects)
+  // One rectangle covering the support, or else the union of those that
+  // overlap it (a plane holds many rectangles, most of them far away).
+  std::vector<const Rect2*> near;
+  for (const Rect2& r : it->second)
   {
     if (r.A0 <= a0 && a1 <= r.A1 && r.B0 <= b0 && b1 <= r.B1)
     {
       return true;
     }
+    if (r.A0 < a1 && r.A1 > a0 && r.B0 < b1 && r.B1 > b0)
+    {
+      near.push_back(&r);
+    }
+  }
+  if (near.size() < 2)
+  {
+    return false;
   }
   // Union coverage: every cell of the grid of rectangle edges must be covered.
   std::vector<double> xs{ a0, a1 }, ys{ b0, b1 };
-  for (const Rect2& r : rects)
+  for (const Rect2* r : near)
   {
-    if (r.A0 > a0 && r.A0 < a1)
-      xs.push_back(r.A0);
-    if (r.A1 > a0 && r.A1 < a1)
-      xs.push_back(r.A1);
-    if (r.B0 > b0 && r.B0 < b1)
-      ys.push_back(r.B0);
-    if (r.B1 > b0 && r.B1 < b1)
-      ys.push_back(r.B1);
+    if (r->A0 > a0 && r->A0 < a1)
+      xs.push_back(r->A0);
+    if (r->A1 > a0 && r->A1 < a1)
+      xs.push_back(r->A1);
+    if (r->B0 > b0 && r->B0 < b1)
+      ys.push_back(r->B0);
+    if (r->B1 > b0 && r->B1 < b1)
+      ys.push_back(r->B1);
   }
   std::sort(xs.begin(), xs.end());
   xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
@@ -235,9 +246,9 @@ bool vtkLRSplineBuilder::Covered(int dir, double value, const double support[6])
     {
       const double cy = 0.5 * (ys[j] + ys[j + 1]);
       bool in = false;
-      for (const Rect2& r : rects)
+      for (const Rect2* r : near)
       {
-        if (r.A0 <= cx && cx <= r.A1 && r.B0 <= cy && cy <= r.B1)
+        if (r->A0 <= cx && cx <= r->A1 && r->B0 <= cy && cy <= r->B1)
         {
           in = true;
           break;
@@ -253,15 +264,92 @@ bool vtkLRSplineBuilder::Covered(int dir, double value, const double support[6])
 }
 
 //------------------------------------------------------------------------------
-void vtkLRSplineBuilder::Split(std::vector<vtkIdType>& work)
+void vtkLRSplineBuilder::Split(std::vector<vtkIdType>& work, bool parentsFirst)
 {
   const int kpf = this->Patch.GetKnotsPerFunction();
   const int dim = this->Patch.Dimension;
   std::vector<double> knots(kpf), k1(kpf), k2(kpf), coeff(dim);
-  while (!work.empty())
+  // Parents first: a split child has a smaller support, or the same support
+  // with one more knot inside it, so taking the largest support (fewest
+  // inner knots) first splits every function once, with all its
+  // contributions gathered. (In any other order a function reached along
+  // many split paths, as after inserting many rectangles at once, is split
+  // again for every path.)
+  struct Entry
   {
-    const vtkIdType f = work.back();
-    work.pop_back();
+    double Volume;
+    int Inner;
+    vtkIdType Id;
+  };
+  auto later = [](const Entry& a, const Entry& b)
+  {
+    return a.Volume < b.Volume ||
+      (a.Volume == b.Volume && (a.Inner > b.Inner || (a.Inner == b.Inner && a.Id > b.Id)));
+  };
+  std::priority_queue<Entry, std::vector<Entry>, decltype(later)> heap(later);
+  std::vector<char> queued;
+  auto push = [&](vtkIdType f)
+  {
+    if (!parentsFirst)
+    {
+      work.push_back(f);
+      return;
+    }
+    if (static_cast<vtkIdType>(queued.size()) <= f)
+    {
+      queued.resize(f + 1, 0);
+    }
+    if (queued[f])
+    {
+      return;
+    }
+    queued[f] = 1;
+    Entry entry{ 1.0, 0, f };
+    for (int d = 0; d < 3; ++d)
+    {
+      const double* t = this->Patch.GetKnots(f, d);
+      const int o = this->Patch.Order[d];
+      entry.Volume *= t[o] - t[0];
+      for (int j = 1; j < o; ++j)
+      {
+        entry.Inner += (t[j] > t[0] && t[j] < t[o]) ? 1 : 0;
+      }
+    }
+    heap.push(entry);
+  };
+  auto pop = [&](vtkIdType& f)
+  {
+    if (!parentsFirst)
+    {
+      if (work.empty())
+      {
+        return false;
+      }
+      f = work.back();
+      work.pop_back();
+      return true;
+    }
+    if (heap.empty())
+    {
+      return false;
+    }
+    f = heap.top().Id;
+    heap.pop();
+    queued[f] = 0;
+    return true;
+  };
+  if (parentsFirst)
+  {
+    std::vector<vtkIdType> initial;
+    initial.swap(work);
+    for (vtkIdType f : initial)
+    {
+      push(f);
+    }
+  }
+  vtkIdType f;
+  while (pop(f))
+  {
     if (!this->Alive[f])
     {
       continue;
@@ -325,56 +413,152 @@ void vtkLRSplineBuilder::Split(std::vector<vtkIdType>& work)
     this->Index.erase(this->Key(knots.data()));
     if (a1 > 0)
     {
-      work.push_back(this->AddFunction(k1.data(), coeff.data(), a1 * gamma));
+      push(this->AddFunction(k1.data(), coeff.data(), a1 * gamma));
     }
     if (a2 > 0)
     {
-      work.push_back(this->AddFunction(k2.data(), coeff.data(), a2 * gamma));
+      push(this->AddFunction(k2.data(), coeff.data(), a2 * gamma));
     }
   }
 }
 
 //------------------------------------------------------------------------------
-bool vtkLRSplineBuilder::InsertMeshRectangle(
-  int dir, double value, const double box[6], std::string* error)
+void vtkLRSplineBuilder::AddToPlane(std::vector<Rect2>& plane, Rect2 r)
 {
-  int e1, e2;
-  OtherDirections(dir, e1, e2);
-  // Split the elements it crosses.
+  for (const Rect2& q : plane)
+  {
+    if (q.A0 <= r.A0 && r.A1 <= q.A1 && q.B0 <= r.B0 && r.B1 <= q.B1)
+    {
+      return; // already covered
+    }
+  }
+  // Drop the rectangles r contains and merge r with those it extends to a
+  // rectangle, until nothing changes (the union, which is all that counts,
+  // stays the same; the lists stay short).
+  bool changed = true;
+  while (changed)
+  {
+    changed = false;
+    plane.erase(std::remove_if(plane.begin(), plane.end(),
+                  [&r](const Rect2& q)
+                  { return r.A0 <= q.A0 && q.A1 <= r.A1 && r.B0 <= q.B0 && q.B1 <= r.B1; }),
+      plane.end());
+    for (std::size_t i = 0; i < plane.size(); ++i)
+    {
+      const Rect2& q = plane[i];
+      if (q.A0 == r.A0 && q.A1 == r.A1 && q.B0 <= r.B1 && r.B0 <= q.B1)
+      {
+        r.B0 = std::min(r.B0, q.B0);
+        r.B1 = std::max(r.B1, q.B1);
+      }
+      else if (q.B0 == r.B0 && q.B1 == r.B1 && q.A0 <= r.A1 && r.A0 <= q.A1)
+      {
+        r.A0 = std::min(r.A0, q.A0);
+        r.A1 = std::max(r.A1, q.A1);
+      }
+      else
+      {
+        continue;
+      }
+      plane.erase(plane.begin() + i);
+      changed = true;
+      break;
+    }
+  }
+  plane.push_back(r);
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineBuilder::InsertRectangles(
+  std::vector<Rectangle>& rects, bool parentsFirst, std::string* error)
+{
+  if (rects.empty())
+  {
+    return true;
+  }
+  // The new rectangles by direction and value.
+  std::map<double, std::vector<Rect2>> fresh[3];
+  for (const Rectangle& r : rects)
+  {
+    int e1, e2;
+    OtherDirections(r.Dir, e1, e2);
+    AddToPlane(fresh[r.Dir][r.Value], Rect2{ r.Box[e1], r.Box[e1 + 3], r.Box[e2], r.Box[e2 + 3] });
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    for (const auto& plane : fresh[d])
+    {
+      for (const Rect2& q : plane.second)
+      {
+        AddToPlane(this->Planes[d][plane.first], q);
+      }
+    }
+  }
+
+  // Split the elements they cross: an element is split by a rectangle that
+  // spans it; one crossed only partly must be split first by another one
+  // (or the rectangle ends inside an element, which is an error).
   const vtkIdType ne = this->GetNumberOfElements();
+  std::vector<vtkIdType> stack;
   for (vtkIdType e = 0; e < ne; ++e)
   {
-    double* b = this->Patch.ElementBoxes.data() + 6 * e;
-    if (!(b[dir] < value && value < b[dir + 3]))
+    stack.push_back(e);
+    while (!stack.empty())
     {
-      continue;
-    }
-    bool inside = true, meets = true;
-    for (int o : { e1, e2 })
-    {
-      inside = inside && box[o] <= b[o] && b[o + 3] <= box[o + 3];
-      meets = meets && b[o] < box[o + 3] && b[o + 3] > box[o];
-    }
-    if (!meets)
-    {
-      continue;
-    }
-    if (!inside)
-    {
-      if (error)
+      const vtkIdType x = stack.back();
+      stack.pop_back();
+      const double* b = this->Patch.ElementBoxes.data() + 6 * x;
+      int splitDir = -1;
+      double splitValue = 0.0;
+      bool partial = false;
+      for (int d = 0; d < 3 && splitDir < 0; ++d)
       {
-        *error = "the mesh rectangle ends inside an element (its edges must lie on mesh planes)";
+        int e1, e2;
+        OtherDirections(d, e1, e2);
+        auto it = fresh[d].upper_bound(b[d]);
+        auto end = fresh[d].lower_bound(b[d + 3]);
+        for (; it != end && splitDir < 0; ++it)
+        {
+          for (const Rect2& q : it->second)
+          {
+            if (!(b[e1] < q.A1 && b[e1 + 3] > q.A0 && b[e2] < q.B1 && b[e2 + 3] > q.B0))
+            {
+              continue;
+            }
+            if (q.A0 <= b[e1] && b[e1 + 3] <= q.A1 && q.B0 <= b[e2] && b[e2 + 3] <= q.B1)
+            {
+              splitDir = d;
+              splitValue = it->first;
+              break;
+            }
+            partial = true;
+          }
+        }
       }
-      return false;
+      if (splitDir < 0)
+      {
+        if (partial)
+        {
+          if (error)
+          {
+            *error =
+              "the mesh rectangle ends inside an element (its edges must lie on mesh planes)";
+          }
+          return false;
+        }
+        continue;
+      }
+      double upper[6];
+      std::copy(b, b + 6, upper);
+      upper[splitDir] = splitValue;
+      this->Patch.ElementBoxes[6 * x + splitDir + 3] = splitValue;
+      this->Patch.ElementBoxes.insert(this->Patch.ElementBoxes.end(), upper, upper + 6);
+      stack.push_back(x);
+      stack.push_back(this->GetNumberOfElements() - 1);
     }
-    double upper[6];
-    std::copy(b, b + 6, upper);
-    b[dir + 3] = value;
-    upper[dir] = value;
-    this->Patch.ElementBoxes.insert(this->Patch.ElementBoxes.end(), upper, upper + 6);
   }
-  this->Planes[dir][value].push_back(Rect2{ box[e1], box[e1 + 3], box[e2], box[e2 + 3] });
-  // Split the basis functions it (with the rest of the plane) traverses.
+
+  // Split the basis functions they (with the rest of their planes) traverse.
   std::vector<vtkIdType> work;
   const vtkIdType nf = static_cast<vtkIdType>(this->Patch.Gamma.size());
   for (vtkIdType f = 0; f < nf; ++f)
@@ -383,18 +567,101 @@ bool vtkLRSplineBuilder::InsertMeshRectangle(
     {
       continue;
     }
-    const double* t = this->Patch.GetKnots(f, dir);
-    const double* te1 = this->Patch.GetKnots(f, e1);
-    const double* te2 = this->Patch.GetKnots(f, e2);
-    if (t[0] < value && value < t[this->Patch.Order[dir]] && te1[0] < box[e1 + 3] &&
-      te1[this->Patch.Order[e1]] > box[e1] && te2[0] < box[e2 + 3] &&
-      te2[this->Patch.Order[e2]] > box[e2])
+    bool crossed = false;
+    for (int d = 0; d < 3 && !crossed; ++d)
+    {
+      int e1, e2;
+      OtherDirections(d, e1, e2);
+      const double* t = this->Patch.GetKnots(f, d);
+      const double* te1 = this->Patch.GetKnots(f, e1);
+      const double* te2 = this->Patch.GetKnots(f, e2);
+      const double s1 = te1[0], t1 = te1[this->Patch.Order[e1]];
+      const double s2 = te2[0], t2 = te2[this->Patch.Order[e2]];
+      auto it = fresh[d].upper_bound(t[0]);
+      auto end = fresh[d].lower_bound(t[this->Patch.Order[d]]);
+      for (; it != end && !crossed; ++it)
+      {
+        for (const Rect2& q : it->second)
+        {
+          if (s1 < q.A1 && t1 > q.A0 && s2 < q.B1 && t2 > q.B0)
+          {
+            crossed = true;
+            break;
+          }
+        }
+      }
+    }
+    if (crossed)
     {
       work.push_back(f);
     }
   }
-  this->Split(work);
+  this->Split(work, parentsFirst);
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineBuilder::InsertMeshRectangle(
+  int dir, double value, const double box[6], std::string* error)
+{
+  std::vector<Rectangle> rects(1);
+  rects[0].Dir = dir;
+  rects[0].Value = value;
+  std::copy(box, box + 6, rects[0].Box);
+  return this->InsertRectangles(rects, false, error);
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineBuilder::FunctionRectangles(
+  vtkIdType i, const RefineOptions& options, std::vector<Rectangle>& out) const
+{
+  Rectangle r;
+  for (int d = 0; d < 3; ++d)
+  {
+    const double* t = this->Patch.GetKnots(i, d);
+    r.Box[d] = t[0];
+    r.Box[d + 3] = t[this->Patch.Order[d]];
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    const double* t = this->Patch.GetKnots(i, d);
+    for (int k = 0; k < this->Patch.Order[d]; ++k)
+    {
+      if (SplitValue(t[k], t[k + 1], d, options, &r.Value))
+      {
+        r.Dir = d;
+        out.push_back(r);
+      }
+    }
+  }
+}
+
+bool vtkLRSplineBuilder::SplitValue(
+  double a, double b, int d, const RefineOptions& options, double* value)
+{
+  if (!(a < b))
+  {
+    return false;
+  }
+  const double step = options.GridStep[d], origin = options.GridOffset[d];
+  double z = a + options.Ratio * (b - a);
+  if (step > 0)
+  {
+    // the nearest grid point strictly inside (a, b), if any
+    const double lo = std::floor((a - origin) / step) + 1.0;
+    const double hi = std::ceil((b - origin) / step) - 1.0;
+    if (lo > hi)
+    {
+      return false;
+    }
+    z = origin + std::min(hi, std::max(lo, std::round((z - origin) / step))) * step;
+  }
+  if (z > a && z < b && z - a >= options.MinimumPart[d] && b - z >= options.MinimumPart[d])
+  {
+    *value = z;
+    return true;
+  }
+  return false;
 }
 
 //------------------------------------------------------------------------------
@@ -409,32 +676,54 @@ bool vtkLRSplineBuilder::RefineFunction(vtkIdType i, double ratio, std::string* 
     }
     return false;
   }
-  const int kpf = this->Patch.GetKnotsPerFunction();
-  std::vector<double> knots(
-    this->Patch.Knots.begin() + i * kpf, this->Patch.Knots.begin() + (i + 1) * kpf);
-  int offset[3] = { 0, this->Patch.Order[0] + 1, this->Patch.Order[0] + this->Patch.Order[1] + 2 };
-  double support[6];
-  for (int d = 0; d < 3; ++d)
+  // One rectangle after the other (the same LR spline as all at once, and
+  // the order of the functions that generated volumes have always had).
+  std::vector<Rectangle> rects;
+  RefineOptions options;
+  options.Ratio = ratio;
+  this->FunctionRectangles(i, options, rects);
+  for (const Rectangle& r : rects)
   {
-    support[d] = knots[offset[d]];
-    support[d + 3] = knots[offset[d] + this->Patch.Order[d]];
-  }
-  for (int d = 0; d < 3; ++d)
-  {
-    const double* t = knots.data() + offset[d];
-    for (int k = 0; k < this->Patch.Order[d]; ++k)
+    std::vector<Rectangle> one{ r };
+    if (!this->InsertRectangles(one, false, error))
     {
-      if (t[k] < t[k + 1])
-      {
-        const double z = t[k] + ratio * (t[k + 1] - t[k]);
-        if (z > t[k] && z < t[k + 1] && !this->InsertMeshRectangle(d, z, support, error))
-        {
-          return false;
-        }
-      }
+      return false;
     }
   }
   return true;
+}
+
+bool vtkLRSplineBuilder::RefineFunctions(const std::vector<vtkIdType>& ids,
+  const RefineOptions& options, std::string* error, vtkIdType* inserted)
+{
+  if (inserted)
+  {
+    *inserted = 0;
+  }
+  if (!(options.Ratio > 0 && options.Ratio < 1))
+  {
+    if (error)
+    {
+      *error = "invalid basis function or ratio";
+    }
+    return false;
+  }
+  std::vector<Rectangle> rects;
+  std::vector<char> seen(this->Alive.size(), 0);
+  for (vtkIdType i : ids)
+  {
+    if (i < 0 || i >= static_cast<vtkIdType>(this->Alive.size()) || !this->Alive[i] || seen[i])
+    {
+      continue;
+    }
+    seen[i] = 1;
+    this->FunctionRectangles(i, options, rects);
+  }
+  if (inserted)
+  {
+    *inserted = static_cast<vtkIdType>(rects.size());
+  }
+  return this->InsertRectangles(rects, true, error);
 }
 
 bool vtkLRSplineBuilder::RefineAt(const double p[3], double ratio, std::string* error)
@@ -511,6 +800,15 @@ void vtkLRSplineBuilder::Compact()
   {
     this->Index.emplace(this->Key(this->Patch.Knots.data() + f * kpf), f);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineBuilder::SetCoefficients(const std::vector<double>& coefficients)
+{
+  this->Compact();
+  const std::size_t n = static_cast<std::size_t>(this->NumberAlive) * this->Patch.Dimension;
+  std::copy(coefficients.begin(), coefficients.begin() + std::min(n, coefficients.size()),
+    this->Patch.Coefficients.begin());
 }
 
 //------------------------------------------------------------------------------

@@ -73,8 +73,48 @@ public:
   /// Structured refinement of basis function i (see the class documentation).
   bool RefineFunction(vtkIdType i, double ratio, std::string* error);
 
+  /// How RefineFunctions() places and limits the splits.
+  struct RefineOptions
+  {
+    /// A knot interval [a, b] is split at a + Ratio (b - a) ...
+    double Ratio = 0.5;
+    /**
+     * ... moved, where GridStep[d] > 0, to the nearest point of
+     * GridOffset[d] + j GridStep[d] strictly inside the interval (no split if
+     * there is none): e.g. the voxel centres or voxel faces of an image.
+     */
+    double GridStep[3] = { 0, 0, 0 };
+    double GridOffset[3] = { 0, 0, 0 };
+    /// No split that leaves a part shorter than this (per direction).
+    double MinimumPart[3] = { 0, 0, 0 };
+  };
+
+  /**
+   * Structured refinement of several basis functions at once (the adaptive
+   * fitting of vtkLRSplineImageFitter): the rectangles RefineFunction() would
+   * insert for each listed function (with the splits placed and limited by
+   * `options`) are inserted together, the elements are split once and every
+   * basis function the new rectangles traverse is split (the LR B-splines of
+   * the resulting mesh, the same as inserting the rectangles one by one, but
+   * the mesh is scanned once). A function none of whose intervals may be split
+   * is left alone; dead or repeated ids are skipped. `inserted` (may be null)
+   * receives the number of rectangles inserted. On failure the builder is
+   * left in an undefined state.
+   */
+  bool RefineFunctions(const std::vector<vtkIdType>& ids, const RefineOptions& options,
+    std::string* error, vtkIdType* inserted = nullptr);
+
+  /// Where RefineFunctions() splits the knot interval [a, b] of direction d (false: it does not).
+  static bool SplitValue(double a, double b, int d, const RefineOptions& options, double* z);
+
   /// Refine the basis function with the smallest support containing p.
   bool RefineAt(const double p[3], double ratio, std::string* error);
+
+  /**
+   * Replace the coefficients: Dimension values per basis function, in the
+   * order of GetPatch() (which is called first, removing dead functions).
+   */
+  void SetCoefficients(const std::vector<double>& coefficients);
 
   /// The current LR spline (dead functions removed).
   const vtkLRSplinePatch& GetPatch();
@@ -90,11 +130,26 @@ private:
   {
     double A0, A1, B0, B1; // extents in the two other directions (ascending order)
   };
+  struct Rectangle
+  {
+    int Dir;
+    double Value;
+    double Box[6];
+  };
   bool Covered(int dir, double value, const double support[6]) const;
   vtkIdType AddFunction(const double* knots, const double* coeff, double gamma);
-  void Split(std::vector<vtkIdType>& work);
+  // Split the functions of `work` (and their children) until no mesh plane
+  // traverses them; parentsFirst: largest supports first (see the .cxx).
+  void Split(std::vector<vtkIdType>& work, bool parentsFirst);
   void Compact();
   std::string Key(const double* knots) const;
+  // The rectangles of the structured refinement of function i.
+  void FunctionRectangles(
+    vtkIdType i, const RefineOptions& options, std::vector<Rectangle>& out) const;
+  // Insert rectangles (multiplicity 1) together: planes, elements, functions.
+  bool InsertRectangles(std::vector<Rectangle>& rects, bool parentsFirst, std::string* error);
+  // Add r to the rectangles of its plane, merged with those it extends.
+  static void AddToPlane(std::vector<Rect2>& plane, Rect2 r);
 
   vtkLRSplinePatch Patch;
   std::vector<char> Alive;

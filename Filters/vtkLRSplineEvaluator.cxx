@@ -1,6 +1,7 @@
 #include "vtkLRSplineEvaluator.h"
 
 #include "vtkSMPTools.h"
+#include "vtkType.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,11 +26,44 @@ bool vtkLRSplineEvaluator::Initialize(
 //------------------------------------------------------------------------------
 void vtkLRSplineEvaluator::SetPhysicalTransform(const double scale[3], const double offset[3])
 {
+  for (int i = 0; i < 9; ++i)
+  {
+    this->Matrix[i] = this->Inverse[i] = 0.0;
+  }
   for (int d = 0; d < 3; ++d)
   {
-    this->Scale[d] = scale[d];
+    this->Matrix[4 * d] = scale[d];
+    this->Inverse[4 * d] = 1.0 / scale[d];
     this->Offset[d] = offset[d];
   }
+  this->AxisAligned = true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineEvaluator::SetPhysicalAffine(const double A[9], const double offset[3])
+{
+  const double det = A[0] * (A[4] * A[8] - A[5] * A[7]) - A[1] * (A[3] * A[8] - A[5] * A[6]) +
+    A[2] * (A[3] * A[7] - A[4] * A[6]);
+  double norm = 0.0;
+  for (int i = 0; i < 9; ++i)
+  {
+    norm = std::max(norm, std::abs(A[i]));
+  }
+  if (!std::isfinite(det) || !(std::abs(det) > 1e-12 * norm * norm * norm) ||
+    !std::isfinite(offset[0] + offset[1] + offset[2]))
+  {
+    return false;
+  }
+  const double inv[9] = { (A[4] * A[8] - A[5] * A[7]) / det, (A[2] * A[7] - A[1] * A[8]) / det,
+    (A[1] * A[5] - A[2] * A[4]) / det, (A[5] * A[6] - A[3] * A[8]) / det,
+    (A[0] * A[8] - A[2] * A[6]) / det, (A[2] * A[3] - A[0] * A[5]) / det,
+    (A[3] * A[7] - A[4] * A[6]) / det, (A[1] * A[6] - A[0] * A[7]) / det,
+    (A[0] * A[4] - A[1] * A[3]) / det };
+  std::copy(A, A + 9, this->Matrix);
+  std::copy(inv, inv + 9, this->Inverse);
+  std::copy(offset, offset + 3, this->Offset);
+  this->AxisAligned = A[1] == 0 && A[2] == 0 && A[3] == 0 && A[5] == 0 && A[6] == 0 && A[7] == 0;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -44,8 +78,19 @@ void vtkLRSplineEvaluator::GetBounds(double bounds[6]) const
   const double* dom = this->Locator.GetDomain();
   for (int d = 0; d < 3; ++d)
   {
-    bounds[2 * d] = this->Offset[d] + this->Scale[d] * dom[d];
-    bounds[2 * d + 1] = this->Offset[d] + this->Scale[d] * dom[d + 3];
+    bounds[2 * d] = VTK_DOUBLE_MAX;
+    bounds[2 * d + 1] = -VTK_DOUBLE_MAX;
+  }
+  for (int c = 0; c < 8; ++c)
+  {
+    const double u[3] = { dom[(c & 1) ? 3 : 0], dom[(c & 2) ? 4 : 1], dom[(c & 4) ? 5 : 2] };
+    double x[3];
+    this->ParameterToPhysical(u, x);
+    for (int d = 0; d < 3; ++d)
+    {
+      bounds[2 * d] = std::min(bounds[2 * d], x[d]);
+      bounds[2 * d + 1] = std::max(bounds[2 * d + 1], x[d]);
+    }
   }
 }
 
@@ -53,26 +98,74 @@ void vtkLRSplineEvaluator::GetBounds(double bounds[6]) const
 double vtkLRSplineEvaluator::GetElementMinimumSide(vtkIdType e) const
 {
   const double* b = this->Volume.GetBox(e);
-  double m = (b[3] - b[0]) * this->Scale[0];
-  m = std::min(m, (b[4] - b[1]) * this->Scale[1]);
-  m = std::min(m, (b[5] - b[2]) * this->Scale[2]);
+  double m = VTK_DOUBLE_MAX;
+  for (int d = 0; d < 3; ++d)
+  {
+    // The length of the element's edge along parameter direction d.
+    const double* A = this->Matrix;
+    const double column = std::sqrt(A[d] * A[d] + A[3 + d] * A[3 + d] + A[6 + d] * A[6 + d]);
+    m = std::min(m, (b[d + 3] - b[d]) * column);
+  }
   return m;
 }
 
 //------------------------------------------------------------------------------
 void vtkLRSplineEvaluator::PhysicalToParameter(const double x[3], double u[3]) const
 {
+  const double y[3] = { x[0] - this->Offset[0], x[1] - this->Offset[1], x[2] - this->Offset[2] };
+  const double* M = this->Inverse;
+  if (this->AxisAligned)
+  {
+    // (x - offset) / scale, as before the affine maps (bit for bit).
+    for (int d = 0; d < 3; ++d)
+    {
+      u[d] = y[d] / this->Matrix[4 * d];
+    }
+    return;
+  }
   for (int d = 0; d < 3; ++d)
   {
-    u[d] = (x[d] - this->Offset[d]) / this->Scale[d];
+    u[d] = M[3 * d] * y[0] + M[3 * d + 1] * y[1] + M[3 * d + 2] * y[2];
   }
 }
 
 void vtkLRSplineEvaluator::ParameterToPhysical(const double u[3], double x[3]) const
 {
+  const double* A = this->Matrix;
   for (int d = 0; d < 3; ++d)
   {
-    x[d] = this->Offset[d] + this->Scale[d] * u[d];
+    x[d] = this->Offset[d] + A[3 * d] * u[0] + A[3 * d + 1] * u[1] + A[3 * d + 2] * u[2];
+  }
+}
+
+//------------------------------------------------------------------------------
+template <typename Real>
+void vtkLRSplineEvaluator::GradientToPhysical(Real* gradient, const double* b) const
+{
+  // d f / d x_j = sum_d (d f / d s_d) / w_d * Inverse[d][j].
+  const int nc = this->Volume.NumberOfComponents;
+  for (int c = 0; c < nc; ++c)
+  {
+    Real* g = gradient + 3 * c;
+    Real gu[3];
+    for (int d = 0; d < 3; ++d)
+    {
+      gu[d] = g[d] / static_cast<Real>(b[d + 3] - b[d]);
+    }
+    if (this->AxisAligned)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        g[d] = gu[d] / static_cast<Real>(this->Matrix[4 * d]);
+      }
+      continue;
+    }
+    const double* M = this->Inverse;
+    for (int j = 0; j < 3; ++j)
+    {
+      g[j] = static_cast<Real>(M[j]) * gu[0] + static_cast<Real>(M[3 + j]) * gu[1] +
+        static_cast<Real>(M[6 + j]) * gu[2];
+    }
   }
 }
 
@@ -96,25 +189,16 @@ void vtkLRSplineEvaluator::EvaluateInElement(
   vtkIdType e, const double x[3], double* value, double* gradient) const
 {
   const double* b = this->Volume.GetBox(e);
-  double s[3], inv[3];
+  double u[3], s[3];
+  this->PhysicalToParameter(x, u);
   for (int d = 0; d < 3; ++d)
   {
-    const double u = (x[d] - this->Offset[d]) / this->Scale[d];
-    const double w = b[d + 3] - b[d];
-    s[d] = std::min(1.0, std::max(0.0, (u - b[d]) / w));
-    inv[d] = 1.0 / (w * this->Scale[d]);
+    s[d] = std::min(1.0, std::max(0.0, (u[d] - b[d]) / (b[d + 3] - b[d])));
   }
   this->Volume.EvaluateLocal(e, s, value, gradient);
   if (gradient)
   {
-    const int nc = this->Volume.NumberOfComponents;
-    for (int c = 0; c < nc; ++c)
-    {
-      for (int d = 0; d < 3; ++d)
-      {
-        gradient[3 * c + d] *= inv[d];
-      }
-    }
+    this->GradientToPhysical(gradient, b);
   }
 }
 
@@ -122,62 +206,33 @@ void vtkLRSplineEvaluator::EvaluateInElement(
   vtkIdType e, const float x[3], float* value, float* gradient) const
 {
   const double* b = this->Volume.GetBox(e);
-  float s[3], inv[3];
+  float u[3], s[3];
+  const float y[3] = { x[0] - static_cast<float>(this->Offset[0]),
+    x[1] - static_cast<float>(this->Offset[1]), x[2] - static_cast<float>(this->Offset[2]) };
   for (int d = 0; d < 3; ++d)
   {
-    const float u =
-      (x[d] - static_cast<float>(this->Offset[d])) / static_cast<float>(this->Scale[d]);
+    if (this->AxisAligned)
+    {
+      u[d] = y[d] / static_cast<float>(this->Matrix[4 * d]);
+    }
+    else
+    {
+      const double* M = this->Inverse + 3 * d;
+      u[d] = static_cast<float>(M[0]) * y[0] + static_cast<float>(M[1]) * y[1] +
+        static_cast<float>(M[2]) * y[2];
+    }
+  }
+  for (int d = 0; d < 3; ++d)
+  {
     const float lo = static_cast<float>(b[d]);
     const float w = static_cast<float>(b[d + 3] - b[d]);
-    s[d] = std::min(1.0f, std::max(0.0f, (u - lo) / w));
-    inv[d] = 1.0f / (w * static_cast<float>(this->Scale[d]));
+    s[d] = std::min(1.0f, std::max(0.0f, (u[d] - lo) / w));
   }
   this->Volume.EvaluateLocal(e, s, value, gradient);
   if (gradient)
   {
-    const int nc = this->Volume.NumberOfComponents;
-    for (int c = 0; c < nc; ++c)
-    {
-      for (int d = 0; d < 3; ++d)
-      {
-        gradient[3 * c + d] *= inv[d];
-      }
-    }
+    this->GradientToPhysical(gradient, b);
   }
-}
-
-//------------------------------------------------------------------------------
-namespace
-{
-// Value and physical gradient at parameter u inside element e.
-inline void AtParameter(const vtkLRSplineBezierVolume& volume, const double scale[3], vtkIdType e,
-  const double u[3], double* value, double* gradient)
-{
-  const double* b = volume.GetBox(e);
-  double s[3], w[3];
-  for (int d = 0; d < 3; ++d)
-  {
-    w[d] = b[d + 3] - b[d];
-    s[d] = std::min(1.0, std::max(0.0, (u[d] - b[d]) / w[d]));
-  }
-  volume.EvaluateLocal(e, s, value, gradient);
-  if (gradient)
-  {
-    double inv[3];
-    for (int d = 0; d < 3; ++d)
-    {
-      inv[d] = 1.0 / (w[d] * scale[d]);
-    }
-    const int nc = volume.NumberOfComponents;
-    for (int c = 0; c < nc; ++c)
-    {
-      for (int d = 0; d < 3; ++d)
-      {
-        gradient[3 * c + d] *= inv[d];
-      }
-    }
-  }
-}
 }
 
 vtkIdType vtkLRSplineEvaluator::Evaluate(const double x[3], double* value, double* gradient) const
@@ -187,7 +242,7 @@ vtkIdType vtkLRSplineEvaluator::Evaluate(const double x[3], double* value, doubl
   const vtkIdType e = this->Locator.FindElement(u);
   if (e >= 0)
   {
-    AtParameter(this->Volume, this->Scale, e, u, value, gradient);
+    this->AtParameter(e, u, value, gradient);
   }
   return e;
 }
@@ -201,7 +256,7 @@ bool vtkLRSplineEvaluator::EvaluateIfInElement(
   {
     return false;
   }
-  AtParameter(this->Volume, this->Scale, e, u, value, gradient);
+  this->AtParameter(e, u, value, gradient);
   return true;
 }
 
@@ -214,6 +269,23 @@ vtkIdType vtkLRSplineEvaluator::Evaluate(const float x[3], float* value, float* 
     this->EvaluateInElement(e, x, value, gradient);
   }
   return e;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineEvaluator::AtParameter(
+  vtkIdType e, const double u[3], double* value, double* gradient) const
+{
+  const double* b = this->Volume.GetBox(e);
+  double s[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    s[d] = std::min(1.0, std::max(0.0, (u[d] - b[d]) / (b[d + 3] - b[d])));
+  }
+  this->Volume.EvaluateLocal(e, s, value, gradient);
+  if (gradient)
+  {
+    this->GradientToPhysical(gradient, b);
+  }
 }
 
 //------------------------------------------------------------------------------

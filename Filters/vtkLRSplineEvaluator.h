@@ -11,11 +11,13 @@
  * (Jacobian for vector fields) at a point cost one look-up and one
  * tensor-product Bernstein evaluation.
  *
- * Points are physical: x = Offset + Scale * u maps the parameter u to
- * physical space per axis (the reader's field mode places the spline in a
- * physical box this way; identity by default). Gradients are with respect to
- * x. The single-precision overloads do the whole evaluation in float (the
- * GPU arithmetic, used by the tracer's mixed and single precision modes).
+ * Points are physical: x = A u + b maps the parameter u to physical space
+ * (identity by default): per axis, x = offset + scale * u (the reader's
+ * field mode places the spline in a physical box this way), or any
+ * invertible affine map (a patch whose geometry is an affine image of its
+ * parameter domain, e.g. rotated, placed where its geometry says).
+ * Gradients are with respect to x. The single-precision overloads do the whole evaluation in float
+ * (the GPU arithmetic, used by the tracer's mixed and single precision modes).
  *
  * All evaluation methods are const and thread-safe; EvaluateBatch() runs in
  * parallel with vtkSMPTools.
@@ -42,8 +44,17 @@ public:
 
   /// x = offset + scale * u per axis (scale > 0). Default: identity.
   void SetPhysicalTransform(const double scale[3], const double offset[3]);
-  const double* GetScale() const { return this->Scale; }
+  /**
+   * x = A u + offset, A row-major (x_i = sum_j A[3 i + j] u_j + offset_i).
+   * False (nothing changed) when A is singular or not finite.
+   */
+  bool SetPhysicalAffine(const double A[9], const double offset[3]);
+  /// The map's matrix A (row-major), its inverse, and the offset.
+  const double* GetMatrix() const { return this->Matrix; }
+  const double* GetInverseMatrix() const { return this->Inverse; }
   const double* GetOffset() const { return this->Offset; }
+  /// True when A is diagonal (per-axis scale).
+  bool IsAxisAligned() const { return this->AxisAligned; }
 
   const vtkLRSplineBezierVolume& GetVolume() const { return this->Volume; }
   const vtkLRSplineElementLocator& GetLocator() const { return this->Locator; }
@@ -98,10 +109,19 @@ public:
     vtkIdType* elements) const;
 
 private:
+  // Value and physical gradient at parameter point u inside element e.
+  void AtParameter(vtkIdType e, const double u[3], double* value, double* gradient) const;
+
+  // Local gradients of element `box` (3 per component, in place) to physical ones.
+  template <typename Real>
+  void GradientToPhysical(Real* gradient, const double* box) const;
+
   vtkLRSplineBezierVolume Volume;
   vtkLRSplineElementLocator Locator;
-  double Scale[3] = { 1, 1, 1 };
+  double Matrix[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  double Inverse[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   double Offset[3] = { 0, 0, 0 };
+  bool AxisAligned = true;
 };
 
 #endif

@@ -11,6 +11,7 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkSplineVizProgress.h"
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
@@ -93,7 +94,10 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     {
       return fail("the patches' field arrays have different numbers of components");
     }
-    double scale[3] = { 1, 1, 1 }, offset[3] = { 0, 0, 0 };
+    // The physical placement: 6 values (scale xyz, offset xyz: per axis) or
+    // 12 (a row-major 3x3 matrix A, offset xyz: x = A u + offset).
+    double matrix[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, offset[3] = { 0, 0, 0 };
+    bool axisAligned = true;
     vtkFieldData* fd = grid->GetFieldData();
     vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
     if (mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1 && !parameterSpace)
@@ -103,22 +107,40 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
         "parameter domain, so it can only be evaluated in parameter space");
     }
     vtkDataArray* transform = fd ? fd->GetArray("LRPhysicalTransform") : nullptr;
-    if (transform && !parameterSpace && transform->GetNumberOfTuples() > 0 &&
-      transform->GetNumberOfComponents() * transform->GetNumberOfTuples() >= 6)
+    if (transform && !parameterSpace && transform->GetNumberOfTuples() > 0)
     {
-      for (int d = 0; d < 3; ++d)
+      const vtkIdType count = transform->GetNumberOfComponents() * transform->GetNumberOfTuples();
+      const int nc = transform->GetNumberOfComponents();
+      auto value = [&](vtkIdType i)
+      { return transform->GetComponent(i / nc, static_cast<int>(i % nc)); };
+      if (count == 6)
       {
-        const vtkIdType is = d, io = d + 3;
-        const int nc = transform->GetNumberOfComponents();
-        scale[d] = transform->GetComponent(is / nc, static_cast<int>(is % nc));
-        offset[d] = transform->GetComponent(io / nc, static_cast<int>(io % nc));
-      }
-      for (int d = 0; d < 3; ++d)
-      {
-        if (!(scale[d] > 0) || !std::isfinite(scale[d]) || !std::isfinite(offset[d]))
+        for (int d = 0; d < 3; ++d)
         {
-          return fail("patch " + std::to_string(g) + " has an invalid LRPhysicalTransform");
+          matrix[4 * d] = value(d);
+          offset[d] = value(d + 3);
+          if (!(matrix[4 * d] > 0) || !std::isfinite(matrix[4 * d]) || !std::isfinite(offset[d]))
+          {
+            return fail("patch " + std::to_string(g) + " has an invalid LRPhysicalTransform");
+          }
         }
+      }
+      else if (count == 12)
+      {
+        for (int i = 0; i < 9; ++i)
+        {
+          matrix[i] = value(i);
+        }
+        for (int d = 0; d < 3; ++d)
+        {
+          offset[d] = value(9 + d);
+        }
+        axisAligned = false;
+      }
+      else
+      {
+        return fail("patch " + std::to_string(g) + " has an LRPhysicalTransform of " +
+          std::to_string(count) + " values (6: scale and offset, or 12: a 3x3 matrix and offset)");
       }
     }
     int autoBlocks[3];
@@ -132,7 +154,16 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     {
       return fail("patch " + std::to_string(g) + ": " + msg);
     }
-    evaluator->SetPhysicalTransform(scale, offset);
+    if (axisAligned)
+    {
+      const double scale[3] = { matrix[0], matrix[4], matrix[8] };
+      evaluator->SetPhysicalTransform(scale, offset);
+    }
+    else if (!evaluator->SetPhysicalAffine(matrix, offset))
+    {
+      return fail(
+        "patch " + std::to_string(g) + " has a singular or non-finite LRPhysicalTransform matrix");
+    }
     this->Patches.push_back(std::move(evaluator));
   }
   this->ArrayName = name;
@@ -296,11 +327,11 @@ int vtkLRSplineField::EvaluateWithHint(
 //------------------------------------------------------------------------------
 vtkIdType vtkLRSplineField::EvaluatePoints(vtkIdType n,
   const std::function<void(vtkIdType, double[3])>& point, double* values, double* gradients,
-  char* mask) const
+  char* mask, vtkAlgorithm* progress) const
 {
   const int nc = this->NumberOfComponents;
   vtkSMPThreadLocal<vtkIdType> inside(0);
-  vtkSMPTools::For(0, n,
+  const bool done = vtkSplineVizProgress::For(progress, 0, n, 0, 4096,
     [&](vtkIdType begin, vtkIdType end)
     {
       vtkIdType& count = inside.Local();
@@ -331,6 +362,10 @@ vtkIdType vtkLRSplineField::EvaluatePoints(vtkIdType n,
         }
       }
     });
+  if (!done)
+  {
+    return -1;
+  }
   vtkIdType total = 0;
   for (vtkIdType c : inside)
   {
@@ -342,7 +377,7 @@ vtkIdType vtkLRSplineField::EvaluatePoints(vtkIdType n,
 //------------------------------------------------------------------------------
 vtkIdType vtkLRSplineField::EvaluateIntoPointData(vtkPointData* pd, vtkIdType n,
   const std::function<void(vtkIdType, double[3])>& point, const char* gradientName,
-  const char* maskName) const
+  const char* maskName, vtkAlgorithm* progress) const
 {
   const int nc = this->NumberOfComponents;
   vtkNew<vtkDoubleArray> values;
@@ -363,7 +398,11 @@ vtkIdType vtkLRSplineField::EvaluateIntoPointData(vtkPointData* pd, vtkIdType n,
   if (n > 0)
   {
     inside = this->EvaluatePoints(n, point, values->GetPointer(0),
-      gradientName ? gradients->GetPointer(0) : nullptr, mask->GetPointer(0));
+      gradientName ? gradients->GetPointer(0) : nullptr, mask->GetPointer(0), progress);
+    if (inside < 0)
+    {
+      return -1; // aborted
+    }
   }
   pd->AddArray(values);
   if (nc == 3)

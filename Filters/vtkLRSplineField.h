@@ -10,7 +10,8 @@
  * contains the point wins.
  *
  * The physical placement comes from the field data the reader writes
- * ("LRPhysicalTransform": scale xyz then offset xyz; identity if absent).
+ * ("LRPhysicalTransform": scale xyz then offset xyz, or a row-major 3x3
+ * matrix A then offset xyz for x = A u + offset; identity if absent).
  * Patches read in geometry mode ("LRMode" = 1) can only be evaluated in
  * parameter space (ParameterSpace = true).
  */
@@ -26,6 +27,7 @@
 #include <string>
 #include <vector>
 
+class vtkAlgorithm;
 class vtkDataObject;
 class vtkPointData;
 
@@ -89,7 +91,7 @@ public:
    * (outside points get zeros). Returns the number of points inside.
    */
   vtkIdType EvaluatePoints(vtkIdType n, const std::function<void(vtkIdType, double[3])>& point,
-    double* values, double* gradients, char* mask) const;
+    double* values, double* gradients, char* mask, vtkAlgorithm* progress = nullptr) const;
 
   /**
    * EvaluatePoints into new arrays added to `pd`, the output convention of
@@ -99,10 +101,15 @@ public:
    * components (d/dx, d/dy, d/dz per component), and the char array
    * `maskName` (1 where a patch contains the point). Returns the number of
    * points inside.
+   *
+   * With `progress` (both methods), the points are evaluated in batches
+   * that report progress (0 to 1) to that algorithm and honour its abort
+   * (vtkSplineVizProgress::For): an aborted evaluation returns -1 and adds
+   * no arrays.
    */
   vtkIdType EvaluateIntoPointData(vtkPointData* pd, vtkIdType n,
     const std::function<void(vtkIdType, double[3])>& point, const char* gradientName,
-    const char* maskName) const;
+    const char* maskName, vtkAlgorithm* progress = nullptr) const;
 
   /// Patch and element containing x (-1 when none).
   int FindPatch(const double x[3], vtkIdType* element = nullptr) const;

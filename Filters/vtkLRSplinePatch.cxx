@@ -383,6 +383,31 @@ bool vtkLRSplinePatch::ComputeSupports(
 }
 
 //------------------------------------------------------------------------------
+double vtkLRSplinePatch::BSplineValue(const double* t, int order, double x, bool fromLeft)
+{
+  constexpr int M = vtkLRSplineBezierVolume::MaximumDegree + 1;
+  double N[M];
+  const int p = order - 1;
+  for (int j = 0; j <= p; ++j)
+  {
+    const bool in = fromLeft ? (t[j] < x && x <= t[j + 1]) : (t[j] <= x && x < t[j + 1]);
+    N[j] = in ? 1.0 : 0.0;
+  }
+  for (int k = 1; k <= p; ++k)
+  {
+    for (int j = 0; j + k <= p; ++j)
+    {
+      const double d1 = t[j + k] - t[j];
+      const double d2 = t[j + k + 1] - t[j + 1];
+      const double a = d1 > 0 ? (x - t[j]) / d1 * N[j] : 0.0;
+      const double b = d2 > 0 ? (t[j + k + 1] - x) / d2 * N[j + 1] : 0.0;
+      N[j] = a + b;
+    }
+  }
+  return N[0];
+}
+
+//------------------------------------------------------------------------------
 bool vtkLRSplinePatch::BSplineToBernstein(
   const double* t, int order, double a, double b, double* out)
 {

@@ -118,6 +118,13 @@ public:
    */
   static bool BSplineToBernstein(const double* knots, int order, double a, double b, double* out);
 
+  /**
+   * Value at x of the single B-spline with local knot vector `knots` (order + 1
+   * values), by the Cox-de Boor recurrence on half-open intervals [t_j, t_j+1);
+   * with fromLeft, (t_j, t_j+1] (the upper end of a domain).
+   */
+  static double BSplineValue(const double* knots, int order, double x, bool fromLeft);
+
   /// Write in the LRSplines text format ("# LRSPLINE VOLUME" ...).
   void Write(std::ostream& os) const;
 };

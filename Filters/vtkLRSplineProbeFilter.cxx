@@ -1,6 +1,7 @@
 #include "vtkLRSplineProbeFilter.h"
 
 #include "vtkLRSplineField.h"
+#include "vtkSplineVizProgress.h"
 
 #include "vtkCellData.h"
 #include "vtkDataSet.h"
@@ -111,6 +112,15 @@ int vtkLRSplineProbeFilter::RequestData(
     vtkErrorMacro(<< "cannot evaluate the spline source: " << error);
     return 0;
   }
+  // An absurd probe (e.g. an implicit image of 100000^3 points) is refused
+  // before anything is allocated.
+  const int nc = this->Field->GetNumberOfComponents();
+  if (!vtkSplineVizProgress::CheckOutputSize(static_cast<double>(input->GetNumberOfPoints()),
+        8.0 * nc * (this->ComputeGradient ? 4 : 1) + 1, "the probed values", &error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
   output->CopyStructure(input);
   output->GetPointData()->PassData(input->GetPointData());
   output->GetCellData()->PassData(input->GetCellData());
@@ -121,13 +131,18 @@ int vtkLRSplineProbeFilter::RequestData(
   {
     input->GetPoint(0); // build any internal point cache before the threads start
   }
-  this->Field->EvaluateIntoPointData(
+  const vtkIdType inside = this->Field->EvaluateIntoPointData(
     output->GetPointData(), n, [input](vtkIdType i, double x[3]) { input->GetPoint(i, x); },
     this->ComputeGradient
       ? (this->GradientArrayName && *this->GradientArrayName ? this->GradientArrayName : "Gradient")
       : nullptr,
     this->ValidPointMaskArrayName && *this->ValidPointMaskArrayName ? this->ValidPointMaskArrayName
-                                                                    : "vtkValidPointMask");
+                                                                    : "vtkValidPointMask",
+    this);
+  if (inside < 0)
+  {
+    output->Initialize(); // aborted: a clean, empty output
+  }
   return 1;
 }
 

@@ -20,7 +20,10 @@
  * §3.2, and the Bezier blocks of §3.2.3), in parallel over the points with
  * vtkSMPTools; the search structure is built once per source and reused while
  * the source does not change. UseParameterCoordinates evaluates at parameter
- * coordinates (needed for splines read in geometry mode).
+ * coordinates (needed for splines read in geometry mode). Progress is
+ * reported and abort honoured between batches of points (an aborted run
+ * gives an empty output); an input whose probed arrays could not fit in this
+ * machine's memory is refused before anything is allocated.
  *
  * The whole source is requested (piece 0 of 1) so that every piece of the
  * input is evaluated everywhere.

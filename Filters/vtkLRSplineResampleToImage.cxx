@@ -1,6 +1,7 @@
 #include "vtkLRSplineResampleToImage.h"
 
 #include "vtkLRSplineField.h"
+#include "vtkSplineVizProgress.h"
 
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -130,7 +131,14 @@ int vtkLRSplineResampleToImage::RequestData(
   int extent[6];
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
   {
+    // Within the whole extent of the current dimensions: a request left from
+    // earlier, larger dimensions (e.g. a refused one) must not be used.
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), extent);
+    for (int d = 0; d < 3; ++d)
+    {
+      extent[2 * d] = std::max(extent[2 * d], 0);
+      extent[2 * d + 1] = std::min(extent[2 * d + 1], dims[d] - 1);
+    }
   }
   else
   {
@@ -139,6 +147,21 @@ int vtkLRSplineResampleToImage::RequestData(
       extent[2 * d] = 0;
       extent[2 * d + 1] = dims[d] - 1;
     }
+  }
+  // Absurd requests (e.g. 100000^3 samples) are refused before anything is
+  // allocated: VTK's failed allocation would end the process.
+  double samples = 1.0;
+  for (int d = 0; d < 3; ++d)
+  {
+    samples *= std::max(0, extent[2 * d + 1] - extent[2 * d] + 1);
+  }
+  const int nc = this->Field->GetNumberOfComponents();
+  const double bytesPerSample = 8.0 * nc * (this->ComputeGradient ? 4 : 1) + 1;
+  if (!vtkSplineVizProgress::CheckOutputSize(
+        samples, bytesPerSample, "the resampled image (SamplingDimensions)", &error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
   }
   output->SetExtent(extent);
   output->SetOrigin(origin);
@@ -150,7 +173,7 @@ int vtkLRSplineResampleToImage::RequestData(
     // the last sample sits exactly on the upper bound
     return (dims[d] > 1 && i == dims[d] - 1) ? bounds[2 * d + 1] : origin[d] + i * spacing[d];
   };
-  this->Field->EvaluateIntoPointData(
+  const vtkIdType inside = this->Field->EvaluateIntoPointData(
     output->GetPointData(), n,
     [&](vtkIdType id, double x[3])
     {
@@ -161,7 +184,11 @@ int vtkLRSplineResampleToImage::RequestData(
       x[1] = coordinate(1, j);
       x[2] = coordinate(2, k);
     },
-    this->ComputeGradient ? "Gradient" : nullptr, "vtkValidPointMask");
+    this->ComputeGradient ? "Gradient" : nullptr, "vtkValidPointMask", this);
+  if (inside < 0)
+  {
+    output->Initialize(); // aborted: a clean, empty output
+  }
   return 1;
 }
 

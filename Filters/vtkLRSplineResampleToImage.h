@@ -9,7 +9,11 @@
  * data holds the field evaluated exactly (vtkLRSplineField: k-d forest
  * look-up and Bezier evaluation, Fuchs et al. §3.2), optionally its gradient,
  * and "vtkValidPointMask". Parallel over the samples (vtkSMPTools); honours
- * update extents (each piece samples only its extent).
+ * update extents (each piece samples only its extent). Reports progress and
+ * honours abort between batches of samples (an aborted run gives an empty
+ * image); sampling dimensions whose image could not fit in this machine's
+ * memory (e.g. 100000^3) are refused with an error before anything is
+ * allocated.
  *
  * With several patches the first patch containing a sample wins (see
  * vtkLRSplineProbeFilter).

@@ -1,6 +1,7 @@
 #include "vtkLRSplineStreamTracer.h"
 
 #include "vtkLRSplineField.h"
+#include "vtkSplineVizProgress.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -25,6 +26,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <map>
 #include <type_traits>
@@ -171,6 +173,11 @@ struct Params
   vtkIdType MaxSteps;
   double MaxLength, MaxTime, TerminalSpeed;
   bool Vorticity;
+  // Points all lines may hold together (this machine's memory): counted per
+  // 1024 steps of a line; past it every line stops and the filter fails.
+  std::atomic<vtkIdType>* PointsTraced = nullptr;
+  vtkIdType PointBudget = VTK_ID_MAX;
+  std::atomic<bool>* OverBudget = nullptr;
 };
 
 // One traced line.
@@ -437,6 +444,14 @@ public:
         line.Reason = vtkLRSplineStreamTracer::OUT_OF_STEPS;
         return;
       }
+      if ((step & 1023) == 1023 && P.PointsTraced &&
+        (P.PointsTraced->fetch_add(1024, std::memory_order_relaxed) > P.PointBudget ||
+          P.OverBudget->load(std::memory_order_relaxed)))
+      {
+        P.OverBudget->store(true, std::memory_order_relaxed);
+        line.Reason = vtkLRSplineStreamTracer::OUT_OF_STEPS;
+        return;
+      }
       double remaining = VTK_DOUBLE_MAX;
       if (P.MaxTime > 0)
       {
@@ -564,13 +579,16 @@ private:
 };
 
 // Trace all seeds with one precision combination.
+// With `progress`: progress reported and abort honoured between batches of
+// seeds (returns -1 when aborted).
 template <typename S, typename E>
 vtkIdType TraceAll(const vtkLRSplineField& field, const Params& P, const std::vector<double>& seeds,
-  int direction, std::vector<Line>& lines)
+  int direction, std::vector<Line>& lines, vtkAlgorithm* progress)
 {
   const vtkIdType n = static_cast<vtkIdType>(seeds.size() / 3);
   vtkSMPThreadLocal<vtkIdType> evaluations(0);
-  vtkSMPTools::For(0, n,
+  const bool done = vtkSplineVizProgress::For(
+    progress, 0, n, 1, 16,
     [&](vtkIdType begin, vtkIdType end)
     {
       Integrator<S, E> integrator(field, P);
@@ -588,13 +606,38 @@ vtkIdType TraceAll(const vtkLRSplineField& field, const Params& P, const std::ve
         }
       }
       evaluations.Local() += integrator.Evaluations;
-    });
+    },
+    0.0, 0.9);
+  if (!done)
+  {
+    return -1;
+  }
   vtkIdType total = 0;
   for (vtkIdType e : evaluations)
   {
     total += e;
   }
   return total;
+}
+
+double CountSeeds(vtkDataObject* obj)
+{
+  if (auto* ds = vtkDataSet::SafeDownCast(obj))
+  {
+    return static_cast<double>(ds->GetNumberOfPoints());
+  }
+  double count = 0;
+  if (auto* cds = vtkCompositeDataSet::SafeDownCast(obj))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(cds->NewIterator());
+    it->SkipEmptyNodesOn();
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      count += CountSeeds(it->GetCurrentDataObject());
+    }
+  }
+  return count;
 }
 
 void CollectSeeds(vtkDataObject* obj, std::vector<double>& seeds)
@@ -785,6 +828,16 @@ int vtkLRSplineStreamTracer::RequestData(
     this->Field->MakeFloat();
   }
 
+  // Absurd seed counts (e.g. an implicit image of 10^9 points) are refused
+  // before anything is allocated: per seed its coordinates, two lines and at
+  // least two points in each.
+  const double seedCount = CountSeeds(source);
+  if (!vtkSplineVizProgress::CheckOutputSize(seedCount, 3 * 8.0 + 2 * (sizeof(Line) + 2 * 80.0),
+        "the streamlines of all seeds (source port)", &error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
   std::vector<double> seeds;
   CollectSeeds(source, seeds);
   const vtkIdType numSeeds = static_cast<vtkIdType>(seeds.size() / 3);
@@ -810,22 +863,44 @@ int vtkLRSplineStreamTracer::RequestData(
   P.MaxTime = this->MaximumIntegrationTime;
   P.TerminalSpeed = this->TerminalSpeed;
   P.Vorticity = this->ComputeVorticity != 0;
+  // Each stored point: position, velocity, (vorticity,) speed, time, and
+  // the output's copy of all that.
+  std::atomic<vtkIdType> pointsTraced(0);
+  std::atomic<bool> overBudget(false);
+  P.PointsTraced = &pointsTraced;
+  P.OverBudget = &overBudget;
+  P.PointBudget =
+    static_cast<vtkIdType>(vtkSplineVizProgress::GetMemoryLimit() / (2 * (P.Vorticity ? 88 : 64)));
 
   std::vector<Line> lines(2 * numSeeds);
   switch (this->Precision)
   {
     case MIXED_PRECISION:
       this->NumberOfEvaluations =
-        TraceAll<double, float>(*this->Field, P, seeds, this->IntegrationDirection, lines);
+        TraceAll<double, float>(*this->Field, P, seeds, this->IntegrationDirection, lines, this);
       break;
     case SINGLE_PRECISION:
       this->NumberOfEvaluations =
-        TraceAll<float, float>(*this->Field, P, seeds, this->IntegrationDirection, lines);
+        TraceAll<float, float>(*this->Field, P, seeds, this->IntegrationDirection, lines, this);
       break;
     default:
       this->NumberOfEvaluations =
-        TraceAll<double, double>(*this->Field, P, seeds, this->IntegrationDirection, lines);
+        TraceAll<double, double>(*this->Field, P, seeds, this->IntegrationDirection, lines, this);
       break;
+  }
+
+  if (this->NumberOfEvaluations < 0)
+  {
+    this->NumberOfEvaluations = 0;
+    output->Initialize(); // aborted: a clean, empty output
+    return 1;
+  }
+  if (overBudget.load())
+  {
+    vtkErrorMacro(<< "the streamlines would need more than this machine's memory ("
+                  << pointsTraced.load() << " points and counting): lower MaximumNumberOfSteps "
+                  << "or the number of seeds");
+    return 0;
   }
 
   // Assemble in seed order, forward before backward.

@@ -49,7 +49,19 @@
  * no line). Ready for the tube mappers (radius or colour from "Speed").
  *
  * Parallel over the seeds with vtkSMPTools; the output does not depend on the
- * number of threads.
+ * number of threads. Progress is reported per batch of seeds and abort
+ * (AbortExecute, or an abort upstream) is honoured between batches: an
+ * aborted run gives an empty output. Seeds whose lines could not fit in
+ * this machine's memory are refused before anything is allocated, and the
+ * tracing stops with an error when the lines outgrow it.
+ *
+ * Defaults that differ from vtkStreamTracer's: IntegrationDirection BOTH
+ * (vtkStreamTracer: FORWARD), IntegratorType RUNGE_KUTTA4 (RUNGE_KUTTA2),
+ * step mode FIXED_LENGTH, i.e. LENGTH_UNIT (CELL_LENGTH_UNIT),
+ * IntegrationStep 0.01 (0.5 cell lengths), MaximumPropagation 0 = no limit
+ * (1), ComputeVorticity off (on). The ...To... setters vtkStreamTracer users
+ * type (SetIntegrationDirectionToForward, SetIntegratorTypeToRungeKutta4,
+ * SetIntegrationStepUnit, ...) are here too.
  *
  * ComputeErrorMetric() is the paper's error metric (Eq. 7) of a set of lines
  * against a reference set (e.g. RKF5 with a very small step).
@@ -136,15 +148,63 @@ public:
   ///@}
 
   ///@{
-  /// Integrator (Integrators). Default RUNGE_KUTTA4.
+  /**
+   * Integrator (Integrators). Default RUNGE_KUTTA4 (vtkStreamTracer's default
+   * is RUNGE_KUTTA2). vtkStreamTracer's setters are here too:
+   * SetIntegratorTypeToRungeKutta2 (MIDPOINT), ...ToRungeKutta4 and
+   * ...ToRungeKutta45 (RKF45; vtkStreamTracer's RK45 adapts its step, here
+   * that is StepMode ADAPTIVE, set separately).
+   */
   vtkSetClampMacro(IntegratorType, int, EULER, RKF45);
   vtkGetMacro(IntegratorType, int);
+  void SetIntegratorTypeToEuler() { this->SetIntegratorType(EULER); }
+  void SetIntegratorTypeToMidpoint() { this->SetIntegratorType(MIDPOINT); }
+  void SetIntegratorTypeToRungeKutta2() { this->SetIntegratorType(MIDPOINT); }
+  void SetIntegratorTypeToKutta3() { this->SetIntegratorType(KUTTA3); }
+  void SetIntegratorTypeToRungeKutta4() { this->SetIntegratorType(RUNGE_KUTTA4); }
+  void SetIntegratorTypeToRungeKutta438() { this->SetIntegratorType(RUNGE_KUTTA4_38); }
+  void SetIntegratorTypeToRKF5() { this->SetIntegratorType(RKF5); }
+  void SetIntegratorTypeToHeunEuler() { this->SetIntegratorType(HEUN_EULER); }
+  void SetIntegratorTypeToBogackiShampine() { this->SetIntegratorType(BOGACKI_SHAMPINE); }
+  void SetIntegratorTypeToRungeKutta45() { this->SetIntegratorType(RKF45); }
   ///@}
 
   ///@{
   /// Step mode (StepModes). Default FIXED_LENGTH.
   vtkSetClampMacro(StepMode, int, FIXED_TIME, ADAPTIVE);
   vtkGetMacro(StepMode, int);
+  void SetStepModeToFixedTime() { this->SetStepMode(FIXED_TIME); }
+  void SetStepModeToFixedLength() { this->SetStepMode(FIXED_LENGTH); }
+  void SetStepModeToLRHeuristic() { this->SetStepMode(LR_HEURISTIC); }
+  void SetStepModeToAdaptive() { this->SetStepMode(ADAPTIVE); }
+  ///@}
+
+  /// vtkStreamTracer's step units.
+  enum StepUnits
+  {
+    LENGTH_UNIT = 1,
+    CELL_LENGTH_UNIT = 2
+  };
+  ///@{
+  /**
+   * vtkStreamTracer's IntegrationStepUnit, as a step mode: LENGTH_UNIT is
+   * FIXED_LENGTH (IntegrationStep in world units), CELL_LENGTH_UNIT is
+   * LR_HEURISTIC (IntegrationStep in units of the current element's size,
+   * Eq. 4). GetIntegrationStepUnit() is 0 in the other step modes.
+   * vtkStreamTracer's default is CELL_LENGTH_UNIT; this filter's default step
+   * mode is FIXED_LENGTH (LENGTH_UNIT).
+   */
+  void SetIntegrationStepUnit(int unit)
+  {
+    this->SetStepMode(unit == CELL_LENGTH_UNIT ? LR_HEURISTIC : FIXED_LENGTH);
+  }
+  int GetIntegrationStepUnit()
+  {
+    return this->StepMode == FIXED_LENGTH ? LENGTH_UNIT
+                                          : (this->StepMode == LR_HEURISTIC ? CELL_LENGTH_UNIT : 0);
+  }
+  void SetIntegrationStepUnitToLengthUnit() { this->SetIntegrationStepUnit(LENGTH_UNIT); }
+  void SetIntegrationStepUnitToCellLengthUnit() { this->SetIntegrationStepUnit(CELL_LENGTH_UNIT); }
   ///@}
 
   ///@{
@@ -172,13 +232,23 @@ public:
   ///@}
 
   ///@{
-  /// FORWARD, BACKWARD or BOTH (default).
+  /**
+   * FORWARD, BACKWARD or BOTH. Default BOTH: unlike vtkStreamTracer, whose
+   * default is FORWARD, this filter traces both halves of every streamline.
+   */
   vtkSetClampMacro(IntegrationDirection, int, FORWARD, BOTH);
   vtkGetMacro(IntegrationDirection, int);
+  void SetIntegrationDirectionToForward() { this->SetIntegrationDirection(FORWARD); }
+  void SetIntegrationDirectionToBackward() { this->SetIntegrationDirection(BACKWARD); }
+  void SetIntegrationDirectionToBoth() { this->SetIntegrationDirection(BOTH); }
   ///@}
 
   ///@{
-  /// Limits: steps (default 2000), arc length and integration time (0, the defaults: none).
+  /**
+   * Limits: steps (default 2000, as vtkStreamTracer), arc length and
+   * integration time (0, the defaults: none; vtkStreamTracer's
+   * MaximumPropagation defaults to 1).
+   */
   vtkSetMacro(MaximumNumberOfSteps, vtkIdType);
   vtkGetMacro(MaximumNumberOfSteps, vtkIdType);
   vtkSetMacro(MaximumPropagation, double);
@@ -197,10 +267,13 @@ public:
   /// Precision (Precisions). Default DOUBLE_PRECISION.
   vtkSetClampMacro(Precision, int, DOUBLE_PRECISION, SINGLE_PRECISION);
   vtkGetMacro(Precision, int);
+  void SetPrecisionToDouble() { this->SetPrecision(DOUBLE_PRECISION); }
+  void SetPrecisionToMixed() { this->SetPrecision(MIXED_PRECISION); }
+  void SetPrecisionToSingle() { this->SetPrecision(SINGLE_PRECISION); }
   ///@}
 
   ///@{
-  /// Also output "Vorticity" (curl, from the exact Jacobian). Default off.
+  /// Also output "Vorticity" (curl, from the exact Jacobian). Default off (vtkStreamTracer: on).
   vtkSetMacro(ComputeVorticity, vtkTypeBool);
   vtkGetMacro(ComputeVorticity, vtkTypeBool);
   vtkBooleanMacro(ComputeVorticity, vtkTypeBool);

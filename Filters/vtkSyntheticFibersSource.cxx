@@ -1,5 +1,7 @@
 #include "vtkSyntheticFibersSource.h"
 
+#include "vtkSplineVizProgress.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkFloatArray.h"
@@ -182,6 +184,17 @@ int vtkSyntheticFibersSource::RequestData(
                   << ", " << this->RadiusRange[1] << "]");
     return 0;
   }
+  // Absurd sizes are refused before anything is allocated: per point its
+  // position, radius, scalar and connectivity (about 28 bytes), per tube an
+  // offset, an id and a weight.
+  std::string sizeError;
+  if (!vtkSplineVizProgress::CheckOutputSize(
+        static_cast<double>(this->NumberOfSegments) + static_cast<double>(nTubes), 40.0,
+        "the synthetic fibers (NumberOfTubes + NumberOfSegments points)", &sizeError))
+  {
+    vtkErrorMacro(<< sizeError);
+    return 0;
+  }
 
   int piece = 0;
   int numPieces = 1;
@@ -246,7 +259,10 @@ int vtkSyntheticFibersSource::RequestData(
   const unsigned int seed = this->Seed;
   const double twoPi = 2.0 * 3.14159265358979323846;
 
-  vtkSMPTools::For(0, localTubes,
+  // Progress and abort between batches of tubes (the ONE_MILLION preset
+  // takes seconds).
+  const bool done = vtkSplineVizProgress::For(
+    this, 0, localTubes, 0, 256,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
@@ -318,7 +334,13 @@ int vtkSyntheticFibersSource::RequestData(
         }
         tubeIds->SetValue(i, t);
       }
-    });
+    },
+    0.0, 0.95);
+  if (!done)
+  {
+    output->Initialize(); // aborted: a clean, empty output
+    return 1;
+  }
 
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkIdTypeArray> offsets;

@@ -27,6 +27,9 @@
  * The output is deterministic for a given Seed, independent of the number of
  * threads, and honours piece requests: piece p of n generates a contiguous
  * range of whole tubes, so ParaView's parallel pipeline splits the work.
+ * Progress is reported and abort honoured between batches of tubes; sizes
+ * that could not fit in this machine's memory are refused with an error
+ * before anything is allocated.
  */
 
 #ifndef vtkSyntheticFibersSource_h

@@ -1,5 +1,6 @@
 #include "vtkTensorAnalysisFilter.h"
 
+#include "vtkSplineVizProgress.h"
 #include "vtkSplineVizTensorMath.h"
 
 #include "vtkCellData.h"
@@ -55,9 +56,9 @@ struct AnalysisWorker
   T* CP;
   T* CS;
   T* Confidence;
-  vtkSMPThreadLocal<vtkIdType> Invalid;
-
-  void Initialize() { this->Invalid.Local() = 0; }
+  // Counts per thread, kept across the batches of vtkSplineVizProgress::For
+  // (so no Initialize() that would reset them per batch).
+  vtkSMPThreadLocal<vtkIdType> Invalid{ 0 };
 
   void operator()(vtkIdType begin, vtkIdType end)
   {
@@ -115,8 +116,6 @@ struct AnalysisWorker
       }
     }
   }
-
-  void Reduce() {}
 };
 
 template <typename T>
@@ -126,7 +125,8 @@ T* Ptr(vtkDataArray* a)
 }
 
 template <typename T>
-vtkIdType Run(vtkDataArray* tensors, int layout, const std::vector<vtkDataArray*>& out)
+vtkIdType Run(
+  vtkDataArray* tensors, int layout, const std::vector<vtkDataArray*>& out, vtkAlgorithm* progress)
 {
   AnalysisWorker<T> worker;
   worker.Tensors = tensors;
@@ -142,7 +142,11 @@ vtkIdType Run(vtkDataArray* tensors, int layout, const std::vector<vtkDataArray*
   worker.CP = Ptr<T>(out[7]);
   worker.CS = Ptr<T>(out[8]);
   worker.Confidence = Ptr<T>(out[9]);
-  vtkSMPTools::For(0, tensors->GetNumberOfTuples(), worker);
+  if (!vtkSplineVizProgress::For(progress, 0, tensors->GetNumberOfTuples(), 0, 8192,
+        [&worker](vtkIdType begin, vtkIdType end) { worker(begin, end); }))
+  {
+    return -1; // aborted
+  }
   vtkIdType invalid = 0;
   for (vtkIdType n : worker.Invalid)
   {
@@ -228,7 +232,13 @@ int vtkTensorAnalysisFilter::RequestData(
   }
 
   this->NumberOfInvalidTensors =
-    dbl ? Run<double>(tensors, layout, raw) : Run<float>(tensors, layout, raw);
+    dbl ? Run<double>(tensors, layout, raw, this) : Run<float>(tensors, layout, raw, this);
+  if (this->NumberOfInvalidTensors < 0)
+  {
+    this->NumberOfInvalidTensors = 0;
+    output->Initialize(); // aborted: a clean, empty output
+    return 1;
+  }
   if (this->NumberOfInvalidTensors > 0)
   {
     vtkWarningMacro(<< this->NumberOfInvalidTensors << " of " << n

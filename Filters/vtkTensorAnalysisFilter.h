@@ -36,7 +36,9 @@
  * warning with their count). A missing tensor array, or one whose number of
  * components does not fit the layout, is an error (RequestData returns 0).
  * Composite inputs are processed block by block; pieces pass through.
- * The work is multi-threaded with vtkSMPTools.
+ * The work is multi-threaded with vtkSMPTools, in batches between which
+ * progress is reported and abort honoured (an aborted run gives an empty
+ * output).
  */
 #ifndef vtkTensorAnalysisFilter_h
 #define vtkTensorAnalysisFilter_h

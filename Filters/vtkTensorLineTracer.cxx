@@ -1,5 +1,6 @@
 #include "vtkTensorLineTracer.h"
 
+#include "vtkSplineVizProgress.h"
 #include "vtkSplineVizTensorMath.h"
 
 #include "vtkAOSDataArrayTemplate.h"
@@ -1225,6 +1226,21 @@ int vtkTensorLineTracer::RequestData(
                        "port (port 1), or use SeedMode SEEDS_FROM_VOXELS");
       return 0;
     }
+    // Absurd seed counts (e.g. an implicit image of 10^9 points) are refused
+    // before anything is allocated: per seed its coordinates, a line and at
+    // least two points of output.
+    double seedCount = 0;
+    for (vtkDataSet* ds : vtkCompositeDataSet::GetDataSets(source))
+    {
+      seedCount += static_cast<double>(ds->GetNumberOfPoints());
+    }
+    std::string sizeError;
+    if (!vtkSplineVizProgress::CheckOutputSize(seedCount, 3 * 8.0 + sizeof(Line) + 2 * 100.0,
+          "the tensor lines of all seeds", &sizeError))
+    {
+      vtkErrorMacro(<< sizeError);
+      return 0;
+    }
     for (vtkDataSet* ds : vtkCompositeDataSet::GetDataSets(source))
     {
       const vtkIdType n = ds->GetNumberOfPoints();
@@ -1359,8 +1375,12 @@ int vtkTensorLineTracer::RequestData(
     outF.reset(new Output<float>);
   }
 
-  // Trace in batches: parallel over the seeds of a batch, appended in order.
-  const vtkIdType batchSize = 4096;
+  // Trace in batches: parallel over the seeds of a batch, appended in order;
+  // between batches progress (the last 90 %) and abort, and a check that the
+  // output still fits in this machine's memory.
+  const vtkIdType batchSize =
+    std::max<vtkIdType>(64, std::min<vtkIdType>(4096, (lastSeed - firstSeed + 49) / 50));
+  const double memoryLimit = vtkSplineVizProgress::GetMemoryLimit();
   std::vector<Line> lines;
   std::vector<char> keep;
   vtkSMPThreadLocal<vtkIdType> evaluations(0);
@@ -1401,6 +1421,24 @@ int vtkTensorLineTracer::RequestData(
     else
     {
       outF->Append(lines, keep, b0);
+    }
+    this->UpdateProgress(0.1 +
+      0.9 * static_cast<double>(b0 + n - firstSeed) / static_cast<double>(lastSeed - firstSeed));
+    if (this->CheckAbort())
+    {
+      output->Initialize(); // aborted: a clean, empty output
+      return 1;
+    }
+    const double outputBytes =
+      static_cast<double>(outD ? outD->NumberOfPoints : outF->NumberOfPoints) * 100.0;
+    if (outputBytes > 0.75 * memoryLimit)
+    {
+      vtkErrorMacro(<< "the tensor lines would need more than this machine's memory ("
+                    << outputBytes << " bytes after " << (b0 + n - firstSeed) << " of "
+                    << (lastSeed - firstSeed)
+                    << " seeds): lower MaximumNumberOfSteps or the number of seeds");
+      output->Initialize();
+      return 0;
     }
   }
   for (vtkIdType e : evaluations)

@@ -92,7 +92,16 @@
  * Parallel over seeds (vtkSMPTools); the output is the same for any number
  * of threads and any SMP backend. Seeds are processed in batches, so the
  * temporary memory does not grow with the number of seeds. Piece requests
- * split the seed list (the field is needed whole).
+ * split the seed list (the field is needed whole). Progress is reported and
+ * abort honoured after every batch (an aborted run gives an empty output);
+ * more seeds than this machine's memory could hold lines for are refused
+ * before anything is allocated, and the tracing stops with an error when
+ * the output outgrows the memory.
+ *
+ * Unlike vtkStreamTracer (IntegrationDirection, default FORWARD), every seed
+ * is traced in both directions. vtkStreamTracer's setters are here too
+ * (SetIntegratorTypeToRungeKutta2/4, SetIntegrationStepUnitToLengthUnit /
+ * ToCellLengthUnit), and ...To... setters for the other choices.
  *
  * The tensor math (layouts, eigen-decomposition, FA, Westin metrics, sign
  * policies, matrix log/exp) is vtkSplineVizTensorMath, shared with
@@ -188,6 +197,8 @@ public:
   /// SEEDS_FROM_SOURCE (default) or SEEDS_FROM_VOXELS.
   vtkSetClampMacro(SeedMode, int, SEEDS_FROM_SOURCE, SEEDS_FROM_VOXELS);
   vtkGetMacro(SeedMode, int);
+  void SetSeedModeToSource() { this->SetSeedMode(SEEDS_FROM_SOURCE); }
+  void SetSeedModeToVoxels() { this->SetSeedMode(SEEDS_FROM_VOXELS); }
   ///@}
 
   ///@{
@@ -206,6 +217,8 @@ public:
   /// RUNGE_KUTTA2 or RUNGE_KUTTA4 (default).
   vtkSetClampMacro(IntegratorType, int, RUNGE_KUTTA2, RUNGE_KUTTA4);
   vtkGetMacro(IntegratorType, int);
+  void SetIntegratorTypeToRungeKutta2() { this->SetIntegratorType(RUNGE_KUTTA2); }
+  void SetIntegratorTypeToRungeKutta4() { this->SetIntegratorType(RUNGE_KUTTA4); }
   ///@}
 
   ///@{
@@ -218,12 +231,16 @@ public:
   /// LENGTH_UNIT (world units) or CELL_LENGTH_UNIT (default).
   vtkSetClampMacro(IntegrationStepUnit, int, LENGTH_UNIT, CELL_LENGTH_UNIT);
   vtkGetMacro(IntegrationStepUnit, int);
+  void SetIntegrationStepUnitToLengthUnit() { this->SetIntegrationStepUnit(LENGTH_UNIT); }
+  void SetIntegrationStepUnitToCellLengthUnit() { this->SetIntegrationStepUnit(CELL_LENGTH_UNIT); }
   ///@}
 
   ///@{
   /// LINEAR_INTERPOLATION (default) or LOG_EUCLIDEAN_INTERPOLATION.
   vtkSetClampMacro(Interpolation, int, LINEAR_INTERPOLATION, LOG_EUCLIDEAN_INTERPOLATION);
   vtkGetMacro(Interpolation, int);
+  void SetInterpolationToLinear() { this->SetInterpolation(LINEAR_INTERPOLATION); }
+  void SetInterpolationToLogEuclidean() { this->SetInterpolation(LOG_EUCLIDEAN_INTERPOLATION); }
   ///@}
 
   ///@{
@@ -231,6 +248,11 @@ public:
   vtkSetClampMacro(
     NegativeEigenvalues, int, NEGATIVE_EIGENVALUES_STOP, NEGATIVE_EIGENVALUES_ABSOLUTE);
   vtkGetMacro(NegativeEigenvalues, int);
+  void SetNegativeEigenvaluesToStop() { this->SetNegativeEigenvalues(NEGATIVE_EIGENVALUES_STOP); }
+  void SetNegativeEigenvaluesToAbsolute()
+  {
+    this->SetNegativeEigenvalues(NEGATIVE_EIGENVALUES_ABSOLUTE);
+  }
   ///@}
 
   ///@{
@@ -297,6 +319,9 @@ public:
    */
   vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
   vtkGetMacro(OutputPointsPrecision, int);
+  void SetOutputPointsPrecisionToSingle() { this->SetOutputPointsPrecision(SINGLE_PRECISION); }
+  void SetOutputPointsPrecisionToDouble() { this->SetOutputPointsPrecision(DOUBLE_PRECISION); }
+  void SetOutputPointsPrecisionToDefault() { this->SetOutputPointsPrecision(DEFAULT_PRECISION); }
   ///@}
 
   ///@{

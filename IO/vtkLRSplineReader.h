@@ -45,6 +45,10 @@
  * [p N / n, (p + 1) N / n) of every patch (the Bezier form of an element does
  * not depend on the others, so the pieces are exact too).
  *
+ * Progress is reported per patch and abort honoured between patches (an
+ * aborted read gives an empty output). ReadFromInputString reads the text
+ * from memory (used by the fuzz target Testing/Fuzz/FuzzLRSplineReader).
+ *
  * Bad input gives an error naming the file and the line (truncated files,
  * wrong counts, unknown headers, non-finite numbers, knot vectors of the
  * wrong length, inconsistent meshes) and an empty output; RequestData returns 0.
@@ -69,6 +73,20 @@ public:
   /// The file to read (.lr or .g2).
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /**
+   * Read from InputString instead of FileName (as vtkDataReader's
+   * ReadFromInputString): the whole text of a .lr or .g2 file held in memory
+   * (it may contain any bytes). Default off.
+   */
+  vtkSetMacro(ReadFromInputString, vtkTypeBool);
+  vtkGetMacro(ReadFromInputString, vtkTypeBool);
+  vtkBooleanMacro(ReadFromInputString, vtkTypeBool);
+  void SetInputString(const std::string& text);
+  void SetInputString(const char* text, std::size_t length);
+  const std::string& GetInputString() const { return this->InputString; }
   ///@}
 
   enum FileFormats
@@ -130,6 +148,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   char* FileName = nullptr;
+  vtkTypeBool ReadFromInputString = 0;
+  std::string InputString;
   int FileFormat = AUTOMATIC;
   vtkTypeBool GeometryMode = 0;
   double PhysicalBounds[6] = { 0, -1, 0, -1, 0, -1 };

@@ -51,6 +51,7 @@
 #include <vtk_glew.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <sstream>
@@ -70,7 +71,9 @@ constexpr int MaximumClipPlanes = 6;
 struct PatchInfo
 {
   float Lo[3], Hi[3];             // parameter domain
-  float Scale[3], Offset[3];      // x = offset + scale u
+  float Inverse[9];               // u = Inverse (x - offset), row-major
+  float Offset[3];                // x = A u + offset
+  float Edge[3];                  // |A e_d|: data length of a unit parameter step
   float BoxLo[3], BoxHi[3];       // data box
   int Blocks[3] = { 1, 1, 1 };    // forest resolution
   int Starts[4] = { 0, 0, 0, 0 }; // heads, nodes, octree, first element
@@ -135,6 +138,8 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   bool Valid = false;
   std::string Error;
   std::string ReportedError;
+  std::string FailedShader;
+  bool Quiet = false; // UpdateSpline() from GetBounds(): no error report
   int Degree[3] = { 1, 1, 1 };
   int NumberOfComponents = 1;
   double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
@@ -142,6 +147,12 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   std::vector<PatchInfo> Patches;
   std::vector<std::uint32_t> Heads, NodeWords, Octree, Offsets;
   std::vector<float> NodeSplits, Boxes, Coefficients;
+  // Per element, the range of its Bezier coefficients (which bounds its
+  // values: convex hull property): per component, and bounds of the
+  // magnitude (2 values each).
+  std::vector<float> ComponentRanges, MagnitudeRanges;
+  std::string SkipKey; // what the skip flags in Boxes were computed for
+  vtkIdType SkippedElements = 0;
   vtkTimeStamp BuildTime;
 
   // GPU side.
@@ -292,6 +303,11 @@ vtkIdType vtkLRSplineVolumeMapper::GetNumberOfElements()
   return this->Internals->Valid ? this->Internals->Field.GetNumberOfElements() : 0;
 }
 
+vtkIdType vtkLRSplineVolumeMapper::GetNumberOfSkippedElements()
+{
+  return this->Internals->Valid ? this->Internals->SkippedElements : 0;
+}
+
 const char* vtkLRSplineVolumeMapper::GetLastErrorMessage()
 {
   return this->Internals->Error.c_str();
@@ -327,7 +343,14 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     this->GetInputAlgorithm(0, 0)->Update(this->GetInputConnection(0, 0)->GetIndex());
   }
   vtkDataObject* input = this->GetInputDataObject(0, 0);
-  auto done = [](bool ok) { return ok; };
+  auto done = [&](bool ok)
+  {
+    if (!ok && !in.Quiet)
+    {
+      this->ReportError();
+    }
+    return ok;
+  };
   if (!input)
   {
     in.BuildKey.clear();
@@ -352,6 +375,9 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   in.Boxes.clear();
   in.Offsets.clear();
   in.Coefficients.clear();
+  in.ComponentRanges.clear();
+  in.MagnitudeRanges.clear();
+  in.SkipKey.clear();
   in.BuildTime.Modified();
 
   // What kind of input is this?
@@ -481,16 +507,25 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     }
     PatchInfo info;
     const double* domain = locator.GetDomain();
-    const double* scale = patch.GetScale();
+    const double* A = patch.GetMatrix();
+    const double* inverse = patch.GetInverseMatrix();
     const double* offset = patch.GetOffset();
+    double patchBounds[6];
+    patch.GetBounds(patchBounds);
+    double edge[3];
     for (int k = 0; k < 3; ++k)
     {
+      edge[k] = std::sqrt(A[k] * A[k] + A[3 + k] * A[3 + k] + A[6 + k] * A[6 + k]);
       info.Lo[k] = static_cast<float>(domain[k]);
       info.Hi[k] = static_cast<float>(domain[k + 3]);
-      info.Scale[k] = static_cast<float>(scale[k]);
       info.Offset[k] = static_cast<float>(offset[k]);
-      info.BoxLo[k] = static_cast<float>(offset[k] + scale[k] * domain[k]);
-      info.BoxHi[k] = static_cast<float>(offset[k] + scale[k] * domain[k + 3]);
+      info.Edge[k] = static_cast<float>(edge[k]);
+      info.BoxLo[k] = static_cast<float>(patchBounds[2 * k]);
+      info.BoxHi[k] = static_cast<float>(patchBounds[2 * k + 1]);
+    }
+    for (int k = 0; k < 9; ++k)
+    {
+      info.Inverse[k] = static_cast<float>(inverse[k]);
     }
     info.Starts[0] = static_cast<int>(in.Heads.size());
     info.Starts[1] = static_cast<int>(in.NodeWords.size());
@@ -527,9 +562,34 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
       {
         in.Coefficients.push_back(static_cast<float>(c[i]));
       }
+      // Coefficient ranges (the element's values lie within them).
+      double magnitudeLow = 0.0, magnitudeHigh = 0.0;
+      for (int comp = 0; comp < nc; ++comp)
+      {
+        double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
+        for (int i = comp; i < per; i += nc)
+        {
+          lo = std::min(lo, c[i]);
+          hi = std::max(hi, c[i]);
+        }
+        in.ComponentRanges.push_back(static_cast<float>(lo));
+        in.ComponentRanges.push_back(static_cast<float>(hi));
+        magnitudeLow = std::max(magnitudeLow, lo > 0 ? lo : (hi < 0 ? -hi : 0.0));
+      }
+      for (int i = 0; i < per; i += nc)
+      {
+        double m2 = 0.0;
+        for (int comp = 0; comp < nc; ++comp)
+        {
+          m2 += c[i + comp] * c[i + comp];
+        }
+        magnitudeHigh = std::max(magnitudeHigh, std::sqrt(m2));
+      }
+      in.MagnitudeRanges.push_back(static_cast<float>(magnitudeLow));
+      in.MagnitudeRanges.push_back(static_cast<float>(magnitudeHigh));
       for (int k = 0; k < 3; ++k)
       {
-        in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * scale[k]);
+        in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * edge[k]);
       }
     }
     firstElement += ne;
@@ -544,7 +604,11 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
 //------------------------------------------------------------------------------
 double* vtkLRSplineVolumeMapper::GetBounds()
 {
+  // Quietly: views ask for bounds before the input is ready (the error, if
+  // it persists, is reported by the render).
+  this->Internals->Quiet = true;
   this->UpdateSpline();
+  this->Internals->Quiet = false;
   if (this->Internals->Valid)
   {
     std::copy(this->Internals->Bounds, this->Internals->Bounds + 6, this->Bounds);
@@ -579,17 +643,9 @@ void vtkLRSplineVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   vtkInternals& in = *this->Internals;
-  auto report = [&]()
-  {
-    if (in.Error != in.ReportedError)
-    {
-      vtkErrorMacro(<< in.Error);
-      in.ReportedError = in.Error;
-    }
-  };
+  auto report = [this]() { this->ReportError(); };
   if (!this->UpdateSpline())
   {
-    report();
     return;
   }
   vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
@@ -742,10 +798,115 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       isoValues.push_back(static_cast<float>(contours->GetValue(i)));
     }
   }
-  if (!in.Error.empty())
+
+  // Empty-space skipping: flag the elements whose coefficient range (which
+  // bounds their values) maps to zero opacity (composite) or holds no iso
+  // value (isosurfaces); the rays jump over them. Recomputed when the
+  // transfer function, the iso values, the blend or vector mode change.
   {
-    in.Error.clear();
-    in.ReportedError.clear();
+    std::ostringstream key;
+    key << in.BuildTime.GetMTime() << ' ' << in.TransferKey << ' ' << this->BlendMode << ' '
+        << this->VectorMode << ' ' << this->VectorComponent << ' ' << this->EmptySpaceSkipping;
+    for (float v : isoValues)
+    {
+      key << ' ' << v;
+    }
+    if (key.str() != in.SkipKey)
+    {
+      const vtkIdType ne = static_cast<vtkIdType>(in.Offsets.size());
+      const int nc = in.NumberOfComponents;
+      const bool magnitude = nc > 1 && this->VectorMode == MAGNITUDE;
+      const int comp = nc == 1 ? 0 : this->VectorComponent;
+      // Values are looked up in a linearly filtered table: widen by a texel.
+      const double texel = (in.TransferRange[1] - in.TransferRange[0]) / (TransferFunctionSize - 1);
+      const bool skipping = this->EmptySpaceSkipping &&
+        (this->BlendMode == COMPOSITE_BLEND || this->BlendMode == ISOSURFACE_BLEND);
+      vtkIdType skipped = 0;
+      for (vtkIdType e = 0; e < ne; ++e)
+      {
+        const float* r =
+          magnitude ? &in.MagnitudeRanges[2 * e] : &in.ComponentRanges[2 * (nc * e + comp)];
+        bool skip = false;
+        if (skipping && this->BlendMode == COMPOSITE_BLEND)
+        {
+          const double a = std::max(static_cast<double>(r[0]) - texel, in.TransferRange[0]);
+          const double b = std::min(static_cast<double>(r[1]) + texel, in.TransferRange[1]);
+          // Outside the table's range the end values hold (clamping).
+          double maxOpacity =
+            opacity->GetValue(std::min(std::max(a, in.TransferRange[0]), in.TransferRange[1]));
+          maxOpacity = std::max(maxOpacity,
+            opacity->GetValue(std::max(std::min(b, in.TransferRange[1]), in.TransferRange[0])));
+          double node[4];
+          for (int i = 0; i < opacity->GetSize(); ++i)
+          {
+            opacity->GetNodeValue(i, node);
+            if (node[0] > a && node[0] < b)
+            {
+              maxOpacity = std::max(maxOpacity, node[1]);
+            }
+          }
+          skip = a <= b && maxOpacity <= 0.0;
+        }
+        else if (skipping)
+        {
+          skip = true;
+          for (float v : isoValues)
+          {
+            skip = skip && !(v >= r[0] && v <= r[1]);
+          }
+        }
+        in.Boxes[8 * e + 3] = skip ? 1.0f : 0.0f;
+        skipped += skip ? 1 : 0;
+      }
+      in.SkippedElements = skipped;
+      if (in.UploadTime.GetMTime() > 0 &&
+        !in.BoxesBuffer.Upload(
+          window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F))
+      {
+        in.Error = "the spline's element boxes could not be uploaded to the GPU";
+        report();
+        return;
+      }
+      in.SkipKey = key.str();
+    }
+  }
+
+  // The lights (VTK's volume mappers sum them): every switched-on light,
+  // directional (toward the light from its focal point), at most 8; none:
+  // a headlight.
+  std::vector<std::array<float, 6>> lightList;
+  {
+    vtkLightCollection* lights = ren->GetLights();
+    lights->InitTraversal();
+    for (vtkLight* l = lights->GetNextItem(); l && lightList.size() < 8; l = lights->GetNextItem())
+    {
+      if (!l->GetSwitch() || !(l->GetIntensity() > 0))
+      {
+        continue;
+      }
+      double p[3], f[3], toLight[3];
+      l->GetTransformedPosition(p);
+      l->GetTransformedFocalPoint(f);
+      vtkMath::Subtract(p, f, toLight);
+      if (vtkMath::Normalize(toLight) == 0.0)
+      {
+        continue;
+      }
+      const double* c = l->GetDiffuseColor();
+      const double i = l->GetIntensity();
+      lightList.push_back({ static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
+        static_cast<float>(toLight[2]), static_cast<float>(c[0] * i), static_cast<float>(c[1] * i),
+        static_cast<float>(c[2] * i) });
+    }
+    if (lightList.empty())
+    {
+      double toLight[3];
+      vtkMath::Subtract(
+        ren->GetActiveCamera()->GetPosition(), ren->GetActiveCamera()->GetFocalPoint(), toLight);
+      vtkMath::Normalize(toLight);
+      lightList.push_back({ static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
+        static_cast<float>(toLight[2]), 1.0f, 1.0f, 1.0f });
+    }
   }
 
   // The program.
@@ -765,16 +926,21 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
             << "\n#define LR_TRIM "
             << (this->GetNumberOfInputConnections(1) > 0 || this->GetInputDataObject(1, 0) ? 1 : 0)
             << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0)
-            << "\n#define LR_MAX_PATCHES " << MaximumPatches << "\n#define LR_ISO "
-            << MaximumIsoValues << "\n";
+            << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_SUPERSAMPLING "
+            << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
+            << "\n#define LR_LIGHTS " << lightList.size() << "\n#define LR_MAX_PATCHES "
+            << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
     vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str());
   }
   const bool trim = fs.find("#define LR_TRIM 1") != std::string::npos;
   const std::string vs = this->GetVertexShaderSource();
-  vtkShaderProgram* program =
-    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  // A source that failed once is not compiled again every frame.
+  vtkShaderProgram* program = (vs + fs) == in.FailedShader
+    ? nullptr
+    : window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
   if (!program)
   {
+    in.FailedShader = vs + fs;
     in.Error = "the volume shader did not compile or link (see the message above)";
     report();
     return;
@@ -1067,13 +1233,13 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniform3f("lrBoxHi", boxHi);
   {
     const int np = static_cast<int>(in.Patches.size());
-    std::vector<float> lo, hi, scale, offset, boxLoP, boxHiP;
+    std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
     std::vector<int> blocks, starts, locators;
     for (const PatchInfo& p : in.Patches)
     {
       lo.insert(lo.end(), p.Lo, p.Lo + 3);
       hi.insert(hi.end(), p.Hi, p.Hi + 3);
-      scale.insert(scale.end(), p.Scale, p.Scale + 3);
+      edge.insert(edge.end(), p.Edge, p.Edge + 3);
       offset.insert(offset.end(), p.Offset, p.Offset + 3);
       boxLoP.insert(boxLoP.end(), p.BoxLo, p.BoxLo + 3);
       boxHiP.insert(boxHiP.end(), p.BoxHi, p.BoxHi + 3);
@@ -1081,12 +1247,24 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       starts.insert(starts.end(), p.Starts, p.Starts + 4);
       locators.push_back(p.Locator);
     }
-    program->SetUniformi("lrNumberOfPatches", np);
     auto set3f = [&](const char* name, std::vector<float>& v)
     { program->SetUniform3fv(name, np, reinterpret_cast<const float(*)[3]>(v.data())); };
     set3f("lrPatchLo", lo);
     set3f("lrPatchHi", hi);
-    set3f("lrPatchScale", scale);
+    set3f("lrPatchEdge", edge);
+    for (int p = 0; p < np; ++p)
+    {
+      // GLSL matrices are column-major: the transpose of the row-major array.
+      float columns[9];
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          columns[3 * c + r] = in.Patches[p].Inverse[3 * r + c];
+        }
+      }
+      program->SetUniformMatrix3x3(("lrPatchInverse[" + std::to_string(p) + "]").c_str(), columns);
+    }
     set3f("lrPatchOffset", offset);
     set3f("lrPatchBoxLo", boxLoP);
     set3f("lrPatchBoxHi", boxHiP);
@@ -1150,8 +1328,24 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniformi("lrAdaptive", this->AdaptiveSteps ? 1 : 0);
   program->SetUniformf("lrStepScale", static_cast<float>(this->StepScale));
   program->SetUniformf("lrSampleDistance", static_cast<float>(sampleDistance));
-  program->SetUniformi("lrSupersampling", this->Supersampling);
-  program->SetUniformi("lrMaxSteps", this->MaximumNumberOfSteps);
+  int maxSteps = this->MaximumNumberOfSteps;
+  if (maxSteps <= 0)
+  {
+    // Automatic: the box's diagonal at the finest step, plus the gaps.
+    double dataDiagonal = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+      dataDiagonal += (box[d + 3] - box[d]) * (box[d + 3] - box[d]);
+    }
+    dataDiagonal = std::sqrt(dataDiagonal);
+    const int maxDegree = std::max(in.Degree[0], std::max(in.Degree[1], in.Degree[2]));
+    const double steps = this->AdaptiveSteps
+      ? dataDiagonal / (this->StepScale * in.MinimumSide / (1 << maxDegree))
+      : diagonal / sampleDistance;
+    maxSteps = static_cast<int>(std::min(
+      1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
+  }
+  program->SetUniformi("lrMaxSteps", maxSteps);
   program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
 
   // Transfer function and lighting.
@@ -1165,47 +1359,16 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniformf("lrSpecular", static_cast<float>(property->GetSpecular(0)));
   program->SetUniformf("lrSpecularPower", static_cast<float>(property->GetSpecularPower(0)));
   {
-    double toLight[3] = { 0, 0, 1 };
-    double lightColor[3] = { 1, 1, 1 };
-    vtkLightCollection* lights = ren->GetLights();
-    vtkLight* light = nullptr;
-    lights->InitTraversal();
-    for (vtkLight* l = lights->GetNextItem(); l; l = lights->GetNextItem())
+    std::vector<float> directions, colors;
+    for (const auto& l : lightList)
     {
-      if (l->GetSwitch() && l->GetIntensity() > 0)
-      {
-        light = l;
-        break;
-      }
+      directions.insert(directions.end(), l.begin(), l.begin() + 3);
+      colors.insert(colors.end(), l.begin() + 3, l.end());
     }
-    if (light)
-    {
-      double p[3], f[3];
-      light->GetTransformedPosition(p);
-      light->GetTransformedFocalPoint(f);
-      vtkMath::Subtract(p, f, toLight);
-      const double* c = light->GetDiffuseColor();
-      for (int k = 0; k < 3; ++k)
-      {
-        lightColor[k] = c[k] * light->GetIntensity();
-      }
-    }
-    else
-    {
-      const double* p = camera->GetPosition();
-      const double* f = camera->GetFocalPoint();
-      vtkMath::Subtract(p, f, toLight);
-    }
-    if (vtkMath::Normalize(toLight) == 0.0)
-    {
-      toLight[2] = 1.0;
-    }
-    const float l3[3] = { static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
-      static_cast<float>(toLight[2]) };
-    const float c3[3] = { static_cast<float>(lightColor[0]), static_cast<float>(lightColor[1]),
-      static_cast<float>(lightColor[2]) };
-    program->SetUniform3f("lrLightDirection", l3);
-    program->SetUniform3f("lrLightColor", c3);
+    program->SetUniform3fv("lrLightDirections", static_cast<int>(lightList.size()),
+      reinterpret_cast<const float(*)[3]>(directions.data()));
+    program->SetUniform3fv("lrLightColors", static_cast<int>(lightList.size()),
+      reinterpret_cast<const float(*)[3]>(colors.data()));
   }
   {
     float iso[MaximumIsoValues] = {};
@@ -1293,6 +1456,20 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     in.TrimTextures[1]->Deactivate();
   }
   vtkOpenGLCheckErrorMacro("failed after Render");
+  // A good frame: a problem that comes back is reported again.
+  in.Error.clear();
+  in.ReportedError.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::ReportError()
+{
+  vtkInternals& in = *this->Internals;
+  if (!in.Error.empty() && in.Error != in.ReportedError)
+  {
+    vtkErrorMacro(<< in.Error);
+    in.ReportedError = in.Error;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1316,6 +1493,7 @@ void vtkLRSplineVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StepScale: " << this->StepScale << "\n";
   os << indent << "SampleDistance: " << this->SampleDistance << "\n";
   os << indent << "Supersampling: " << this->Supersampling << "\n";
+  os << indent << "EmptySpaceSkipping: " << this->EmptySpaceSkipping << "\n";
   os << indent << "UseJittering: " << this->UseJittering << "\n";
   os << indent << "ShadingModel: " << (this->ShadingModel == FUCHS ? "Fuchs" : "Phong") << "\n";
   os << indent << "IsosurfaceBisections: " << this->IsosurfaceBisections << "\n";

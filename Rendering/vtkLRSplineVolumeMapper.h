@@ -32,11 +32,17 @@
  *   the transfer function is supersampled Supersampling times between two
  *   spline samples along the linear interpolant of their values (§4.1,
  *   against wood-grain; optional jittering of the start as in VTK);
- *   rays stop at 99 % opacity.
+ *   rays stop at 99 % opacity. **Empty-space skipping** (EmptySpaceSkipping,
+ *   on): by the convex hull property of the Bezier form an element's values
+ *   lie within its coefficients' range; rays jump over the elements whose
+ *   range maps to zero opacity (or, for isosurfaces, holds no iso value),
+ *   which is exact. Patches may be placed by any invertible affine map
+ *   (vtkLRSplineField: "LRPhysicalTransform" with 12 values).
  * - **vtkVolumeProperty**: the color transfer function and scalar opacity
  *   (sampled into a 1D texture over their ranges), Shade with the exact
- *   gradient: VTK's ambient / diffuse / specular model (two-sided, the
- *   renderer's first light) or Fuchs' diffuse model max(0.4, |l.n|)
+ *   gradient: VTK's ambient / diffuse / specular model (two-sided, summed
+ *   over the renderer's lights, at most 8, as directional lights) or Fuchs'
+ *   diffuse model max(0.4, |l.n|) (the first light)
  *   (ShadingModel); the iso values of the isosurface blend mode.
  * - **Blend modes**: composite, maximum and minimum intensity, and
  *   isosurface: the crossings found between samples are refined by
@@ -186,6 +192,21 @@ public:
 
   ///@{
   /**
+   * Empty-space skipping (default on): rays jump over the elements whose
+   * Bezier coefficients (which bound the element's values: convex hull
+   * property) map to zero opacity, or, for isosurfaces, hold no iso value.
+   * Exact: skipped elements add nothing.
+   */
+  vtkSetMacro(EmptySpaceSkipping, bool);
+  vtkGetMacro(EmptySpaceSkipping, bool);
+  vtkBooleanMacro(EmptySpaceSkipping, bool);
+  ///@}
+
+  /// Elements skipped in the last render (empty-space skipping).
+  vtkIdType GetNumberOfSkippedElements();
+
+  ///@{
+  /**
    * Transfer-function samples per spline step (§4.1). Default 4; 1 turns the
    * supersampling off.
    */
@@ -230,9 +251,12 @@ public:
 
   ///@{
   /**
-   * Largest number of samples per ray. Default 8192.
+   * Largest number of samples per ray. 0 (default): automatic, enough for a
+   * ray across the whole box at the finest step (adaptive: the smallest
+   * element's step times StepScale; fixed: SampleDistance), so that no ray is
+   * cut short; a positive value caps the work per pixel (rays stop there).
    */
-  vtkSetClampMacro(MaximumNumberOfSteps, int, 16, 1000000);
+  vtkSetClampMacro(MaximumNumberOfSteps, int, 0, VTK_INT_MAX);
   vtkGetMacro(MaximumNumberOfSteps, int);
   ///@}
 
@@ -251,6 +275,7 @@ public:
    */
   vtkSetMacro(CountSamples, bool);
   vtkGetMacro(CountSamples, bool);
+  vtkBooleanMacro(CountSamples, bool);
 
   /**
    * Bytes of spline data on the GPU: coefficients, element boxes and
@@ -300,15 +325,19 @@ protected:
   double StepScale = 1.0;
   double SampleDistance = 0.0;
   int Supersampling = 4;
+  bool EmptySpaceSkipping = true;
   bool UseJittering = false;
   int ShadingModel = PHONG;
   int IsosurfaceBisections = 16;
-  int MaximumNumberOfSteps = 8192;
+  int MaximumNumberOfSteps = 0;
   bool CountSamples = false;
 
 private:
   vtkLRSplineVolumeMapper(const vtkLRSplineVolumeMapper&) = delete;
   void operator=(const vtkLRSplineVolumeMapper&) = delete;
+
+  // vtkErrorMacro for the current error unless it was reported already.
+  void ReportError();
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -269,10 +269,11 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   this->UpdateTubeCore();
   if (this->NeedToUploadTubes())
   {
+    this->UploadFailed = false;
     this->UploadTubes(window);
     this->UploadTime.Modified();
   }
-  if (this->Core->GetNumberOfSegments() == 0)
+  if (this->Core->GetNumberOfSegments() == 0 || this->UploadFailed)
   {
     return;
   }
@@ -401,7 +402,9 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
   }
   if (!ok)
   {
-    vtkErrorMacro(<< "Could not upload the tubes buffer to the GPU.");
+    vtkErrorMacro(<< "Could not upload the tubes buffer to the GPU: "
+                  << vtkSplineVizGPUBuffer::GetLastUploadError());
+    this->UploadFailed = true;
   }
   return ok;
 }

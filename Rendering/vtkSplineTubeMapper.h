@@ -216,6 +216,13 @@ protected:
   /// True when the data on the GPU is older than the core.
   bool NeedToUploadTubes() const { return this->UploadTime < this->CoreBuildTime; }
 
+  /**
+   * Set by UploadTubes() (and UploadTubeBuffers()) when the data could not be
+   * put on the GPU (too large for its limits, out of memory): then nothing is
+   * drawn until the data changes. Reset before every upload.
+   */
+  bool UploadFailed = false;
+
   /// Rebuild the core if the input, settings or coloring changed. Returns
   /// true when it was rebuilt.
   bool UpdateTubeCore();

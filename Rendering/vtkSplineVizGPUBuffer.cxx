@@ -9,6 +9,26 @@
 
 #include <vtk_glew.h>
 
+#include <cstdlib>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace
+{
+std::string& LastUploadError()
+{
+  static std::string message; // the render thread's
+  return message;
+}
+}
+
+//------------------------------------------------------------------------------
+const std::string& vtkSplineVizGPUBuffer::GetLastUploadError()
+{
+  return LastUploadError();
+}
+
 //------------------------------------------------------------------------------
 vtkSplineVizGPUBuffer::vtkSplineVizGPUBuffer() = default;
 
@@ -16,10 +36,44 @@ vtkSplineVizGPUBuffer::vtkSplineVizGPUBuffer() = default;
 vtkSplineVizGPUBuffer::~vtkSplineVizGPUBuffer() = default;
 
 //------------------------------------------------------------------------------
+size_t vtkSplineVizGPUBuffer::GetMaximumNumberOfTexels(vtkOpenGLRenderWindow*)
+{
+  GLint glLimit = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &glLimit);
+  size_t limit = glLimit > 0 ? static_cast<size_t>(glLimit) : std::numeric_limits<size_t>::max();
+  if (const char* forced = std::getenv("SPLINEVIZ_GPU_BUFFER_LIMIT"))
+  {
+    char* end = nullptr;
+    const unsigned long long value = std::strtoull(forced, &end, 10);
+    if (end != forced && value < limit)
+    {
+      limit = static_cast<size_t>(value);
+    }
+  }
+  return limit;
+}
+
+//------------------------------------------------------------------------------
 bool vtkSplineVizGPUBuffer::Upload(vtkOpenGLRenderWindow* window, const void* data, size_t texels,
   int components, int vtkType, unsigned int glInternalFormat)
 {
-  const size_t bytes = texels * components * vtkDataArray::GetDataTypeSize(vtkType);
+  const size_t texelBytes =
+    static_cast<size_t>(components) * static_cast<size_t>(vtkDataArray::GetDataTypeSize(vtkType));
+  const size_t limit = GetMaximumNumberOfTexels(window);
+  if (texels > limit)
+  {
+    std::ostringstream msg;
+    msg << "the data needs a GPU buffer of " << texels << " texels (" << texels * texelBytes
+        << " bytes); this GPU allows at most " << limit
+        << " texels per buffer (GL_MAX_TEXTURE_BUFFER_SIZE"
+        << (std::getenv("SPLINEVIZ_GPU_BUFFER_LIMIT") ? ", lowered by SPLINEVIZ_GPU_BUFFER_LIMIT"
+                                                      : "")
+        << "): nothing is drawn";
+    LastUploadError() = msg.str();
+    this->ReleaseGraphicsResources(window);
+    return false;
+  }
+  const size_t bytes = texels * texelBytes;
   if (!this->Buffer)
   {
     this->Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
@@ -29,9 +83,17 @@ bool vtkSplineVizGPUBuffer::Upload(vtkOpenGLRenderWindow* window, const void* da
   const unsigned char zeros[16] = { 0 };
   const void* source = texels > 0 ? data : zeros;
   const size_t uploadBytes = texels > 0 ? bytes : sizeof(zeros);
-  if (!this->Buffer->Upload(static_cast<const unsigned char*>(source), uploadBytes,
-        vtkOpenGLBufferObject::TextureBuffer))
+  for (int i = 0; i < 64 && glGetError() != GL_NO_ERROR; ++i)
   {
+    // errors of earlier calls are not this upload's
+  }
+  if (!this->Buffer->Upload(static_cast<const unsigned char*>(source), uploadBytes,
+        vtkOpenGLBufferObject::TextureBuffer) ||
+    glGetError() == GL_OUT_OF_MEMORY)
+  {
+    LastUploadError() = "the GPU could not allocate a buffer of " + std::to_string(uploadBytes) +
+      " bytes (GL_OUT_OF_MEMORY): nothing is drawn";
+    this->ReleaseGraphicsResources(window);
     return false;
   }
   if (this->Texture)
@@ -44,6 +106,9 @@ bool vtkSplineVizGPUBuffer::Upload(vtkOpenGLRenderWindow* window, const void* da
   const unsigned int count = static_cast<unsigned int>(texels > 0 ? texels : 1);
   if (!this->Texture->CreateTextureBuffer(count, components, vtkType, this->Buffer))
   {
+    LastUploadError() = "the GPU could not create a buffer texture of " + std::to_string(count) +
+      " texels: nothing is drawn";
+    this->ReleaseGraphicsResources(window);
     return false;
   }
   this->Bytes = texels > 0 ? bytes : 0;
@@ -85,6 +150,7 @@ void vtkSplineVizGPUBuffer::ReleaseGraphicsResources(vtkWindow* window)
   {
     this->Buffer->ReleaseGraphicsResources();
   }
+  this->Texture = nullptr;
   this->Bytes = 0;
   this->Texels = 0;
 }

@@ -8,6 +8,16 @@
  * one vtkOpenGLBufferObject and the vtkTextureObject viewing it, uploads data
  * once per data change and counts the bytes it holds on the GPU.
  *
+ * Hostile sizes: an upload larger than the GPU allows (more texels than
+ * GL_MAX_TEXTURE_BUFFER_SIZE, more bytes than a GLsizeiptr, or a buffer the
+ * driver cannot allocate: GL_OUT_OF_MEMORY after glBufferData) fails with an
+ * error that says what was asked and what the limit is, and the buffer is
+ * released (IsValid() false), so that the mapper draws nothing instead of
+ * stale or partial data. The environment variable
+ * SPLINEVIZ_GPU_BUFFER_LIMIT (texels) lowers the limit, to test that path
+ * with small data. Upload() reports nothing itself: the mapper says so
+ * with vtkErrorMacro, quoting GetLastUploadError().
+ *
  * Not wrapped (private to the module).
  */
 #ifndef vtkSplineVizGPUBuffer_h
@@ -17,6 +27,7 @@
 #include "vtkSmartPointer.h"
 
 #include <cstddef>
+#include <string>
 
 class vtkOpenGLBufferObject;
 class vtkOpenGLRenderWindow;
@@ -44,6 +55,20 @@ public:
   void Deactivate();
 
   void ReleaseGraphicsResources(vtkWindow* window);
+
+  /// True after a successful upload (false before, after a failed one and after release).
+  bool IsValid() const { return this->Texture != nullptr; }
+
+  /**
+   * The largest number of texels one buffer may hold in this context:
+   * GL_MAX_TEXTURE_BUFFER_SIZE, or SPLINEVIZ_GPU_BUFFER_LIMIT when that is
+   * set and smaller.
+   */
+  static size_t GetMaximumNumberOfTexels(vtkOpenGLRenderWindow* window);
+
+  /// Why the last failed Upload() failed (for the mapper's error message; kept after later
+  /// successes).
+  static const std::string& GetLastUploadError();
 
   /// Bytes held on the GPU (0 before the first upload).
   size_t GetNumberOfBytes() const { return this->Bytes; }

@@ -245,6 +245,7 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   if (numNodes >= (vtkIdType(1) << 30))
   {
     vtkErrorMacro(<< "Too many line vertices (" << numNodes << "); at most 2^30 are supported.");
+    this->UploadFailed = true;
     in.StripFirsts.clear();
     in.StripCounts.clear();
     return;
@@ -379,7 +380,9 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   }
   if (!ok)
   {
-    vtkErrorMacro(<< "Could not upload the lines to the GPU.");
+    vtkErrorMacro(<< "Could not upload the lines to the GPU: "
+                  << vtkSplineVizGPUBuffer::GetLastUploadError());
+    this->UploadFailed = true;
   }
 }
 
@@ -473,7 +476,8 @@ void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
       !in.JointsBuffer.Upload(
         window, in.Joints.data(), in.Joints.size(), 1, VTK_TYPE_UINT32, GL_R32UI))
     {
-      vtkErrorMacro(<< "Could not upload the fix-up's segment lists.");
+      vtkErrorMacro(<< "Could not upload the fix-up's segment lists: "
+                    << vtkSplineVizGPUBuffer::GetLastUploadError());
       in.FixedSegments.clear();
       in.Joints.clear();
     }

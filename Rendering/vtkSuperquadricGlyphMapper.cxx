@@ -49,6 +49,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -72,6 +73,7 @@ public:
   const void* UploadedTensors = nullptr;
   vtkMTimeType UploadedTensorsTime = 0;
   int BytesPerGlyph = 0;
+  bool TooLarge = false; // the glyphs did not fit on the GPU: draw nothing
 };
 
 namespace
@@ -279,7 +281,7 @@ void vtkSuperquadricGlyphMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
 void vtkSuperquadricGlyphMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* actor)
 {
   const int numVerts = this->VBOs->GetNumberOfTuples("vertexMC");
-  if (numVerts > 0)
+  if (numVerts > 0 && !this->Internal->TooLarge)
   {
     this->UpdateShaders(this->Primitives[PrimitiveTris], ren, actor);
     glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(numVerts));
@@ -347,12 +349,44 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
       this->Colors->GetNumberOfComponents() == 4;
   }
 
-  this->VBOs->CacheDataArray("vertexMC", poly->GetPoints()->GetData(), ren, VTK_FLOAT);
-  this->VBOs->CacheDataArray("tensorDiagMC", diag, ren, VTK_FLOAT);
-  this->VBOs->CacheDataArray("tensorOffMC", off, ren, VTK_FLOAT);
-  this->VBOs->CacheDataArray(
-    "glyphScalarColor", in.HaveColors ? this->Colors : nullptr, ren, VTK_UNSIGNED_CHAR);
-  this->VBOs->BuildAllVBOs(ren);
+  // Hostile sizes: one draw call of GLsizei points, and the limit of
+  // SPLINEVIZ_GPU_BUFFER_LIMIT (elements per GPU buffer, to test this path);
+  // a buffer the driver cannot allocate (GL_OUT_OF_MEMORY) is caught below.
+  // Either way nothing is drawn and the data is not retried until it changes.
+  const vtkIdType numGlyphs = poly->GetNumberOfPoints();
+  vtkIdType limit = VTK_INT_MAX;
+  if (const char* forced = std::getenv("SPLINEVIZ_GPU_BUFFER_LIMIT"))
+  {
+    limit = std::min<vtkIdType>(limit, std::strtoll(forced, nullptr, 10));
+  }
+  in.TooLarge = numGlyphs > limit;
+  if (in.TooLarge)
+  {
+    vtkErrorMacro(<< numGlyphs << " glyphs are more than one GPU draw can hold (at most " << limit
+                  << (std::getenv("SPLINEVIZ_GPU_BUFFER_LIMIT")
+                         ? ", lowered by SPLINEVIZ_GPU_BUFFER_LIMIT"
+                         : "")
+                  << "): nothing is drawn");
+  }
+  else
+  {
+    for (int i = 0; i < 64 && glGetError() != GL_NO_ERROR; ++i)
+    {
+      // errors of earlier calls are not this upload's
+    }
+    this->VBOs->CacheDataArray("vertexMC", poly->GetPoints()->GetData(), ren, VTK_FLOAT);
+    this->VBOs->CacheDataArray("tensorDiagMC", diag, ren, VTK_FLOAT);
+    this->VBOs->CacheDataArray("tensorOffMC", off, ren, VTK_FLOAT);
+    this->VBOs->CacheDataArray(
+      "glyphScalarColor", in.HaveColors ? this->Colors : nullptr, ren, VTK_UNSIGNED_CHAR);
+    this->VBOs->BuildAllVBOs(ren);
+    if (glGetError() == GL_OUT_OF_MEMORY)
+    {
+      in.TooLarge = true;
+      vtkErrorMacro(<< "the GPU could not allocate the buffers of " << numGlyphs
+                    << " glyphs (GL_OUT_OF_MEMORY): nothing is drawn");
+    }
+  }
   if (in.UploadedTensors != diag || in.UploadedTensorsTime < diag->GetMTime())
   {
     ++this->UploadCount;

@@ -301,7 +301,10 @@ void vtkTessellatedTubeMapper::UploadTubes(vtkOpenGLRenderWindow* window)
     });
   if (!this->FramesBuffer->Upload(window, frames.data(), numNodes, 2, VTK_TYPE_INT16, GL_RG16I))
   {
-    vtkErrorMacro(<< "Could not upload the orthogonal vectors to the GPU.");
+    vtkErrorMacro(<< "Could not upload the orthogonal vectors to the GPU: "
+                  << vtkSplineVizGPUBuffer::GetLastUploadError());
+    this->UploadFailed = true;
+    return;
   }
   this->BuildChunks();
 }
@@ -749,7 +752,8 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   if (!in.InstancesBuffer.Upload(window, in.Instances.data(), static_cast<size_t>(offsets.back()),
         1, VTK_TYPE_UINT32, GL_R32UI))
   {
-    vtkErrorMacro(<< "Could not upload the instance list.");
+    vtkErrorMacro(<< "Could not upload the instance list: "
+                  << vtkSplineVizGPUBuffer::GetLastUploadError());
     in.Draws.clear();
   }
   in.LastView = view;

@@ -4,6 +4,8 @@
 #
 #   scripts/setup.sh            # install missing packages, configure, build
 #   SPLINEVIZ_SKIP_INSTALL=1 scripts/setup.sh   # do not touch packages
+#   SPLINEVIZ_CMAKE_ARGS="..." scripts/setup.sh  # extra configure options
+#                                  (scripts/test.sh --sanitize uses them)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${SPLINEVIZ_BUILD_DIR:-$here/build}"
@@ -12,7 +14,8 @@ build="${SPLINEVIZ_BUILD_DIR:-$here/build}"
 # package needs for the components SplineViz uses; Xvfb for headless
 # rendering (Mesa llvmpipe: OpenGL 4.5 with tessellation); GLM; DIPY for the
 # real diffusion data of the tensor examples; NiBabel, the independent
-# implementation the neuroimaging IO tests compare with.
+# implementation the neuroimaging IO tests compare with; clang with its
+# sanitizer and libFuzzer runtimes and llvm-symbolizer for the sanitizer build.
 packages=(
   build-essential cmake
   paraview-dev python3-paraview
@@ -24,6 +27,7 @@ packages=(
   libglm-dev
   xvfb xauth x11-utils
   python3-dipy python3-nibabel
+  clang libclang-rt-14-dev llvm
 )
 
 if [ -z "${SPLINEVIZ_SKIP_INSTALL:-}" ]; then
@@ -44,7 +48,8 @@ if [ -z "${SPLINEVIZ_SKIP_INSTALL:-}" ]; then
 fi
 
 echo "== configuring $build"
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release
+# shellcheck disable=SC2086 # SPLINEVIZ_CMAKE_ARGS is a list of options
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release ${SPLINEVIZ_CMAKE_ARGS:-}
 echo "== building with $(nproc) jobs"
 cmake --build "$build" -j "$(nproc)"
 echo "== built; to use it: source $build/splineviz-env.sh"

@@ -5,13 +5,62 @@
 #
 #   scripts/test.sh                 # everything
 #   scripts/test.sh -R RayCast      # extra arguments go to ctest
+#   scripts/test.sh --sanitize      # the same in the sanitizer build:
+#                                   # clang, ASan + UBSan (+ LeakSanitizer),
+#                                   # libFuzzer targets, in build-sanitize/
+#   scripts/test.sh --sanitize --ci # the sanitizer subset CI runs (see
+#                                   # README, "Sanitizers and fuzzing")
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-build="${SPLINEVIZ_BUILD_DIR:-$here/build}"
-"$here/scripts/setup.sh"
+sanitize=""
+ci_subset=""
+args=()
+for a in "$@"; do
+  case "$a" in
+    --sanitize) sanitize=1 ;;
+    --ci) ci_subset=1 ;;
+    *) args+=("$a") ;;
+  esac
+done
+if [ -n "$ci_subset" ] && [ -z "$sanitize" ]; then
+  echo "--ci goes with --sanitize" >&2
+  exit 2
+fi
+
+if [ -n "$sanitize" ]; then
+  build="${SPLINEVIZ_SANITIZE_BUILD_DIR:-$here/build-sanitize}"
+  # -O1: the usual optimisation for sanitized code (fast enough, exact
+  # stacks); asserts stay on. The normal build (build/) is not affected.
+  export SPLINEVIZ_CMAKE_ARGS="-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+-DCMAKE_C_FLAGS_RELEASE=-O1 -DCMAKE_CXX_FLAGS_RELEASE=-O1 \
+-DSPLINEVIZ_SANITIZE=ON -DSPLINEVIZ_FUZZ=ON ${SPLINEVIZ_CMAKE_ARGS:-}"
+  if [ -n "$ci_subset" ]; then
+    # CI's time budget: no plugin and no benchmark programs (the plugin's
+    # pvbatch tests run in the normal suite and in the full sanitizer run).
+    SPLINEVIZ_CMAKE_ARGS="$SPLINEVIZ_CMAKE_ARGS -DSPLINEVIZ_BUILD_PLUGIN=OFF -DSPLINEVIZ_BUILD_BENCHMARKS=OFF"
+  else
+    SPLINEVIZ_CMAKE_ARGS="$SPLINEVIZ_CMAKE_ARGS -DSPLINEVIZ_BUILD_PLUGIN=ON -DSPLINEVIZ_BUILD_BENCHMARKS=ON"
+  fi
+else
+  build="${SPLINEVIZ_BUILD_DIR:-$here/build}"
+fi
+SPLINEVIZ_BUILD_DIR="$build" "$here/scripts/setup.sh"
 cd "$build"
 # Exercise the threaded code paths (vtkSMPTools is sequential by default).
 export VTK_SMP_BACKEND_IN_USE="${VTK_SMP_BACKEND_IN_USE:-STDThread}"
-echo "== running the tests"
-"$here/scripts/xvfb-run-if-needed.sh" ctest --output-on-failure --timeout 900 "$@"
+timeout=900
+if [ -n "$sanitize" ]; then
+  timeout=2700
+  export ASAN_SYMBOLIZER_PATH="${ASAN_SYMBOLIZER_PATH:-$(command -v llvm-symbolizer || true)}"
+fi
+if [ -n "$ci_subset" ]; then
+  # Every test but the ones listed in Testing/Sanitizers/ci-exclude.txt
+  # (slow GL image tests whose code paths other GL tests cover).
+  exclude="$(grep -v '^#' "$here/Testing/Sanitizers/ci-exclude.txt" | grep -v '^$' | paste -sd '|' || true)"
+  if [ -n "$exclude" ]; then
+    args=(-E "$exclude" ${args[@]+"${args[@]}"})
+  fi
+fi
+echo "== running the tests${sanitize:+ (sanitizer build)}"
+"$here/scripts/xvfb-run-if-needed.sh" ctest --output-on-failure --timeout "$timeout" ${args[@]+"${args[@]}"}
 echo "== test images (rendered and, for failures, differences): $build/Testing/Temporary"

@@ -285,6 +285,13 @@ if os.path.exists(lr_file):
     render([stream_actor, mesh1_actor], "lr-spline-streamlines.png", (2.4, -1.6, 1.9),
            (0.45, 0.45, 0.4), view_up=(0, 0, 1))
 
+# Direct volume rendering of the spline itself (Fuchs §4: exact evaluation on
+# the GPU, no resampling): |v| of patch 1 with streamline tubes inside, and
+# isosurfaces refined on the exact spline (Examples/Python/lr_spline_volume.py).
+if hasattr(splineviz, "vtkLRSplineVolumeMapper"):
+    runpy.run_path(os.path.join(os.path.dirname(os.path.abspath(__file__)), "lr_spline_volume.py"),
+                   init_globals={"__doc__": None}, run_name="lr_spline_volume")
+
 # -- Superquadric tensor glyphs (Hlawitschka et al.; Kindlmann 2004) ---------
 # A synthetic tensor volume whose principal direction winds around the z axis
 # and whose shape goes from linear (outside) through planar to nearly

@@ -25,7 +25,10 @@
 // (two-sided, as VTK's volume mappers) or Fuchs' diffuse max(0.4, |l . n|).
 // Constants the mapper defines: LR_DU, LR_DV, LR_DW (degrees, <= 3), LR_NC
 // (components), LR_COMPONENT (-1: the vector's magnitude), LR_BLEND,
-// LR_SHADE, LR_FUCHS, LR_TRIM, LR_SAMPLE_COUNT, LR_MAX_PATCHES, LR_ISO.
+// LR_SHADE, LR_FUCHS, LR_TRIM, LR_SAMPLE_COUNT, LR_MAX_PATCHES, LR_ISO,
+// LR_PATCHES (the number of patches), LR_SUPERSAMPLING and LR_LIGHTS: loop bounds known
+// at compile time, so that the compiler unrolls those loops (llvmpipe caps the
+// loop iterations of a whole invocation at 65535, shared by all loops).
 
 //VTK::Output::Dec
 
@@ -33,12 +36,12 @@
 #define SV_OUT(T) out T
 #define SV_INOUT(T) inout T
 
-// Patches (data coordinates x = offset + scale * u).
-uniform int lrNumberOfPatches;
+// Patches (data coordinates x = A u + offset; lrPatchInverse is A^-1).
 uniform vec3 lrPatchLo[LR_MAX_PATCHES];     // parameter domain
 uniform vec3 lrPatchHi[LR_MAX_PATCHES];
-uniform vec3 lrPatchScale[LR_MAX_PATCHES];
+uniform mat3 lrPatchInverse[LR_MAX_PATCHES];
 uniform vec3 lrPatchOffset[LR_MAX_PATCHES];
+uniform vec3 lrPatchEdge[LR_MAX_PATCHES]; // data length of a unit parameter step, per direction
 uniform vec3 lrPatchBoxLo[LR_MAX_PATCHES];    // the patch's box, data coordinates
 uniform vec3 lrPatchBoxHi[LR_MAX_PATCHES];
 uniform int lrPatchBlocks[3 * LR_MAX_PATCHES]; // forest resolution (3 per patch)
@@ -49,7 +52,7 @@ uniform usamplerBuffer lrHeads;
 uniform usamplerBuffer lrNodeWords;
 uniform samplerBuffer lrNodeSplits;
 uniform usamplerBuffer lrOctree;
-uniform samplerBuffer lrBoxes;        // per element: lo (xyz), hi (xyz), parameter space
+uniform samplerBuffer lrBoxes;        // per element: lo (xyz) + skip flag, hi (xyz), parameter space
 uniform usamplerBuffer lrOffsets;     // per element: first coefficient
 uniform samplerBuffer lrCoefficients; // Bernstein coefficients
 
@@ -73,7 +76,6 @@ uniform sampler2D lrTrimBack;  // farthest back face
 uniform int lrAdaptive;         // Eq. 4 (1) or a fixed step (0)
 uniform float lrStepScale;      // times the element's shortest side / 2^degree
 uniform float lrSampleDistance; // fixed step, world units
-uniform int lrSupersampling;    // transfer-function samples per spline step
 uniform int lrMaxSteps;
 uniform float lrJitter;         // 0: none, 1: a random start within the first step
 
@@ -85,8 +87,8 @@ uniform float lrAmbient;
 uniform float lrDiffuse;
 uniform float lrSpecular;
 uniform float lrSpecularPower;
-uniform vec3 lrLightDirection; // world coordinates, toward the light
-uniform vec3 lrLightColor;     // diffuse color times intensity
+uniform vec3 lrLightDirections[LR_LIGHTS]; // world coordinates, toward each light
+uniform vec3 lrLightColors[LR_LIGHTS];     // diffuse color times intensity
 uniform float lrIsoValues[8];
 uniform int lrNumberOfIsoValues;
 uniform int lrBisections;
@@ -119,6 +121,7 @@ int lrCurrentPatch = -1;
 vec3 lrCurrentLo = vec3(1.0);
 vec3 lrCurrentHi = vec3(0.0);
 int lrCurrentOffset = 0;
+bool lrCurrentSkip = false; // the element adds nothing (empty-space skipping)
 int lrSamples = 0;
 float lrWorldPerData = 1.0; // world length of a data unit along the ray
 
@@ -151,11 +154,11 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
   ++lrSamples;
   int p = -1;
   vec3 u = vec3(0.0);
-  for (int q = 0; q < lrNumberOfPatches; ++q)
+  for (int q = 0; q < LR_PATCHES; ++q)
   {
     // Points within a rounding tolerance of the domain count as inside and
     // are moved onto it (ray ends computed on the box faces).
-    vec3 uq = (x - lrPatchOffset[q]) / lrPatchScale[q];
+    vec3 uq = lrPatchInverse[q] * (x - lrPatchOffset[q]);
     vec3 tol = 1e-5 * (lrPatchHi[q] - lrPatchLo[q]);
     if (all(greaterThanEqual(uq, lrPatchLo[q] - tol)) && all(lessThanEqual(uq, lrPatchHi[q] + tol)))
     {
@@ -182,7 +185,9 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
     }
     e += starts.w;
     lrCurrentPatch = p;
-    lrCurrentLo = texelFetch(lrBoxes, 2 * e).xyz;
+    vec4 lo = texelFetch(lrBoxes, 2 * e);
+    lrCurrentLo = lo.xyz;
+    lrCurrentSkip = lo.w > 0.5;
     lrCurrentHi = texelFetch(lrBoxes, 2 * e + 1).xyz;
     lrCurrentOffset = int(texelFetch(lrOffsets, e).x);
   }
@@ -190,8 +195,9 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
   vec3 s = clamp((u - lrCurrentLo) / size, 0.0, 1.0);
   vec3 g;
   value = lrValue(lrCurrentOffset, s, g);
-  vec3 side = size * lrPatchScale[p];
-  gradient = g / side;
+  // d/dx = (d/du) A^-1 (a row vector times the inverse).
+  gradient = (g / size) * lrPatchInverse[p];
+  vec3 side = size * lrPatchEdge[p];
   minSide = min(side.x, min(side.y, side.z));
   return true;
 }
@@ -221,17 +227,39 @@ vec3 lrShade(vec3 color, vec3 gradient, vec3 dir)
     n = -n;
   }
 #if LR_FUCHS
-  return color * max(0.4, abs(dot(lrLightDirection, n)));
+  // Fuchs' model has one light: the first.
+  return color * max(0.4, abs(dot(lrLightDirections[0], n)));
 #else
-  float diffuse = max(dot(lrLightDirection, n), 0.0);
-  vec3 h = normalize(lrLightDirection + toEye);
-  float specular = diffuse > 0.0 ? pow(max(dot(h, n), 0.0), lrSpecularPower) : 0.0;
-  return color * (lrAmbient + lrDiffuse * diffuse * lrLightColor) +
-    lrSpecular * specular * lrLightColor;
+  // VTK's model, summed over the lights (as VTK's volume mappers do).
+  vec3 diffuse = vec3(0.0);
+  vec3 specular = vec3(0.0);
+  for (int i = 0; i < LR_LIGHTS; ++i)
+  {
+    float d = max(dot(lrLightDirections[i], n), 0.0);
+    vec3 h = normalize(lrLightDirections[i] + toEye);
+    float sp = d > 0.0 ? pow(max(dot(h, n), 0.0), lrSpecularPower) : 0.0;
+    diffuse += d * lrLightColors[i];
+    specular += sp * lrLightColors[i];
+  }
+  return color * (lrAmbient + lrDiffuse * diffuse) + lrSpecular * specular;
 #endif
 #else
   return color;
 #endif
+}
+
+// The opacity of a step of `x` unit distances for opacity `a` per unit
+// distance, 1 - (1 - a)^x, accurate also for the tiny values of fine steps
+// (1 - pow() in single precision loses them: series for small terms).
+float lrCorrectedOpacity(float a, float x)
+{
+  if (a >= 1.0)
+  {
+    return 1.0;
+  }
+  float l = a < 0.05 ? -a * (1.0 + a * (0.5 + a * (1.0 / 3.0 + a * 0.25))) : log(1.0 - a);
+  float y = x * l; // log(1 - alpha) <= 0
+  return y > -0.05 ? -y * (1.0 + y * (0.5 + y * (1.0 / 6.0 + y / 24.0))) : 1.0 - exp(y);
 }
 
 // Step length (data units) after a sample in an element of shortest side
@@ -245,12 +273,24 @@ float lrStep(float minSide)
   return lrSampleDistance / lrWorldPerData;
 }
 
+// The ray parameter where the ray leaves the current element.
+float lrElementExit(vec3 origin, vec3 dir)
+{
+  mat3 m = lrPatchInverse[lrCurrentPatch];
+  vec3 u0 = m * (origin - lrPatchOffset[lrCurrentPatch]);
+  vec3 ud = m * dir;
+  vec3 ta = (lrCurrentLo - u0) / ud;
+  vec3 tb = (lrCurrentHi - u0) / ud;
+  vec3 tf = max(ta, tb);
+  return min(min(tf.x, tf.y), tf.z);
+}
+
 // The next ray parameter after t inside some patch box (the ray crosses a gap
 // between patches), or 1e30 for none.
 float lrNextEntry(vec3 origin, vec3 dir, float t, float eps)
 {
   float next = 1e30;
-  for (int q = 0; q < lrNumberOfPatches; ++q)
+  for (int q = 0; q < LR_PATCHES; ++q)
   {
     vec3 ta = (lrPatchBoxLo[q] - origin) / dir;
     vec3 tb = (lrPatchBoxHi[q] - origin) / dir;
@@ -363,12 +403,12 @@ void main()
 #if LR_BLEND == 0
       // Front-to-back compositing of [prevT, t], the transfer function
       // supersampled along the linear interpolant of the two values.
-      float ds = (t - prevT) * lrWorldPerData / float(lrSupersampling);
-      for (int k = 0; k < lrSupersampling; ++k)
+      float ds = (t - prevT) * lrWorldPerData / float(LR_SUPERSAMPLING);
+      for (int k = 0; k < LR_SUPERSAMPLING; ++k)
       {
-        float f = (float(k) + 0.5) / float(lrSupersampling);
+        float f = (float(k) + 0.5) / float(LR_SUPERSAMPLING);
         vec4 c = lrTransferFunction(mix(prevValue, value, f));
-        float alpha = 1.0 - pow(max(0.0, 1.0 - c.a), ds / lrUnitDistance);
+        float alpha = lrCorrectedOpacity(c.a, ds / lrUnitDistance);
         vec3 shaded = lrShade(c.rgb, mix(prevGradient, gradient, f), dir);
         result.rgb += (1.0 - result.a) * alpha * shaded;
         result.a += (1.0 - result.a) * alpha;
@@ -466,7 +506,19 @@ void main()
       break;
     }
     float eps = 1e-6 * (t1 - t0);
-    t = valid ? t + max(lrStep(minSide), eps) : lrNextEntry(origin, dir, t, 10.0 * eps);
+    if (valid && lrCurrentSkip)
+    {
+      // Empty-space skipping: by the convex hull property of the Bezier
+      // form the element's values lie in its coefficients' range, over which
+      // the transfer function is transparent (or which holds no iso value):
+      // jump to its exit; nothing is composited across it.
+      t = max(lrElementExit(origin, dir), t) + 10.0 * eps;
+      prevValid = false;
+    }
+    else
+    {
+      t = valid ? t + max(lrStep(minSide), eps) : lrNextEntry(origin, dir, t, 10.0 * eps);
+    }
     if (t > 1e29)
     {
       break;

@@ -83,43 +83,88 @@ int lrFindOctree(vec3 u, vec3 lo, vec3 hi, int octree)
 }
 
 // Bernstein basis values b[i] = B_i^n(s) and derivatives d[i], i = 0..n,
-// n <= 3 (the recurrence of vtkLRSplineBezierVolume::Bernstein).
+// n <= 3, in closed form (no loops: shader loops are costly, and llvmpipe
+// caps the loop iterations of a whole shader invocation).
 void lrBernstein(int n, real s, SV_OUT(vec4) b, SV_OUT(vec4) d)
 {
   real t = 1.0 - s;
-  b = vec4(1.0, 0.0, 0.0, 0.0);
-  d = vec4(0.0, 0.0, 0.0, 0.0);
-  // Degree n - 1 first (for the derivative).
-  for (int k = 1; k < n; ++k)
-  {
-    real saved = 0.0;
-    for (int i = 0; i < k; ++i)
-    {
-      real tmp = b[i];
-      b[i] = saved + t * tmp;
-      saved = s * tmp;
-    }
-    b[k] = saved;
-  }
   if (n == 0)
   {
-    return;
+    b = vec4(1.0, 0.0, 0.0, 0.0);
+    d = vec4(0.0, 0.0, 0.0, 0.0);
   }
-  real rn = real(n);
-  d[0] = -rn * b[0];
-  for (int i = 1; i < n; ++i)
+  else if (n == 1)
   {
-    d[i] = rn * (b[i - 1] - b[i]);
+    b = vec4(t, s, 0.0, 0.0);
+    d = vec4(-1.0, 1.0, 0.0, 0.0);
   }
-  d[n] = rn * b[n - 1];
-  real saved = 0.0;
-  for (int i = 0; i < n; ++i)
+  else if (n == 2)
   {
-    real tmp = b[i];
-    b[i] = saved + t * tmp;
-    saved = s * tmp;
+    b = vec4(t * t, 2.0 * t * s, s * s, 0.0);
+    d = vec4(-2.0 * t, 2.0 * (t - s), 2.0 * s, 0.0);
   }
-  b[n] = saved;
+  else
+  {
+    b = vec4(t * t * t, 3.0 * t * t * s, 3.0 * t * s * s, s * s * s);
+    d = vec4(-3.0 * t * t, 3.0 * t * (t - 2.0 * s), 3.0 * s * (2.0 * t - s), 3.0 * s * s);
+  }
+}
+
+// One row (fixed j, k) of lrEvaluate: sum_i c_ijk B_i(s) and its derivative,
+// unrolled (du <= 3); `base` indexes coefficient (0, j, k) of the component.
+void lrRow(int base, int nc, int du, vec4 bu, vec4 gu, SV_OUT(real) row, SV_OUT(real) rowDu)
+{
+  real c = lrCoefficient(base);
+  row = c * bu[0];
+  rowDu = c * gu[0];
+  if (du >= 1)
+  {
+    c = lrCoefficient(base + nc);
+    row = row + c * bu[1];
+    rowDu = rowDu + c * gu[1];
+  }
+  if (du >= 2)
+  {
+    c = lrCoefficient(base + 2 * nc);
+    row = row + c * bu[2];
+    rowDu = rowDu + c * gu[2];
+  }
+  if (du >= 3)
+  {
+    c = lrCoefficient(base + 3 * nc);
+    row = row + c * bu[3];
+    rowDu = rowDu + c * gu[3];
+  }
+}
+
+// Add row (j, k) to the value and the three derivatives (sum in `acc`: value,
+// d/ds0, d/ds1, d/ds2).
+void lrAddRow(int offset, int du, int dv, int nc, int comp, int j, int k, vec4 bu, vec4 gu,
+  real bvj, real gvj, real bwk, real gwk, SV_INOUT(vec4) acc)
+{
+  real row;
+  real rowDu;
+  lrRow(offset + ((k * (dv + 1) + j) * (du + 1)) * nc + comp, nc, du, bu, gu, row, rowDu);
+  acc = acc + vec4(row * bvj * bwk, rowDu * bvj * bwk, row * gvj * bwk, row * bvj * gwk);
+}
+
+// The rows of one k (all j <= dv).
+void lrAddLayer(int offset, int du, int dv, int nc, int comp, int k, vec4 bu, vec4 gu, vec4 bv,
+  vec4 gv, real bwk, real gwk, SV_INOUT(vec4) acc)
+{
+  lrAddRow(offset, du, dv, nc, comp, 0, k, bu, gu, bv[0], gv[0], bwk, gwk, acc);
+  if (dv >= 1)
+  {
+    lrAddRow(offset, du, dv, nc, comp, 1, k, bu, gu, bv[1], gv[1], bwk, gwk, acc);
+  }
+  if (dv >= 2)
+  {
+    lrAddRow(offset, du, dv, nc, comp, 2, k, bu, gu, bv[2], gv[2], bwk, gwk, acc);
+  }
+  if (dv >= 3)
+  {
+    lrAddRow(offset, du, dv, nc, comp, 3, k, bu, gu, bv[3], gv[3], bwk, gwk, acc);
+  }
 }
 
 // Component `comp` of an element in Bezier form at local coordinates s in
@@ -127,7 +172,7 @@ void lrBernstein(int n, real s, SV_OUT(vec4) b, SV_OUT(vec4) d)
 // Degrees du, dv, dw <= 3; `offset` is the element's first coefficient,
 // `nc` the number of components (coefficient (i, j, k), component c, at
 // offset + ((k (dv + 1) + j) (du + 1) + i) nc + c, as in
-// vtkLRSplineBezierVolume).
+// vtkLRSplineBezierVolume). Written without loops (see lrBernstein).
 real lrEvaluate(int offset, int du, int dv, int dw, int nc, int comp, vec3 s, SV_OUT(vec3) grad)
 {
   vec4 bu;
@@ -139,28 +184,20 @@ real lrEvaluate(int offset, int du, int dv, int dw, int nc, int comp, vec3 s, SV
   lrBernstein(du, s[0], bu, gu);
   lrBernstein(dv, s[1], bv, gv);
   lrBernstein(dw, s[2], bw, gw);
-  real value = 0.0;
-  real sx = 0.0;
-  real sy = 0.0;
-  real sz = 0.0;
-  for (int k = 0; k <= dw; ++k)
+  vec4 acc = vec4(0.0, 0.0, 0.0, 0.0);
+  lrAddLayer(offset, du, dv, nc, comp, 0, bu, gu, bv, gv, bw[0], gw[0], acc);
+  if (dw >= 1)
   {
-    for (int j = 0; j <= dv; ++j)
-    {
-      real row = 0.0;
-      real rowDu = 0.0;
-      for (int i = 0; i <= du; ++i)
-      {
-        real c = lrCoefficient(offset + ((k * (dv + 1) + j) * (du + 1) + i) * nc + comp);
-        row = row + c * bu[i];
-        rowDu = rowDu + c * gu[i];
-      }
-      value = value + row * bv[j] * bw[k];
-      sx = sx + rowDu * bv[j] * bw[k];
-      sy = sy + row * gv[j] * bw[k];
-      sz = sz + row * bv[j] * gw[k];
-    }
+    lrAddLayer(offset, du, dv, nc, comp, 1, bu, gu, bv, gv, bw[1], gw[1], acc);
   }
-  grad = vec3(sx, sy, sz);
-  return value;
+  if (dw >= 2)
+  {
+    lrAddLayer(offset, du, dv, nc, comp, 2, bu, gu, bv, gv, bw[2], gw[2], acc);
+  }
+  if (dw >= 3)
+  {
+    lrAddLayer(offset, du, dv, nc, comp, 3, bu, gu, bv, gv, bw[3], gw[3], acc);
+  }
+  grad = vec3(acc[1], acc[2], acc[3]);
+  return acc[0];
 }

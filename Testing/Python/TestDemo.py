@@ -28,6 +28,8 @@ expected = [
     "lr-spline-elements.png",
     "lr-spline-g2-geometry.png",
     "lr-spline-streamlines.png",
+    "lr-spline-volume-streamlines.png",
+    "lr-spline-volume-isosurfaces.png",
     "superquadric-glyphs-gamma-0-3-20.png",
     "tensor-lines-dipy.png",
 ]

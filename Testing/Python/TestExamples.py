@@ -78,3 +78,42 @@ for picture in pictures:
     if drawn < 0.05:
         print("ERROR: the stylized lines example drew (almost) nothing in", picture)
         sys.exit(1)
+
+# lr_spline_volume.py: direct volume rendering of a real LR spline (volume
+# with streamline tubes inside; isosurfaces).
+volume_out = os.path.join(out, "TestExamples-lr-spline-volume")
+sys.argv = ["lr_spline_volume.py", volume_out]
+runpy.run_path(os.path.join(source, "Examples", "Python", "lr_spline_volume.py"),
+               run_name="__main__")
+for picture in ["lr-spline-volume-streamlines.png", "lr-spline-volume-isosurfaces.png"]:
+    drawn = drawn_fraction(os.path.join(volume_out, picture), background=(20, 23, 31),
+                           tolerance=6)
+    print("LR-spline volume example, %s: fraction drawn %.3f" % (picture, drawn))
+    if drawn < 0.1:
+        print("ERROR: the LR-spline volume example drew (almost) nothing in", picture)
+        sys.exit(1)
+
+# lr_spline_fit_image.py: DIPY's real scan fitted by an LR spline (to 10 % of
+# the range here, to keep the suite short; 2 % by default), written as .lr
+# and read back (the example checks that itself). Needs DIPY.
+if dipy is None:
+    print("DIPY not available: lr_spline_fit_image.py skipped")
+else:
+    fit_out = os.path.join(out, "TestExamples-lr-fit")
+    sys.argv = ["lr_spline_fit_image.py", fit_out, "0.1"]
+    try:
+        runpy.run_path(os.path.join(source, "Examples", "Python", "lr_spline_fit_image.py"),
+                       run_name="__main__")
+    except SystemExit as stop:
+        if stop.code not in (0, None):
+            print("ERROR: lr_spline_fit_image.py failed with", stop.code)
+            sys.exit(1)
+    if not os.path.getsize(os.path.join(fit_out, "aniso_vox.lr")):
+        print("ERROR: the fitting example wrote no .lr file")
+        sys.exit(1)
+    drawn = drawn_fraction(os.path.join(fit_out, "lr-spline-fit-aniso-vox.png"),
+                           background=(255, 255, 255), tolerance=15)
+    print("fitting example: fraction drawn %.3f" % drawn)
+    if drawn < 0.6:
+        print("ERROR: the fitting example's slices are (almost) blank")
+        sys.exit(1)

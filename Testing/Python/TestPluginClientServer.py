@@ -4,7 +4,9 @@ with splineviz.plugin.load_plugin, and renders the synthetic fibers with the
 "Ray-Cast Tubes" representation on the server. Checks that the plugin is
 loaded on the client, that the server offers the SplineViz representations,
 and that the remotely rendered tubes cover much more of the image than
-1-pixel lines.
+1-pixel lines; then the real LR-spline file as "LR-Spline Volume" (the
+spline stays on the server, which renders it), plain and trimmed by a
+sphere.
 
     pvpython TestPluginClientServer.py <pvserver executable>
 """
@@ -68,6 +70,24 @@ try:
     print("coverage: lines %.3f, ray-cast tubes on the server %.3f" % (lines, tubes))
     if tubes < 2.0 * lines or tubes < 0.1:
         print("ERROR: the ray-cast tubes were not rendered on the server")
+        sys.exit(1)
+
+    # "LR-Spline Volume": the server reads the spline and renders it.
+    path = os.path.join(os.environ["SPLINEVIZ_SOURCE_DIR"], "Testing", "Data", "External",
+                        "cube-3patch-refined.lr")
+    Hide(fibers, view)  # noqa: F405
+    spline = OpenDataFile(path)  # noqa: F405
+    volume = Show(spline, view)  # noqa: F405
+    volume.SetRepresentationType("LR-Spline Volume")
+    ColorBy(volume, ("POINTS", "Field", "Magnitude"))  # noqa: F405
+    ResetCamera(view)  # noqa: F405
+    whole = coverage("TestPluginClientServer-lr-spline-volume.png")
+    volume.TrimmingSurface = Sphere(Center=[0.5, 0.5, 0.5], Radius=0.3)  # noqa: F405
+    trimmed = coverage("TestPluginClientServer-lr-spline-volume-trimmed.png")
+    print("coverage: LR-spline volume on the server %.3f, trimmed by a sphere %.3f" % (
+        whole, trimmed))
+    if whole < 0.2 or not 0.1 * whole < trimmed < 0.5 * whole:
+        print("ERROR: the LR-spline volume was not rendered (or not trimmed) on the server")
         sys.exit(1)
     Disconnect()  # noqa: F405
 finally:

@@ -33,6 +33,8 @@ state = runpy.run_path(os.path.join(source, "Examples", "Python", name + ".py"),
 expected = {"lines": "Ray-Cast Tubes"}
 if name == "tensor_lines_state":
     expected["glyph_display"] = "Superquadric Glyphs"
+if name == "lr_spline_volume_state":
+    expected["volume"] = "LR-Spline Volume"
 for display, representation in expected.items():
     used = state[display].Representation
     print("%s: %s" % (display, used))

@@ -3,6 +3,24 @@ plugin tests draw, and measures of how much of a rendered image is drawn."""
 import os
 
 
+class Observed:
+    """Collects an algorithm's errors and warnings (its executive's errors
+    too), so that expected ones are not printed as failures."""
+
+    def __init__(self, algorithm):
+        self.errors = []
+        self.warnings = []
+        algorithm.AddObserver("ErrorEvent", self._error)
+        algorithm.AddObserver("WarningEvent", self._warning)
+        algorithm.GetExecutive().AddObserver("ErrorEvent", self._error)
+
+    def _error(self, caller, event):
+        self.errors.append(event)
+
+    def _warning(self, caller, event):
+        self.warnings.append(event)
+
+
 def output_dir():
     """Where the tests write their images (ctest: build/Testing/Temporary)."""
     out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
@@ -62,16 +80,24 @@ def coverage(view, name, stride=3, background=(255.0, 255.0, 255.0)):
     return hit / float(len(pixels)), pixels
 
 
-def drawn_fraction(png, background=None, tolerance=30):
-    """Fraction of the pixels of the image file `png` whose RGB differs from
-    `background` (default: the first pixel) by more than `tolerance` in
-    some channel."""
+def png_rgb(png):
+    """The RGB pixels of the image file `png` as an int numpy array of shape
+    (height, width, 3), the first row at the bottom (VTK's order)."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
     from vtkmodules.vtkIOImage import vtkPNGReader
 
     reader = vtkPNGReader()
     reader.SetFileName(png)
     reader.Update()
+    width, height, _ = reader.GetOutput().GetDimensions()
     rgb = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(int)
+    return rgb.reshape(height, width, 3)
+
+
+def drawn_fraction(png, background=None, tolerance=30):
+    """Fraction of the pixels of the image file `png` whose RGB differs from
+    `background` (default: the first pixel) by more than `tolerance` in
+    some channel."""
+    rgb = png_rgb(png).reshape(-1, 3)
     reference = rgb[0] if background is None else background
     return float((abs(rgb - reference).max(axis=1) > tolerance).mean())

@@ -1,0 +1,184 @@
+/**
+ * @class   vtkLRSplineVolumeRepresentation
+ * @brief   ParaView representation "LR-Spline Volume": direct volume rendering of LR-spline
+ * volumes with vtkLRSplineVolumeMapper, exact to the spline.
+ *
+ * ParaView's own unstructured-grid volume representation
+ * (vtkUnstructuredGridVolumeRepresentation) tetrahedralizes its input before
+ * any mapper sees it (vtkVolumeRepresentationPreprocessor); for the Bezier
+ * cells of vtkLRSplineReader that splits the cells through their control
+ * points, so a mapper registered with its AddVolumeMapper() hook never sees
+ * the spline. This representation is therefore a vtkVolumeRepresentation of
+ * its own (the pattern of ParaView's pvNVIDIAIndeX plugin): it hands the
+ * reader's vtkMultiBlockDataSet of VTK_BEZIER_HEXAHEDRON patches, unchanged,
+ * to vtkLRSplineVolumeMapper (Fuchs et al., "Direct interactive visualization
+ * of locally refined spline volumes", §4).
+ *
+ * What ParaView's volume representations offer and this one forwards:
+ * - the color map and opacity editor (LookupTable, ScalarOpacityFunction and
+ *   ScalarOpacityUnitDistance on the vtkVolumeProperty); the color array
+ *   (ColorArrayName, a point array of Bezier coefficients) selects the
+ *   mapper's FieldArrayName, and the lookup table's vector mode and
+ *   component (Magnitude, X, Y, Z) its VectorMode / VectorComponent, as
+ *   ParaView's image and unstructured volume representations do (without a
+ *   color array: the mapper's default field through a gray and an opacity
+ *   ramp over its range);
+ * - Shade with Ambient, Diffuse, Specular, SpecularPower; BlendMode
+ *   (composite, maximum and minimum intensity, isosurface) and the iso values
+ *   (IsosurfaceValues, as ParaView's image volume representation names them);
+ * - the block selectors of the multiblock inspector (hidden patches are not
+ *   rendered), the actor's position, orientation, scale and origin.
+ *
+ * Its own settings are the mapper's (see vtkLRSplineVolumeMapper): element
+ * search structure, k-d forest resolution, adaptive or fixed steps, step
+ * scale, sample distance, supersampling, jittering, shading model, bisection
+ * steps, maximum steps, and the trimming surface: input port 1 (optional),
+ * any polygonal data (e.g. an STL reader's output).
+ *
+ * Parallel rendering (pvserver, pvbatch with MPI): the mapper cannot
+ * composite pieces of a spline in visibility order, so this representation
+ * asks its inputs for the whole data set (no piece split) and only the first
+ * rank renders it; the others render nothing of it, and the view composites
+ * the ranks' images in visibility order (ordered compositing), which keeps the
+ * translucent picture identical to a single process. The data is never sent
+ * to the client (remote rendering is requested), since every rank holds all
+ * of it. Interactive (LOD) renders draw the outline of the patches' box.
+ *
+ * Properties of ParaView's unstructured volume representation that have no
+ * meaning here (the mapper choice, the resampling dimensions, data
+ * partitions) are accepted and ignored; a separate opacity array and the
+ * multi-component mapping are not supported (a warning says so).
+ *
+ * @sa vtkLRSplineVolumeMapper vtkLRSplineReader
+ */
+#ifndef vtkLRSplineVolumeRepresentation_h
+#define vtkLRSplineVolumeRepresentation_h
+
+#include "SplineVizParaViewModule.h" // for export macro
+#include "vtkNew.h"                  // for vtkNew
+#include "vtkSmartPointer.h"         // for vtkSmartPointer
+#include "vtkVolumeRepresentation.h"
+
+class vtkColorTransferFunction;
+class vtkExtractBlockUsingDataAssembly;
+class vtkLRSplineVolumeMapper;
+class vtkPiecewiseFunction;
+class vtkPolyData;
+class vtkPolyDataMapper;
+
+class SPLINEVIZPARAVIEW_EXPORT vtkLRSplineVolumeRepresentation : public vtkVolumeRepresentation
+{
+public:
+  static vtkLRSplineVolumeRepresentation* New();
+  vtkTypeMacro(vtkLRSplineVolumeRepresentation, vtkVolumeRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+
+  ///@{
+  /**
+   * Forwarded to the vtkVolumeProperty (as vtkImageVolumeRepresentation does).
+   * The iso values are the property's (SetIsosurfaceValue(i, value) after
+   * SetNumberOfIsosurfaces(n), ParaView's IsosurfaceValues property).
+   */
+  void SetShade(bool shade);
+  void SetAmbient(double value);
+  void SetDiffuse(double value);
+  void SetSpecular(double value);
+  void SetSpecularPower(double value);
+  void SetIsosurfaceValue(int i, double value);
+  void SetNumberOfIsosurfaces(int number);
+  ///@}
+
+  ///@{
+  /**
+   * Forwarded to vtkLRSplineVolumeMapper (see there).
+   */
+  void SetBlendMode(int mode);
+  void SetElementLocator(int locator);
+  void SetForestResolution(int resolution);
+  void SetAdaptiveSteps(bool adaptive);
+  void SetStepScale(double scale);
+  void SetSampleDistance(double distance);
+  void SetSupersampling(int samples);
+  void SetUseJittering(bool jitter);
+  void SetShadingModel(int model);
+  void SetIsosurfaceBisections(int steps);
+  void SetMaximumNumberOfSteps(int steps);
+  ///@}
+
+  ///@{
+  /**
+   * Forwarded to a vtkExtractBlockUsingDataAssembly before the mapper: the
+   * multiblock inspector's block selection (which patches are rendered).
+   */
+  void SetActiveAssembly(const char* name);
+  void AddBlockSelector(const char* selector);
+  void RemoveAllBlockSelectors();
+  ///@}
+
+  ///@{
+  /**
+   * Settings of ParaView's unstructured-grid volume representation, whose
+   * properties this one's proxy inherits: they have no meaning for the LR-spline
+   * mapper and are ignored.
+   */
+  void SetActiveVolumeMapper(const char*) {}
+  void SetSamplingDimensions(int, int, int) {}
+  void SetUseDataPartitions(bool) {}
+  ///@}
+
+  /// The mapper (for tests and scripting).
+  vtkLRSplineVolumeMapper* GetVolumeMapper();
+
+  /**
+   * The rank that renders the spline in parallel (0; every other rank renders
+   * nothing of it).
+   */
+  static int GetRenderingRank() { return 0; }
+
+protected:
+  vtkLRSplineVolumeRepresentation();
+  ~vtkLRSplineVolumeRepresentation() override;
+
+  /// Port 0: the spline (composite data or an unstructured grid); port 1: the trimming surface.
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  /// The whole data set on every port (no piece split).
+  int RequestUpdateExtent(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
+
+  /// Color array, vector mode, warnings: before each render (`data`: the delivered spline).
+  void UpdateMapperParameters(vtkDataObject* data);
+
+  /**
+   * Without a color array: the spline's default field (the mapper's) through a
+   * gray ramp and an opacity ramp (0 to 0.5) over the range of its
+   * coefficients, instead of vtkVolumeProperty's defaults for 0-1024 data.
+   */
+  void UseDefaultTransferFunction(vtkDataObject* data);
+
+  vtkNew<vtkLRSplineVolumeMapper> VolumeMapper;
+  vtkNew<vtkPolyDataMapper> LODMapper;
+  vtkNew<vtkExtractBlockUsingDataAssembly> BlockExtractor;
+  vtkNew<vtkColorTransferFunction> DefaultColor;
+  vtkNew<vtkPiecewiseFunction> DefaultOpacity;
+  double DefaultRange[2] = { 0.0, 0.0 };
+  vtkSmartPointer<vtkDataObject> Spline;        // what this rank delivers on port 0
+  vtkSmartPointer<vtkPolyData> TrimmingSurface; // what this rank delivers on port 1
+  vtkSmartPointer<vtkPolyData> Outline;         // the LOD picture
+  bool HasTrimmingSurface = false;
+  std::string LastWarning;
+
+private:
+  vtkLRSplineVolumeRepresentation(const vtkLRSplineVolumeRepresentation&) = delete;
+  void operator=(const vtkLRSplineVolumeRepresentation&) = delete;
+};
+
+#endif

@@ -1,0 +1,21 @@
+// libFuzzer target: the GoTools g2 class 700 parser (.g2) on arbitrary bytes,
+// and the Bezier extraction of whatever it accepts (see FuzzLRSplineParser).
+#include "SplineVizFuzzCommon.h"
+
+#include "vtkLRSplineParser.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
+{
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  std::vector<vtkLRSplinePatch> patches;
+  std::string error;
+  if (vtkLRSplineParser::Parse(text, vtkLRSplineParser::G2, patches, &error))
+  {
+    SplineVizFuzz::ExtractAll(patches);
+  }
+  else
+  {
+    SplineVizFuzz::CheckMessage(error);
+  }
+  return 0;
+}
