@@ -16,7 +16,9 @@
 //    by vtkLRSplineImageFitter (quadratic, 5 % of the range at every voxel),
 //  - any .lr file given with --volume.
 // Measured, at 640x360 and 1280x720 (offscreen, multisampling off):
-//  - per element search structure (Fuchs' Figs. 4-6 tables: texture, octree,
+//  - per element search structure (at the first window size; at the others
+//    the mapper's default only, unless --all-structures-every-size)
+//    (Fuchs' Figs. 4-6 tables: texture, octree,
 //    k-d tree = forest 1^3, k-d forest 8^3, 64^3, 512^3 and the mapper's
 //    default), with the depth statistics of vtkLRSplineElementLocator:
 //    time to first frame (data in memory -> first finished frame: element
@@ -1370,8 +1372,9 @@ void RunVolume(Volume& v, const Options& o, bool profile, Findings& found)
         v.Name + "-" + view.Name + "-uniform-" + std::to_string(static_cast<int>(k)));
       const double e = Compare(steps, ref.RGB).Float;
       // Halving the step doubles the longest ray unless a limit cuts it
-      // (llvmpipe: at most 65,535 loop iterations per fragment).
-      const bool cut = previousMost > 0.0 && n.Most > 20000.0 && n.Most < 1.5 * previousMost;
+      // (llvmpipe ends a fragment's loops after 65,535 iterations in all:
+      // measured, uniform rays stop near 4,090 samples).
+      const bool cut = previousMost > 100.0 && n.Most < 1.5 * previousMost;
       previousMost = n.Most;
       std::printf("   uniform, %2g x finest step %16.1f %9.0f %15.3e %12.3f%s\n", k, n.PerRay,
         n.Most, n.Total, e, cut ? "   (rays cut by the loop limit: not used)" : "");
@@ -1549,7 +1552,13 @@ void PrintTargets(const std::vector<Findings>& all, const Options& o)
         auto before = std::next(last);
         const double slope = std::log(last->second / before->second) /
           std::log(static_cast<double>(last->first) / before->first);
-        if (slope < -0.05)
+        if (slope > -0.5)
+        {
+          std::printf("   (the error falls as N^%.2f between the two largest resamplings: too "
+                      "slowly to extrapolate)\n",
+            slope);
+        }
+        else
         {
           const double needed = last->first * std::pow(error / last->second, 1.0 / slope);
           const double scale = std::pow(needed / last->first, 3.0);
@@ -1607,7 +1616,7 @@ const char* const Usage =
   "vtkLRSplineResampleToImage + vtkSmartVolumeMapper, side by side, with image errors\n"
   "against the CPU reference renderer.\n"
   "  --quick                 external, dipy-scan and refined-30k, 640x360, fewer structures\n"
-  "                          and frames, 128^3 and 256^3 (a few minutes)\n"
+  "                          and frames, 128^3 and 256^3 (roughly a third of the full run)\n"
   "  --volumes a,b,...       external, dipy-scan, refined-5k, refined-30k, refined-250k\n"
   "                          (default: all)\n"
   "  --scan FILE.nii.gz      the real scan fitted for dipy-scan (default: DIPY's aniso_vox)\n"

@@ -284,8 +284,8 @@ inline bool MakeRefinedVolume(
       }
     }
   }
-  builder.SetCoefficientsFromGreville([&recipe](const double g[3], double* c)
-    { recipe.Field(g, c); });
+  builder.SetCoefficientsFromGreville(
+    [&recipe](const double g[3], double* c) { recipe.Field(g, c); });
   if (verbose)
   {
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -357,9 +357,8 @@ inline std::string StatisticsHeader()
 inline std::string StatisticsRow(const vtkLRSplineElementLocator::Statistics& s)
 {
   char line[200];
-  std::snprintf(line, sizeof(line), "%11.1f %9lld %4d %4d %11.4f %10.4f",
-    s.MemoryBytes / 1048576.0, static_cast<long long>(s.NumberOfNodes), s.MinDepth, s.MaxDepth,
-    s.MeanDepth, s.VarianceDepth);
+  std::snprintf(line, sizeof(line), "%11.1f %9lld %4d %4d %11.4f %10.4f", s.MemoryBytes / 1048576.0,
+    static_cast<long long>(s.NumberOfNodes), s.MinDepth, s.MaxDepth, s.MeanDepth, s.VarianceDepth);
   return line;
 }
 
