@@ -30,6 +30,7 @@ expected = [
     "lr-spline-streamlines.png",
     "lr-spline-volume-streamlines.png",
     "lr-spline-volume-isosurfaces.png",
+    "lr-spline-fit-aniso-vox-volume.png",
     "superquadric-glyphs-gamma-0-3-20.png",
     "tensor-lines-dipy.png",
 ]

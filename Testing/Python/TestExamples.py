@@ -4,7 +4,7 @@ import os
 import runpy
 import sys
 
-from splineviz_testing import drawn_fraction
+from splineviz_testing import drawn_fraction, png_rgb
 
 source = os.environ["SPLINEVIZ_SOURCE_DIR"]
 out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
@@ -116,4 +116,16 @@ else:
     print("fitting example: fraction drawn %.3f" % drawn)
     if drawn < 0.6:
         print("ERROR: the fitting example's slices are (almost) blank")
+        sys.exit(1)
+    # the two halves: the voxels (vtkSmartVolumeMapper) and the spline
+    # (vtkLRSplineVolumeMapper) must both show the brain, about as large
+    rgb = png_rgb(os.path.join(fit_out, "lr-spline-fit-aniso-vox-volume.png"))
+    rgb = rgb[: rgb.shape[0] * 85 // 100]   # above the labels
+    half = rgb.shape[1] // 2
+    drawn = [float((abs(part.reshape(-1, 3).astype(int) - (26, 26, 31)).max(axis=1) > 12).mean())
+             for part in (rgb[:, :half], rgb[:, half:])]
+    print("fitting example, volume rendering: fraction drawn %.3f (voxels), %.3f (spline)"
+          % tuple(drawn))
+    if min(drawn) < 0.15 or not 0.75 < drawn[1] / drawn[0] < 1.33:
+        print("ERROR: the fitted spline's volume rendering is blank or unlike the scan's")
         sys.exit(1)
