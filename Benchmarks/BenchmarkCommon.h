@@ -3,16 +3,24 @@
 // ends the program before any work starts), "--key value" checks and
 // comma-separated lists, wall and process CPU clocks, and the bytes
 // vtkOpenGLPolyDataMapper keeps on the GPU for a polygonal data set (the
-// VTK paths the SplineViz renderers are compared with).
+// VTK paths the SplineViz renderers are compared with), and the polyline data
+// sets more than one benchmark draws (LongCurves()).
 #ifndef BenchmarkCommon_h
 #define BenchmarkCommon_h
 
 #include "vtkCellArray.h"
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 
 #include <sys/resource.h>
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <sstream>
@@ -140,6 +148,63 @@ inline double PolyDataGPUBytes(vtkPolyData* pd, bool colors)
   triangles += polys->GetNumberOfConnectivityIds() - 2 * polys->GetNumberOfCells();
   return static_cast<double>(pd->GetNumberOfPoints()) * (12 + 12 + (colors ? 4 : 0)) +
     static_cast<double>(triangles) * 3 * 4;
+}
+
+/// Polylines with "Radius" and "Scalar" point arrays.
+struct Lines
+{
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Cells;
+  vtkNew<vtkFloatArray> Radius;
+  vtkNew<vtkFloatArray> Scalar;
+  Lines()
+  {
+    this->Radius->SetName("Radius");
+    this->Scalar->SetName("Scalar");
+  }
+  void Add(const std::vector<std::array<double, 3>>& curve, double radius)
+  {
+    this->Cells->InsertNextCell(static_cast<int>(curve.size()));
+    for (size_t i = 0; i < curve.size(); ++i)
+    {
+      this->Cells->InsertCellPoint(this->Points->InsertNextPoint(curve[i].data()));
+      this->Radius->InsertNextValue(static_cast<float>(radius));
+      this->Scalar->InsertNextValue(static_cast<float>(i) / (curve.size() - 1));
+    }
+  }
+  vtkSmartPointer<vtkPolyData> Make()
+  {
+    auto pd = vtkSmartPointer<vtkPolyData>::New();
+    pd->SetPoints(this->Points);
+    pd->SetLines(this->Cells);
+    pd->GetPointData()->AddArray(this->Radius);
+    pd->GetPointData()->AddArray(this->Scalar);
+    pd->GetPointData()->SetActiveScalars("Scalar");
+    return pd;
+  }
+};
+
+/// Long smooth curves, Fibers2-sized (1,701 curves x 68 points, 113,967
+/// segments, radius 0.0012, about 2 x 2.3 x 2.3 units, running along z):
+/// segments about 25 radii long, the second shape of streamlines and
+/// tractograms besides the short segments of vtkSyntheticFibersSource.
+inline vtkSmartPointer<vtkPolyData> LongCurves()
+{
+  Lines lines;
+  for (int l = 0; l < 1701; ++l)
+  {
+    std::vector<std::array<double, 3>> c;
+    const double x0 = -1.0 + 2.0 * ((l * 53) % 1701) / 1701.0;
+    const double y0 = -1.0 + 2.0 * ((l * 97) % 1701) / 1701.0;
+    for (int i = 0; i < 68; ++i)
+    {
+      const double s = -1.0 + 2.0 * i / 67.0;
+      c.push_back(
+        { x0 + 0.15 * std::sin(3.0 * s + l), y0 + 0.15 * std::cos(2.0 * s + 0.5 * l), s });
+    }
+    lines.Add(c, 0.0012);
+  }
+  return lines.Make();
 }
 }
 

@@ -65,42 +65,9 @@ namespace
 using splineviz_benchmark::Now;
 using splineviz_benchmark::PolyDataGPUBytes;
 using splineviz_benchmark::Split;
+using Lines = splineviz_benchmark::Lines;
 
 const double Pi = 3.141592653589793;
-
-/// Polylines with "Radius" and "Scalar" point arrays.
-struct Lines
-{
-  vtkNew<vtkPoints> Points;
-  vtkNew<vtkCellArray> Cells;
-  vtkNew<vtkFloatArray> Radius;
-  vtkNew<vtkFloatArray> Scalar;
-  Lines()
-  {
-    this->Radius->SetName("Radius");
-    this->Scalar->SetName("Scalar");
-  }
-  void Add(const std::vector<std::array<double, 3>>& curve, double radius)
-  {
-    this->Cells->InsertNextCell(static_cast<int>(curve.size()));
-    for (size_t i = 0; i < curve.size(); ++i)
-    {
-      this->Cells->InsertCellPoint(this->Points->InsertNextPoint(curve[i].data()));
-      this->Radius->InsertNextValue(static_cast<float>(radius));
-      this->Scalar->InsertNextValue(static_cast<float>(i) / (curve.size() - 1));
-    }
-  }
-  vtkSmartPointer<vtkPolyData> Make()
-  {
-    auto pd = vtkSmartPointer<vtkPolyData>::New();
-    pd->SetPoints(this->Points);
-    pd->SetLines(this->Cells);
-    pd->GetPointData()->AddArray(this->Radius);
-    pd->GetPointData()->AddArray(this->Scalar);
-    pd->GetPointData()->SetActiveScalars("Scalar");
-    return pd;
-  }
-};
 
 /// Stoll's toroid: 256 lines of 256 segments, each winding 3 times around
 /// the tube of a torus (major radius 1, minor 0.35) while going once around.
@@ -143,27 +110,6 @@ vtkSmartPointer<vtkPolyData> Stoll()
       c.push_back({ r * std::cos(a), r * std::sin(a), -1.0 + 2.0 * s });
     }
     lines.Add(c, 0.006);
-  }
-  return lines.Make();
-}
-
-/// Long smooth curves, Fibers2-sized (1,701 curves x 68 points): segments
-/// about 25 radii long.
-vtkSmartPointer<vtkPolyData> Long()
-{
-  Lines lines;
-  for (int l = 0; l < 1701; ++l)
-  {
-    std::vector<std::array<double, 3>> c;
-    const double x0 = -1.0 + 2.0 * ((l * 53) % 1701) / 1701.0;
-    const double y0 = -1.0 + 2.0 * ((l * 97) % 1701) / 1701.0;
-    for (int i = 0; i < 68; ++i)
-    {
-      const double s = -1.0 + 2.0 * i / 67.0;
-      c.push_back(
-        { x0 + 0.15 * std::sin(3.0 * s + l), y0 + 0.15 * std::cos(2.0 * s + 0.5 * l), s });
-    }
-    lines.Add(c, 0.0012);
   }
   return lines.Make();
 }
@@ -520,7 +466,7 @@ int main(int argc, char* argv[])
     }
     else if (dataset == "long")
     {
-      data = Long();
+      data = splineviz_benchmark::LongCurves();
     }
     else
     {

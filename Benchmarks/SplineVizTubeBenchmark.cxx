@@ -5,7 +5,11 @@
 //    frame (tube building, upload, shader compilation, drawing),
 //  - median frame time over the orbit (each frame finished with glFinish),
 //  - bytes the renderer holds on the GPU, per segment,
-// Renderers: "raycast" (vtkRayCastTubeMapper), the tessellated tubes
+// Renderers: "raycast" (vtkRayCastTubeMapper, defaults), "raycast-culling"
+// (the same with its occlusion-culling pre-pass), "raycast-roots" and
+// "raycast-roots-culling" (root finding for every sub-segment: straight
+// tolerance 0, as Salm), "raycast-straight5" and "raycast-straight5-culling"
+// (straight tolerance 5 % of the radius), the tessellated tubes
 // (vtkTessellatedTubeMapper, Salm §3.1) as "tessellated" (defaults: level
 // of detail, adaptive refinement), "tessellated-base" (level of detail,
 // tessellation levels 1), "tessellated-paper" (the paper's fixed 16 x 8 base
@@ -17,11 +21,17 @@
 //    triangle indices),
 //  - "linesastubes": vtkProperty::RenderLinesAsTubes (screen-space width).
 //
+// Data sets: "fibers", "fibers2", "million" (vtkSyntheticFibersSource's
+// presets: short segments, 2-5 radii long) and "long" (Fibers2-sized long
+// smooth curves, segments about 25 radii long: LongCurves() of
+// BenchmarkCommon.h, also drawn by BenchmarkStylizedLines).
+//
 // Usage:
-//   SplineVizTubeBenchmark [--data fibers|fibers2|million] [--size WxH]
+//   SplineVizTubeBenchmark [--data fibers|fibers2|million|long] [--size WxH]
 //       [--frames N] [--renderers raycast,tubefilter,linesastubes]
-//       [--distance far|close] [--seconds S] [--samples N]
-// Several --data/--size values may be given (comma separated).
+//       [--distance far|close] [--seconds S] [--samples N] [--snapshots DIR]
+// Several --data/--size values may be given (comma separated). --snapshots
+// writes each renderer's first frame to DIR/<data>-<size>-<renderer>.png.
 #include "BenchmarkCommon.h"
 #include "vtkRayCastTubeMapper.h"
 #include "vtkSplineTubeCore.h"
@@ -43,6 +53,8 @@
 #include "vtkTimerLog.h"
 #include "vtkSMPTools.h"
 #include "vtkTubeFilter.h"
+#include "vtkPNGWriter.h"
+#include "vtkWindowToImageFilter.h"
 
 #include <sys/resource.h>
 
@@ -76,18 +88,34 @@ using Factory = std::function<Built(vtkPolyData*)>;
 std::map<std::string, Factory> Renderers()
 {
   std::map<std::string, Factory> r;
-  r["raycast"] = [](vtkPolyData* data)
+  // Ray-cast tubes with and without occlusion culling and the closed-form
+  // intersection of straight (sub-)segments.
+  auto raycast = [](bool culling, double straight)
   {
-    auto mapper = vtkSmartPointer<vtkRayCastTubeMapper>::New();
-    mapper->SetInputData(data);
-    mapper->SetRadiusArray("Radius");
-    mapper->SetScalarRange(0.0, 1.0);
-    Built b;
-    b.Actor = vtkSmartPointer<vtkActor>::New();
-    b.Actor->SetMapper(mapper);
-    b.GPUBytes = [mapper]() { return static_cast<double>(mapper->GetGPUMemorySize()); };
-    return b;
+    return [culling, straight](vtkPolyData* data)
+    {
+      auto mapper = vtkSmartPointer<vtkRayCastTubeMapper>::New();
+      mapper->SetInputData(data);
+      mapper->SetRadiusArray("Radius");
+      mapper->SetScalarRange(0.0, 1.0);
+      mapper->SetOcclusionCulling(culling);
+      if (straight >= 0.0)
+      {
+        mapper->SetStraightTolerance(straight);
+      }
+      Built b;
+      b.Actor = vtkSmartPointer<vtkActor>::New();
+      b.Actor->SetMapper(mapper);
+      b.GPUBytes = [mapper]() { return static_cast<double>(mapper->GetGPUMemorySize()); };
+      return b;
+    };
   };
+  r["raycast"] = raycast(false, -1.0); // the defaults
+  r["raycast-culling"] = raycast(true, -1.0);
+  r["raycast-roots"] = raycast(false, 0.0);
+  r["raycast-roots-culling"] = raycast(true, 0.0);
+  r["raycast-straight5"] = raycast(false, 0.05);
+  r["raycast-straight5-culling"] = raycast(true, 0.05);
   // Tessellated tubes: level of detail on/off, adaptive or levels 1.
   auto tessellated = [](bool lod, bool refine)
   {
@@ -169,7 +197,7 @@ struct Result
 };
 
 Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderWindow* window,
-  int frames, double maxSeconds, bool close)
+  int frames, double maxSeconds, bool close, const std::string& snapshot)
 {
   const vtkIdType segments = data->GetNumberOfPoints() - data->GetNumberOfLines();
   vtkNew<vtkRenderer> renderer;
@@ -197,6 +225,16 @@ Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderW
   window->WaitForCompletion();
   r.FirstFrame = Now() - start;
   r.BytesPerSegment = built.GPUBytes() / static_cast<double>(segments);
+  if (!snapshot.empty())
+  {
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->SetFileName(snapshot.c_str());
+    writer->Write();
+  }
 
   std::vector<double> times;
   std::vector<double> cpuTimes;
@@ -230,9 +268,9 @@ Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderW
 }
 
 const char* const Usage =
-  "Usage: SplineVizTubeBenchmark [--data fibers|fibers2|million] [--size WxH]\n"
+  "Usage: SplineVizTubeBenchmark [--data fibers|fibers2|million|long] [--size WxH]\n"
   "    [--frames N] [--renderers raycast,tubefilter,linesastubes,tessellated,...]\n"
-  "    [--distance far|close] [--seconds S] [--samples N]\n"
+  "    [--distance far|close] [--seconds S] [--samples N] [--snapshots DIR]\n"
   "Several --data/--size/--renderers values may be given, comma separated.\n"
   "Defaults: --data fibers2 --size 800x600,1200x768 --frames 60 --seconds 30.\n";
 
@@ -255,6 +293,7 @@ int main(int argc, char* argv[])
   double seconds = 30.0;
   bool close = false;
   int samples = 0;
+  std::string snapshots;
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string key = argv[i], value = argv[i + 1];
@@ -272,6 +311,8 @@ int main(int argc, char* argv[])
       close = (value == "close");
     else if (key == "--samples")
       samples = std::max(0, std::atoi(value.c_str()));
+    else if (key == "--snapshots")
+      snapshots = value;
     else
     {
       std::fprintf(stderr, "unknown option %s\n", key.c_str());
@@ -285,7 +326,8 @@ int main(int argc, char* argv[])
     known.push_back(factory.first);
   }
   if (!splineviz_benchmark::AllKnown(renderers, known, "renderer") ||
-    !splineviz_benchmark::AllKnown(datasets, { "fibers", "fibers2", "million" }, "data set") ||
+    !splineviz_benchmark::AllKnown(
+      datasets, { "fibers", "fibers2", "million", "long" }, "data set") ||
     !splineviz_benchmark::ValidSizes(sizes, Usage))
   {
     return 2;
@@ -293,20 +335,28 @@ int main(int argc, char* argv[])
 
   for (const auto& dataset : datasets)
   {
-    vtkNew<vtkSyntheticFibersSource> source;
-    if (dataset == "fibers")
-      source->SetPresetToFibers();
-    else if (dataset == "fibers2")
-      source->SetPresetToFibers2();
-    else if (dataset == "million")
-      source->SetPresetToOneMillion();
+    vtkSmartPointer<vtkPolyData> data;
+    double boxSize = 1.0;
+    if (dataset == "long")
+    {
+      // About 2.3 units across; framed as BenchmarkStylizedLines frames it
+      // (tubes about 1 pixel wide at 1200x768, up to 3 near the camera).
+      data = splineviz_benchmark::LongCurves();
+      boxSize = 1.5;
+    }
     else
     {
-      std::fprintf(stderr, "unknown data set %s\n", dataset.c_str());
-      return 2;
+      vtkNew<vtkSyntheticFibersSource> source;
+      if (dataset == "fibers")
+        source->SetPresetToFibers();
+      else if (dataset == "fibers2")
+        source->SetPresetToFibers2();
+      else
+        source->SetPresetToOneMillion();
+      source->Update();
+      data = source->GetOutput();
+      boxSize = source->GetBoxSize();
     }
-    source->Update();
-    vtkPolyData* data = source->GetOutput();
     data->GetPointData()->SetActiveScalars("Scalar");
     const vtkIdType segments = data->GetNumberOfPoints() - data->GetNumberOfLines();
     std::printf("\n== %s: %lld tubes, %lld segments, camera %s\n", dataset.c_str(),
@@ -322,15 +372,17 @@ int main(int argc, char* argv[])
       window->SetMultiSamples(samples);
       std::printf("-- %dx%d%s\n", w, h,
         samples ? (", " + std::to_string(samples) + "x multisampling").c_str() : "");
-      std::printf("  %-14s %14s %16s %10s %10s %14s %8s\n", "renderer", "first frame s",
+      std::printf("  %-28s %14s %16s %10s %10s %14s %8s\n", "renderer", "first frame s",
         "median frame ms", "(CPU ms)", "(best CPU)", "GPU B/segment", "frames");
       std::map<std::string, Result> results;
       for (const auto& name : renderers)
       {
+        const std::string snapshot =
+          snapshots.empty() ? "" : snapshots + "/" + dataset + "-" + size + "-" + name + ".png";
         const Result r =
-          Run(factories.at(name), data, source->GetBoxSize(), window, frames, seconds, close);
+          Run(factories.at(name), data, boxSize, window, frames, seconds, close, snapshot);
         results[name] = r;
-        std::printf("  %-14s %14.3f %16.1f %10.1f %10.1f %14.1f %8d\n", name.c_str(), r.FirstFrame,
+        std::printf("  %-28s %14.3f %16.1f %10.1f %10.1f %14.1f %8d\n", name.c_str(), r.FirstFrame,
           1000.0 * r.MedianFrame, 1000.0 * r.MedianFrameCPU, 1000.0 * r.BestFrameCPU,
           r.BytesPerSegment, r.Frames);
         std::fflush(stdout);

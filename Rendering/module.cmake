@@ -28,6 +28,8 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathShared.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeFS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeCullVS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeCullFS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeCommon.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeTCS.glsl"

@@ -66,6 +66,22 @@ if (SPLINEVIZ_SANITIZE)
   # without ASan (the code under test must refuse such sizes before that).
   set(SPLINEVIZ_ASAN_OPTIONS
     "strict_string_checks=1:check_initialization_order=1:allocator_may_return_null=1")
+  # Mesa's DRI driver (llvmpipe: swrast_dri.so) is dlopen()ed by libGLX and
+  # dlclose()d when the X display closes. What it allocated and still points
+  # to from its own globals then looks leaked to LeakSanitizer, whose stacks
+  # show only "<unknown module>" (the library is gone), so no suppression can
+  # name it. Preloading the driver keeps it mapped to the end: its globals
+  # stay roots and those blocks are reachable, as they are. Proven on
+  # TestRayCastTubeBadInput: 240 bytes "leaked" in 3 blocks from the unloaded
+  # module without the preload, none with it; SplineViz's own allocations are
+  # still checked (their stacks are SplineViz's).
+  find_file(SPLINEVIZ_DRI_DRIVER swrast_dri.so
+    PATHS "/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/dri" /usr/lib64/dri /usr/lib/dri
+    NO_DEFAULT_PATH)
+  set(SPLINEVIZ_CXX_TEST_PRELOAD "")
+  if (SPLINEVIZ_DRI_DRIVER)
+    set(SPLINEVIZ_CXX_TEST_PRELOAD "LD_PRELOAD=${SPLINEVIZ_DRI_DRIVER}")
+  endif ()
   set(SPLINEVIZ_SANITIZER_ENV
     "LSAN_OPTIONS=suppressions=${splineviz_sanitizer_dir}/lsan.supp:print_suppressions=0"
     "UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1:suppressions=${splineviz_sanitizer_dir}/ubsan.supp")
@@ -98,7 +114,7 @@ function (splineviz_sanitize_tests)
         "ASAN_OPTIONS=detect_leaks=0:${SPLINEVIZ_ASAN_OPTIONS}")
     else ()
       set_property(TEST "${test}" APPEND PROPERTY ENVIRONMENT
-        "ASAN_OPTIONS=detect_leaks=1:${SPLINEVIZ_ASAN_OPTIONS}")
+        "ASAN_OPTIONS=detect_leaks=1:${SPLINEVIZ_ASAN_OPTIONS}" ${SPLINEVIZ_CXX_TEST_PRELOAD})
     endif ()
     get_property(timeout TEST "${test}" PROPERTY TIMEOUT)
     if (timeout)

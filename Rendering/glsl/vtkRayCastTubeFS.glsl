@@ -3,14 +3,17 @@
 // Inserted into VTK's polydata fragment shader (at //VTK::Normal::Dec); the
 // rest of that shader (lighting, coloring, depth peeling, picking) is VTK's.
 // Every fragment of a sub-segment's bounding box intersects its view ray with
-// the spheres swept along the sub-segment (svIntersectSubSegment); a miss
-// discards the fragment, a hit gives the exact depth, the normal (from the
-// sphere center to the hit point) and the curve parameter for the color spline.
+// the spheres swept along the sub-segment (svIntersectSubSegment), or, for
+// the segments and sub-segments the vertex stage found straight (mode 1 and
+// 2), with the round cone on their chord in closed form
+// (svIntersectRoundCone); a miss discards the fragment, a hit gives the
+// exact depth, the normal (from the sphere center to the hit point) and the
+// curve parameter for the color spline.
 
 flat in vec4 tubeQ0VSOutput; // quadratic sub-segment, view coordinates
 flat in vec4 tubeQ1VSOutput;
 flat in vec4 tubeQ2VSOutput;
-flat in ivec4 tubeInfoVSOutput; // first node, sub-segment, tube, flags
+flat in ivec4 tubeInfoVSOutput; // first node, sub-segment, tube, flags | mode << 2
 
 uniform mat4 VCDCMatrix;
 uniform int subSegments;
@@ -36,17 +39,43 @@ bool tubeRayCast(vec3 fragmentVC, out vec3 hitVC, out vec3 normalVC, out float t
     origin = vec3(0.0);
     dir = normalize(fragmentVC);
   }
-  SvHit hit = svIntersectSubSegment(origin, dir, tubeQ0VSOutput, tubeQ1VSOutput, tubeQ2VSOutput,
-    rootIterations, rootSamples);
+  int mode = tubeInfoVSOutput.w >> 2;
+  float k = float(tubeInfoVSOutput.y);
+  SvHit hit;
+  vec4 center;
+  if (mode == 3)
+  {
+    // Two straight sub-segments: the cones (q0, q1) and (q1, q2).
+    hit = svIntersectRoundCone(origin, dir, tubeQ0VSOutput, tubeQ1VSOutput);
+    SvHit second = svIntersectRoundCone(origin, dir, tubeQ1VSOutput, tubeQ2VSOutput);
+    center = mix(tubeQ0VSOutput, tubeQ1VSOutput, hit.l);
+    if (second.inside || (second.hit && (!hit.hit || second.distance < hit.distance)))
+    {
+      hit = second;
+      center = mix(tubeQ1VSOutput, tubeQ2VSOutput, hit.l);
+      k += 1.0;
+    }
+    hit.hit = hit.hit && !hit.inside;
+  }
+  else if (mode != 0)
+  {
+    hit = svIntersectRoundCone(origin, dir, tubeQ0VSOutput, tubeQ2VSOutput);
+    center = mix(tubeQ0VSOutput, tubeQ2VSOutput, hit.l);
+  }
+  else
+  {
+    hit = svIntersectSubSegment(origin, dir, tubeQ0VSOutput, tubeQ1VSOutput, tubeQ2VSOutput,
+      rootIterations, rootSamples);
+    center = svQuadratic(tubeQ0VSOutput, tubeQ1VSOutput, tubeQ2VSOutput, hit.l);
+  }
   if (!hit.hit)
   {
     return false;
   }
   hitVC = origin + hit.distance * dir;
-  vec4 center = svQuadratic(tubeQ0VSOutput, tubeQ1VSOutput, tubeQ2VSOutput, hit.l);
   vec3 n = hitVC - center.xyz;
   float len = length(n);
   normalVC = len > 0.0 ? n / len : -dir;
-  t = (float(tubeInfoVSOutput.y) + hit.l) / float(subSegments);
+  t = mode == 2 ? hit.l : (k + hit.l) / float(subSegments);
   return true;
 }

@@ -27,12 +27,14 @@ uniform float tubeRadiusScale;       // model to view scale of radii
 uniform float tubeNearPlane;         // distance of the near plane (view units)
 uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
+uniform float tubeStraightTolerance; // fraction of the radius; 0: always root finding
+uniform float tubePixelScale;        // pixels per view unit (at unit distance if perspective)
 
 out vec4 vertexVCVSOutput;       // position on the rectangle, view coordinates
 flat out vec4 tubeQ0VSOutput;    // quadratic sub-segment in view coordinates
 flat out vec4 tubeQ1VSOutput;    // (xyz: control point, w: radius)
 flat out vec4 tubeQ2VSOutput;
-flat out ivec4 tubeInfoVSOutput; // first node, sub-segment, tube, flags
+flat out ivec4 tubeInfoVSOutput; // first node, sub-segment, tube, flags | mode << 2
 
 //VTK::SplineTubeMath::Dec
 
@@ -60,17 +62,87 @@ void main()
   vec4 m0 = texelFetch(tubeNodes, 2 * node + 1);
   vec4 p1 = texelFetch(tubeNodes, 2 * node + 2);
   vec4 m1 = texelFetch(tubeNodes, 2 * node + 3);
+  // The segment in view coordinates (Hermite and Bezier forms transform with
+  // their control points), then its sub-segment k.
+  vec4 a = vec4((tubeMCVC * vec4(p0.xyz, 1.0)).xyz, p0.w * tubeRadiusScale);
+  vec4 b = vec4((tubeMCVC * vec4(p1.xyz, 1.0)).xyz, p1.w * tubeRadiusScale);
+  vec4 da = vec4(mat3(tubeMCVC) * m0.xyz, m0.w * tubeRadiusScale);
+  vec4 db = vec4(mat3(tubeMCVC) * m1.xyz, m1.w * tubeRadiusScale);
   vec4 q0;
   vec4 q1;
   vec4 q2;
-  svSplitSegment(p0, m0, p1, m1, subSegments, k, q0, q1, q2);
-  q0 = vec4((tubeMCVC * vec4(q0.xyz, 1.0)).xyz, q0.w * tubeRadiusScale);
-  q1 = vec4((tubeMCVC * vec4(q1.xyz, 1.0)).xyz, q1.w * tubeRadiusScale);
-  q2 = vec4((tubeMCVC * vec4(q2.xyz, 1.0)).xyz, q2.w * tubeRadiusScale);
+  svSplitSegment(a, da, b, db, subSegments, k, q0, q1, q2);
+
+  // Straight segments and sub-segments (to within tubeStraightTolerance of
+  // their smallest radius and a quarter pixel) are intersected as round
+  // cones in closed form instead of by root finding: a straight segment is
+  // one rectangle (drawn by its first sub-segment), a pair of straight
+  // sub-segments (k, k + 1 for even k) one rectangle with two cones (drawn
+  // by the first), and a straight sub-segment alone one cone.
+  int mode = 0; // 0: root finding, 1: straight sub-segment, 2: straight segment, 3: straight pair
+  if (tubeStraightTolerance > 0.0)
+  {
+    float reach;
+    float segmentError = svSegmentStraightness(a, da, b, db, reach);
+    // The tolerance in view units where the segment is nearest to the eye.
+    float zNearest = max(a.z, b.z) + reach;
+    float pixel = cameraParallel != 0 ? 1.0 / tubePixelScale : -zNearest / tubePixelScale;
+    float rMinSegment = min(min(a.w, b.w), min(a.w + da.w / 3.0, b.w - db.w / 3.0));
+    int partner = k + 1 - 2 * (k & 1);
+    vec4 r0;
+    vec4 r1;
+    vec4 r2;
+    svSplitSegment(a, da, b, db, subSegments, partner, r0, r1, r2);
+    float rMin = min(min(q0.w, q1.w), q2.w);
+    float rMinPair = min(rMin, min(min(r0.w, r1.w), r2.w));
+    float error = svSubSegmentStraightness(q0, q1, q2);
+    float partnerError = svSubSegmentStraightness(r0, r1, r2);
+    bool straight = error <= min(tubeStraightTolerance * rMin, 0.25 * pixel);
+    // (the same decision for both sub-segments of the pair)
+    bool pairStraight =
+      max(error, partnerError) <= min(tubeStraightTolerance * rMinPair, 0.25 * pixel);
+    if (cameraParallel == 0 && zNearest >= -tubeNearPlane)
+    {
+      mode = 0; // near the eye: always the root finding
+    }
+    else if (segmentError <= min(tubeStraightTolerance * max(rMinSegment, 0.0), 0.25 * pixel))
+    {
+      mode = 2;
+    }
+    else if (pairStraight)
+    {
+      mode = 3;
+    }
+    else if (straight)
+    {
+      mode = 1;
+    }
+    if ((mode == 2 && k != 0) || (mode == 3 && (k & 1) != 0))
+    {
+      gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // drawn by another sub-segment's rectangle
+      vertexVCVSOutput = vec4(0.0, 0.0, -1.0, 1.0);
+      return;
+    }
+    if (mode == 2)
+    {
+      q0 = a;
+      q1 = 0.5 * (a + b); // the cone's convex hull for the bounds
+      q2 = b;
+    }
+    else if (mode == 3)
+    {
+      q1 = q2; // the two cones (q0, q1) and (q1, q2)
+      q2 = r2;
+    }
+    else if (mode == 1)
+    {
+      q1 = 0.5 * (q0 + q2);
+    }
+  }
   tubeQ0VSOutput = q0;
   tubeQ1VSOutput = q1;
   tubeQ2VSOutput = q2;
-  tubeInfoVSOutput = ivec4(node, k, int(s.y), flags);
+  tubeInfoVSOutput = ivec4(node, k, int(s.y), flags | (mode << 2));
 
   // Fast path: the sub-segment lies in the convex hull of its control points
   // with the largest radius (Bernstein property, radii >= 0); bound the

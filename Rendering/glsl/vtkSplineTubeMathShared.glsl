@@ -216,6 +216,45 @@ void svSubSegmentBox(vec4 q0, vec4 q1, vec4 q2, SV_OUT(SvBox) box)
 }
 
 //------------------------------------------------------------------------------
+// Inner band of a cubic segment, for occlusion culling (vtkRayCastTubeMapper):
+// the largest h such that every point within distance h of the chord
+// p0 -> p1 lies inside the union of the spheres swept along the segment's
+// `count` quadratic sub-segments (svSplitSegment), the surface the ray caster
+// draws. On sub-segment k, covering the chord parameters [a, b] =
+// [k / count, (k + 1) / count], the chord is the quadratic Bezier curve
+// (L(a), L((a + b) / 2), L(b)), so the distance between the sub-segment's
+// centre and the chord at the same parameter is at most the largest distance
+// between their control points (convex hull of the Bezier difference), and
+// the radius at least the smallest control radius. A point within h of the
+// chord point L(t) is then within d + h <= r_min <= r of the centre at t:
+// h = r_min - d. Negative: the segment bends too much for a band. `reach`
+// is r_max + d: no point of the segment's tube is farther from the chord.
+real svInnerBandHalfWidth(vec4 p0, vec4 m0, vec4 p1, vec4 m1, int count, SV_OUT(real) reach)
+{
+  vec3 a0 = vec3(p0);
+  vec3 chord = vec3(p1) - a0;
+  real d = 0.0;
+  real rMin = 1e30;
+  real rMax = 0.0;
+  for (int k = 0; k < count; ++k)
+  {
+    vec4 q0;
+    vec4 q1;
+    vec4 q2;
+    svSplitSegment(p0, m0, p1, m1, count, k, q0, q1, q2);
+    real a = real(k) / real(count);
+    real b = real(k + 1) / real(count);
+    d = max(d, length(vec3(q0) - (a0 + a * chord)));
+    d = max(d, length(vec3(q1) - (a0 + (0.5 * (a + b)) * chord)));
+    d = max(d, length(vec3(q2) - (a0 + b * chord)));
+    rMin = min(rMin, min(q0.w, min(q1.w, q2.w)));
+    rMax = max(rMax, max(q0.w, max(q1.w, q2.w)));
+  }
+  reach = rMax + d;
+  return rMin - d;
+}
+
+//------------------------------------------------------------------------------
 // Ray / sub-segment intersection (Salm §3.2, eqs. 1-8).
 //
 // In ray space the ray is the x axis. A sphere of center (x, y, z) and
@@ -529,6 +568,128 @@ SvHit svIntersectSubSegment(
     svPieceMinima(A, dA, B, dB, lo, hi, samples, rootIterations, best);
   }
 
+  if (best.found)
+  {
+    real dist = best.f + shift;
+    if (dist < 0.0)
+    {
+      result.inside = true;
+    }
+    else
+    {
+      result.hit = true;
+      result.distance = dist;
+      result.l = best.l;
+    }
+  }
+  return result;
+}
+
+//------------------------------------------------------------------------------
+// Straightness: how far the spheres swept along a segment or sub-segment can
+// be from those of the round cone on its chord (the straight line between
+// its end centres, the radius interpolated linearly between its end radii).
+// The difference of two curves at the same parameter bounds the distance
+// between the two unions of spheres (each sphere of one lies within that
+// distance of a sphere of the other), and the difference of two Bezier
+// curves of the same degree is bounded by the largest difference of their
+// control points (the chord as a Bezier curve of the same degree).
+
+// A quadratic sub-segment (q0, q1, q2): its difference from the chord is
+// 2 l (1 - l) (q1 - (q0 + q2) / 2), at most half of that at l = 1/2.
+real svSubSegmentStraightness(vec4 q0, vec4 q1, vec4 q2)
+{
+  vec4 e = q1 - 0.5 * (q0 + q2);
+  return 0.5 * (length(vec3(e)) + abs(e.w));
+}
+
+// A cubic Hermite segment (p0, m0, p1, m1): the Bezier control points
+// p0 + m0 / 3 and p1 - m1 / 3 against the chord's at 1/3 and 2/3. `reach`:
+// no point of the segment's tube is farther from the chord than that.
+real svSegmentStraightness(vec4 p0, vec4 m0, vec4 p1, vec4 m1, SV_OUT(real) reach)
+{
+  vec4 e1 = (p0 + m0 / 3.0) - (p0 + (p1 - p0) / 3.0);
+  vec4 e2 = (p1 - m1 / 3.0) - (p0 + 2.0 * (p1 - p0) / 3.0);
+  real e = max(length(vec3(e1)), length(vec3(e2))) + max(abs(e1.w), abs(e2.w));
+  real rMax = max(max(p0.w, p1.w), max(p0.w + m0.w / 3.0, p1.w - m1.w / 3.0));
+  reach = rMax + max(length(vec3(e1)), length(vec3(e2)));
+  return e;
+}
+
+//------------------------------------------------------------------------------
+// Ray / linear sub-segment intersection, in closed form.
+//
+// The spheres swept along a straight line a -> b with a linearly varying
+// radius ra -> rb (a "round cone"): with the ray origin + t dir (dir of unit
+// length) and, for the sphere at s in [0, 1], f(s) = A0 + alpha s - sqrt(B(s))
+// the entry distance as in svIntersectSubSegment, but now A is linear
+// (alpha = (b - a) . dir) and B(s) = beta0 + beta1 s + beta2 s^2 quadratic.
+// Where B > 0, f'' = disc / (4 B^(3/2)) with disc = beta1^2 - 4 beta0 beta2,
+// so f is convex there when disc > 0, and its only stationary point solves
+// B'(s) = 2 alpha sqrt(B(s)); squaring gives B(s*) = disc / (4 kappa) with
+// kappa = |b - a|^2 - (rb - ra)^2 (> 0 unless one end sphere contains the
+// other, when the union is the larger end sphere), and
+// s* = (2 alpha sqrt(B*) - beta1) / (2 beta2)
+//    = (beta1^2 - 4 alpha^2 beta0) / (2 kappa (2 alpha sqrt(B*) + beta1))
+// (the same number; the form without cancellation is used). The ray
+// enters the union at the smallest f among s = 0 and s = 1 (the end spheres,
+// where B >= 0) and s* (when in [0, 1]); at the other ends of the intervals
+// where B >= 0, f' is infinite and f not minimal.
+SvHit svIntersectRoundCone(vec3 origin, vec3 dir, vec4 a, vec4 b)
+{
+  SvHit result;
+  result.hit = false;
+  result.inside = false;
+  result.distance = 0.0;
+  result.l = 0.0;
+  // Relative to the point of the ray nearest to a (small numbers).
+  real shift = dot(vec3(a) - origin, dir);
+  vec3 w = vec3(a) - (origin + shift * dir); // a, across the ray
+  vec3 u = vec3(b) - vec3(a);
+  real alpha = dot(u, dir);
+  vec3 uPerp = u - alpha * dir;
+  real ra = a.w;
+  real delta = b.w - a.w;
+  real beta0 = ra * ra - dot(w, w);
+  real beta1 = 2.0 * (ra * delta - dot(w, uPerp));
+  real beta2 = delta * delta - dot(uPerp, uPerp);
+  real B1 = beta0 + beta1 + beta2;
+
+  SvBest best;
+  best.f = 1e30;
+  best.l = 0.0;
+  best.found = false;
+  if (beta0 >= 0.0)
+  {
+    svConsider(best, -sqrt(beta0), 0.0);
+  }
+  if (B1 >= 0.0)
+  {
+    svConsider(best, alpha - sqrt(B1), 1.0);
+  }
+  real kappa = dot(u, u) - delta * delta;
+  real disc = beta1 * beta1 - 4.0 * beta0 * beta2;
+  if (kappa > 1e-12 * dot(u, u) && disc > 0.0)
+  {
+    real rootB = sqrt(disc / (4.0 * kappa));
+    real q = 2.0 * alpha * rootB;
+    real s = 2.0; // none
+    if (q * beta1 <= 0.0)
+    {
+      if (beta2 != 0.0)
+      {
+        s = (q - beta1) / (2.0 * beta2);
+      }
+    }
+    else
+    {
+      s = (beta1 * beta1 - 4.0 * alpha * alpha * beta0) / (2.0 * kappa * (q + beta1));
+    }
+    if (s > 0.0 && s < 1.0)
+    {
+      svConsider(best, alpha * s - rootB, s);
+    }
+  }
   if (best.found)
   {
     real dist = best.f + shift;

@@ -3,7 +3,14 @@
 // (vtkSplineTubeMath.h), checked against brute force: the first entry into
 // the union of densely sampled spheres along the sub-segment. Random
 // sub-segments and rays, rays grazing the surface, rays along the axis, rays
-// through the caps, misses, and rays starting inside.
+// through the caps, misses, and rays starting inside. The same against the
+// closed-form intersection of straight sub-segments (svIntersectRoundCone,
+// used for the sub-segments that are straight to within a small tolerance),
+// with end spheres containing each other and zero-length segments too; and
+// the inner band of the occlusion culling (svInnerBandHalfWidth): points of
+// the band lie inside the spheres swept along the segment's quadratic
+// sub-segments, and a band 5 % wider would not (the bound is tight where
+// segments bend).
 #include "vtkSplineTubeMath.h"
 
 #include "SplineVizTestUtilities.h"
@@ -14,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <vector>
 
 namespace
 {
@@ -21,8 +29,11 @@ using vec3 = vtkSplineTubeMath::vec3;
 using vec4 = vtkSplineTubeMath::vec4;
 using vtkSplineTubeMath::svAnyOrthogonal;
 using vtkSplineTubeMath::SvHit;
+using vtkSplineTubeMath::svInnerBandHalfWidth;
+using vtkSplineTubeMath::svIntersectRoundCone;
 using vtkSplineTubeMath::svIntersectSubSegment;
 using vtkSplineTubeMath::svQuadratic;
+using vtkSplineTubeMath::svSplitSegment;
 
 /// Brute force: smallest entry distance s >= 0 of the ray into any sphere of
 /// the sub-segment sampled at `samples` + 1 parameters. Returns false on a
@@ -235,5 +246,168 @@ int TestRayCastTubeIntersection(int, char*[])
   }
   std::cout << "10 iterations: worst distance error " << worst10 << " radii" << std::endl;
   SV_CHECK_MSG(status, worst10 < 1e-2, "10 iterations: error " << worst10);
+
+  // The closed form for straight sub-segments (round cones).
+  int coneHits = 0, coneMisses = 0, coneInside = 0, coneGrazing = 0, coneNested = 0;
+  double worstCone = 0.0;
+  for (int trial = 0; trial < 6000; ++trial)
+  {
+    vec4 a(uniform(-0.2, 0.2), uniform(-0.2, 0.2), uniform(-0.2, 0.2), uniform(0.02, 0.4));
+    vec4 b(uniform(0.5, 1.2), uniform(-0.5, 0.5), uniform(-0.5, 0.5), uniform(0.02, 0.4));
+    const int kind = trial % 6;
+    if (kind == 4)
+    {
+      // One end sphere containing the other (a degenerate cone).
+      b = vec4(vec3(a) + 0.5 * (a.w + 0.3) * randomUnit(), 0.0);
+      b.w = uniform(0.0, 0.3);
+      a.w = glm::length(vec3(b) - vec3(a)) + b.w + uniform(0.0, 0.1);
+      if (trial % 12 == 4)
+      {
+        std::swap(a, b);
+      }
+      ++coneNested;
+    }
+    if (kind == 5 && trial % 12 == 5)
+    {
+      b = vec4(vec3(a), uniform(0.02, 0.4)); // zero length
+    }
+    const vec4 m = 0.5 * (a + b);
+    const double rmax = std::max(a.w, b.w);
+    const vec3 c = vec3(a) + uniform(-0.2, 1.2) * (vec3(b) - vec3(a));
+    vec3 target = c + randomUnit() * uniform(0.0, 1.5 * rmax);
+    vec3 dir = randomUnit();
+    if (kind == 1 && glm::length(vec3(b) - vec3(a)) > 0.0)
+    {
+      dir = glm::normalize(vec3(b) - vec3(a)); // along the axis
+      target = vec3(a);
+    }
+    vec3 origin = target - 5.0 * dir;
+    double d, l;
+    bool in;
+    if (kind == 2 && BruteForce(origin, dir, a, m, b, 4000, d, l, in) && !in)
+    {
+      const vec3 side = glm::normalize(glm::cross(dir, svAnyOrthogonal(dir) + 0.3 * dir));
+      double lo = 0.0, hi = 3.0 * rmax;
+      for (int it = 0; it < 40; ++it)
+      {
+        const double mid = 0.5 * (lo + hi);
+        if (BruteForce(origin + mid * side, dir, a, m, b, 4000, d, l, in))
+          lo = mid;
+        else
+          hi = mid;
+      }
+      origin += (lo * 0.999) * side;
+      ++coneGrazing;
+    }
+    if (kind == 3 && trial % 12 == 3)
+    {
+      origin = vec3(a) + uniform(0.0, 1.0) * (vec3(b) - vec3(a)); // starts inside
+    }
+    const bool refHit = BruteForce(origin, dir, a, m, b, 20000, d, l, in);
+    const SvHit h = svIntersectRoundCone(origin, dir, a, b);
+    if (in)
+    {
+      ++coneInside;
+      SV_CHECK_MSG(status, !h.hit && h.inside, "cone trial " << trial << ": a ray starting inside");
+      continue;
+    }
+    if (!refHit)
+    {
+      ++coneMisses;
+      SV_CHECK_MSG(status, !h.hit, "cone trial " << trial << ": a miss hit at " << h.distance);
+      continue;
+    }
+    ++coneHits;
+    SV_CHECK_MSG(status, h.hit, "cone trial " << trial << " (kind " << kind << "): missed");
+    if (!h.hit)
+    {
+      continue;
+    }
+    // The closed form is exact; brute force samples the spheres.
+    const double error = std::abs(h.distance - d) / rmax;
+    worstCone = std::max(worstCone, error);
+    SV_CHECK_MSG(status, error < 1e-3,
+      "cone trial " << trial << " (kind " << kind << "): distance " << h.distance << " vs " << d);
+    const vec4 sphere = a + h.l * (b - a);
+    const double onSphere =
+      std::abs(glm::length(origin + h.distance * dir - vec3(sphere)) - sphere.w) / rmax;
+    SV_CHECK_MSG(status, onSphere < 1e-6, "cone trial " << trial << ": hit off its sphere");
+  }
+  std::cout << "round cones: hits " << coneHits << " (grazing " << coneGrazing << ", nested "
+            << coneNested << "), misses " << coneMisses << ", inside " << coneInside
+            << "; worst distance error " << worstCone << " radii" << std::endl;
+  SV_CHECK(status, coneHits > 2000 && coneMisses > 300 && coneInside > 100 && coneGrazing > 500);
+
+  // The inner band: points within h of the chord lie inside the swept
+  // spheres of the segment's quadratic sub-segments.
+  int bands = 0;
+  double tightest = 1e30; // smallest (distance to the surface) / h at 1.05 h
+  for (int trial = 0; trial < 600; ++trial)
+  {
+    const int count = 2 * (1 + trial % 3);
+    const vec4 p0(0.0, 0.0, 0.0, uniform(0.05, 0.3));
+    const vec4 p1(1.0, uniform(-0.2, 0.2), uniform(-0.2, 0.2), uniform(0.05, 0.3));
+    const vec4 m0(uniform(0.5, 1.5), uniform(-0.6, 0.6), uniform(-0.6, 0.6), uniform(-0.2, 0.2));
+    const vec4 m1(uniform(0.5, 1.5), uniform(-0.6, 0.6), uniform(-0.6, 0.6), uniform(-0.2, 0.2));
+    double reach = 0.0;
+    const double h = svInnerBandHalfWidth(p0, m0, p1, m1, count, reach);
+    // Depth of point x inside the union of the spheres (> 0 inside), and its
+    // largest distance from the chord over the sampled spheres' points.
+    std::vector<vec4> spheres;
+    for (int k = 0; k < count; ++k)
+    {
+      vec4 q0, q1, q2;
+      svSplitSegment(p0, m0, p1, m1, count, k, q0, q1, q2);
+      for (int i = 0; i <= 400; ++i)
+      {
+        spheres.push_back(svQuadratic(q0, q1, q2, i / 400.0));
+      }
+    }
+    auto depthInside = [&](const vec3& x)
+    {
+      double best = -1e30;
+      for (const vec4& sphere : spheres)
+      {
+        best = std::max(best, sphere.w - glm::length(x - vec3(sphere)));
+      }
+      return best;
+    };
+    const vec3 chord = vec3(p1) - vec3(p0);
+    double farthest = 0.0; // of the spheres' surfaces from the chord
+    for (const vec4& sphere : spheres)
+    {
+      const double t =
+        std::min(1.0, std::max(0.0, glm::dot(vec3(sphere), chord) / glm::dot(chord, chord)));
+      farthest = std::max(farthest, glm::length(vec3(sphere) - t * chord) + sphere.w);
+    }
+    SV_CHECK_MSG(status, farthest <= reach * (1.0 + 1e-9),
+      "band trial " << trial << ": the tube reaches " << farthest << " from the chord, bound "
+                    << reach);
+    if (h <= 0.0)
+    {
+      continue;
+    }
+    ++bands;
+    double worstAtH = 1e30;
+    double worstWider = 1e30;
+    for (int i = 0; i < 300; ++i)
+    {
+      const double t = uniform(0.0, 1.0);
+      const vec3 offset = svAnyOrthogonal(glm::normalize(chord));
+      const vec3 other = glm::cross(glm::normalize(chord), offset);
+      const double angle = uniform(0.0, 6.283185307179586);
+      const vec3 direction = std::cos(angle) * offset + std::sin(angle) * other;
+      const vec3 x = t * chord + h * direction;
+      worstAtH = std::min(worstAtH, depthInside(x));
+      worstWider = std::min(worstWider, depthInside(t * chord + 1.05 * h * direction));
+    }
+    SV_CHECK_MSG(status, worstAtH >= -1e-4 * h,
+      "band trial " << trial << ": a band point is outside the tube by " << -worstAtH);
+    tightest = std::min(tightest, worstWider / h);
+  }
+  std::cout << "inner bands: " << bands << " segments with a band; 5 % wider, the worst point is "
+            << -tightest << " band widths outside" << std::endl;
+  SV_CHECK_MSG(status, bands > 200, "too few segments with a band: " << bands);
+  SV_CHECK_MSG(status, tightest < 0.0, "the band bound is not tight anywhere");
   return status.Result();
 }
