@@ -543,6 +543,24 @@ struct Window
     this->Win->WaitForCompletion();
     return watch.Elapsed();
   }
+  /// A volume of `mapper` with the benchmark's transfer functions for `v`
+  /// (shaded or not) in the renderer; its property (held by the volume).
+  vtkVolumeProperty* Show(const Volume& v, vtkAbstractVolumeMapper* mapper, bool shade)
+  {
+    vtkNew<vtkVolumeProperty> property;
+    ConfigureProperty(property, v, shade);
+    vtkNew<vtkVolume> volume;
+    volume->SetMapper(mapper);
+    volume->SetProperty(property);
+    this->Ren->AddVolume(volume);
+    return property;
+  }
+  /// The first frame of the overview (what it costs from the data in memory).
+  Cost FirstFrame(const Volume& v)
+  {
+    PlaceCamera(this->Ren, v, View());
+    return this->Frame();
+  }
 };
 
 /// Median frame time (wall and CPU, each its median) over a camera orbit of
@@ -661,19 +679,10 @@ Timing TimeOurs(const Volume& v, const OurConfig& c, int width, int height, int 
 {
   Timing t;
   Window w(width, height);
-  vtkNew<vtkVolumeProperty> property;
-  ConfigureProperty(property, v, false);
-  const View overview;
-  const Stopwatch watch;
   vtkSmartPointer<vtkLRSplineVolumeMapper> mapper = MakeMapper(v, c);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  w.Ren->AddVolume(volume);
-  PlaceCamera(w.Ren, v, overview);
-  w.Win->Render();
-  w.Win->WaitForCompletion();
-  t.FirstFrame = watch.Elapsed();
+  vtkVolumeProperty* property = w.Show(v, mapper, false);
+  const View overview;
+  t.FirstFrame = w.FirstFrame(v);
   t.Error = mapper->GetLastErrorMessage();
   if (!t.Error.empty())
   {
@@ -728,17 +737,11 @@ void ProfileOurs(const Volume& v, int width, int height, int frames, double seco
   for (const Variant& variant : variants)
   {
     Window w(width, height);
-    vtkNew<vtkVolumeProperty> property;
-    ConfigureProperty(property, v, false);
     vtkSmartPointer<vtkLRSplineVolumeMapper> mapper = MakeMapper(v, variant.Config);
     auto* profiled = ProfiledVolumeMapper::SafeDownCast(mapper);
-    vtkNew<vtkVolume> volume;
-    volume->SetMapper(mapper);
-    volume->SetProperty(property);
-    w.Ren->AddVolume(volume);
+    w.Show(v, mapper, false);
     const View overview;
-    PlaceCamera(w.Ren, v, overview);
-    w.Frame();
+    w.FirstFrame(v);
     if (profiled && !profiled->Missing.empty())
     {
       std::printf("   %-58s the shader has changed: \"%.40s...\" not found\n",
@@ -794,14 +797,9 @@ Samples CountSamples(const Volume& v, const OurConfig& c, const View& view, int 
 {
   const double black[3] = { 0, 0, 0 };
   Window w(width, height, black);
-  vtkNew<vtkVolumeProperty> property;
-  ConfigureProperty(property, v, false);
   vtkSmartPointer<vtkLRSplineVolumeMapper> mapper = MakeMapper(v, c);
   mapper->SetCountSamples(true);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  w.Ren->AddVolume(volume);
+  w.Show(v, mapper, false);
   const std::vector<double> rgb = Snapshot(w, v, view, mapper).Bits8;
   Samples s;
   long long rays = 0;
@@ -823,13 +821,8 @@ Picture OurImage(
   const Volume& v, const OurConfig& c, const View& view, int width, int height, bool shade)
 {
   Window w(width, height, Background, true);
-  vtkNew<vtkVolumeProperty> property;
-  ConfigureProperty(property, v, shade);
   vtkSmartPointer<vtkLRSplineVolumeMapper> mapper = MakeMapper(v, c);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  w.Ren->AddVolume(volume);
+  w.Show(v, mapper, shade);
   return Snapshot(w, v, view, mapper);
 }
 
@@ -917,19 +910,10 @@ VTKTiming TimeVTK(
 {
   VTKTiming t;
   Window w(width, height);
-  vtkNew<vtkVolumeProperty> property;
-  ConfigureProperty(property, v, false);
-  const View overview;
-  const Stopwatch watch;
   vtkSmartPointer<vtkSmartVolumeMapper> mapper = MakeVTKMapper(v, image);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  w.Ren->AddVolume(volume);
-  PlaceCamera(w.Ren, v, overview);
-  w.Win->Render();
-  w.Win->WaitForCompletion();
-  t.FirstRender = watch.Elapsed();
+  w.Show(v, mapper, false);
+  const View overview;
+  t.FirstRender = w.FirstFrame(v);
   t.GPU = mapper->GetLastUsedRenderMode() == vtkSmartVolumeMapper::GPURenderMode;
   t.Frame = OrbitFrames(w, v, overview, frames, seconds);
   return t;
@@ -938,13 +922,8 @@ VTKTiming TimeVTK(
 Picture VTKImage(const Volume& v, vtkImageData* image, const View& view, int width, int height)
 {
   Window w(width, height, Background, true);
-  vtkNew<vtkVolumeProperty> property;
-  ConfigureProperty(property, v, false);
   vtkSmartPointer<vtkSmartVolumeMapper> mapper = MakeVTKMapper(v, image);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  w.Ren->AddVolume(volume);
+  w.Show(v, mapper, false);
   return Snapshot(w, v, view, mapper);
 }
 
