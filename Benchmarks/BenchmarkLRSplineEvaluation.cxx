@@ -177,9 +177,9 @@ void BenchmarkLocators(const std::string& label, const std::vector<double>& boxe
     }
     rows.push_back(row);
   }
-  std::cout << "  structure            build [s]  memory [MB]   nodes     min  max  mean depth  "
-               "var depth   look-ups/s 1 core   look-ups/s "
-            << vtkSMPTools::GetEstimatedNumberOfThreads() << " cores\n";
+  std::cout << "  structure            build [s] " << lrbench::StatisticsHeader()
+            << "   look-ups/s 1 core   look-ups/s " << vtkSMPTools::GetEstimatedNumberOfThreads()
+            << " cores\n";
   for (const Row& r : rows)
   {
     if (!r.Built)
@@ -189,11 +189,8 @@ void BenchmarkLocators(const std::string& label, const std::vector<double>& boxe
       continue;
     }
     char line[300];
-    std::snprintf(line, sizeof(line),
-      "  %-20s %9.3f %11.1f %9lld %6d %4d %11.4f %10.4f %17.3e %17.3e\n", r.Name.c_str(),
-      r.BuildSeconds, r.Stats.MemoryBytes / 1048576.0,
-      static_cast<long long>(r.Stats.NumberOfNodes), r.Stats.MinDepth, r.Stats.MaxDepth,
-      r.Stats.MeanDepth, r.Stats.VarianceDepth, r.Single, r.Multi);
+    std::snprintf(line, sizeof(line), "  %-20s %9.3f %s %17.3e %17.3e\n", r.Name.c_str(),
+      r.BuildSeconds, lrbench::StatisticsRow(r.Stats).c_str(), r.Single, r.Multi);
     std::cout << line;
   }
   if (linearRate > 0)

@@ -8,6 +8,7 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkFloatArray.h"
+#include "vtkGarbageCollector.h"
 #include "vtkIdTypeArray.h"
 #include "vtkSMPTools.h"
 #include "vtkTypeUInt32Array.h"
@@ -158,6 +159,13 @@ vtkTessellatedTubeMapper::vtkTessellatedTubeMapper()
 
 //------------------------------------------------------------------------------
 vtkTessellatedTubeMapper::~vtkTessellatedTubeMapper() = default;
+
+//------------------------------------------------------------------------------
+void vtkTessellatedTubeMapper::ReportReferences(vtkGarbageCollector* collector)
+{
+  this->Superclass::ReportReferences(collector);
+  vtkGarbageCollectorReport(collector, this->Fallback, "Fallback");
+}
 
 //------------------------------------------------------------------------------
 bool vtkTessellatedTubeMapper::IsTessellationSupported(vtkRenderWindow* window)

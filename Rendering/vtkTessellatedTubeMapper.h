@@ -227,6 +227,10 @@ public:
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
+  // The fallback ray caster shares this mapper's input: reported to the
+  // garbage collector so that the pipeline cycle through it is collected.
+  void ReportReferences(vtkGarbageCollector* collector) override;
+
   vtkTessellatedTubeMapper();
   ~vtkTessellatedTubeMapper() override;
 

@@ -21,6 +21,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkPNGWriter.h"
+#include "vtkPixelBufferObject.h"
 #include "vtkPointData.h"
 #include "vtkMatrix4x4.h"
 #include "vtkMultiBlockDataSet.h"
@@ -30,6 +31,7 @@
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
@@ -285,10 +287,14 @@ inline Image Render(
         {
           continue;
         }
+        // The element of the previous sample is tried first (the same
+        // result as a full search: vtkLRSplineField::EvaluateWithHint).
+        int hintPatch = -1;
+        vtkIdType hintElement = -1;
         auto sample = [&](double t, double& s, double grad[3]) -> bool
         {
           const double x[3] = { o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2] };
-          if (field.Evaluate(x, value.data(), gradient.data()) < 0)
+          if (field.EvaluateWithHint(x, value.data(), gradient.data(), hintPatch, hintElement) < 0)
           {
             return false;
           }
@@ -477,8 +483,11 @@ inline Image Render(
   return image;
 }
 
-/// 8-bit RGB of premultiplied `image` over `background` (rounded).
-inline std::vector<double> OverBackground(const Image& image, const double background[3])
+/// 8-bit RGB of premultiplied `image` over `background` (rounded; with
+/// `round` false, in 8-bit units but not rounded, to compare with a
+/// floating-point rendering, see ReadRGBFloat).
+inline std::vector<double> OverBackground(
+  const Image& image, const double background[3], bool round = true)
 {
   const std::size_t n = image.RGBA.size() / 4;
   std::vector<double> rgb(3 * n);
@@ -487,7 +496,8 @@ inline std::vector<double> OverBackground(const Image& image, const double backg
     for (int c = 0; c < 3; ++c)
     {
       const double v = image.RGBA[4 * p + c] + (1.0 - image.RGBA[4 * p + 3]) * background[c];
-      rgb[3 * p + c] = std::round(255.0 * std::min(1.0, std::max(0.0, v)));
+      const double u = 255.0 * std::min(1.0, std::max(0.0, v));
+      rgb[3 * p + c] = round ? std::round(u) : u;
     }
   }
   return rgb;
@@ -504,6 +514,42 @@ inline std::vector<double> ReadRGB(vtkRenderWindow* win)
   {
     rgb[i] = data->GetValue(static_cast<vtkIdType>(i));
   }
+  return rgb;
+}
+
+/// RGB in 8-bit units, not rounded, of a floating-point color texture (e.g.
+/// the ColorTexture of a vtkFramebufferPass with ColorFormat Float32 that
+/// the renderer drew into), rows from the bottom. The RMS of two 8-bit
+/// images is dominated by rounding where they differ by a small fraction
+/// of a level (it grows like the square root of the difference); renderings
+/// read this way show the methods' own error instead.
+inline std::vector<double> ReadRGBFloat(vtkTextureObject* texture)
+{
+  std::vector<double> rgb;
+  if (!texture || texture->GetComponents() != 4)
+  {
+    return rgb;
+  }
+  const std::size_t n = static_cast<std::size_t>(texture->GetWidth()) * texture->GetHeight();
+  vtkPixelBufferObject* pbo = texture->Download();
+  if (!pbo)
+  {
+    return rgb;
+  }
+  const float* p = static_cast<const float*>(pbo->MapPackedBuffer());
+  if (p)
+  {
+    rgb.resize(3 * n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        rgb[3 * i + c] = 255.0 * std::min(1.0f, std::max(0.0f, p[4 * i + c]));
+      }
+    }
+    pbo->UnmapPackedBuffer();
+  }
+  pbo->Delete();
   return rgb;
 }
 
