@@ -9,7 +9,11 @@
 //  - time from a change of the glyph sharpness (gamma) to the next frame;
 // for
 //  - "superquadric": vtkSuperquadricGlyphMapper (per-tensor superquadrics,
-//    gamma 3; a gamma change is a uniform);
+//    gamma 3; a gamma change is a uniform: the mapper's upload count is
+//    printed before and after the gamma changes);
+//  - "superquadric-noculling": the same with occlusion culling off (one pass
+//    over all glyphs, the design before culling); the ratio of the two
+//    median frames is printed;
 //  - "tensorglyph": vtkTensorGlyph with a vtkSuperquadricSource (16 x 16,
 //    one fixed shape for all tensors) + vtkPolyDataMapper, the VTK/ParaView
 //    "Tensor Glyph" way (a gamma change = a new source shape: the glyphs are
@@ -23,8 +27,8 @@
 //
 // Usage:
 //   SplineVizTensorGlyphBenchmark [--glyphs 100k,1m] [--size 800x600,1200x768]
-//       [--renderers superquadric,tensorglyph,glyph3dmapper] [--frames N]
-//       [--seconds S] [--memory GB]
+//       [--renderers superquadric,superquadric-noculling,tensorglyph,glyph3dmapper]
+//       [--frames N] [--seconds S] [--memory GB]
 #include "BenchmarkCommon.h"
 #include "vtkSplineVizTensorMath.h"
 #include "vtkSuperquadricGlyphMapper.h"
@@ -137,6 +141,7 @@ struct Built
   vtkSmartPointer<vtkActor> Actor;
   std::function<double()> GPUBytes;
   std::function<void(double)> SetGamma;
+  std::function<int()> Uploads; // GPU uploads of the per-glyph data, if known
   std::string Note;
 };
 
@@ -157,6 +162,25 @@ std::map<std::string, Factory> Renderers()
     b.GPUBytes = [mapper]()
     { return static_cast<double>(mapper->GetGPUBytesPerGlyph()) * mapper->GetNumberOfGlyphs(); };
     b.SetGamma = [mapper](double g) { mapper->SetGamma(g); };
+    b.Uploads = [mapper]() { return mapper->GetUploadCount(); };
+    return b;
+  };
+  // the same without occlusion culling (one pass, as before culling existed)
+  r["superquadric-noculling"] = [](vtkImageData* data)
+  {
+    auto mapper = vtkSmartPointer<vtkSuperquadricGlyphMapper>::New();
+    mapper->SetInputData(data);
+    mapper->SetScaleFactor(GlyphScale);
+    mapper->SetGamma(3.0);
+    mapper->CullingOff();
+    Built b;
+    b.Actor = vtkSmartPointer<vtkActor>::New();
+    b.Actor->SetMapper(mapper);
+    b.GPUBytes = [mapper]()
+    { return static_cast<double>(mapper->GetGPUBytesPerGlyph()) * mapper->GetNumberOfGlyphs(); };
+    b.SetGamma = [mapper](double g) { mapper->SetGamma(g); };
+    b.Uploads = [mapper]() { return mapper->GetUploadCount(); };
+    b.Note = "culling off";
     return b;
   };
   r["tensorglyph"] = [](vtkImageData* data)
@@ -254,7 +278,10 @@ struct Result
 {
   double FirstFrame = 0.0;
   double MedianFrame = 0.0;
+  double MedianFrameCPU = 0.0; // process CPU time (both cores), less disturbed by other jobs
   double GammaChange = 0.0;
+  int UploadsBeforeGamma = -1; // upload counts around the gamma changes (-1: unknown)
+  int UploadsAfterGamma = -1;
   double BytesPerGlyph = 0.0;
   int Frames = 0;
   bool Skipped = false;
@@ -290,26 +317,31 @@ Result Run(const Factory& factory, vtkImageData* data, vtkRenderWindow* window, 
   r.BytesPerGlyph = built.GPUBytes() / static_cast<double>(data->GetNumberOfPoints());
   r.Note = built.Note;
 
-  std::vector<double> times;
+  std::vector<double> times, cpuTimes;
   const double orbitStart = Now();
   for (int i = 0; i < frames; ++i)
   {
     camera->Azimuth(360.0 / frames);
     const double t0 = Now();
+    const double c0 = CPUTime();
     window->Render();
     window->WaitForCompletion();
     times.push_back(Now() - t0);
+    cpuTimes.push_back(CPUTime() - c0);
     if (Now() - orbitStart > maxSeconds && times.size() >= 3)
     {
       break;
     }
   }
   std::sort(times.begin(), times.end());
+  std::sort(cpuTimes.begin(), cpuTimes.end());
   r.Frames = static_cast<int>(times.size());
   r.MedianFrame = times[times.size() / 2];
+  r.MedianFrameCPU = cpuTimes[cpuTimes.size() / 2];
 
   // Gamma change to the next finished frame (median of 3 changes).
   std::vector<double> changes;
+  r.UploadsBeforeGamma = built.Uploads ? built.Uploads() : -1;
   const double gammas[3] = { 6.0, 1.5, 3.0 };
   for (double g : gammas)
   {
@@ -321,6 +353,7 @@ Result Run(const Factory& factory, vtkImageData* data, vtkRenderWindow* window, 
   }
   std::sort(changes.begin(), changes.end());
   r.GammaChange = changes[1];
+  r.UploadsAfterGamma = built.Uploads ? built.Uploads() : -1;
   renderer->RemoveAllViewProps();
   window->RemoveRenderer(renderer);
   built.Actor->ReleaseGraphicsResources(window);
@@ -370,8 +403,9 @@ double AvailableGB()
 
 const char* const Usage =
   "Usage: SplineVizTensorGlyphBenchmark [--glyphs 10k,100k,1m] [--size 800x600,1200x768]\n"
-  "    [--renderers superquadric,tensorglyph,glyph3dmapper] [--frames N]\n"
-  "    [--seconds S] [--memory GB]\n"
+  "    [--renderers superquadric,superquadric-noculling,tensorglyph,glyph3dmapper]\n"
+  "    [--frames N] [--seconds S] [--memory GB]\n"
+  "superquadric-noculling: the superquadric glyphs with occlusion culling off.\n"
   "Polygonal renderers are skipped when their estimated memory exceeds --memory\n"
   "(default 16 GB).\n";
 
@@ -387,7 +421,8 @@ int main(int argc, char* argv[])
   }
   std::vector<std::string> counts = { "100k", "1m" };
   std::vector<std::string> sizes = { "800x600", "1200x768" };
-  std::vector<std::string> renderers = { "superquadric", "tensorglyph", "glyph3dmapper" };
+  std::vector<std::string> renderers = { "superquadric", "superquadric-noculling", "tensorglyph",
+    "glyph3dmapper" };
   int frames = 24;
   double seconds = 20.0;
   double memoryGB = 16.0;
@@ -442,8 +477,8 @@ int main(int argc, char* argv[])
       window->SetSize(w, h);
       window->SetMultiSamples(0);
       std::printf("-- %dx%d (load average before: %s)\n", w, h, LoadAverage().c_str());
-      std::printf("  %-14s %14s %12s %16s %16s %7s\n", "renderer", "first frame s", "GPU B/glyph",
-        "median frame ms", "gamma change ms", "frames");
+      std::printf("  %-22s %14s %12s %16s %10s %16s %7s\n", "renderer", "first frame s",
+        "GPU B/glyph", "median frame ms", "(CPU ms)", "gamma change ms", "frames");
       std::map<std::string, Result> results;
       for (const auto& name : renderers)
       {
@@ -460,15 +495,29 @@ int main(int argc, char* argv[])
         }
         const Result r = Run(factories.at(name), data, window, frames, seconds);
         results[name] = r;
-        std::printf("  %-14s %14.3f %12.1f %16.1f %16.1f %7d %s\n", name.c_str(), r.FirstFrame,
-          r.BytesPerGlyph, 1000.0 * r.MedianFrame, 1000.0 * r.GammaChange, r.Frames,
-          r.Note.c_str());
+        std::printf("  %-22s %14.3f %12.1f %16.1f %10.1f %16.1f %7d %s\n", name.c_str(),
+          r.FirstFrame, r.BytesPerGlyph, 1000.0 * r.MedianFrame, 1000.0 * r.MedianFrameCPU,
+          1000.0 * r.GammaChange, r.Frames, r.Note.c_str());
+        if (r.UploadsBeforeGamma >= 0)
+        {
+          std::printf("  %-22s uploads before the 3 gamma changes %d, after %d (%s)\n", "",
+            r.UploadsBeforeGamma, r.UploadsAfterGamma,
+            r.UploadsAfterGamma == r.UploadsBeforeGamma ? "uniforms only" : "RE-UPLOADED");
+        }
         std::fflush(stdout);
       }
       std::printf("  (load average after: %s)\n", LoadAverage().c_str());
       if (results.count("superquadric"))
       {
         const Result& s = results["superquadric"];
+        if (results.count("superquadric-noculling"))
+        {
+          const Result& o = results["superquadric-noculling"];
+          std::printf("  culling on vs off: median frame %.2fx shorter (CPU time %.2fx less), "
+                      "first frame ratio %.2f\n",
+            o.MedianFrame / s.MedianFrame, o.MedianFrameCPU / s.MedianFrameCPU,
+            s.FirstFrame / o.FirstFrame);
+        }
         for (const char* other : { "tensorglyph", "glyph3dmapper" })
         {
           if (!results.count(other) || results[other].Skipped)

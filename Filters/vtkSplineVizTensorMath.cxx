@@ -371,6 +371,30 @@ bool KindlmannShape(
 }
 
 //------------------------------------------------------------------------------
+bool SchultzKindlmannSquare(const double values[3], bool traceNormalized, double uv[2])
+{
+  const glm::dvec3 s =
+    shared::svtSchultzKindlmannSquare(glm::dvec3(values[0], values[1], values[2]), traceNormalized);
+  const bool mirrored = s.z > 0.5; // folded: the point of -T
+  uv[0] = mirrored ? 1.0 - s.x : s.x;
+  uv[1] = mirrored ? 1.0 - s.y : s.y;
+  return mirrored;
+}
+
+//------------------------------------------------------------------------------
+bool SchultzKindlmannShape(
+  const double values[3], double gamma, double minimumRoundness, double abc[3])
+{
+  glm::dvec3 r;
+  const bool axisE1 = shared::svtSchultzKindlmannShape(
+    glm::dvec3(values[0], values[1], values[2]), gamma, minimumRoundness, r);
+  abc[0] = r.x;
+  abc[1] = r.y;
+  abc[2] = r.z;
+  return axisE1;
+}
+
+//------------------------------------------------------------------------------
 void FromEigenSystem(const double values[3], const double vectors[3][3], double t[6])
 {
   for (int i = 0; i < 6; ++i)

@@ -18,7 +18,11 @@
  * - FractionalAnisotropy(), MeanDiffusivity(), WestinMetrics() (trace
  *   normalized as Teem: cl = (l1-l2)/S, cp = 2(l2-l3)/S, cs = 3 l3/S,
  *   S = l1+l2+l3, all 0 when S <= 0).
- * - ApplySignPolicy(): negative eigenvalues (skip, or absolute values).
+ * - ApplySignPolicy(): negative eigenvalues (skip, absolute values, or keep
+ *   them for the Schultz-Kindlmann glyphs).
+ * - SchultzKindlmannSquare(), SchultzKindlmannShape(): the superquadric glyph
+ *   of any symmetric tensor, definite or not (Schultz and Kindlmann 2010;
+ *   see glsl/vtkTensorMathShared.glsl for the definitions implemented).
  * - KindlmannShape(): superquadric exponents alpha, beta and symmetry axis
  *   from cl, cp and the sharpness gamma (Kindlmann 2004; Hlawitschka et al.
  *   §2; Teem's rule, see ../shared/docs/field-notes.md).
@@ -164,7 +168,10 @@ enum SignPolicy
   /// slightly negative values from rounding are set to 0).
   SIGN_SKIP = 0,
   /// Use the absolute values of the eigenvalues, re-sorted with their vectors.
-  SIGN_ABSOLUTE = 1
+  SIGN_ABSOLUTE = 1,
+  /// Keep the signed eigenvalues: the Schultz-Kindlmann glyphs
+  /// (SchultzKindlmannShape()) draw every sign pattern.
+  SIGN_SCHULTZ_KINDLMANN = 2
 };
 
 /**
@@ -185,6 +192,37 @@ SPLINEVIZ_EXPORT bool ApplySignPolicy(int policy, double values[3], double vecto
  */
 SPLINEVIZ_EXPORT bool KindlmannShape(
   double cl, double cp, double gamma, double minimumRoundness, double& alpha, double& beta);
+
+/**
+ * The point (uv[0], uv[1]) in [0, 1]^2 of sorted eigenvalues (values[0] >=
+ * values[1] >= values[2], any signs) in the shape square of Schultz and
+ * Kindlmann (2010, §4.2; Teem's tenGlyphBqdUvEval): (1, 1) and (0, 0) are the
+ * positive and negative isotropic tensors, u + v >= 1.5 the positive
+ * semi-definite ones, (1/2, 1/2) diag(1, 0, -1). Returns true when the tensor
+ * is negative-dominant (values[0] + values[2] < 0: its glyph is that of -T).
+ * traceNormalized = true gives the placement the glyphs use, in which the
+ * definite triangle follows Westin's trace-normalized cl, cp (so that
+ * definite glyphs equal KindlmannShape()'s); false gives the paper's.
+ */
+SPLINEVIZ_EXPORT bool SchultzKindlmannSquare(
+  const double values[3], bool traceNormalized, double uv[2]);
+
+/**
+ * The Schultz-Kindlmann superquadric glyph (Schultz and Kindlmann 2010,
+ * §4.3, as Teem's tenGlyphBqdAbcUv and Deft's palette) of sorted eigenvalues
+ * of any signs: abc = (alpha, beta, c), the glyph about its symmetry axis w
+ * (u, v the two other axes, v along e2) being
+ * (|u| / R_beta(w))^(2/alpha) + (|v| / R_c(w))^(2/alpha) <= 1 with
+ * R_e(w) = (1 - |w|^(2/e))^(e/2) (for c = beta: the superquadric
+ * (|u|^(2/alpha) + |v|^(2/alpha))^(alpha/beta) + |w|^(2/beta) <= 1), scaled
+ * by |values[i]| along vectors[i]. Sharpened by gamma, alpha clamped to
+ * [minimumRoundness, 1], beta and c to [minimumRoundness, 1/minimumRoundness].
+ * Returns true when the symmetry axis is e1, false for e3. For positive
+ * definite tensors the result is KindlmannShape()'s (alpha, beta, beta) and
+ * axis. T and -T give the same glyph.
+ */
+SPLINEVIZ_EXPORT bool SchultzKindlmannShape(
+  const double values[3], double gamma, double minimumRoundness, double abc[3]);
 
 /**
  * t = sum_i values[i] vectors[i] vectors[i]^T (vectors[i] the unit

@@ -56,6 +56,7 @@ struct AnalysisWorker
   T* CP;
   T* CS;
   T* Confidence;
+  T* Shape; // Schultz-Kindlmann (u, v)
   // Counts per thread, kept across the batches of vtkSplineVizProgress::For
   // (so no Initialize() that would reset them per batch).
   vtkSMPThreadLocal<vtkIdType> Invalid{ 0 };
@@ -83,6 +84,7 @@ struct AnalysisWorker
           }
         }
         this->FA[i] = this->MD[i] = this->CL[i] = this->CP[i] = this->CS[i] = nan;
+        this->Shape[2 * i] = this->Shape[2 * i + 1] = nan;
         if (this->Confidence)
         {
           // the confidence may still be meaningful, but the tuple is invalid
@@ -110,6 +112,10 @@ struct AnalysisWorker
       this->CL[i] = static_cast<T>(cl);
       this->CP[i] = static_cast<T>(cp);
       this->CS[i] = static_cast<T>(cs);
+      double uv[2];
+      TM::SchultzKindlmannSquare(w, false, uv);
+      this->Shape[2 * i] = static_cast<T>(uv[0]);
+      this->Shape[2 * i + 1] = static_cast<T>(uv[1]);
       if (this->Confidence)
       {
         this->Confidence[i] = static_cast<T>(conf);
@@ -142,6 +148,7 @@ vtkIdType Run(
   worker.CP = Ptr<T>(out[7]);
   worker.CS = Ptr<T>(out[8]);
   worker.Confidence = Ptr<T>(out[9]);
+  worker.Shape = Ptr<T>(out[10]);
   if (!vtkSplineVizProgress::For(progress, 0, tensors->GetNumberOfTuples(), 0, 8192,
         [&worker](vtkIdType begin, vtkIdType end) { worker(begin, end); }))
   {
@@ -225,6 +232,7 @@ int vtkTensorAnalysisFilter::RequestData(
   arrays.push_back(NewArray(dbl, "PlanarAnisotropy", 1, n));
   arrays.push_back(NewArray(dbl, "SphericalAnisotropy", 1, n));
   arrays.push_back(layout == TM::TEEM_7 ? NewArray(dbl, "Confidence", 1, n) : nullptr);
+  arrays.push_back(NewArray(dbl, "ShapeCoordinates", 2, n));
   std::vector<vtkDataArray*> raw;
   for (auto& a : arrays)
   {

@@ -17,12 +17,25 @@
  * | `PlanarAnisotropy`     | 1     | Westin cp = 2 (l2 - l3) / S                   |
  * | `SphericalAnisotropy`  | 1     | Westin cs = 3 l3 / S                          |
  * | `Confidence`           | 1     | only for TEEM_7 input: the leading value      |
+ * | `ShapeCoordinates`     | 2     | (u, v): the tensor's shape in the square of   |
+ * |                        |       | Schultz and Kindlmann, any signs (see below)  |
  *
  * with S = l1 + l2 + l3 (the trace normalization Teem uses; all three are 0
  * when S <= 0, and they lie outside [0, 1] for indefinite tensors). These are
  * the quantities the superquadric glyphs are built from (Kindlmann 2004,
  * Hlawitschka et al. §2), for coloring and thresholding in ParaView; the math
  * is vtkSplineVizTensorMath, shared with vtkSuperquadricGlyphMapper.
+ *
+ * ShapeCoordinates (vtkSplineVizTensorMath::SchultzKindlmannSquare, the
+ * paper's placement, the shared code of the Schultz-Kindlmann glyphs) is
+ * defined for every sign pattern, unlike the Westin metrics: with the
+ * eigenvalues divided by the largest |l_i|, u = (l2 + 1)/2 and v the position
+ * along the smallest (positive-dominant tensors) or largest (negative-dominant
+ * ones) eigenvalue; (1, 1) and (0, 0) are the positive and negative
+ * isotropic tensors, u + v >= 1.5 the positive semi-definite ones,
+ * u + v <= 0.5 the negative ones, (1/2, 1/2) diag(1, 0, -1). Coloring by it
+ * (or thresholding u + v) separates tension, compression and shear in stress
+ * fields.
  *
  * Component layouts (vtkSplineVizTensorMath::TensorLayout): 9-component
  * arrays are read as full 3x3 matrices (symmetrized) and 7-component arrays

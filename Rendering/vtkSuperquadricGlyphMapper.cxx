@@ -5,6 +5,8 @@
 
 #include "vtkAlgorithmOutput.h"
 #include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
 #include "vtkExecutive.h"
@@ -16,10 +18,18 @@
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkMultiBlockDataSet.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
+#include "vtkPartitionedDataSet.h"
+#include "vtkPartitionedDataSetCollection.h"
 #include "vtkOpenGLActor.h"
 #include "vtkOpenGLCamera.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLQuadHelper.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkOpenGLHelper.h"
 #include "vtkOpenGLIndexBufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -37,6 +47,7 @@
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "vtkSuperquadricGlyphFS.h"
@@ -48,6 +59,7 @@
 #include "vtk_glew.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -70,11 +82,441 @@ public:
   std::string ColorKey;
   bool HaveColors = false;
   bool ShaderHaveColors = false;
+  bool ShaderGeneralShapes = false;
+  bool ShaderClip = false;
+  // per-block attributes of composite inputs, uploaded per glyph
+  vtkSmartPointer<vtkCompositeDataDisplayAttributes> BlockAttributes;
+  vtkNew<vtkFloatArray> BlockColors;
+  bool HaveBlockColors = false;
+  bool ShaderHaveBlockColors = false;
+  bool AnyTranslucentBlock = false;
+
+  /// The block attributes of every leaf of a composite input, in the
+  /// preparer's order: (r, g, b or -1 for none, opacity; 0 hidden), and the
+  /// first concatenated point id of each leaf (one more entry). Returns false
+  /// when there are no attributes or none applies; sets AnyTranslucentBlock.
+  bool BlockColorsOfLeaves(
+    std::vector<vtkIdType>& firstId, std::vector<std::array<float, 4>>& leafColor)
+  {
+    this->AnyTranslucentBlock = false;
+    vtkCompositeDataSet* composite =
+      vtkCompositeDataSet::SafeDownCast(this->Preparer->GetInputDataObject(0, 0));
+    if (!this->BlockAttributes || !composite)
+    {
+      return false;
+    }
+    // the leaves' states, inherited from the nearest block that sets them
+    // (as vtkCompositePolyDataMapper2 does: ParaView hides the root and
+    // shows the selected blocks)
+    std::vector<vtkDataSet*> leaves;
+    std::vector<std::array<float, 4>> states;
+    bool any = false;
+    this->CollectBlockStates(composite, { -1.0f, -1.0f, -1.0f, 1.0f }, true, leaves, states, any);
+    if (leaves != vtkCompositeDataSet::GetDataSets(composite))
+    {
+      // a composite type whose structure is not walked here: the leaves' own
+      // attributes only
+      const std::vector<vtkDataSet*> all = vtkCompositeDataSet::GetDataSets(composite);
+      leaves.clear();
+      states.clear();
+      any = false;
+      for (vtkDataSet* leaf : all)
+      {
+        this->CollectBlockStates(leaf, { -1.0f, -1.0f, -1.0f, 1.0f }, true, leaves, states, any);
+      }
+      if (leaves != all)
+      {
+        return false; // (empty leaves: no attributes)
+      }
+    }
+    firstId.assign(leaves.size() + 1, 0);
+    leafColor = states;
+    for (size_t b = 0; b < leaves.size(); ++b)
+    {
+      firstId[b + 1] = firstId[b] + leaves[b]->GetNumberOfPoints();
+      const float a = leafColor[b][3];
+      this->AnyTranslucentBlock = this->AnyTranslucentBlock || (a > 0.0f && a < 1.0f);
+    }
+    return any;
+  }
+
+  /// Depth-first over multiblocks and partitioned collections: a node's
+  /// color, opacity and visibility override the inherited ones; leaves (data
+  /// sets) are appended with their state (opacity 0 when invisible).
+  void CollectBlockStates(vtkDataObject* node, std::array<float, 4> state, bool visible,
+    std::vector<vtkDataSet*>& leaves, std::vector<std::array<float, 4>>& states, bool& any)
+  {
+    if (!node)
+    {
+      return;
+    }
+    vtkCompositeDataDisplayAttributes* attributes = this->BlockAttributes;
+    if (attributes->HasBlockColor(node))
+    {
+      double rgb[3];
+      attributes->GetBlockColor(node, rgb);
+      state = { static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2]),
+        state[3] };
+      any = true;
+    }
+    if (attributes->HasBlockOpacity(node))
+    {
+      state[3] =
+        static_cast<float>(std::max(0.0, std::min(1.0, attributes->GetBlockOpacity(node))));
+      any = true;
+    }
+    if (attributes->HasBlockVisibility(node))
+    {
+      visible = attributes->GetBlockVisibility(node);
+      any = any || !visible;
+    }
+    if (auto* ds = vtkDataSet::SafeDownCast(node))
+    {
+      if (ds->GetNumberOfPoints() > 0 || ds->GetNumberOfCells() > 0)
+      {
+        leaves.push_back(ds);
+        std::array<float, 4> leafState = state;
+        if (!visible)
+        {
+          leafState[3] = 0.0f;
+        }
+        states.push_back(leafState);
+      }
+    }
+    else if (auto* mb = vtkMultiBlockDataSet::SafeDownCast(node))
+    {
+      for (unsigned int i = 0; i < mb->GetNumberOfBlocks(); ++i)
+      {
+        this->CollectBlockStates(mb->GetBlock(i), state, visible, leaves, states, any);
+      }
+    }
+    else if (auto* pdc = vtkPartitionedDataSetCollection::SafeDownCast(node))
+    {
+      for (unsigned int i = 0; i < pdc->GetNumberOfPartitionedDataSets(); ++i)
+      {
+        this->CollectBlockStates(
+          pdc->GetPartitionedDataSet(i), state, visible, leaves, states, any);
+      }
+    }
+    else if (auto* pds = vtkPartitionedDataSet::SafeDownCast(node))
+    {
+      for (unsigned int i = 0; i < pds->GetNumberOfPartitions(); ++i)
+      {
+        this->CollectBlockStates(pds->GetPartition(i), state, visible, leaves, states, any);
+      }
+    }
+  }
   const void* UploadedTensors = nullptr;
   vtkMTimeType UploadedTensorsTime = 0;
   int BytesPerGlyph = 0;
   bool TooLarge = false; // the glyphs did not fit on the GPU: draw nothing
+
+  // Occlusion culling: per brick its group of the current view, the draw
+  // ranges of each group, the depth pyramid (level 0: a copy of the depth
+  // buffer; levels 1, 2, 4, 6: maxima over 2^k x 2^k pixels).
+  std::vector<unsigned char> BrickGroup;
+  static constexpr int MaxGroups = 16;
+  static constexpr int FrontSplits = 2; // parts of the front layer (ComputeGroups)
+  std::vector<GLint> First[MaxGroups];
+  std::vector<GLsizei> Count[MaxGroups];
+  vtkIdType GroupGlyphs[MaxGroups] = {};
+  int Pyramids = 0;
+  vtkNew<vtkTextureObject> Depth;
+  vtkNew<vtkTextureObject> Level[4]; // 2, 4, 16, 64 pixels
+  vtkNew<vtkOpenGLFramebufferObject> LevelFBO;
+  std::unique_ptr<vtkOpenGLQuadHelper> Reduce;
+
+  /// Groups of the bricks for a camera at `eye` (model coordinates; for a
+  /// parallel projection eye is the direction towards the camera and
+  /// parallel is true): front (0), second (1) and deeper (2) layers, from
+  /// the non-empty bricks between a brick and the camera side along the
+  /// grid axes. Fills the draw ranges. Returns false for a single brick.
+  bool ComputeGroups(vtkPolyData* glyphs, const double eye[3], bool parallel, int groups);
+
+  /// Builds the depth pyramid of the viewport (x0, y0, w, h) of the current
+  /// draw framebuffer.
+  void BuildPyramid(vtkOpenGLRenderWindow* renWin, int x0, int y0, int w, int h);
+
+  void ReleaseGraphicsResources(vtkWindow* win)
+  {
+    this->Depth->ReleaseGraphicsResources(win);
+    for (auto& level : this->Level)
+    {
+      level->ReleaseGraphicsResources(win);
+    }
+    this->LevelFBO->ReleaseGraphicsResources(win);
+    if (this->Reduce)
+    {
+      this->Reduce->ReleaseGraphicsResources(win);
+      this->Reduce.reset();
+    }
+  }
 };
+
+namespace
+{
+// The reduction pass of the depth pyramid: each texel the maximum of a
+// factor x factor block of the finer level (clamped at its edges).
+const char* const PyramidReduceFS = R"(//VTK::System::Dec
+in vec2 texCoord;
+uniform sampler2D source;
+uniform ivec2 sourceSize;
+uniform int factor;
+//VTK::Output::Dec
+void main()
+{
+  ivec2 base = factor * ivec2(gl_FragCoord.xy);
+  float m = 0.0;
+  if (texCoord.x < -1.0)
+  {
+    m = 1.0; // never: keeps the quad's texture coordinate attribute in use
+  }
+  for (int j = 0; j < factor; ++j)
+  {
+    for (int i = 0; i < factor; ++i)
+    {
+      m = max(m, texelFetch(source, min(base + ivec2(i, j), sourceSize - 1), 0).r);
+    }
+  }
+  gl_FragData[0] = vec4(m, 0.0, 0.0, 1.0);
+}
+)";
+}
+
+//------------------------------------------------------------------------------
+bool vtkSuperquadricGlyphMapper::Internals::ComputeGroups(
+  vtkPolyData* glyphs, const double eye[3], bool parallel, int groups)
+{
+  const int deepest = std::max(1, std::min(groups, MaxGroups)) - 1;
+  vtkDataArray* gridArray = glyphs->GetFieldData()->GetArray("sqBrickGrid");
+  vtkIdTypeArray* offsetArray =
+    vtkArrayDownCast<vtkIdTypeArray>(glyphs->GetFieldData()->GetArray("sqBrickOffsets"));
+  if (!gridArray || !offsetArray || gridArray->GetNumberOfTuples() != 9)
+  {
+    return false;
+  }
+  double origin[3], spacing[3];
+  int dims[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    origin[c] = gridArray->GetTuple1(c);
+    spacing[c] = gridArray->GetTuple1(3 + c);
+    dims[c] = static_cast<int>(gridArray->GetTuple1(6 + c));
+  }
+  const vtkIdType bricks = static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2];
+  if (bricks <= 1 || offsetArray->GetNumberOfTuples() != bricks + 1)
+  {
+    return false;
+  }
+  const vtkIdType* offsets = offsetArray->GetPointer(0);
+  this->BrickGroup.resize(bricks);
+  unsigned char* group = this->BrickGroup.data();
+  vtkSMPTools::For(0, bricks,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType b = begin; b < end; ++b)
+      {
+        if (offsets[b + 1] == offsets[b])
+        {
+          group[b] = 0;
+          continue;
+        }
+        const int cell[3] = { static_cast<int>(b % dims[0]),
+          static_cast<int>((b / dims[0]) % dims[1]),
+          static_cast<int>(b / (static_cast<vtkIdType>(dims[0]) * dims[1])) };
+        // towards the camera from the brick's center
+        double dir[3];
+        double length = 0.0;
+        for (int c = 0; c < 3; ++c)
+        {
+          dir[c] = parallel ? eye[c] : eye[c] - (origin[c] + (cell[c] + 0.5) * spacing[c]);
+          length = std::max(length, std::abs(dir[c]));
+        }
+        // The layer: along each grid axis that faces the camera, the number
+        // of non-empty bricks between this one and the camera side (at most
+        // 2, looking 8 bricks far); the smallest over the axes. (A ray
+        // towards the camera would also count the brick's neighbours on the
+        // same visible face.)
+        int layer = deepest;
+        for (int c = 0; c < 3 && layer > 0; ++c)
+        {
+          if (!(std::abs(dir[c]) > 0.05 * length))
+          {
+            continue;
+          }
+          const int step = dir[c] > 0 ? 1 : -1;
+          // the camera's brick along this axis (perspective): no further
+          int last = step > 0 ? dims[c] - 1 : 0;
+          if (!parallel)
+          {
+            const int eyeCell = static_cast<int>(std::floor((eye[c] - origin[c]) / spacing[c]));
+            last = step > 0 ? std::min(last, eyeCell) : std::max(last, eyeCell);
+          }
+          int found = 0;
+          int k[3] = { cell[0], cell[1], cell[2] };
+          for (int walked = 0; walked < 4 * deepest + 4 && found < layer; ++walked)
+          {
+            if (k[c] == last)
+            {
+              break;
+            }
+            k[c] += step;
+            const vtkIdType n = k[0] + dims[0] * (k[1] + static_cast<vtkIdType>(dims[1]) * k[2]);
+            found += offsets[n + 1] > offsets[n] ? 1 : 0;
+            if (walked == 4 * deepest + 3)
+            {
+              found = deepest; // not resolved: behind
+            }
+          }
+          layer = std::min(layer, found);
+        }
+        group[b] = static_cast<unsigned char>(layer);
+      }
+    });
+  // The front layer is drawn in FrontSplits parts, nearest bricks first:
+  // its glyphs' sprites overlap their neighbours', so later parts are culled
+  // against earlier ones too. Deeper layers follow.
+  const int splits = std::min(FrontSplits, deepest);
+  if (splits > 1)
+  {
+    std::vector<std::pair<double, vtkIdType>> front;
+    for (vtkIdType b = 0; b < bricks; ++b)
+    {
+      if (offsets[b + 1] > offsets[b] && group[b] == 0)
+      {
+        const double center[3] = { origin[0] + (b % dims[0] + 0.5) * spacing[0],
+          origin[1] + ((b / dims[0]) % dims[1] + 0.5) * spacing[1],
+          origin[2] + (b / (static_cast<vtkIdType>(dims[0]) * dims[1]) + 0.5) * spacing[2] };
+        const double depth = parallel
+          ? -(center[0] * eye[0] + center[1] * eye[1] + center[2] * eye[2])
+          : (center[0] - eye[0]) * (center[0] - eye[0]) +
+            (center[1] - eye[1]) * (center[1] - eye[1]) +
+            (center[2] - eye[2]) * (center[2] - eye[2]);
+        front.emplace_back(depth, b);
+      }
+    }
+    std::sort(front.begin(), front.end());
+    for (vtkIdType b = 0; b < bricks; ++b)
+    {
+      if (group[b] > 0)
+      {
+        group[b] = static_cast<unsigned char>(std::min(group[b] + splits - 1, deepest));
+      }
+    }
+    for (size_t k = 0; k < front.size(); ++k)
+    {
+      group[front[k].second] = static_cast<unsigned char>((k * splits) / front.size());
+    }
+  }
+  for (int g = 0; g < MaxGroups; ++g)
+  {
+    this->First[g].clear();
+    this->Count[g].clear();
+    this->GroupGlyphs[g] = 0;
+  }
+  for (vtkIdType b = 0; b < bricks; ++b)
+  {
+    const vtkIdType n = offsets[b + 1] - offsets[b];
+    if (n == 0)
+    {
+      continue;
+    }
+    const int g = group[b];
+    this->GroupGlyphs[g] += n;
+    if (!this->First[g].empty() &&
+      this->First[g].back() + this->Count[g].back() == static_cast<GLint>(offsets[b]))
+    {
+      this->Count[g].back() += static_cast<GLsizei>(n);
+    }
+    else
+    {
+      this->First[g].push_back(static_cast<GLint>(offsets[b]));
+      this->Count[g].push_back(static_cast<GLsizei>(n));
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSuperquadricGlyphMapper::Internals::BuildPyramid(
+  vtkOpenGLRenderWindow* renWin, int x0, int y0, int w, int h)
+{
+  vtkOpenGLState* ostate = renWin->GetState();
+  // Level 0: the depth buffer of the current draw framebuffer.
+  this->Depth->SetContext(renWin);
+  if (!this->Depth->GetHandle() || static_cast<int>(this->Depth->GetWidth()) != w ||
+    static_cast<int>(this->Depth->GetHeight()) != h)
+  {
+    this->Depth->AllocateDepth(w, h, vtkTextureObject::Float32);
+  }
+  unsigned int drawBinding = 0, drawBuffer = 0;
+  ostate->GetCurrentDrawFramebufferState(drawBinding, drawBuffer);
+  ostate->PushReadFramebufferBinding();
+  ostate->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
+  this->Depth->CopyFromFrameBuffer(x0, y0, 0, 0, w, h);
+  this->Depth->Deactivate();
+  ostate->PopReadFramebufferBinding();
+
+  // Levels 1, 2, 4, 6 (2, 4, 16, 64 pixels).
+  if (!this->Reduce)
+  {
+    this->Reduce.reset(new vtkOpenGLQuadHelper(renWin, nullptr, PyramidReduceFS, ""));
+  }
+  else
+  {
+    renWin->GetShaderCache()->ReadyShaderProgram(this->Reduce->Program);
+  }
+  vtkShaderProgram* program = this->Reduce->Program;
+  if (!program)
+  {
+    return;
+  }
+  vtkOpenGLState::ScopedglViewport savedViewport(ostate);
+  vtkOpenGLState::ScopedglScissor savedScissor(ostate);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(ostate);
+  vtkOpenGLState::ScopedglColorMask savedColorMask(ostate);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(ostate, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(ostate, GL_BLEND);
+  ostate->vtkglDisable(GL_DEPTH_TEST);
+  ostate->vtkglDisable(GL_BLEND);
+  ostate->vtkglDepthMask(GL_FALSE);
+  ostate->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  ostate->PushFramebufferBindings();
+  this->LevelFBO->SetContext(renWin);
+  vtkTextureObject* source = this->Depth;
+  int sw = w, sh = h;
+  const int factors[4] = { 2, 2, 4, 4 };
+  for (int l = 0; l < 4; ++l)
+  {
+    vtkTextureObject* level = this->Level[l];
+    const int factor = factors[l];
+    const int dw = (sw + factor - 1) / factor, dh = (sh + factor - 1) / factor;
+    level->SetContext(renWin);
+    if (!level->GetHandle() || static_cast<int>(level->GetWidth()) != dw ||
+      static_cast<int>(level->GetHeight()) != dh)
+    {
+      level->Allocate2D(dw, dh, 1, VTK_FLOAT);
+    }
+    this->LevelFBO->Bind();
+    this->LevelFBO->AddColorAttachment(0, level);
+    this->LevelFBO->ActivateDrawBuffer(0);
+    ostate->vtkglViewport(0, 0, dw, dh);
+    ostate->vtkglScissor(0, 0, dw, dh);
+    source->Activate();
+    program->SetUniformi("source", source->GetTextureUnit());
+    const int size[2] = { sw, sh };
+    program->SetUniform2i("sourceSize", size);
+    program->SetUniformi("factor", factor);
+    this->Reduce->Render();
+    source->Deactivate();
+    source = level;
+    sw = dw;
+    sh = dh;
+  }
+  this->LevelFBO->RemoveColorAttachment(0);
+  ostate->PopFramebufferBindings();
+  ++this->Pyramids;
+}
 
 namespace
 {
@@ -284,8 +726,146 @@ void vtkSuperquadricGlyphMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act
   if (numVerts > 0 && !this->Internal->TooLarge)
   {
     this->UpdateShaders(this->Primitives[PrimitiveTris], ren, actor);
-    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(numVerts));
+    GLuint query = 0;
+    if (this->CountSprites)
+    {
+      glGenQueries(1, &query);
+      glBeginQuery(GL_PRIMITIVES_GENERATED, query);
+    }
+    this->DrawGlyphs(ren, actor, numVerts);
+    if (this->CountSprites)
+    {
+      glEndQuery(GL_PRIMITIVES_GENERATED);
+      GLuint primitives = 0;
+      glGetQueryObjectuiv(query, GL_QUERY_RESULT, &primitives);
+      glDeleteQueries(1, &query);
+      this->LastSpriteTriangles = static_cast<vtkIdType>(primitives);
+    }
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkSuperquadricGlyphMapper::UseCulling(vtkRenderer*, vtkActor* actor)
+{
+  if (!this->Culling || actor->IsRenderingTranslucentPolygonalGeometry() ||
+    actor->GetProperty()->GetOpacity() < 1.0)
+  {
+    return false;
+  }
+  GLint sampleBuffers = 0;
+  glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+  return sampleBuffers == 0; // a multisampled depth buffer cannot be copied
+}
+
+//------------------------------------------------------------------------------
+void vtkSuperquadricGlyphMapper::DrawGlyphs(vtkRenderer* ren, vtkActor* actor, int numVerts)
+{
+  Internals& in = *this->Internal;
+  vtkOpenGLHelper& cellBO = this->Primitives[PrimitiveTris];
+  vtkShaderProgram* program = cellBO.Program;
+  in.Pyramids = 0;
+  for (vtkIdType& n : in.GroupGlyphs)
+  {
+    n = 0;
+  }
+  in.GroupGlyphs[0] = numVerts;
+
+  // The camera in model coordinates.
+  vtkCamera* camera = ren->GetActiveCamera();
+  const bool parallel = camera->GetParallelProjection() != 0;
+  double eye[4] = { 0, 0, 0, 1 };
+  if (parallel)
+  {
+    camera->GetDirectionOfProjection(eye);
+    eye[0] = -eye[0];
+    eye[1] = -eye[1];
+    eye[2] = -eye[2];
+    eye[3] = 0.0;
+  }
+  else
+  {
+    camera->GetPosition(eye);
+  }
+  if (!actor->GetIsIdentity())
+  {
+    vtkNew<vtkMatrix4x4> inverse;
+    vtkMatrix4x4::Invert(actor->GetMatrix(), inverse);
+    inverse->MultiplyPoint(eye, eye);
+    if (!parallel && eye[3] != 0.0)
+    {
+      eye[0] /= eye[3];
+      eye[1] /= eye[3];
+      eye[2] /= eye[3];
+    }
+  }
+  if (!this->UseCulling(ren, actor) ||
+    !in.ComputeGroups(this->CurrentInput, eye, parallel, this->NumberOfCullingGroups))
+  {
+    program->SetUniformi("sqCulling", 0);
+    glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(numVerts));
+    return;
+  }
+
+  vtkOpenGLRenderWindow* renWin = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  int w = 0, h = 0, x0 = 0, y0 = 0;
+  ren->GetTiledSizeAndOrigin(&w, &h, &x0, &y0);
+  bool culling = false;
+  for (int g = 0; g < Internals::MaxGroups; ++g)
+  {
+    if (in.First[g].empty())
+    {
+      continue;
+    }
+    if (culling)
+    {
+      // everything drawn so far, as a depth pyramid
+      in.BuildPyramid(renWin, x0, y0, w, h);
+      renWin->GetShaderCache()->ReadyShaderProgram(program);
+      cellBO.VAO->Bind();
+      in.Depth->Activate();
+      for (auto& level : in.Level)
+      {
+        level->Activate();
+      }
+      program->SetUniformi("sqCulling", 1);
+      program->SetUniformi("sqPyramid0", in.Depth->GetTextureUnit());
+      program->SetUniformi("sqPyramid1", in.Level[0]->GetTextureUnit());
+      program->SetUniformi("sqPyramid2", in.Level[1]->GetTextureUnit());
+      program->SetUniformi("sqPyramid4", in.Level[2]->GetTextureUnit());
+      program->SetUniformi("sqPyramid6", in.Level[3]->GetTextureUnit());
+      const int origin[2] = { x0, y0 };
+      const int size[2] = { w, h };
+      program->SetUniform2i("sqViewportOrigin", origin);
+      program->SetUniform2i("sqViewportSize", size);
+    }
+    else
+    {
+      program->SetUniformi("sqCulling", 0);
+    }
+    glMultiDrawArrays(
+      GL_POINTS, in.First[g].data(), in.Count[g].data(), static_cast<GLsizei>(in.First[g].size()));
+    if (culling)
+    {
+      in.Depth->Deactivate();
+      for (auto& level : in.Level)
+      {
+        level->Deactivate();
+      }
+    }
+    culling = true;
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkSuperquadricGlyphMapper::GetLastCullingGroupSize(int group)
+{
+  return group >= 0 && group < Internals::MaxGroups ? this->Internal->GroupGlyphs[group] : 0;
+}
+
+//------------------------------------------------------------------------------
+int vtkSuperquadricGlyphMapper::GetLastNumberOfDepthPyramids()
+{
+  return this->Internal->Pyramids;
 }
 
 //------------------------------------------------------------------------------
@@ -300,7 +880,9 @@ std::string vtkSuperquadricGlyphMapper::GetColorKey()
       << this->UseLookupTableScalarRange << "|" << this->ScalarRange[0] << "|"
       << this->ScalarRange[1] << "|" << static_cast<void*>(this->LookupTable) << "|"
       << (this->LookupTable ? this->LookupTable->GetMTime() : 0) << "|"
-      << static_cast<void*>(scalars) << "|" << (scalars ? scalars->GetMTime() : 0);
+      << static_cast<void*>(scalars) << "|" << (scalars ? scalars->GetMTime() : 0) << "|"
+      << static_cast<void*>(this->Internal->BlockAttributes.Get()) << "|"
+      << (this->Internal->BlockAttributes ? this->Internal->BlockAttributes->GetMTime() : 0);
   return key.str();
 }
 
@@ -360,6 +942,7 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
     limit = std::min<vtkIdType>(limit, std::strtoll(forced, nullptr, 10));
   }
   in.TooLarge = numGlyphs > limit;
+  in.HaveBlockColors = false;
   if (in.TooLarge)
   {
     vtkErrorMacro(<< numGlyphs << " glyphs are more than one GPU draw can hold (at most " << limit
@@ -370,11 +953,38 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
   }
   else
   {
+    // Per-block attributes: (r, g, b or -1 for no color, opacity; 0 hidden).
+    std::vector<vtkIdType> firstId;
+    std::vector<std::array<float, 4>> leafColor;
+    vtkIdTypeArray* pointIds = vtkArrayDownCast<vtkIdTypeArray>(pd->GetArray("sqPointIds"));
+    if (in.BlockColorsOfLeaves(firstId, leafColor) && pointIds)
+    {
+      const vtkIdType n = poly->GetNumberOfPoints();
+      in.BlockColors->SetNumberOfComponents(4);
+      in.BlockColors->SetNumberOfTuples(n);
+      float* out = in.BlockColors->GetPointer(0);
+      const vtkIdType* ids = pointIds->GetPointer(0);
+      vtkSMPTools::For(0, n,
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            const size_t b = static_cast<size_t>(
+              std::upper_bound(firstId.begin(), firstId.end(), ids[i]) - firstId.begin() - 1);
+            std::copy(leafColor[b].begin(), leafColor[b].end(), out + 4 * i);
+          }
+        });
+      in.BlockColors->Modified();
+      in.HaveBlockColors = true;
+    }
+
     for (int i = 0; i < 64 && glGetError() != GL_NO_ERROR; ++i)
     {
       // errors of earlier calls are not this upload's
     }
     this->VBOs->CacheDataArray("vertexMC", poly->GetPoints()->GetData(), ren, VTK_FLOAT);
+    this->VBOs->CacheDataArray(
+      "glyphBlockColor", in.HaveBlockColors ? in.BlockColors.Get() : nullptr, ren, VTK_FLOAT);
     this->VBOs->CacheDataArray("tensorDiagMC", diag, ren, VTK_FLOAT);
     this->VBOs->CacheDataArray("tensorOffMC", off, ren, VTK_FLOAT);
     this->VBOs->CacheDataArray(
@@ -394,7 +1004,8 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
     in.UploadedTensorsTime = diag->GetMTime();
   }
   in.BytesPerGlyph = 0;
-  for (const char* name : { "vertexMC", "tensorDiagMC", "tensorOffMC", "glyphScalarColor" })
+  for (const char* name :
+    { "vertexMC", "tensorDiagMC", "tensorOffMC", "glyphScalarColor", "glyphBlockColor" })
   {
     vtkOpenGLVertexBufferObject* vbo = this->VBOs->GetVBO(name);
     if (vbo && vbo->GetNumberOfTuples() > 0)
@@ -411,6 +1022,42 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
   this->Primitives[PrimitiveTris].IBO->IndexCount = static_cast<size_t>(poly->GetNumberOfPoints());
   in.ColorKey = this->GetColorKey();
   this->VBOBuildTime.Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkSuperquadricGlyphMapper::SetCompositeDataDisplayAttributes(
+  vtkCompositeDataDisplayAttributes* attributes)
+{
+  if (this->Internal->BlockAttributes != attributes)
+  {
+    this->Internal->BlockAttributes = attributes;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkCompositeDataDisplayAttributes* vtkSuperquadricGlyphMapper::GetCompositeDataDisplayAttributes()
+{
+  return this->Internal->BlockAttributes;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSuperquadricGlyphMapper::HasOpaqueGeometry()
+{
+  // translucent blocks: everything is drawn in the translucent pass
+  std::vector<vtkIdType> firstId;
+  std::vector<std::array<float, 4>> leafColor;
+  this->Internal->BlockColorsOfLeaves(firstId, leafColor);
+  return this->Superclass::HasOpaqueGeometry() && !this->Internal->AnyTranslucentBlock;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSuperquadricGlyphMapper::HasTranslucentPolygonalGeometry()
+{
+  std::vector<vtkIdType> firstId;
+  std::vector<std::array<float, 4>> leafColor;
+  this->Internal->BlockColorsOfLeaves(firstId, leafColor);
+  return this->Superclass::HasTranslucentPolygonalGeometry() || this->Internal->AnyTranslucentBlock;
 }
 
 //------------------------------------------------------------------------------
@@ -445,7 +1092,13 @@ bool vtkSuperquadricGlyphMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* actor)
 {
   const bool colorsChanged = this->Internal->ShaderHaveColors != this->Internal->HaveColors;
-  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) || colorsChanged;
+  const bool shapesChanged =
+    this->Internal->ShaderGeneralShapes != (this->NegativeEigenvaluePolicy == SCHULTZ_KINDLMANN);
+  const bool clipChanged = this->Internal->ShaderClip != (this->GetNumberOfClippingPlanes() > 0);
+  const bool blocksChanged =
+    this->Internal->ShaderHaveBlockColors != this->Internal->HaveBlockColors;
+  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, actor) || colorsChanged ||
+    shapesChanged || clipChanged || blocksChanged;
 }
 
 //------------------------------------------------------------------------------
@@ -460,6 +1113,41 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
   vtkShaderProgram::Substitute(VSSource, "//SQ::TensorMath::Dec", vtkTensorMathShared);
   vtkShaderProgram::Substitute(VSSource, "//SQ::GlyphMath::Dec", vtkSuperquadricGlyphShared);
   vtkShaderProgram::Substitute(FSSource, "//SQ::GlyphMath::Dec", vtkSuperquadricGlyphShared);
+
+  // The general ray caster, for the Schultz-Kindlmann shapes only.
+  this->Internal->ShaderGeneralShapes = this->NegativeEigenvaluePolicy == SCHULTZ_KINDLMANN;
+  for (std::string* source : { &VSSource, &GSSource, &FSSource })
+  {
+    vtkShaderProgram::Substitute(*source, "//SQ::GeneralShapes::Dec",
+      this->Internal->ShaderGeneralShapes ? "#define SQ_GENERAL_SHAPES" : "");
+  }
+  // Clipping planes: in the fragment stage, on the ray (not VTK's per-vertex
+  // clip distances, which would cut the sprites); whole glyphs beyond a plane
+  // in the geometry stage.
+  this->Internal->ShaderClip = this->GetNumberOfClippingPlanes() > 0;
+  for (std::string* source : { &GSSource, &FSSource })
+  {
+    vtkShaderProgram::Substitute(
+      *source, "//SQ::Clip::Dec", this->Internal->ShaderClip ? "#define SQ_CLIP" : "");
+  }
+
+  // Per-block colors, opacities, visibilities.
+  this->Internal->ShaderHaveBlockColors = this->Internal->HaveBlockColors;
+  if (this->Internal->HaveBlockColors)
+  {
+    vtkShaderProgram::Substitute(VSSource, "//SQ::BlockColor::Dec", "in vec4 glyphBlockColor;");
+    vtkShaderProgram::Substitute(VSSource, "//SQ::BlockColor::Impl",
+      "  if (glyphBlockColor.w <= 0.0)\n"
+      "  {\n"
+      "    glyphValidVSOut = 0; // a hidden block\n"
+      "    return;\n"
+      "  }\n"
+      "  if (glyphColorVSOut.a < 0.0 && glyphBlockColor.x >= 0.0)\n"
+      "  {\n"
+      "    glyphColorVSOut = vec4(glyphBlockColor.rgb, 1.0); // instead of the actor's\n"
+      "  }\n"
+      "  glyphColorVSOut.a *= glyphBlockColor.w;\n");
+  }
 
   // Scalar colors.
   this->Internal->ShaderHaveColors = this->Internal->HaveColors;
@@ -483,11 +1171,15 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
   std::string colorImpl = "  vec3 ambientColor = ambientIntensity * ambientColorUniform;\n"
                           "  vec3 diffuseColor = diffuseIntensity * diffuseColorUniform;\n"
                           "  float opacity = opacityUniform;\n"
-                          "  if (glyphColorGSOutput.a >= 0.0)\n"
+                          "  if (glyphColorFS.a >= 0.0)\n"
                           "  {\n"
-                          "    ambientColor = ambientIntensity * glyphColorGSOutput.rgb;\n"
-                          "    diffuseColor = diffuseIntensity * glyphColorGSOutput.rgb;\n"
-                          "    opacity = opacityUniform * glyphColorGSOutput.a;\n"
+                          "    ambientColor = ambientIntensity * glyphColorFS.rgb;\n"
+                          "    diffuseColor = diffuseIntensity * glyphColorFS.rgb;\n"
+                          "    opacity = opacityUniform * glyphColorFS.a;\n"
+                          "  }\n"
+                          "  else\n"
+                          "  {\n"
+                          "    opacity = opacityUniform * -glyphColorFS.a;\n"
                           "  }\n";
   if (this->PrimitiveInfo[this->LastBoundBO].LastLightComplexity)
   {
@@ -560,12 +1252,24 @@ void vtkSuperquadricGlyphMapper::SetMapperShaderParameters(
   p->SetUniformf("sqMaximumScale", static_cast<float>(this->MaximumScale));
   p->SetUniformf("sqMinimumThickness", static_cast<float>(this->MinimumThickness));
   p->SetUniformf("sqMinimumRoundness", static_cast<float>(this->MinimumRoundness));
+  if (this->Internal->ShaderGeneralShapes)
+  {
+    p->SetUniformf("sqZeroEigenvalueBand", static_cast<float>(this->ZeroEigenvalueBand));
+  }
   p->SetUniformf("sqAnisotropyThreshold", static_cast<float>(this->AnisotropyThreshold));
   p->SetUniformf("sqMinimumEigenvalue",
     static_cast<float>(std::max(this->MinimumEigenvalue, -static_cast<double>(VTK_FLOAT_MAX))));
   p->SetUniformi("sqScaleMode", this->ScaleMode);
   p->SetUniformi("sqSignPolicy", this->NegativeEigenvaluePolicy);
   p->SetUniformi("sqColorMode", this->GlyphColorMode);
+  float positive[3], negative[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    positive[c] = static_cast<float>(this->PositiveFormColor[c]);
+    negative[c] = static_cast<float>(this->NegativeFormColor[c]);
+  }
+  p->SetUniform3f("sqPositiveFormColor", positive);
+  p->SetUniform3f("sqNegativeFormColor", negative);
   p->SetUniformi("sqMaximumIterations", this->MaximumIterations);
 }
 
@@ -602,6 +1306,14 @@ void vtkSuperquadricGlyphMapper::SetCameraShaderParameters(
   }
   program->SetUniformMatrix("glyphMCVC", this->TempMatrix3);
   program->SetUniformi("cameraParallel", cam->GetParallelProjection());
+  if (program->IsUniformUsed("glyphVCMC"))
+  {
+    // the clipping planes are in data coordinates (the transposed key
+    // matrix's inverse is the transposed inverse)
+    vtkNew<vtkMatrix4x4> vcmc;
+    vtkMatrix4x4::Invert(mcvc, vcmc);
+    program->SetUniformMatrix("glyphVCMC", vcmc);
+  }
   program->SetUniformf("nearPlaneVC", static_cast<float>(-cam->GetClippingRange()[0]));
 }
 
@@ -664,6 +1376,7 @@ void vtkSuperquadricGlyphMapper::ProcessSelectorPixelBuffers(
 void vtkSuperquadricGlyphMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Superclass::ReleaseGraphicsResources(win);
+  this->Internal->ReleaseGraphicsResources(win);
   this->Internal->UploadedTensors = nullptr;
   this->Internal->UploadedTensorsTime = 0;
   this->Internal->ColorKey.clear();
@@ -688,8 +1401,16 @@ void vtkSuperquadricGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AnisotropyThreshold: " << this->AnisotropyThreshold << "\n";
   os << indent << "MinimumEigenvalue: " << this->MinimumEigenvalue << "\n";
   os << indent << "NegativeEigenvaluePolicy: " << this->NegativeEigenvaluePolicy << "\n";
+  os << indent << "ZeroEigenvalueBand: " << this->ZeroEigenvalueBand << "\n";
   os << indent << "GlyphColorMode: " << this->GlyphColorMode << "\n";
+  os << indent << "PositiveFormColor: " << this->PositiveFormColor[0] << " "
+     << this->PositiveFormColor[1] << " " << this->PositiveFormColor[2] << "\n";
+  os << indent << "NegativeFormColor: " << this->NegativeFormColor[0] << " "
+     << this->NegativeFormColor[1] << " " << this->NegativeFormColor[2] << "\n";
   os << indent << "MaximumIterations: " << this->MaximumIterations << "\n";
+  os << indent << "Culling: " << this->Culling << "\n";
+  os << indent << "NumberOfCullingGroups: " << this->NumberOfCullingGroups << "\n";
+  os << indent << "CountSprites: " << this->CountSprites << "\n";
   os << indent << "NumberOfGlyphs: " << this->NumberOfGlyphs << "\n";
   os << indent << "NumberOfInvalidTensors: " << this->NumberOfInvalidTensors << "\n";
   os << indent << "NumberOfZeroTensors: " << this->NumberOfZeroTensors << "\n";

@@ -49,11 +49,55 @@
  * or COLOR_SOLID (the actor's property). Lighting, ambient/diffuse/specular
  * and opacity come from the actor's property.
  *
+ * Indefinite tensors (NegativeEigenvaluePolicy SCHULTZ_KINDLMANN): the
+ * superquadric glyphs of Schultz and Kindlmann, "Superquadric Glyphs for
+ * Symmetric Second-Order Tensors" (IEEE TVCG 16(6), 2010). Implemented: the
+ * shape square of §4.2 (the point (u, v) of the sorted signed eigenvalues,
+ * negative-dominant tensors drawn as the glyph of -T, as Teem's
+ * tenGlyphBqdUvEval) and the glyph family of §4.3 with its third exponent
+ * (alpha, beta, c; Teem's tenGlyphBqdAbcUv), sharpened by Gamma, each axis
+ * scaled by |lambda_i|; shared with the CPU in
+ * vtkSplineVizTensorMath::SchultzKindlmannSquare/SchultzKindlmannShape.
+ * Variation: the definite triangle of the square is placed by the
+ * trace-normalized Westin metrics, so positive definite tensors get exactly
+ * Kindlmann's glyphs (the paper normalizes by the largest |lambda|). Addition:
+ * within ZeroEigenvalueBand of a zero eigenvalue the glyph is blended with the
+ * definite side's, so it changes continuously when MinimumThickness > 0 (0:
+ * the paper's glyphs). These shapes are not convex in general: a separate
+ * ray caster with exact monotonicity bounds finds their first hit
+ * (glsl/vtkSuperquadricGlyphShared.glsl). COLOR_BY_QUADRATIC_FORM colors the
+ * surface by the sign of x^T T x, as the paper does.
+ *
+ * Clipping planes (vtkMapper::AddClippingPlane, up to 6): the glyphs are cut
+ * as solids on the ray, the cut drawn at the plane's exact depth with the
+ * plane's normal; glyphs entirely beyond a plane are dropped in the geometry
+ * stage. Composite inputs: per-block colors, opacities and visibility
+ * (SetCompositeDataDisplayAttributes, as vtkCompositePolyDataMapper2).
+ *
+ * Occlusion culling (Culling, default on; opaque, not multisampled): the
+ * preparation step sorts the glyphs into bricks of a uniform grid (about 8
+ * glyphs per brick). Per frame the CPU orders the bricks into
+ * NumberOfCullingGroups visibility groups from the camera (the front layer,
+ * the one behind it, ..., all deeper ones); the first group is drawn as
+ * usual; before each later group the depth buffer is copied and reduced to a
+ * pyramid of maxima (2, 4, 16, 64 pixel tiles). The geometry shader drops a
+ * glyph whose box lies behind the pyramid over its screen rectangle, and the
+ * fragment shader discards a fragment whose sprite point (on the box, in
+ * front of the glyph) lies behind the copied depth, before the ray cast. The
+ * box contains the glyph, so this is exact: the image is the same with
+ * culling off (TestSuperquadricGlyphCulling). Measured with
+ * SplineVizTensorGlyphBenchmark (Mesa llvmpipe on 2 CPU cores shared with
+ * other jobs, load average about 9, so absolute times are noisy; ratios from
+ * one run): 1M glyphs at 800x600, median frame 3.9 s with culling vs 19.8 s
+ * without (5.0x shorter; 5.4x at 1200x768); 100k glyphs at 1200x768, 2.1 s
+ * vs 6.1 s (2.9x; 2.8x in a second run, 2.6x at 800x600). So the 3x target
+ * of issue 14 is met at 1M glyphs but not quite at 100k (fewer glyphs hide
+ * each other there). A gamma change still only sets uniforms (the upload
+ * count stays the same).
+ *
  * Picking: vtkHardwareSelector prop picking and point-id selection (the ids
  * of the input points; for composite inputs the ids within the concatenation
- * of the leaves' points). Not supported: clipping planes, texture maps,
- * per-block colors of composite data, the Schultz-Kindlmann shapes for
- * indefinite tensors (use ABSOLUTE_VALUES or SKIP_NEGATIVE).
+ * of the leaves' points). Not supported: texture maps.
  *
  * Bad input: a missing tensor array or one whose number of components does
  * not fit TensorLayout is an error for that block (nothing drawn for it);
@@ -70,6 +114,7 @@
 #include <memory> // for unique_ptr
 #include <string> // for std::string
 
+class vtkCompositeDataDisplayAttributes;
 class vtkDataSet;
 class vtkFloatArray;
 
@@ -92,7 +137,8 @@ public:
   enum NegativeEigenvaluePolicies
   {
     SKIP_NEGATIVE = 0,
-    ABSOLUTE_VALUES = 1
+    ABSOLUTE_VALUES = 1,
+    SCHULTZ_KINDLMANN = 2
   };
 
   /// Color modes (see the class documentation).
@@ -100,7 +146,8 @@ public:
   {
     COLOR_BY_EIGENVECTOR = 0,
     COLOR_BY_SCALARS = 1,
-    COLOR_SOLID = 2
+    COLOR_SOLID = 2,
+    COLOR_BY_QUADRATIC_FORM = 3
   };
 
   /**
@@ -226,16 +273,61 @@ public:
   /**
    * What to do with negative eigenvalues (NegativeEigenvaluePolicies):
    * SKIP_NEGATIVE (default, as Teem) does not draw tensors with a negative
-   * eigenvalue; ABSOLUTE_VALUES draws the glyph of the absolute values.
+   * eigenvalue; ABSOLUTE_VALUES draws the glyph of the absolute values;
+   * SCHULTZ_KINDLMANN draws Schultz and Kindlmann's glyph of the signed
+   * eigenvalues (see the class documentation).
    */
-  vtkSetClampMacro(NegativeEigenvaluePolicy, int, SKIP_NEGATIVE, ABSOLUTE_VALUES);
+  vtkSetClampMacro(NegativeEigenvaluePolicy, int, SKIP_NEGATIVE, SCHULTZ_KINDLMANN);
   vtkGetMacro(NegativeEigenvaluePolicy, int);
+  void SetNegativeEigenvaluePolicyToSkipNegative()
+  {
+    this->SetNegativeEigenvaluePolicy(SKIP_NEGATIVE);
+  }
+  void SetNegativeEigenvaluePolicyToAbsoluteValues()
+  {
+    this->SetNegativeEigenvaluePolicy(ABSOLUTE_VALUES);
+  }
+  void SetNegativeEigenvaluePolicyToSchultzKindlmann()
+  {
+    this->SetNegativeEigenvaluePolicy(SCHULTZ_KINDLMANN);
+  }
+  ///@}
+
+  ///@{
+  /**
+   * SCHULTZ_KINDLMANN only: width, relative to the largest |eigenvalue|, of
+   * the band on the indefinite side of a zero eigenvalue in which the glyph
+   * is blended with the definite side's glyph (see the class documentation),
+   * in [0, 0.5]. Default 0.15. 0 gives the paper's glyphs exactly, which
+   * change abruptly at the zero eigenvalue when MinimumThickness > 0.
+   */
+  vtkSetClampMacro(ZeroEigenvalueBand, double, 0.0, 0.5);
+  vtkGetMacro(ZeroEigenvalueBand, double);
   ///@}
 
   ///@{
   /// Color mode (ColorModes). Default COLOR_BY_EIGENVECTOR.
-  vtkSetClampMacro(GlyphColorMode, int, COLOR_BY_EIGENVECTOR, COLOR_SOLID);
+  vtkSetClampMacro(GlyphColorMode, int, COLOR_BY_EIGENVECTOR, COLOR_BY_QUADRATIC_FORM);
   vtkGetMacro(GlyphColorMode, int);
+  void SetGlyphColorModeToEigenvector() { this->SetGlyphColorMode(COLOR_BY_EIGENVECTOR); }
+  void SetGlyphColorModeToScalars() { this->SetGlyphColorMode(COLOR_BY_SCALARS); }
+  void SetGlyphColorModeToSolid() { this->SetGlyphColorMode(COLOR_SOLID); }
+  void SetGlyphColorModeToQuadraticForm() { this->SetGlyphColorMode(COLOR_BY_QUADRATIC_FORM); }
+  ///@}
+
+  ///@{
+  /**
+   * Colors of COLOR_BY_QUADRATIC_FORM: each point x of a glyph's surface
+   * (relative to its center) is drawn in PositiveFormColor where
+   * x^T T x > 0 (e.g. tension of a stress tensor) and in NegativeFormColor
+   * where x^T T x < 0 (compression), as Schultz and Kindlmann color their
+   * glyphs (T and -T have the same Schultz-Kindlmann shape). Defaults
+   * orange (0.9, 0.45, 0.2) and blue (0.2, 0.45, 0.9).
+   */
+  vtkSetVector3Macro(PositiveFormColor, double);
+  vtkGetVector3Macro(PositiveFormColor, double);
+  vtkSetVector3Macro(NegativeFormColor, double);
+  vtkGetVector3Macro(NegativeFormColor, double);
   ///@}
 
   ///@{
@@ -245,6 +337,66 @@ public:
    */
   vtkSetClampMacro(MaximumIterations, int, 1, 100);
   vtkGetMacro(MaximumIterations, int);
+  ///@}
+
+  ///@{
+  /**
+   * Per-block display attributes of composite inputs, as for
+   * vtkCompositePolyDataMapper2 (keyed by the leaf data sets of the input):
+   * block visibility hides a block's glyphs, block opacity multiplies their
+   * opacity (the mapper is then drawn as translucent), block color replaces
+   * the actor's color where it is used (COLOR_SOLID, and COLOR_BY_SCALARS
+   * without scalars). Changes re-upload the per-glyph colors (16 bytes per
+   * glyph while attributes are set). nullptr (default): none.
+   */
+  void SetCompositeDataDisplayAttributes(vtkCompositeDataDisplayAttributes* attributes);
+  vtkCompositeDataDisplayAttributes* GetCompositeDataDisplayAttributes();
+  ///@}
+
+  bool HasOpaqueGeometry() override;
+  bool HasTranslucentPolygonalGeometry() override;
+
+  ///@{
+  /**
+   * Occlusion culling (default on; see the class documentation): glyphs are
+   * drawn brick by brick in visibility groups (NumberOfCullingGroups), each later group
+   * tested against a depth pyramid of what is already drawn, whole glyphs in
+   * the geometry stage and single fragments before the ray cast. Exact: the
+   * image is the same with culling off. Used for opaque rendering without
+   * multisampling; otherwise the glyphs are drawn in one pass.
+   */
+  vtkSetMacro(Culling, vtkTypeBool);
+  vtkGetMacro(Culling, vtkTypeBool);
+  vtkBooleanMacro(Culling, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Number of visibility groups of the occlusion culling, clamped to
+   * [1, 16]: the bricks of glyphs in front, behind them, ..., and all deeper
+   * ones; a depth pyramid is built before each group but the first. Default
+   * 12.
+   */
+  vtkSetClampMacro(NumberOfCullingGroups, int, 1, 16);
+  vtkGetMacro(NumberOfCullingGroups, int);
+  ///@}
+
+  /**
+   * Glyphs in culling group `group` in the last frame (all in group 0 when
+   * culling was not used), and the number of depth pyramids built.
+   */
+  vtkIdType GetLastCullingGroupSize(int group);
+  int GetLastNumberOfDepthPyramids();
+
+  ///@{
+  /**
+   * For tests and benchmarks: count, with an OpenGL query, the sprite
+   * triangles that the geometry stage emits (culled glyphs emit none). Off
+   * by default (the query waits for the frame).
+   */
+  vtkSetMacro(CountSprites, bool);
+  vtkGetMacro(CountSprites, bool);
+  vtkGetMacro(LastSpriteTriangles, vtkIdType);
   ///@}
 
   ///@{
@@ -300,6 +452,8 @@ protected:
 
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+  bool UseCulling(vtkRenderer* ren, vtkActor* act);
+  void DrawGlyphs(vtkRenderer* ren, vtkActor* act, int numVerts);
 
   void GetShaderTemplate(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
@@ -325,8 +479,15 @@ protected:
   double AnisotropyThreshold = 0.0;
   double MinimumEigenvalue = -VTK_DOUBLE_MAX;
   int NegativeEigenvaluePolicy = SKIP_NEGATIVE;
+  double ZeroEigenvalueBand = 0.15;
   int GlyphColorMode = COLOR_BY_EIGENVECTOR;
+  double PositiveFormColor[3] = { 0.9, 0.45, 0.2 };
+  double NegativeFormColor[3] = { 0.2, 0.45, 0.9 };
   int MaximumIterations = 10;
+  vtkTypeBool Culling = 1;
+  int NumberOfCullingGroups = 12;
+  bool CountSprites = false;
+  vtkIdType LastSpriteTriangles = 0;
 
   vtkIdType NumberOfGlyphs = 0;
   vtkIdType NumberOfInvalidTensors = 0;

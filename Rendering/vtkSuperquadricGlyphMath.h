@@ -23,6 +23,7 @@ namespace vtkSuperquadricGlyphMath
 using namespace glm;
 using real = double;
 using vec3 = glm::dvec3;
+using vec4 = glm::dvec4;
 
 #define SV_OUT(T) T&
 #define SV_INOUT(T) T&

@@ -14,7 +14,12 @@
  * - when a color array is selected (SetColorArraySelection), that point
  *   array's kept tuples, as the active scalars;
  * - field data `sqStatistics` = (largest tensor Frobenius norm, NaN/inf
- *   tensors, zero tensors, masked points).
+ *   tensors, zero tensors, masked points);
+ * - the glyphs are sorted by the bricks of a uniform grid over their
+ *   positions (about 8 glyphs per brick, at most 2^18 bricks): field data
+ *   `sqBrickGrid` = (origin, spacing, dimensions) and `sqBrickOffsets`
+ *   (vtkIdType, bricks + 1: the first glyph of every brick), for the
+ *   mapper's occlusion culling.
  *
  * Points with a NaN/infinite or zero tensor, or a zero mask value, are left
  * out (one warning with the counts). A missing or mis-sized tensor array is

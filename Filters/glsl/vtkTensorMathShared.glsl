@@ -17,7 +17,9 @@
 //  - svtFractionalAnisotropy, svtMeanDiffusivity, svtWestinMetrics
 //    (trace-normalized, as in Teem: cl = (l1-l2)/S, cp = 2(l2-l3)/S, cs = 3 l3/S);
 //  - svtApplySignPolicy: what to do with negative eigenvalues;
-//  - svtKindlmannShape: Kindlmann's (2004) superquadric exponents and axis.
+//  - svtKindlmannShape: Kindlmann's (2004) superquadric exponents and axis;
+//  - svtSchultzKindlmannSquare, svtSchultzKindlmannShape: the glyph shape of
+//    any symmetric tensor (Schultz and Kindlmann 2010), definite or not.
 
 //------------------------------------------------------------------------------
 // y = T x for the symmetric tensor (diag, off).
@@ -213,12 +215,17 @@ vec3 svtWestinMetrics(vec3 l)
 // Negative eigenvalues. policy 0 (skip): returns false when an eigenvalue is
 // negative beyond rounding (l3 < -1e-5 max|l|); slightly negative values are
 // set to 0. policy 1 (absolute): the absolute values, re-sorted with their
-// eigenvectors (the frame stays right-handed). Returns true when the tensor is
-// to be shown.
+// eigenvectors (the frame stays right-handed). policy 2 (Schultz-Kindlmann):
+// the signed eigenvalues are kept (svtSchultzKindlmannShape draws any sign
+// pattern). Returns true when the tensor is to be shown.
 bool svtApplySignPolicy(
   int policy, SV_INOUT(vec3) lambda, SV_INOUT(vec3) e1, SV_INOUT(vec3) e2, SV_INOUT(vec3) e3)
 {
   real big = max(abs(lambda.x), abs(lambda.z));
+  if (policy == 2)
+  {
+    return true;
+  }
   if (policy == 1)
   {
     real l1 = abs(lambda.x);
@@ -267,4 +274,256 @@ bool svtKindlmannShape(
   alpha = clamp(pow(max(a, 1e-6), gamma), minimumRoundness, 1.0);
   beta = clamp(pow(max(b, 1e-6), gamma), minimumRoundness, 1.0);
   return isLinear;
+}
+
+//------------------------------------------------------------------------------
+// Superquadric glyphs for symmetric tensors of any signature: Schultz and
+// Kindlmann, "Superquadric Glyphs for Symmetric Second-Order Tensors", IEEE
+// TVCG 16(6), 2010, as its authors implement it in Teem (ten/glyph.c:
+// tenGlyphBqdUvEval for the shape square of §4.2, tenGlyphBqdAbcUv for the
+// superquadric parameters of §4.3) and in Kindlmann's Deft viewer (the
+// sharpness). The glyph is the superquadric with exponents (alpha, beta, c)
+// about a symmetry axis w, with u, v the two other axes (v along the middle
+// eigenvector e2):
+//   |w| <= 1 and (|u| / R_beta(w))^(2/alpha) + (|v| / R_c(w))^(2/alpha) <= 1,
+//   R_e(w) = (1 - |w|^(2/e))^(e/2),
+// which for c = beta is the signed superquadric
+//   (|u|^(2/alpha) + |v|^(2/alpha))^(alpha/beta) + |w|^(2/beta) <= 1
+// of Barr's parametrization x = (cos^alpha(theta) sin^beta(phi),
+// sin^alpha(theta) sin^beta(phi), cos^beta(phi)) with sgn-powers, scaled by
+// |l_i| along the eigenvectors. beta <= 1: convex (Kindlmann's glyphs);
+// beta = 2: a linear profile (cones, octahedra); beta > 2: concave profiles
+// (the pinched "thorn" glyphs of indefinite tensors). T and -T have the same
+// glyph (the paper distinguishes them by color).
+
+// The point of the sorted eigenvalues l (l1 >= l2 >= l3) in the shape square
+// (u, v) in [0, 1]^2 of Schultz and Kindlmann §4.2: with m = max |l_i| and
+// (x, y, z) = l / m, u = (y + 1)/2 and v = (z + 1)/2 - u + 1 when x >= -z
+// (positive-dominant: x = 1, the half u + v >= 1 of the square), otherwise the
+// point of -T mirrored, (1 - u(-T), 1 - v(-T)). u + v >= 1.5 exactly for
+// positive semi-definite tensors, (1, 1) and (0, 0) are the isotropic ones,
+// (1/2, 1/2) is diag(1, 0, -1). Returned folded, as (u, v, mirrored): the
+// point of the positive-dominant one of T and -T, and mirrored = 1 when that
+// is -T (a negative-dominant T: its glyph is that of -T, whose e1 is e3 of T;
+// its point in the square is (1 - u, 1 - v)).
+//
+// traceNormalized = false gives the paper's point. traceNormalized = true
+// gives the point that the glyphs use: the definite triangle is
+// re-parametrized so that its linear and planar measures are Westin's
+// trace-normalized cl = (l1 - l2)/S, cp = 2 (l2 - l3)/S (S = trace) of
+// svtKindlmannShape (the paper's, max-normalized, are (l1 - l2)/l1 and
+// (l2 - l3)/l1): definite glyphs are then exactly Kindlmann's as drawn by the
+// other sign policies; for indefinite positive-dominant tensors with y > 0,
+// y is replaced by y (2 + z) / (1 + y (1 + z)), which equals the definite
+// side's value 2y/(1+y) at z = 0 and y at the anti-diagonal z = -1 (so the
+// placement stays continuous and the negation symmetry is kept).
+vec3 svtSchultzKindlmannSquare(vec3 l, bool traceNormalized)
+{
+  real m = max(abs(l.x), abs(l.z));
+  if (!(m > 0.0))
+  {
+    return vec3(1.0, 1.0, 0.0); // the zero tensor: a sphere
+  }
+  real x = l.x / m;
+  real y = l.y / m;
+  real z = l.z / m;
+  real mirrored = 0.0;
+  if (x + z < 0.0)
+  {
+    real t = x;
+    x = -z;
+    y = -y;
+    z = -t;
+    mirrored = 1.0;
+  }
+  y = clamp(y, -1.0, 1.0);
+  z = clamp(z, -1.0, y);
+  if (traceNormalized)
+  {
+    if (z >= 0.0)
+    {
+      real S = 1.0 + y + z;
+      real yn = (2.0 * y + z) / S;
+      z = 3.0 * z / S;
+      y = yn;
+    }
+    else if (y > 0.0)
+    {
+      y = y * (2.0 + z) / (1.0 + y * (1.0 + z));
+    }
+  }
+  real u = 0.5 * (y + 1.0);
+  return vec3(u, 0.5 * (z + 1.0) - u + 1.0, mirrored);
+}
+
+// Barycentric coordinates of (u, v) in the triangle (a, b, c) (points given
+// as vec3(u, v, 0)).
+vec3 svtBarycentric(real u, real v, vec3 a, vec3 b, vec3 c)
+{
+  real det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+  real wb = ((u - a.x) * (c.y - a.y) - (c.x - a.x) * (v - a.y)) / det;
+  real wc = ((b.x - a.x) * (v - a.y) - (u - a.x) * (b.y - a.y)) / det;
+  return vec3(1.0 - wb - wc, wb, wc);
+}
+
+// Kindlmann's sharpness applied to one exponent as in Deft's glyph palette:
+// e < 1 (convex): e^gamma; e > 2 (concave): 2 + (e - 2) gamma; linear in
+// between (so gamma = 1 leaves the paper's shapes, gamma = 0 gives spheres for
+// definite and cones for indefinite tensors).
+real svtSharpenExponent(real e, real gamma)
+{
+  if (e < 1.0)
+  {
+    return pow(max(e, 1e-6), gamma);
+  }
+  if (e > 2.0)
+  {
+    return 2.0 + (e - 2.0) * gamma;
+  }
+  return e;
+}
+
+// The Schultz-Kindlmann glyph of the sorted eigenvalues l: exponents
+// abc = (alpha, beta, c) and the symmetry axis (returns true for e1, false
+// for e3; u is then the other of e1, e3 and v is e2). In the square (placed
+// with traceNormalized = true) the positive-dominant half is cut into the
+// zones of tenGlyphBqdAbcUv, and (alpha, beta, c) is the barycentric blend of
+// the base shapes at the zone's corners (the negative-dominant half is the
+// mirror image through -T):
+//   ball (1, 1, 1) at (1, 1); cylinder (1, 0, 0) at (1/2, 1) [diag(1,0,0)]
+//   and (1, 1/2) [diag(1,1,0)]; (1/2, 1/2, 1/2) at (3/4, 3/4); octahedron
+//   (0, 2, 2) and cone (1, 2, 2) at (1/2, 1) and (1, 1/2) seen from the
+//   indefinite side; thorn (1, 3, 3) at (1, 0) and (0, 1); and (0, 3, 2) at
+//   (1/2, 1/2) [diag(1, 0, -1)];
+//   zone 0 (u + v >= 3/2, u < v; axis e1): ball, cylinder, half;
+//   zone 1 (u + v >= 3/2, u >= v; axis e3): ball, half, cylinder;
+//   zone 2 (2u + v >= 2; axis e3): octahedron, cone, thorn;
+//   zone 3 (u > 1/2; axis e3): octahedron, thorn, (0, 3, 2);
+//   zone 5 (u <= 1/2; axis e1): cone, (0, 3, 2), thorn.
+// Ties are broken as in Teem (where a zero eigenvalue makes the glyph flat,
+// the zones on both sides agree up to its thickness), except that the
+// definite zones include their edge u + v = 3/2 (a zero smallest
+// eigenvalue): positive semi-definite tensors get Kindlmann's glyph, as the
+// negative semi-definite ones do in Teem's table.
+// Zones 0 and 1 are Kindlmann's rule (alpha = 1 - cp, beta = 1 - cl about e1
+// when cl > cp, alpha = 1 - cl, beta = 1 - cp about e3 otherwise) before the
+// sharpness. Then every exponent is sharpened by gamma
+// (svtSharpenExponent), and alpha is clamped to [minimumRoundness, 1], beta
+// and c to [minimumRoundness, 1 / minimumRoundness] (which bounds the
+// exponents 2/alpha, 2/beta, 2/c to [2 m, 2 / m]).
+bool svtSchultzKindlmannShape(
+  vec3 l, real gamma, real minimumRoundness, SV_OUT(vec3) abc)
+{
+  vec3 s = svtSchultzKindlmannSquare(l, true);
+  real u = s.x;
+  real v = s.y;
+  // Teem's ties on the negative-dominant side, seen in the folded square
+  bool mirrored = s.z > 0.5;
+  vec3 ball = vec3(1.0, 1.0, 1.0);
+  vec3 cylinder = vec3(1.0, 0.0, 0.0);
+  vec3 midway = vec3(0.5, 0.5, 0.5);
+  vec3 octahedron = vec3(0.0, 2.0, 2.0);
+  vec3 cone = vec3(1.0, 2.0, 2.0);
+  vec3 thorn = vec3(1.0, 3.0, 3.0);
+  vec3 center = vec3(0.0, 3.0, 2.0);
+  vec3 p0 = vec3(1.0, 1.0, 0.0);
+  vec3 p1 = vec3(0.5, 1.0, 0.0);
+  vec3 p2 = vec3(0.75, 0.75, 0.0);
+  vec3 p3 = vec3(1.0, 0.5, 0.0);
+  vec3 p4 = vec3(1.0, 0.0, 0.0);
+  vec3 p5 = vec3(0.5, 0.5, 0.0);
+  vec3 p6 = vec3(0.0, 1.0, 0.0);
+  bool axisE1 = false;
+  vec3 w;
+  if (u + v >= 1.5)
+  {
+    if (u < v || (mirrored && u == v))
+    {
+      w = svtBarycentric(u, v, p0, p1, p2);
+      abc = w.x * ball + w.y * cylinder + w.z * midway;
+      axisE1 = true;
+    }
+    else
+    {
+      w = svtBarycentric(u, v, p0, p2, p3);
+      abc = w.x * ball + w.y * midway + w.z * cylinder;
+    }
+  }
+  else if (u > 0.5 || (mirrored && u == 0.5))
+  {
+    if (2.0 * u + v >= 2.0)
+    {
+      w = svtBarycentric(u, v, p1, p3, p4);
+      abc = w.x * octahedron + w.y * cone + w.z * thorn;
+    }
+    else
+    {
+      w = svtBarycentric(u, v, p1, p4, p5);
+      abc = w.x * octahedron + w.y * thorn + w.z * center;
+    }
+  }
+  else
+  {
+    w = svtBarycentric(u, v, p1, p5, p6);
+    abc = w.x * cone + w.y * center + w.z * thorn;
+    axisE1 = true;
+  }
+  real r = max(minimumRoundness, 1e-3);
+  abc = vec3(clamp(svtSharpenExponent(abc.x, gamma), r, 1.0),
+    clamp(svtSharpenExponent(abc.y, gamma), r, 1.0 / r),
+    clamp(svtSharpenExponent(abc.z, gamma), r, 1.0 / r));
+  if (mirrored)
+  {
+    axisE1 = !axisE1; // the glyph of -T: its e1 is e3 of T
+  }
+  return axisE1;
+}
+
+// The glyph of a zero eigenvalue is flat in the paper, so its two sides may
+// differ in the flat direction: Kindlmann's glyph on the definite side, the
+// cones and octahedra of zone 2 on the indefinite side. With a minimum
+// thickness that difference is visible (a jump when a tensor path crosses
+// from definite to indefinite). So on the indefinite side, within a band
+// |l_near| < bandWidth max |l_i| of the definite edge (l_near = l3 for
+// positive-dominant tensors, l1 for negative-dominant ones), the glyph is the
+// blend of the two implicit functions,
+//   g = w g_SK + (1 - w) g_definite,  w = smoothstep(0, bandWidth, |l_near| / max |l_i|),
+// where g_definite is the glyph of the tensor with l_near set to 0 (Kindlmann's
+// glyph there, the limit of the definite side). Returns w (1 outside the band:
+// the Schultz-Kindlmann glyph alone) and, for w < 1, the definite shape in
+// abcDefinite and its axis (true: e1) in axisDefiniteE1.
+real svtSchultzKindlmannBlend(vec3 l, real gamma, real minimumRoundness, real bandWidth,
+  SV_OUT(vec3) abcDefinite, SV_OUT(bool) axisDefiniteE1)
+{
+  abcDefinite = vec3(1.0, 1.0, 1.0);
+  axisDefiniteE1 = false;
+  real m = max(abs(l.x), abs(l.z));
+  if (!(m > 0.0) || !(bandWidth > 0.0))
+  {
+    return 1.0;
+  }
+  bool negativeDominant = l.x + l.z < 0.0;
+  real edge = negativeDominant ? l.x : l.z; // the eigenvalue at the definite edge
+  real edgeSign = negativeDominant ? 1.0 : -1.0;
+  // only on the indefinite side of the edge
+  if (!(edge * edgeSign > 0.0))
+  {
+    return 1.0;
+  }
+  real x = abs(edge) / (bandWidth * m);
+  if (x >= 1.0)
+  {
+    return 1.0;
+  }
+  vec3 flattened = l;
+  if (negativeDominant)
+  {
+    flattened = vec3(0.0, l.y, l.z);
+  }
+  else
+  {
+    flattened = vec3(l.x, l.y, 0.0);
+  }
+  axisDefiniteE1 = svtSchultzKindlmannShape(flattened, gamma, minimumRoundness, abcDefinite);
+  return x * x * (3.0 - 2.0 * x);
 }

@@ -1,6 +1,7 @@
 #include "vtkSuperquadricGlyphRepresentation.h"
 
 #include "vtkAlgorithmOutput.h"
+#include "vtkCompositeDataDisplayAttributes.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataSet.h"
@@ -45,13 +46,17 @@ public:
       vtkDataObject* input = vtkDataObject::GetData(in[0], 0);
       vtkInformation* outInfo = out->GetInformationObject(0);
       vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
-      const bool composite = vtkCompositeDataSet::SafeDownCast(input) != nullptr;
-      if (!output || (composite != (vtkMultiBlockDataSet::SafeDownCast(output) != nullptr)))
+      // composite inputs keep their type and structure (so that ParaView's
+      // block selectors for colors and visibility find their blocks)
+      auto* composite = vtkCompositeDataSet::SafeDownCast(input);
+      const bool ok = composite ? (output && output->IsA(input->GetClassName()))
+                                : vtkPolyData::SafeDownCast(output) != nullptr;
+      if (!ok)
       {
         vtkSmartPointer<vtkDataObject> created;
         if (composite)
         {
-          created = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+          created.TakeReference(composite->NewInstance());
         }
         else
         {
@@ -71,21 +76,20 @@ public:
         return 1;
       }
       auto* cd = vtkCompositeDataSet::SafeDownCast(input);
-      auto* mb = vtkMultiBlockDataSet::SafeDownCast(output);
-      if (cd && mb)
+      auto* out = vtkCompositeDataSet::SafeDownCast(output);
+      if (cd && out)
       {
-        mb->Initialize();
+        out->CopyStructure(cd);
         vtkSmartPointer<vtkCompositeDataIterator> it;
         it.TakeReference(cd->NewIterator());
         it->SkipEmptyNodesOn();
-        unsigned int b = 0;
         for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
         {
           if (auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
           {
             vtkNew<vtkPolyData> pd;
             Convert(leaf, pd);
-            mb->SetBlock(b++, pd);
+            out->SetDataSet(it, pd);
           }
         }
         return 1;
@@ -196,9 +200,30 @@ vtkSuperquadricGlyphMapper* vtkSuperquadricGlyphRepresentation::GetGlyphMapper()
 int vtkSuperquadricGlyphRepresentation::ProcessViewRequest(
   vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
 {
+  // Block colors, opacities and visibilities: the superclass gives them only
+  // to a vtkCompositePolyDataMapper2; decide before it resets its flags.
+  vtkDataObject* delivered = nullptr;
+  bool updateBlocks = false;
+  if (request_type == vtkPVView::REQUEST_RENDER())
+  {
+    delivered = vtkPVView::GetDeliveredPiece(inInfo, this);
+    updateBlocks =
+      delivered && (this->BlockAttributeTime < delivered->GetMTime() || this->BlockAttrChanged);
+  }
   if (!this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo))
   {
     return 0;
+  }
+  if (updateBlocks)
+  {
+    vtkSuperquadricGlyphMapper* mapper = this->GetGlyphMapper();
+    if (!mapper->GetCompositeDataDisplayAttributes())
+    {
+      vtkNew<vtkCompositeDataDisplayAttributes> attributes;
+      mapper->SetCompositeDataDisplayAttributes(attributes);
+    }
+    this->PopulateBlockAttributes(mapper->GetCompositeDataDisplayAttributes(), delivered);
+    mapper->GetCompositeDataDisplayAttributes()->Modified();
   }
   if (request_type == vtkPVView::REQUEST_UPDATE())
   {
@@ -236,6 +261,7 @@ SV_FORWARD(SetMinimumEigenvalue, double)
 SV_FORWARD(SetNegativeEigenvaluePolicy, int)
 SV_FORWARD(SetGlyphColorMode, int)
 SV_FORWARD(SetMaximumIterations, int)
+SV_FORWARD(SetCulling, int)
 #undef SV_FORWARD
 
 //------------------------------------------------------------------------------

@@ -18,6 +18,10 @@
  * off (the glyphs are already cheap). The bounds reported to the view
  * include the glyphs' extent.
  *
+ * Composite inputs keep their structure, and the display's block colors,
+ * opacities and visibilities (Block Colors, Block Opacities, Hide Block)
+ * reach the mapper as vtkCompositeDataDisplayAttributes.
+ *
  * The glyph properties (Set...) only change the mappers' uniforms: the view
  * re-renders without re-executing the pipeline or uploading the tensors.
  */
@@ -56,6 +60,7 @@ public:
   void SetNegativeEigenvaluePolicy(int policy);
   void SetGlyphColorMode(int mode);
   void SetMaximumIterations(int n);
+  void SetCulling(int culling);
   ///@}
 
   /**

@@ -10,6 +10,7 @@ in vec4 vertexMC;
 in vec3 tensorDiagMC; // xx, yy, zz
 in vec3 tensorOffMC;  // xy, yz, xz
 //SQ::ScalarColor::Dec
+//SQ::BlockColor::Dec
 
 uniform mat4 MCVCMatrix;
 uniform mat3 glyphMCVC; // linear part of model -> view
@@ -19,6 +20,10 @@ uniform float sqScaleFactor;
 uniform float sqMaximumScale;
 uniform float sqMinimumThickness;
 uniform float sqMinimumRoundness;
+//SQ::GeneralShapes::Dec
+#ifdef SQ_GENERAL_SHAPES
+uniform float sqZeroEigenvalueBand;
+#endif
 uniform float sqAnisotropyThreshold;
 uniform float sqMinimumEigenvalue;
 uniform int sqScaleMode;
@@ -28,7 +33,11 @@ uniform int sqColorMode;
 out int glyphValidVSOut;
 out vec3 glyphCenterVSOut;
 out mat3 glyphFrameVSOut; // columns: the glyph's u, v, w axes (scaled), view coordinates
-out vec2 glyphShapeVSOut; // alpha, beta
+out vec3 glyphShapeVSOut; // alpha, beta, c (c = beta for Kindlmann's glyphs)
+out vec3 glyphFormVSOut;  // the quadratic form in glyph coordinates: l_i s_i^2, normalized
+#ifdef SQ_GENERAL_SHAPES
+out vec4 glyphBlendVSOut; // the band of a zero eigenvalue (svqBlendAbs); w = 1: none
+#endif
 out vec4 glyphColorVSOut; // rgba, a < 0: use the actor's colors
 
 //VTK::Picking::Dec
@@ -44,7 +53,11 @@ void main()
   glyphValidVSOut = 0;
   glyphCenterVSOut = (MCVCMatrix * vertexMC).xyz;
   glyphFrameVSOut = mat3(1.0);
-  glyphShapeVSOut = vec2(1.0);
+  glyphShapeVSOut = vec3(1.0);
+  glyphFormVSOut = vec3(1.0);
+#ifdef SQ_GENERAL_SHAPES
+  glyphBlendVSOut = vec4(1.0);
+#endif
   glyphColorVSOut = vec4(1.0, 1.0, 1.0, -1.0);
   gl_Position = vec4(glyphCenterVSOut, 1.0);
 
@@ -78,34 +91,80 @@ void main()
   {
     return;
   }
-  vec3 westin = svtWestinMetrics(lambda);
-  float alpha;
-  float beta;
-  bool isLinear =
-    svtKindlmannShape(westin.x, westin.y, sqGamma, sqMinimumRoundness, alpha, beta);
-  vec3 s = svqSemiAxes(lambda, sqScaleMode, sqScaleFactor, sqMaximumScale, sqMinimumThickness);
-  if (!(s.x > 0.0))
-  {
-    return;
-  }
-  // Canonical axes (u, v, w), w the symmetry axis: e1 for linear glyphs
-  // (Kindlmann's x axis), e3 otherwise (z axis).
   mat3 frameMC;
-  if (isLinear)
+  vec3 form;
+  if (sqSignPolicy == 2)
   {
-    frameMC = mat3(s.y * e2, s.z * e3, s.x * e1);
+    // Schultz and Kindlmann: any sign pattern; semi-axes |l_i| along e_i,
+    // symmetry axis e1 or e3, v along e2.
+    vec3 abc;
+    bool axisE1 = svtSchultzKindlmannShape(lambda, sqGamma, sqMinimumRoundness, abc);
+    vec3 s =
+      svqSemiAxes(abs(lambda), sqScaleMode, sqScaleFactor, sqMaximumScale, sqMinimumThickness);
+    if (!(max(s.x, s.z) > 0.0))
+    {
+      return;
+    }
+    if (axisE1)
+    {
+      frameMC = mat3(s.z * e3, s.y * e2, s.x * e1);
+      form = vec3(lambda.z * s.z * s.z, lambda.y * s.y * s.y, lambda.x * s.x * s.x);
+    }
+    else
+    {
+      frameMC = mat3(s.x * e1, s.y * e2, s.z * e3);
+      form = vec3(lambda.x * s.x * s.x, lambda.y * s.y * s.y, lambda.z * s.z * s.z);
+    }
+    glyphShapeVSOut = abc;
+#ifdef SQ_GENERAL_SHAPES
+    // near a zero eigenvalue, on the indefinite side: the blend with the
+    // definite side's glyph (continuity with a minimum thickness)
+    vec3 abcDefinite;
+    bool axisDefiniteE1;
+    float w = svtSchultzKindlmannBlend(
+      lambda, sqGamma, sqMinimumRoundness, sqZeroEigenvalueBand, abcDefinite, axisDefiniteE1);
+    if (w < 1.0)
+    {
+      glyphBlendVSOut = vec4(abcDefinite, axisDefiniteE1 != axisE1 ? w + 2.0 : w);
+    }
+#endif
   }
   else
   {
-    frameMC = mat3(s.x * e1, s.y * e2, s.z * e3);
+    vec3 westin = svtWestinMetrics(lambda);
+    float alpha;
+    float beta;
+    bool isLinear =
+      svtKindlmannShape(westin.x, westin.y, sqGamma, sqMinimumRoundness, alpha, beta);
+    vec3 s = svqSemiAxes(lambda, sqScaleMode, sqScaleFactor, sqMaximumScale, sqMinimumThickness);
+    if (!(s.x > 0.0))
+    {
+      return;
+    }
+    // Canonical axes (u, v, w), w the symmetry axis: e1 for linear glyphs
+    // (Kindlmann's x axis), e3 otherwise (z axis).
+    if (isLinear)
+    {
+      frameMC = mat3(s.y * e2, s.z * e3, s.x * e1);
+      form = vec3(lambda.y * s.y * s.y, lambda.z * s.z * s.z, lambda.x * s.x * s.x);
+    }
+    else
+    {
+      frameMC = mat3(s.x * e1, s.y * e2, s.z * e3);
+      form = vec3(lambda.x * s.x * s.x, lambda.y * s.y * s.y, lambda.z * s.z * s.z);
+    }
+    glyphShapeVSOut = vec3(alpha, beta, beta);
   }
   glyphFrameVSOut = glyphMCVC * frameMC;
-  glyphShapeVSOut = vec2(alpha, beta);
+  float formScale = max(max(abs(form.x), abs(form.y)), abs(form.z));
+  glyphFormVSOut = formScale > 0.0 ? form / formScale : vec3(1.0);
   if (sqColorMode == 0)
   {
-    // principal direction RGB, modulated by FA
-    glyphColorVSOut = vec4(abs(e1) * fa, 1.0);
+    // principal direction RGB, modulated by FA (at most 1: the FA of
+    // indefinite eigenvalues reaches sqrt(3/2))
+    glyphColorVSOut = vec4(abs(e1) * min(fa, 1.0), 1.0);
   }
   //SQ::ScalarColor::Impl
+  //SQ::BlockColor::Impl
   glyphValidVSOut = 1;
 }

@@ -172,6 +172,18 @@ void CheckOutputs(SplineVizTestStatus& status, const std::vector<Sample>& sample
       std::abs(md->GetTuple1(id) - mean) / l1, std::abs(cl->GetTuple1(id) - (l1 - l2) / S),
       std::abs(cp->GetTuple1(id) - 2.0 * (l2 - l3) / S),
       std::abs(cs->GetTuple1(id) - 3.0 * l3 / S) });
+    // Schultz-Kindlmann's square, as Teem's tenGlyphBqdUvEval
+    vtkDataArray* shape = attrs->GetArray("ShapeCoordinates");
+    SV_CHECK_MSG(status, shape && shape->GetNumberOfComponents() == 2, what << ": no shape");
+    if (shape)
+    {
+      const double m = std::max(std::abs(l1), std::abs(l3));
+      const double x = l1 / m, y = l2 / m, z = l3 / m;
+      const double u = (y + 1.0) / 2.0;
+      const double v = x > -z ? (z + 1.0) / 2.0 - u + 1.0 : (x + 1.0) / 2.0 - u;
+      worst = std::max({ worst, std::abs(shape->GetComponent(id, 0) - u),
+        std::abs(shape->GetComponent(id, 1) - v) });
+    }
   }
   SV_CHECK_MSG(status, worst < tol, what << ": worst relative error " << worst);
 }
@@ -347,6 +359,36 @@ int TestTensorAnalysisFilter(int, char*[])
           CheckOutputs(status, samples, blk->GetPointData(), 1e-12, "multiblock");
         }
       }
+    }
+  }
+
+  // ShapeCoordinates of indefinite and negative tensors (the Westin metrics
+  // are meaningless there): Schultz and Kindlmann's square at known points.
+  {
+    const double diag[][5] = { { 1, 0, -1, 0.5, 0.5 }, { -1, -1, -1, 0.0, 0.0 },
+      { 2, 2, -2, 1.0, 0.0 }, { 1, -1, -1, 0.0, 1.0 }, { 0, 0, -3, 0.5, 0.0 },
+      { 1, 0.5, -0.25, 0.75, 0.625 } };
+    vtkNew<vtkImageData> img;
+    img->SetDimensions(6, 1, 1);
+    vtkNew<vtkDoubleArray> t;
+    t->SetNumberOfComponents(6);
+    t->SetNumberOfTuples(6);
+    for (int i = 0; i < 6; ++i)
+    {
+      const double tuple[6] = { diag[i][0], diag[i][1], diag[i][2], 0, 0, 0 };
+      t->SetTuple(i, tuple);
+    }
+    img->GetPointData()->SetTensors(t);
+    vtkNew<vtkTensorAnalysisFilter> filter;
+    filter->SetInputData(img);
+    filter->Update();
+    vtkDataArray* shape =
+      vtkDataSet::SafeDownCast(filter->GetOutput())->GetPointData()->GetArray("ShapeCoordinates");
+    SV_CHECK(status, shape != nullptr);
+    for (int i = 0; shape && i < 6; ++i)
+    {
+      SV_CHECK_NEAR(status, shape->GetComponent(i, 0), diag[i][3], 1e-12);
+      SV_CHECK_NEAR(status, shape->GetComponent(i, 1), diag[i][4], 1e-12);
     }
   }
 
