@@ -47,6 +47,7 @@
 #include "vtkScalarsToColors.h"
 #include "vtkShaderProgram.h"
 #include "vtkSmartPointer.h"
+#include "vtkGarbageCollector.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -77,7 +78,11 @@ namespace TM = vtkSplineVizTensorMath;
 class vtkSuperquadricGlyphMapper::Internals
 {
 public:
-  vtkNew<vtkSuperquadricGlyphPreparer> Preparer;
+  // Owned, and reported to the garbage collector (ReportReferences): this
+  // mapper's input is the preparer's output, so the two form a pipeline
+  // cycle that only the collector can break.
+  vtkSmartPointer<vtkSuperquadricGlyphPreparer> Preparer =
+    vtkSmartPointer<vtkSuperquadricGlyphPreparer>::New();
   vtkNew<vtkCallbackCommand> Forwarder;
   std::string ColorKey;
   bool HaveColors = false;
@@ -559,6 +564,13 @@ vtkSuperquadricGlyphMapper::~vtkSuperquadricGlyphMapper()
 {
   this->SetTensorArrayName(nullptr);
   this->SetMaskArrayName(nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkSuperquadricGlyphMapper::ReportReferences(vtkGarbageCollector* collector)
+{
+  this->Superclass::ReportReferences(collector);
+  vtkGarbageCollectorReport(collector, this->Internal->Preparer, "Preparer");
 }
 
 //------------------------------------------------------------------------------

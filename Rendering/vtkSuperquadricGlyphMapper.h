@@ -445,6 +445,7 @@ public:
 protected:
   vtkSuperquadricGlyphMapper();
   ~vtkSuperquadricGlyphMapper() override;
+  void ReportReferences(vtkGarbageCollector* collector) override;
 
   void ComputeBounds() override;
   void UpdatePreparer();
