@@ -1345,6 +1345,23 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     maxSteps = static_cast<int>(std::min(
       1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
   }
+  // Mesa's llvmpipe ends a fragment's loops after 65,535 iterations in all
+  // (about 4,000 samples with the element look-up): say so, once per
+  // setting, when fixed steps need more (adaptive estimates are the worst
+  // case, finest everywhere, and rarely reached).
+  if (!this->AdaptiveSteps && maxSteps > 4000 && maxSteps != this->WarnedSteps)
+  {
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (renderer && std::string(renderer).find("llvmpipe") != std::string::npos)
+    {
+      this->WarnedSteps = maxSteps;
+      vtkWarningMacro(<< "rays need up to " << maxSteps << " samples at SampleDistance "
+                      << sampleDistance
+                      << ", but Mesa's llvmpipe ends a fragment's loops after 65,535 "
+                         "iterations (about 4,000 samples): long rays are cut short; use a "
+                         "larger SampleDistance or adaptive steps");
+    }
+  }
   program->SetUniformi("lrMaxSteps", maxSteps);
   program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
 

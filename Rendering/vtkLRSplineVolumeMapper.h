@@ -265,8 +265,11 @@ public:
   /**
    * Largest number of samples per ray. 0 (default): automatic, enough for a
    * ray across the whole box at the finest step (adaptive: the smallest
-   * element's step times StepScale; fixed: SampleDistance), so that no ray is
-   * cut short; a positive value caps the work per pixel (rays stop there).
+   * element's step times StepScale; fixed: SampleDistance), so that the step
+   * count cuts no ray short; a positive value caps the work per pixel (rays
+   * stop there). On Mesa's llvmpipe a fragment's loops end after 65,535
+   * iterations in all, about 4,000 samples: longer rays are cut short
+   * whatever this says (a warning says so for fixed steps).
    */
   vtkSetClampMacro(MaximumNumberOfSteps, int, 0, VTK_INT_MAX);
   vtkGetMacro(MaximumNumberOfSteps, int);
@@ -343,6 +346,7 @@ protected:
   int IsosurfaceBisections = 16;
   int MaximumNumberOfSteps = 0;
   bool CountSamples = false;
+  int WarnedSteps = 0; // the step count last warned about (llvmpipe's loop limit)
 
 private:
   vtkLRSplineVolumeMapper(const vtkLRSplineVolumeMapper&) = delete;

@@ -364,6 +364,52 @@ int TestLRSplineVolumeBadInput(int, char*[])
     SV_CHECK_MSG(status, compiler.find("syntax error") != std::string::npos,
       "the compiler's message is not shown");
   }
+  // Fixed steps too fine for llvmpipe's loop limit: drawn, with one warning
+  // (the rays are cut short there); none for the same steps in adaptive mode.
+  {
+    vtkNew<vtkLRSplineVolumeMapper> mapper;
+    const Outcome o = Render(mapper, good, property,
+      [](vtkLRSplineVolumeMapper* m)
+      {
+        m->AdaptiveStepsOff();
+        m->SetSampleDistance(1e-4);
+      });
+    std::string renderer = "?";
+    {
+      // the OpenGL renderer string, through VTK (ReportCapabilities)
+      vtkNew<vtkRenderWindow> probe;
+      probe->SetSize(8, 8);
+      probe->Render();
+      if (const char* caps = probe->ReportCapabilities())
+      {
+        renderer = caps;
+        const size_t at = renderer.find("renderer string:");
+        renderer = at == std::string::npos ? "?" : renderer.substr(at + 17);
+        renderer = renderer.substr(0, renderer.find('\n'));
+      }
+      probe->Finalize();
+    }
+    const bool llvmpipe = renderer.find("llvmpipe") != std::string::npos;
+    std::cout << "fixed steps of 1e-4 (" << renderer << "): " << o.Drawn << " pixels drawn; "
+              << (o.Errors.empty() ? "no warning" : o.Errors) << std::endl;
+    SV_CHECK(status, o.Drawn > 500);
+    if (llvmpipe)
+    {
+      SV_CHECK_MSG(status, o.Errors.find("cut short") != std::string::npos,
+        "no warning that llvmpipe cuts the long rays short");
+      const size_t first = o.Errors.find("cut short");
+      SV_CHECK_MSG(status,
+        first == std::string::npos || o.Errors.find("cut short", first + 1) == std::string::npos,
+        "the warning is repeated every frame");
+    }
+    const Outcome adaptive = Render(mapper, good, property,
+      [](vtkLRSplineVolumeMapper* m)
+      {
+        m->AdaptiveStepsOn();
+        m->SetSampleDistance(0.0);
+      });
+    SV_CHECK_MSG(status, adaptive.Errors.empty(), "adaptive steps warned: " << adaptive.Errors);
+  }
   // Recovery: a mapper that had bad input renders once the input is good.
   {
     vtkNew<vtkLRSplineVolumeMapper> mapper;
