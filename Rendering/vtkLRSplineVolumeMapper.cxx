@@ -1351,10 +1351,11 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // case, finest everywhere, and rarely reached).
   if (!this->AdaptiveSteps && maxSteps > 4000 && maxSteps != this->WarnedSteps)
   {
+    // checked once per setting, not every frame
+    this->WarnedSteps = maxSteps;
     const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     if (renderer && std::string(renderer).find("llvmpipe") != std::string::npos)
     {
-      this->WarnedSteps = maxSteps;
       vtkWarningMacro(<< "rays need up to " << maxSteps << " samples at SampleDistance "
                       << sampleDistance
                       << ", but Mesa's llvmpipe ends a fragment's loops after 65,535 "

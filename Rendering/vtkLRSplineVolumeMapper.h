@@ -346,7 +346,7 @@ protected:
   int IsosurfaceBisections = 16;
   int MaximumNumberOfSteps = 0;
   bool CountSamples = false;
-  int WarnedSteps = 0; // the step count last warned about (llvmpipe's loop limit)
+  int WarnedSteps = 0; // the step count last checked against llvmpipe's loop limit
 
 private:
   vtkLRSplineVolumeMapper(const vtkLRSplineVolumeMapper&) = delete;
