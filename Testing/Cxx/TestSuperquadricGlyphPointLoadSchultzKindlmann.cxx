@@ -9,21 +9,16 @@
 // the few definite ones). The shapes themselves are checked against an
 // independent reference in TestSuperquadricGlyphSchultzKindlmann.
 #include "vtkSuperquadricGlyphMapper.h"
+#include "PointLoadGlyphScene.h"
 
-#include "vtkActor.h"
-#include "vtkCamera.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
-#include "vtkOutlineFilter.h"
 #include "vtkPointData.h"
 #include "vtkPointLoad.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderWindowInteractor.h"
-#include "vtkRenderer.h"
 
 #include <algorithm>
 #include <iostream>
@@ -74,31 +69,7 @@ int TestSuperquadricGlyphPointLoadSchultzKindlmann(int argc, char* argv[])
       mapper->SetScalarRange(range[0], range[1]);
       mapper->SetLookupTable(lut);
     }
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    actor->GetProperty()->SetSpecular(0.3);
-    actor->GetProperty()->SetSpecularPower(20);
-
-    vtkNew<vtkOutlineFilter> outline;
-    outline->SetInputConnection(load->GetOutputPort());
-    vtkNew<vtkPolyDataMapper> outlineMapper;
-    outlineMapper->SetInputConnection(outline->GetOutputPort());
-    vtkNew<vtkActor> outlineActor;
-    outlineActor->SetMapper(outlineMapper);
-    outlineActor->GetProperty()->SetColor(0.9, 0.9, 0.9);
-
-    vtkNew<vtkRenderer> renderer;
-    renderer->SetViewport(0.5 * v, 0.0, 0.5 * v + 0.5, 1.0);
-    renderer->SetBackground(0.1, 0.1, 0.12);
-    renderer->AddActor(actor);
-    renderer->AddActor(outlineActor);
-    window->AddRenderer(renderer);
-    vtkCamera* camera = renderer->GetActiveCamera();
-    camera->SetFocalPoint(0, 0, 0);
-    camera->SetPosition(24, -38, 30);
-    camera->SetViewUp(0, 0, 1);
-    renderer->ResetCamera();
-    camera->Zoom(1.3);
+    sqtest::AddPointLoadView(window, load, mapper, v);
     window->Render();
     const vtkIdType drawn = mapper->GetNumberOfGlyphs();
     const vtkIdType left = mapper->GetNumberOfInvalidTensors() + mapper->GetNumberOfZeroTensors();
