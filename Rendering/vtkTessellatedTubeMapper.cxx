@@ -107,9 +107,9 @@ struct vtkTessellatedTubeMapper::vtkInternals
 {
   static constexpr vtkIdType ChunkSize = 16;
   static constexpr unsigned char Culled = 255;
-  static constexpr unsigned char WholeChunk = 254;  // one patch for the chunk
-  static constexpr int SinglePatchSides = 8;        // ring edges made by the tessellator at most
-  static constexpr double WholeChunkPixels = 256.0; // 4-pixel edges at level 64
+  static constexpr unsigned char WholeChunk = 254;   // one patch for the chunk
+  static constexpr int SinglePatchSides = 8;         // ring edges made by the tessellator at most
+  static constexpr double WholeChunkPixels = 1024.0; // 16-pixel edges at level 64
 
   std::vector<vtkIdType> TubeFirstSegment;  // tubes + 1
   std::vector<vtkIdType> TubeFirstChunk;    // tubes + 1
@@ -646,17 +646,22 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
           }
           in.TubeSideBin[t] = static_cast<unsigned char>(sideBin);
           // Thin tubes: a chunk becomes one patch when its length on
-          // screen fits the largest tessellation level with 4-pixel edges.
+          // screen fits the largest tessellation level with 4-pixel edges;
+          // else each segment is one patch (2 rings) whose level along the
+          // control stage sets from the segment's length and bending.
           if (sideBin == sideBins - 1)
           {
             for (vtkIdType c = in.TubeFirstChunk[t]; c < in.TubeFirstChunk[t + 1]; ++c)
             {
               const double pixels = chunkPixels[c - in.TubeFirstChunk[t]];
-              if (pixels >= 0.0 && pixels <= vtkInternals::WholeChunkPixels &&
-                in.ChunkFirstSegment[c + 1] - in.ChunkFirstSegment[c] > 1)
+              if (pixels < 0.0)
               {
-                in.ChunkRingBin[c] = vtkInternals::WholeChunk;
+                continue;
               }
+              in.ChunkRingBin[c] = pixels <= vtkInternals::WholeChunkPixels &&
+                  in.ChunkFirstSegment[c + 1] - in.ChunkFirstSegment[c] > 1
+                ? vtkInternals::WholeChunk
+                : static_cast<unsigned char>(ringBins - 1);
             }
           }
         }

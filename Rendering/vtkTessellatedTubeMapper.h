@@ -24,13 +24,24 @@
  *   BaseRings down to 2, halving the intervals) whose spacing stays below half
  *   MaxEdgeLength on screen. Per tube, from its widest visible part, the
  *   circumference in steps of twice MaxSilhouetteEdgeLength gives the
- *   vertices needed per ring: up to 8, the wall is one patch around the
- *   segment whose ring levels (from the node rings alone, so neighbours
- *   agree) make those vertices, its offsets scaled so that the polygonal
- *   cross-section keeps the circle's mean width, and the rasterizer culls
- *   its back faces; a whole chunk is then one patch if it is at most 256
- *   pixels long on screen (the evaluation stage finds each vertex's segment;
- *   the level along follows the screen-space curvature of the node chain);
+ *   vertices needed per ring: up to 8, the tube is thin and each ring is
+ *   the view-facing half of the cross-section, turned to the eye per vertex
+ *   by the evaluation stage (from one silhouette point, exact also in
+ *   perspective, through the point nearest the eye to the other), so that
+ *   thin tubes keep their outline and their depth: at least 3 intervals,
+ *   more where the tube turns toward the eye (the depth error of a chord
+ *   grows as 1 / sin of the angle between the tangent and the ray), the
+ *   vertices between the silhouettes placed so that the chords straddle the
+ *   circle (depth within 0.21 radii for 3 intervals); a chunk of thin tube
+ *   is one patch if it is at most 1,024 pixels long on screen (the
+ *   evaluation stage finds each vertex's segment), else each segment is one
+ *   patch, and the level along keeps the chords within half a pixel of the
+ *   curve on screen and within a tenth of the radius in space (from the
+ *   curvature of the node chain or the segment's tangents); measured by
+ *   TestTubeFidelity against vtkTubeFilter (64 sides) on DIPY's cb_2 bundle
+ *   and synthetic curls at the whole view and zoomed 2x and 5x: coverage
+ *   IoU 0.97-1.00 and eye depth within a quarter radius on 96.9-100 % of
+ *   the shared pixels (before: IoU 0.92 and 30 % on cb_2's whole view);
  *   more than 8, the base mesh has at least half the needed vertices per ring
  *   (BaseSides halved down to 4) and Salm's refinement does the rest. The
  *   side count is chosen per tube so that the rings at the junctions always

@@ -28,17 +28,21 @@
 //    isotropic length with tubeSilhouetteEdgeLength (Salm's finer seams).
 // 3. Inner levels: the maximum of the two opposite outer levels.
 // With tubeSides == 1 (the level of detail of thin tubes) the wall is one
-// patch around the segment per ring interval (corners at s = 0 and s = 1
-// coincide): no back-patch culling (the rasterizer culls back faces), the
-// ring levels are the rings' circumferences in pixels over tubeSideLength
-// (at least 3) and the level along is the interval's screen length over
-// tubeMaxEdgeLength; they depend on the rings' curve parameters only (the
-// nodes at the segment's ends), so neighbours agree. A patch may also span a
-// run of `count` segments of one tube (count > 1, far away thin tubes): then
-// its rings are the run's end nodes and the level along makes the edges at
-// most tubeMaxEdgeLength long on screen and short enough for the screen-space
-// curvature of the node chain (turning angle over chord length at each node)
-// to keep the chords within tubeSagitta pixels of the curve.
+// patch per segment whose rings the evaluation stage turns to the eye (the
+// view-facing half of the cross-section, silhouette to silhouette): no
+// back-patch culling (the rasterizer culls back faces), the ring levels are
+// the half circumferences in pixels over tubeSideLength (at least 3
+// intervals: the depth of the chords then stays within 0.21 radii of the
+// circle's, more where the tube turns toward the eye: see
+// tubeWallRingLevel), the caps' the whole circumferences (at least 6), and the level
+// along makes the edges at most tubeMaxEdgeLength long on screen and keeps
+// the chords within tubeSagitta pixels of the curve on screen and within
+// tubeDepthSagitta radii of it in space (so that the depth stays the tube's
+// where the curve bends toward the eye); the ring levels depend on the nodes
+// only, so neighbours agree. A patch may also span a run of `count` segments
+// of one tube (count > 1, far away thin tubes): then its rings are the run's
+// end nodes and the chords' bounds come from the curvature of the node chain
+// (turning angle over chord length at each node, on screen and in space).
 // The segment's nodes (view coordinates) and the patch's corner parameters go
 // to the evaluation stage as per-patch outputs.
 
@@ -70,7 +74,9 @@ uniform int tubeCaps;
 uniform int tubeSides;        // 1: one patch around the segment
 uniform float tubeSideLength; // pixels per ring edge in the single-patch mode
 
-const float tubeSagitta = 0.5; // pixels
+const float tubeSagitta = 0.5;        // pixels
+const float tubeDepthSagitta = 0.1; // radii
+const float tubeThinEdgeFactor = 4.0; // thin tubes: edges up to 4 tubeMaxEdgeLength
 uniform vec4 tubeFrustum[6]; // view-coordinate planes, inside: dot >= 0
 
 //VTK::SplineTubeMath::Dec
@@ -161,16 +167,40 @@ bool tubeOutsideFrustum(vec3 a, vec3 b, vec3 c, vec3 d)
   return false;
 }
 
-// Vertices of the ring around node center p (xyz, radius w), single-patch mode.
-float tubeRingLevel(vec4 p)
+// Intervals of the ring around node center p (xyz, radius w) in the
+// single-patch mode: `turn` of the circumference (0.5: the view-facing half
+// ring of a wall; 1: a cap), at least `least`.
+float tubeRingLevel(vec4 p, float turn, float least)
 {
   float w = (VCDCMatrix * vec4(p.xyz, 1.0)).w;
   if (w <= 0.0)
   {
-    return tubeMaxSilhouetteLevel;
+    return 64.0;
   }
-  float circumference = 6.283185307179586 * p.w / w * tubePixelScale();
-  return clamp(ceil(circumference / tubeSideLength), 3.0, 64.0);
+  float arc = turn * 6.283185307179586 * p.w / w * tubePixelScale();
+  return clamp(ceil(arc / tubeSideLength), least, 64.0);
+}
+
+// Intervals of the view-facing half ring of a wall at node center p with
+// the curve's derivative d there. A ray meets the wall of a tube that turns
+// toward the eye obliquely: the depth error of the chords (about 1.9 / L^2
+// radii across the tube) grows by 1 / sin(theta), theta the angle between
+// the tangent and the ray, so L grows as 1 / sqrt(sin(theta)) from 3 (at
+// most 8, for tubes seen nearly end-on).
+float tubeWallRingLevel(vec4 p, vec3 d)
+{
+  float sine = length(cross(normalize(d), normalize(tubeToEye(p.xyz))));
+  return tubeRingLevel(p, 0.5, ceil(2.9 / sqrt(max(sine, 0.34))));
+}
+
+// Chords of a curve piece with sagitta `sagitta` (view units) needed to keep
+// each within tubeSagitta pixels on screen (at clip w `w`) and within
+// tubeDepthSagitta of the radius `radius` in space (the sagitta shrinks with
+// the square of the number of chords).
+float tubeSagittaLevel(float sagitta, float w, float radius)
+{
+  float bound = min(tubeSagitta * max(w, 0.0) / tubePixelScale(), tubeDepthSagitta * radius);
+  return bound > 0.0 ? ceil(sqrt(sagitta / bound)) : 64.0;
 }
 
 float tubeScreenLength(vec3 a, vec3 b)
@@ -189,14 +219,20 @@ float tubeScreenLength(vec3 a, vec3 b)
 float tubeRunLevel(int first, int count)
 {
   vec2 halfViewport = 0.5 * tubeViewport;
-  float total = 0.0;
+  float total = 0.0;     // pixels
+  float total3 = 0.0;    // view units
   float shortest = 1e30; // longest admissible edge, pixels
+  float shortest3 = 1e30; // likewise in view units, for the depth
   vec2 previous = vec2(0.0);
   vec2 direction = vec2(0.0);
   float previousLength = 0.0;
+  vec3 previous3 = vec3(0.0);
+  vec3 direction3 = vec3(0.0);
+  float previousLength3 = 0.0;
   for (int k = 0; k <= count; ++k)
   {
-    vec4 c = VCDCMatrix * vec4(tubeNodePosition(first + k).xyz, 1.0);
+    vec4 node = tubeNodePosition(first + k);
+    vec4 c = VCDCMatrix * vec4(node.xyz, 1.0);
     if (c.w <= 0.0)
     {
       return 64.0;
@@ -218,10 +254,26 @@ float tubeRunLevel(int first, int count)
       }
       direction = d;
       previousLength = len;
+      vec3 d3 = node.xyz - previous3;
+      float len3 = length(d3);
+      total3 += len3;
+      if (k > 1 && len3 > 0.0 && previousLength3 > 0.0)
+      {
+        float turn = acos(clamp(dot(d3, direction3) / (len3 * previousLength3), -1.0, 1.0));
+        float curvature = turn / (0.5 * (len3 + previousLength3));
+        if (curvature > 0.0)
+        {
+          shortest3 = min(shortest3, sqrt(8.0 * tubeDepthSagitta * node.w / curvature));
+        }
+      }
+      direction3 = d3;
+      previousLength3 = len3;
     }
     previous = p;
+    previous3 = node.xyz;
   }
-  return clamp(ceil(max(total / tubeMaxEdgeLength, total / shortest)), 1.0, 64.0);
+  float edge = tubeThinEdgeFactor * tubeMaxEdgeLength;
+  return clamp(ceil(max(max(total / edge, total / shortest), total3 / shortest3)), 1.0, 64.0);
 }
 
 void tubeSinglePatch(ivec4 info, int flags, int kind)
@@ -257,7 +309,7 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
       tubeCull();
       return;
     }
-    float ring = tubeRingLevel(p);
+    float ring = tubeRingLevel(p, 1.0, 6.0);
     gl_TessLevelOuter[0] = 1.0;
     gl_TessLevelOuter[1] = ring;
     gl_TessLevelOuter[2] = 1.0;
@@ -267,10 +319,28 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
   }
   else
   {
-    float ring0 = tubeRingLevel(pA);
-    float ring1 = tubeRingLevel(pD);
-    float along = count > 1 ? tubeRunLevel(info.x, count)
-                            : max(1.0, min(screen / tubeMaxEdgeLength, tubeMaxLevel));
+    vec3 dA = count > 1 ? tubeNodeDerivative(info.x).xyz
+                        : svHermiteDerivative(seg.p0, seg.m0, seg.p1, seg.m1, tA).xyz;
+    vec3 dD = count > 1 ? tubeNodeDerivative(info.x + count).xyz
+                        : svHermiteDerivative(seg.p0, seg.m0, seg.p1, seg.m1, tD).xyz;
+    float ring0 = tubeWallRingLevel(pA, dA);
+    float ring1 = tubeWallRingLevel(pD, dD);
+    float along = 1.0;
+    if (count > 1)
+    {
+      along = tubeRunLevel(info.x, count);
+    }
+    else
+    {
+      // The cubic's deviation from its chord between tA and tD: about
+      // |m0 - m1| / 8 times the square of the interval (exact for [0, 1]).
+      float sagitta = length(seg.m0.xyz - seg.m1.xyz) * 0.125 * (tD - tA) * (tD - tA);
+      vec4 middle = svHermite(seg.p0, seg.m0, seg.p1, seg.m1, 0.5 * (tA + tD));
+      float w = (VCDCMatrix * vec4(middle.xyz, 1.0)).w;
+      along = clamp(max(min(screen / (tubeThinEdgeFactor * tubeMaxEdgeLength), tubeMaxLevel),
+                      tubeSagittaLevel(sagitta, w, min(min(pA.w, pD.w), middle.w))),
+        1.0, 64.0);
+    }
     gl_TessLevelOuter[0] = along;
     gl_TessLevelOuter[1] = ring0;
     gl_TessLevelOuter[2] = along;

@@ -15,8 +15,15 @@
 // A patch spanning a run of segments (count > 1) finds the segment of each
 // vertex from its curve parameter t in [0, count] and reads its nodes. In the
 // single-patch mode (tubeSides == 1, thin tubes drawn with few vertices per
-// ring) the offsets are scaled so that the polygonal cross-section of L
-// vertices has the mean width of the circle (factor pi / (L sin(pi / L))).
+// ring) a wall ring is the view-facing half of the cross-section: from one
+// silhouette point to the other through the point nearest the eye (the
+// offsets cos(phi) F + sin(phi) (T x F), F the direction to the eye
+// orthogonal to the tangent T, phi in [-A, A] with A = acos(r / |eye - c|
+// across T), pi / 2 in parallel projection: the exact silhouette of the
+// circle seen from the eye), so the outline is the tube's; the vertices
+// between the silhouettes are placed so that the depth of the chords stays
+// within 0.21 radii of the circle's (L >= 3 intervals, see below). Caps are
+// the disk's inscribed polygon.
 
 layout(quads, equal_spacing, ccw) in;
 
@@ -30,6 +37,7 @@ patch in vec4 tubePatchParams;
 patch in ivec4 tubePatchInfo;
 
 uniform mat4 VCDCMatrix;
+uniform int cameraParallel;
 uniform int tubeSides;
 uniform int tubeHaveColors;
 uniform samplerBuffer tubeColors;           // per node: RGBA
@@ -45,8 +53,8 @@ out vec4 tubeColorVSOutput;
 
 //VTK::TessellatedTubeCommon::Dec
 
-// Segment and local parameter of curve parameter t in [0, count] (a
-// vertex at a node belongs to the segment before it, t = 0 to the first).
+// Segment of curve parameter t in [0, count] of a run (a vertex at a node
+// belongs to the segment before it, t = 0 to the first).
 int tubeSegmentOf(float t, int count)
 {
   return clamp(int(ceil(t)) - 1, 0, count - 1);
@@ -62,23 +70,28 @@ void main()
   float angle = svTubeAngle(s);
   float tGlobal = kind == 0 ? mix(tubePatchParams.z, tubePatchParams.w, v) : tubePatchParams.z;
   float rho = kind == 0 ? 1.0 : 1.0 - v;
-  if (tubeSides == 1)
-  {
-    // Mean width of the polygonal cross-section = the circle's diameter.
-    float L = v == 0.0 ? gl_TessLevelOuter[1]
-                       : (v == 1.0 && kind == 0 ? gl_TessLevelOuter[3] : gl_TessLevelInner[0]);
-    L = max(ceil(L), 3.0);
-    rho *= 3.141592653589793 / (L * sin(3.141592653589793 / L));
-  }
 
   TubeSegment seg;
   float t = tGlobal;
   int k = 0;
-  if (count > 1)
+  bool halfRing = tubeSides == 1 && kind == 0;
+  if (count > 1 && kind == 0)
   {
     k = tubeSegmentOf(tGlobal, count);
-    seg = tubeLoadSegment(tubePatchInfo.x + k);
     t = tGlobal - float(k);
+    int node = tubePatchInfo.x + k;
+    if (halfRing)
+    {
+      // The orthogonal vectors only where the tube points at the eye (below).
+      seg.p0 = tubeNodePosition(node);
+      seg.m0 = tubeNodeDerivative(node);
+      seg.p1 = tubeNodePosition(node + 1);
+      seg.m1 = tubeNodeDerivative(node + 1);
+    }
+    else
+    {
+      seg = tubeLoadSegment(node);
+    }
   }
   else
   {
@@ -91,11 +104,54 @@ void main()
   }
 
   vec3 offset;
-  vec3 position =
-    svTubeSurfacePoint(seg.p0, seg.m0, seg.p1, seg.m1, seg.f0, seg.f1, t, angle, rho, offset);
+  vec3 position;
   vec3 normal;
-  if (kind == 0)
+  if (halfRing)
   {
+    // The view-facing half ring (see above); the normal is exact for any
+    // frame (svTubeSurfaceTangent), also for this one that turns with the view.
+    vec4 c = svHermite(seg.p0, seg.m0, seg.p1, seg.m1, t);
+    vec4 d = svHermiteDerivative(seg.p0, seg.m0, seg.p1, seg.m1, t);
+    vec3 tangent = normalize(d.xyz);
+    vec3 toEye = cameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : -c.xyz;
+    vec3 across = toEye - dot(toEye, tangent) * tangent;
+    float distance = length(across);
+    vec3 front;
+    if (distance > 1e-6 * length(toEye))
+    {
+      front = across / distance;
+    }
+    else if (count > 1)
+    {
+      int node = tubePatchInfo.x + k;
+      front = svInterpolateFrame(tubeNodeFrame(node), tubeNodeFrame(node + 1), t, d.xyz);
+    }
+    else
+    {
+      front = svInterpolateFrame(seg.f0, seg.f1, t, d.xyz);
+    }
+    float halfSpan = cameraParallel != 0 || distance <= 0.0
+      ? 1.5707963267948966
+      : acos(clamp(c.w / distance, 0.0, 1.0));
+    // Vertices nearer the silhouettes (phi = A sin(pi/2 sigma), sigma = 2s - 1,
+    // where the circle's depth changes fastest) and, between the silhouette
+    // points, 1 + 3.3 / L^3 radii out (L intervals), so that the chords
+    // straddle the circle: the depth error stays below 0.21 r for L = 3,
+    // 0.13 r for L = 4, 0.07 r for L = 6 (up to 97 % of the half width).
+    float L = v == 0.0 ? gl_TessLevelOuter[1]
+                       : (v == 1.0 ? gl_TessLevelOuter[3] : gl_TessLevelInner[0]);
+    L = max(ceil(L), 3.0);
+    float sigma = 2.0 * s - 1.0;
+    offset = svTubeOffset(front, tangent, halfSpan * sin(1.5707963267948966 * sigma));
+    float outward = abs(sigma) < 1.0 ? 1.0 + 3.3 / (L * L * L) : 1.0;
+    position = c.xyz + (outward * c.w) * offset;
+    vec4 dd = svHermiteSecondDerivative(seg.p0, seg.m0, seg.p1, seg.m1, t);
+    normal = svTubeNormal(offset, svTubeSurfaceTangent(d.xyz, dd.xyz, c.w, d.w, offset));
+  }
+  else if (kind == 0)
+  {
+    position =
+      svTubeSurfacePoint(seg.p0, seg.m0, seg.p1, seg.m1, seg.f0, seg.f1, t, angle, rho, offset);
     // Relative to the first node for the difference's precision.
     vec4 p1 = vec4(seg.p1.xyz - seg.p0.xyz, seg.p1.w);
     normal = svTubeWallNormal(
@@ -103,6 +159,8 @@ void main()
   }
   else
   {
+    position =
+      svTubeSurfacePoint(seg.p0, seg.m0, seg.p1, seg.m1, seg.f0, seg.f1, t, angle, rho, offset);
     vec3 axis = normalize(svHermiteDerivative(seg.p0, seg.m0, seg.p1, seg.m1, t).xyz);
     normal = kind == 1 ? -axis : axis;
   }
