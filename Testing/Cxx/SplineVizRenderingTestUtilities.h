@@ -1,5 +1,12 @@
 // Helpers for the rendering tests: independent reference geometry for spline
 // tubes and image/depth comparisons.
+// - Curls(): helices of different radii, pitches and orientations, a loop
+//   and a straight line, densely sampled (a few degrees of turn per segment,
+//   so the straight segments of the lines follow smooth curves), with
+//   per-point radii;
+// - Measure(): coverage IoU and the share of the common pixels whose eye
+//   depth agrees within a given distance, from two frames rendered with the
+//   same camera; Save(): the frame as a PNG file for inspection.
 #ifndef SplineVizRenderingTestUtilities_h
 #define SplineVizRenderingTestUtilities_h
 
@@ -9,11 +16,15 @@
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
+#include "vtkImageData.h"
+#include "vtkLookupTable.h"
+#include "vtkPNGWriter.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -24,11 +35,66 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <string>
 #include <vector>
 
 namespace SplineVizTest
 {
 using Vec4 = std::array<double, 4>; // x, y, z, radius
+
+inline std::vector<std::vector<Vec4>> Curls()
+{
+  std::vector<std::vector<Vec4>> curves;
+  // Helices: axis z, radius R, pitch c, around different centers; tilted by
+  // swapping coordinates so that they do not share an axis.
+  struct Helix
+  {
+    double cx, cy, cz, R, c, r0, r1;
+    int turns, axis;
+  };
+  const Helix helices[] = { { -1.2, 0.8, 0.0, 0.7, 0.12, 0.06, 0.11, 2, 2 },
+    { 1.1, 0.9, -0.5, 0.5, 0.18, 0.05, 0.05, 2, 0 },
+    { 0.0, -1.0, 0.3, 0.9, 0.08, 0.08, 0.04, 1, 1 },
+    { 1.3, -1.1, 0.8, 0.35, 0.1, 0.07, 0.07, 3, 2 } };
+  for (const Helix& h : helices)
+  {
+    std::vector<Vec4> curve;
+    const int n = 72 * h.turns; // 5 degrees per segment
+    for (int i = 0; i <= n; ++i)
+    {
+      const double a = 2.0 * 3.141592653589793 * i / 72.0;
+      double p[3] = { h.R * std::cos(a), h.R * std::sin(a), h.c * a - h.c * 3.14159 * h.turns };
+      if (h.axis == 0)
+      {
+        std::swap(p[0], p[2]);
+      }
+      else if (h.axis == 1)
+      {
+        std::swap(p[1], p[2]);
+      }
+      const double s = static_cast<double>(i) / n;
+      curve.push_back({ h.cx + p[0], h.cy + p[1], h.cz + p[2], h.r0 + (h.r1 - h.r0) * s });
+    }
+    curves.push_back(curve);
+  }
+  // A straight line and a loop.
+  std::vector<Vec4> line;
+  for (int i = 0; i <= 40; ++i)
+  {
+    line.push_back({ -2.0 + 0.1 * i, 2.0, -0.4, 0.08 });
+  }
+  curves.push_back(line);
+  std::vector<Vec4> loop;
+  for (int i = 0; i <= 100; ++i)
+  {
+    const double a = 2.0 * 3.141592653589793 * i / 100.0;
+    loop.push_back({ 0.6 * std::cos(a), -2.0 + 0.3 * std::sin(2.0 * a), 0.6 * std::sin(a), 0.06 });
+  }
+  curves.push_back(loop);
+  return curves;
+}
 
 /// Polylines with a per-point "Radius" array, one cell per curve.
 inline vtkSmartPointer<vtkPolyData> MakePolylines(const std::vector<std::vector<Vec4>>& curves)
@@ -94,9 +160,11 @@ inline std::vector<Vec4> DenseSpline(const std::vector<Vec4>& nodes, int perSegm
 
 /// High-resolution polygonal reference of the tubes: vtkTubeFilter (radius by
 /// absolute scalar, `sides` sides) along the densely resampled spline, plus
-/// spheres for the rounded caps.
+/// spheres for the rounded caps of sphere-swept tubes (vtkRayCastTubeMapper)
+/// or, with `flatCaps`, the filter's flat caps (the disk model of
+/// vtkTessellatedTubeMapper).
 inline vtkSmartPointer<vtkPolyData> ReferenceTubes(
-  const std::vector<std::vector<Vec4>>& curves, int perSegment, int sides)
+  const std::vector<std::vector<Vec4>>& curves, int perSegment, int sides, bool flatCaps = false)
 {
   vtkNew<vtkAppendPolyData> append;
   for (const auto& curve : curves)
@@ -108,17 +176,26 @@ inline vtkSmartPointer<vtkPolyData> ReferenceTubes(
     tubes->SetInputData(line);
     tubes->SetNumberOfSides(sides);
     tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
-    tubes->CappingOff();
+    tubes->SetCapping(flatCaps);
     tubes->Update();
     append->AddInputData(tubes->GetOutput());
     for (const Vec4* end : { &dense.front(), &dense.back() })
     {
+      if (flatCaps)
+      {
+        break;
+      }
       vtkNew<vtkSphereSource> sphere;
       sphere->SetCenter((*end)[0], (*end)[1], (*end)[2]);
       sphere->SetRadius((*end)[3]);
       sphere->SetThetaResolution(64);
       sphere->SetPhiResolution(64);
       sphere->Update();
+      vtkNew<vtkDoubleArray> radius; // kept by the append filter (RadiusFrame)
+      radius->SetName("Radius");
+      radius->SetNumberOfValues(sphere->GetOutput()->GetNumberOfPoints());
+      radius->Fill((*end)[3]);
+      sphere->GetOutput()->GetPointData()->AddArray(radius);
       append->AddInputData(sphere->GetOutput());
     }
   }
@@ -204,6 +281,143 @@ inline double ViewDepth(double windowDepth, vtkCamera* camera)
   if (camera->GetParallelProjection())
     return 0.5 * (ndc * (f - n) + (f + n));
   return 2.0 * f * n / ((f + n) - ndc * (f - n));
+}
+
+struct Measures
+{
+  long Covered[2] = { 0, 0 }; ///< test, reference
+  double IoU = 0.0;
+  double DepthShare = 0.0; ///< common pixels whose eye depths agree within the tolerance
+  long Common = 0;
+  double MeanDepthDifference = 0.0; ///< test - reference over the common pixels (view units)
+};
+
+/// IoU of the covered pixels and the share of the common pixels whose eye
+/// depths (linearized with the camera's clipping range) differ by at most
+/// `depthTolerance`, or by at most the pixel's value of `tolerances` if given.
+inline Measures Measure(const SplineVizTest::Frame& test, const SplineVizTest::Frame& reference,
+  vtkCamera* camera, double depthTolerance, const std::vector<double>* tolerances = nullptr)
+{
+  Measures m;
+  long both = 0;
+  long either = 0;
+  long close = 0;
+  for (int y = 0; y < test.Height; ++y)
+  {
+    for (int x = 0; x < test.Width; ++x)
+    {
+      const bool a = test.Covered(x, y);
+      const bool b = reference.Covered(x, y);
+      m.Covered[0] += a ? 1 : 0;
+      m.Covered[1] += b ? 1 : 0;
+      either += (a || b) ? 1 : 0;
+      if (a && b)
+      {
+        ++both;
+        const size_t i = static_cast<size_t>(y * test.Width + x);
+        const double da = SplineVizTest::ViewDepth(test.Depth[i], camera);
+        const double db = SplineVizTest::ViewDepth(reference.Depth[i], camera);
+        close += std::abs(da - db) <= (tolerances ? (*tolerances)[i] : depthTolerance) ? 1 : 0;
+        m.MeanDepthDifference += da - db;
+      }
+    }
+  }
+  m.Common = both;
+  m.MeanDepthDifference /= static_cast<double>(std::max(both, 1L));
+  m.IoU = either > 0 ? static_cast<double>(both) / either : 1.0;
+  m.DepthShare = both > 0 ? static_cast<double>(close) / both : 1.0;
+  return m;
+}
+
+/// With SPLINEVIZ_TEST_IMAGES=<dir>, write the frame's colors as <dir>/<name>.png.
+inline void Save(const SplineVizTest::Frame& frame, const std::string& name)
+{
+  const char* dir = std::getenv("SPLINEVIZ_TEST_IMAGES");
+  if (!dir)
+  {
+    return;
+  }
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(frame.Width, frame.Height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::copy(
+    frame.RGB.begin(), frame.RGB.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(image);
+  writer->SetFileName((std::string(dir) + "/" + name + ".png").c_str());
+  writer->Write();
+}
+
+using CameraSetup = std::function<void(vtkCamera*)>;
+
+/// Render `mapper` in a renderer of its own in `window`, shaded (gray,
+/// diffuse) with the camera `setup`; the clipping range is fixed from
+/// `bounds` so that renderings of the same bounds share it. The actor is
+/// moved to `actorPosition` if given (negative controls).
+inline Frame Render(vtkRenderWindow* window, vtkMapper* mapper, const CameraSetup& setup,
+  const double bounds[6], vtkCamera* cameraOut, const double* actorPosition = nullptr)
+{
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  if (actorPosition)
+  {
+    actor->SetPosition(actorPosition[0], actorPosition[1], actorPosition[2]);
+  }
+  actor->GetProperty()->SetColor(0.9, 0.9, 0.9);
+  actor->GetProperty()->SetAmbient(0.1);
+  actor->GetProperty()->SetDiffuse(0.9);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  window->AddRenderer(renderer);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  setup(camera);
+  renderer->ResetCameraClippingRange(const_cast<double*>(bounds));
+  Frame frame = SplineVizTest::Grab(window);
+  cameraOut->DeepCopy(camera);
+  window->RemoveRenderer(renderer);
+  return frame;
+}
+
+/// The radius of the tube seen at each pixel: `reference` (tubes with the
+/// point array "Radius") rendered unlit with the radius mapped to gray over
+/// [rMin, rMax], with the camera `setup`; 0 where nothing is seen.
+inline std::vector<double> RadiusFrame(vtkRenderWindow* window, vtkPolyData* reference,
+  const CameraSetup& setup, const double bounds[6], double rMin, double rMax)
+{
+  vtkNew<vtkLookupTable> gray;
+  gray->SetTableRange(rMin, rMax);
+  gray->SetSaturationRange(0.0, 0.0);
+  gray->SetValueRange(0.0, 1.0);
+  gray->SetRampToLinear();
+  gray->SetNumberOfTableValues(256);
+  gray->Build();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(reference);
+  mapper->SetLookupTable(gray);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray("Radius");
+  mapper->SetScalarRange(rMin, rMax);
+  mapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff();
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  window->AddRenderer(renderer);
+  setup(renderer->GetActiveCamera());
+  renderer->ResetCameraClippingRange(const_cast<double*>(bounds));
+  const Frame frame = Grab(window);
+  window->RemoveRenderer(renderer);
+  std::vector<double> radius(frame.Depth.size(), 0.0);
+  for (size_t i = 0; i < radius.size(); ++i)
+  {
+    if (frame.Depth[i] < 1.0f)
+    {
+      radius[i] = rMin + (rMax - rMin) * frame.RGB[3 * i] / 255.0;
+    }
+  }
+  return radius;
 }
 }
 

@@ -1,9 +1,6 @@
 // Test scenes and measures shared by the stylized-line tests.
 //
-// - Curls(): helices of different radii, pitches and orientations, a loop
-//   and a straight line, densely sampled (a few degrees of turn per segment,
-//   so the straight segments of the lines follow smooth curves), with
-//   per-point radii;
+// - Curls(), Measure(), Save(): see SplineVizRenderingTestUtilities.h;
 // - Ring(): a ring whose tangent a camera can look along exactly;
 // - Bundle(): wavy lines running along +x side by side (a fibre bundle),
 //   which a camera on the x axis sees end-on: there most tangents point at
@@ -12,9 +9,6 @@
 //   with 64 sides and flat caps around the same polylines (radius by
 //   absolute scalar), the same model as the stylized lines (circular
 //   profiles orthogonal to the vertex tangents, straight segments);
-// - Measure(): coverage IoU and the share of the common pixels whose eye
-//   depth agrees within a given distance, from two frames rendered with the
-//   same camera.
 #ifndef StylizedLineTestScenes_h
 #define StylizedLineTestScenes_h
 
@@ -34,59 +28,11 @@
 
 namespace StylizedLineTest
 {
+using SplineVizTest::Curls;
+using SplineVizTest::Measure;
+using SplineVizTest::Measures;
+using SplineVizTest::Save;
 using SplineVizTest::Vec4;
-
-inline std::vector<std::vector<Vec4>> Curls()
-{
-  std::vector<std::vector<Vec4>> curves;
-  // Helices: axis z, radius R, pitch c, around different centers; tilted by
-  // swapping coordinates so that they do not share an axis.
-  struct Helix
-  {
-    double cx, cy, cz, R, c, r0, r1;
-    int turns, axis;
-  };
-  const Helix helices[] = { { -1.2, 0.8, 0.0, 0.7, 0.12, 0.06, 0.11, 2, 2 },
-    { 1.1, 0.9, -0.5, 0.5, 0.18, 0.05, 0.05, 2, 0 },
-    { 0.0, -1.0, 0.3, 0.9, 0.08, 0.08, 0.04, 1, 1 },
-    { 1.3, -1.1, 0.8, 0.35, 0.1, 0.07, 0.07, 3, 2 } };
-  for (const Helix& h : helices)
-  {
-    std::vector<Vec4> curve;
-    const int n = 72 * h.turns; // 5 degrees per segment
-    for (int i = 0; i <= n; ++i)
-    {
-      const double a = 2.0 * 3.141592653589793 * i / 72.0;
-      double p[3] = { h.R * std::cos(a), h.R * std::sin(a), h.c * a - h.c * 3.14159 * h.turns };
-      if (h.axis == 0)
-      {
-        std::swap(p[0], p[2]);
-      }
-      else if (h.axis == 1)
-      {
-        std::swap(p[1], p[2]);
-      }
-      const double s = static_cast<double>(i) / n;
-      curve.push_back({ h.cx + p[0], h.cy + p[1], h.cz + p[2], h.r0 + (h.r1 - h.r0) * s });
-    }
-    curves.push_back(curve);
-  }
-  // A straight line and a loop.
-  std::vector<Vec4> line;
-  for (int i = 0; i <= 40; ++i)
-  {
-    line.push_back({ -2.0 + 0.1 * i, 2.0, -0.4, 0.08 });
-  }
-  curves.push_back(line);
-  std::vector<Vec4> loop;
-  for (int i = 0; i <= 100; ++i)
-  {
-    const double a = 2.0 * 3.141592653589793 * i / 100.0;
-    loop.push_back({ 0.6 * std::cos(a), -2.0 + 0.3 * std::sin(2.0 * a), 0.6 * std::sin(a), 0.06 });
-  }
-  curves.push_back(loop);
-  return curves;
-}
 
 inline std::vector<std::vector<Vec4>> Bundle()
 {
@@ -139,49 +85,6 @@ inline vtkSmartPointer<vtkPolyData> ReferenceTubes(vtkPolyData* lines)
   return out;
 }
 
-struct Measures
-{
-  long Covered[2] = { 0, 0 }; ///< test, reference
-  double IoU = 0.0;
-  double DepthShare = 0.0; ///< common pixels whose eye depths agree within the tolerance
-  long Common = 0;
-};
-
-/// IoU of the covered pixels and the share of the common pixels whose eye
-/// depths (linearized with the camera's clipping range) differ by at most
-/// `depthTolerance`.
-inline Measures Measure(const SplineVizTest::Frame& test, const SplineVizTest::Frame& reference,
-  vtkCamera* camera, double depthTolerance)
-{
-  Measures m;
-  long both = 0;
-  long either = 0;
-  long close = 0;
-  for (int y = 0; y < test.Height; ++y)
-  {
-    for (int x = 0; x < test.Width; ++x)
-    {
-      const bool a = test.Covered(x, y);
-      const bool b = reference.Covered(x, y);
-      m.Covered[0] += a ? 1 : 0;
-      m.Covered[1] += b ? 1 : 0;
-      either += (a || b) ? 1 : 0;
-      if (a && b)
-      {
-        ++both;
-        const size_t i = static_cast<size_t>(y * test.Width + x);
-        const double da = SplineVizTest::ViewDepth(test.Depth[i], camera);
-        const double db = SplineVizTest::ViewDepth(reference.Depth[i], camera);
-        close += std::abs(da - db) <= depthTolerance ? 1 : 0;
-      }
-    }
-  }
-  m.Common = both;
-  m.IoU = either > 0 ? static_cast<double>(both) / either : 1.0;
-  m.DepthShare = both > 0 ? static_cast<double>(close) / both : 1.0;
-  return m;
-}
-
 /// Pixels whose coverage differs between two frames.
 inline long CoverageChanges(const SplineVizTest::Frame& a, const SplineVizTest::Frame& b)
 {
@@ -213,24 +116,6 @@ inline long ColorChanges(
   return n;
 }
 
-/// With SPLINEVIZ_TEST_IMAGES=<dir>, write the frame's colors as <dir>/<name>.png.
-inline void Save(const SplineVizTest::Frame& frame, const std::string& name)
-{
-  const char* dir = std::getenv("SPLINEVIZ_TEST_IMAGES");
-  if (!dir)
-  {
-    return;
-  }
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(frame.Width, frame.Height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  std::copy(
-    frame.RGB.begin(), frame.RGB.end(), static_cast<unsigned char*>(image->GetScalarPointer()));
-  vtkNew<vtkPNGWriter> writer;
-  writer->SetInputData(image);
-  writer->SetFileName((std::string(dir) + "/" + name + ".png").c_str());
-  writer->Write();
-}
 }
 
 #endif

@@ -64,30 +64,8 @@ Scene MakeScene(const std::vector<std::vector<SplineVizTest::Vec4>>& curves)
   return scene;
 }
 
-using CameraSetup = std::function<void(vtkCamera*)>;
-
-/// Render `mapper` shaded (gray, diffuse) with the camera `setup`; the
-/// clipping range is fixed from `bounds` so that both renderings share it.
-SplineVizTest::Frame Render(vtkRenderWindow* window, vtkMapper* mapper, const CameraSetup& setup,
-  const double bounds[6], vtkCamera* cameraOut)
-{
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(0.9, 0.9, 0.9);
-  actor->GetProperty()->SetAmbient(0.1);
-  actor->GetProperty()->SetDiffuse(0.9);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  window->AddRenderer(renderer);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  setup(camera);
-  renderer->ResetCameraClippingRange(const_cast<double*>(bounds));
-  SplineVizTest::Frame frame = SplineVizTest::Grab(window);
-  cameraOut->DeepCopy(camera);
-  window->RemoveRenderer(renderer);
-  return frame;
-}
+using SplineVizTest::CameraSetup;
+using SplineVizTest::Render;
 
 vtkSmartPointer<vtkStylizedLineMapper> MakeMapper(vtkPolyData* lines)
 {

@@ -1,0 +1,372 @@
+// One fidelity test for every tube renderer: vtkRayCastTubeMapper,
+// vtkTessellatedTubeMapper and vtkStylizedLineMapper against vtkTubeFilter
+// (64 sides), both sides rendered with multisampling off in the same window
+// and camera, at the whole-data view and zoomed 2x and 5x (toward a point on
+// the data, so that the zoomed views are full of tubes).
+//
+// Scenes (radius from the point array "Radius"):
+// - DIPY's real cb_2 bundle (Testing/Data/DIPY/cb_2.vtp: 116 streamlines,
+//   2,088 points, mm), densely resampled: 4 points per segment along the
+//   spline of its points (SplineVizTest::DenseSpline), radius 0.22-0.38 mm
+//   varying along each fibre; tubes 2-3 pixels wide in the whole view;
+// - the synthetic curls (SplineVizTest::Curls: helices, a loop and a line,
+//   5 degrees of turn per segment, radii 0.04-0.11).
+// References, each renderer's own surface model:
+// - ray-cast (sphere-swept tubes with rounded ends) and tessellated (disk
+//   tubes with flat caps): the filter around the spline of the renderer's
+//   input sampled 16 times per segment by the test's own Hermite code, with
+//   spheres at the ends or flat caps;
+// - stylized lines (circular profiles orthogonal to the vertex tangents,
+//   straight segments): the filter around the polylines themselves, capped.
+// Measures (SplineVizTest::Measure): coverage IoU and the share of the
+// common pixels whose eye depth (linearized with the camera's clipping range)
+// is within a quarter of the radius of the reference's (the radius seen at
+// each pixel: SplineVizTest::RadiusFrame, the reference colored by its radius).
+// Targets at every view: ray-cast IoU >= 0.98 and depth on >= 98 %;
+// tessellated IoU >= 0.95 and depth on >= 95 %; stylized lines IoU >= 0.95
+// (their depth correction is checked in TestStylizedLineReference; here
+// the depth share is printed).
+// Negative controls, which must fail at the whole view: each renderer with
+// radii 15 % too small (the IoU target), and moved away from the eye by
+// 0.3 times the largest radius (the depth target).
+// SPLINEVIZ_TEST_IMAGES=<dir> writes the renderings as PNG files.
+#include "vtkRayCastTubeMapper.h"
+#include "vtkStylizedLineMapper.h"
+#include "vtkTessellatedTubeMapper.h"
+
+#include "SplineVizRenderingTestUtilities.h"
+#include "SplineVizTestUtilities.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkMath.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRenderWindow.h"
+#include "vtkTubeFilter.h"
+#include "vtkXMLPolyDataReader.h"
+
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+using SplineVizTest::Vec4;
+using Curves = std::vector<std::vector<Vec4>>;
+
+const int Size = 600;
+
+/// cb_2's streamlines resampled along their spline, with a radius varying
+/// along each fibre; empty on a read error.
+Curves LoadBundle()
+{
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->SetFileName((std::string(SPLINEVIZ_SOURCE_DATA_DIR) + "/DIPY/cb_2.vtp").c_str());
+  reader->Update();
+  vtkPolyData* pd = reader->GetOutput();
+  Curves curves;
+  if (!pd || pd->GetNumberOfLines() != 116)
+  {
+    return curves;
+  }
+  vtkCellArray* lines = pd->GetLines();
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  int fibre = 0;
+  for (lines->InitTraversal(); lines->GetNextCell(n, ids); ++fibre)
+  {
+    std::vector<Vec4> nodes;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double p[3];
+      pd->GetPoint(ids[i], p);
+      const double r = 0.3 + 0.08 * std::sin(0.45 * static_cast<double>(i) + fibre);
+      nodes.push_back({ p[0], p[1], p[2], r });
+    }
+    curves.push_back(SplineVizTest::DenseSpline(nodes, 4));
+  }
+  return curves;
+}
+
+/// The curves with their radii scaled (a negative control).
+Curves ScaleRadii(Curves curves, double factor)
+{
+  for (auto& curve : curves)
+  {
+    for (auto& p : curve)
+    {
+      p[3] *= factor;
+    }
+  }
+  return curves;
+}
+
+/// vtkTubeFilter (64 sides, capped) around the polylines themselves.
+vtkSmartPointer<vtkPolyData> PolylineTubes(vtkPolyData* lines)
+{
+  vtkNew<vtkPolyData> input;
+  input->ShallowCopy(lines);
+  input->GetPointData()->SetActiveScalars("Radius");
+  vtkNew<vtkTubeFilter> tubes;
+  tubes->SetInputData(input);
+  tubes->SetNumberOfSides(64);
+  tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
+  tubes->CappingOn();
+  tubes->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(tubes->GetOutput());
+  out->GetPointData()->SetActiveScalars(nullptr);
+  return out;
+}
+
+enum Renderer
+{
+  RayCast,
+  Tessellated,
+  Stylized
+};
+const char* const RendererNames[] = { "raycast", "tessellated", "stylized" };
+
+vtkSmartPointer<vtkMapper> MakeMapper(Renderer which, vtkPolyData* lines)
+{
+  vtkSmartPointer<vtkSplineTubeMapper> mapper;
+  switch (which)
+  {
+    case RayCast:
+      mapper = vtkSmartPointer<vtkRayCastTubeMapper>::New();
+      break;
+    case Tessellated:
+      mapper = vtkSmartPointer<vtkTessellatedTubeMapper>::New();
+      break;
+    case Stylized:
+      mapper = vtkSmartPointer<vtkStylizedLineMapper>::New();
+      break;
+  }
+  mapper->SetInputData(lines);
+  mapper->SetRadiusArray("Radius");
+  mapper->ScalarVisibilityOff();
+  return mapper;
+}
+
+vtkSmartPointer<vtkPolyData> MakeReference(Renderer which, const Curves& curves)
+{
+  switch (which)
+  {
+    case RayCast:
+      return SplineVizTest::ReferenceTubes(curves, 16, 64);
+    case Tessellated:
+      return SplineVizTest::ReferenceTubes(curves, 16, 64, true);
+    default:
+      return PolylineTubes(SplineVizTest::MakePolylines(curves));
+  }
+}
+
+/// The test frame's colors with the common pixels whose depth is off (more
+/// than `tolerance`) in red, nearer than the reference, or blue, farther
+/// (for SPLINEVIZ_TEST_IMAGES).
+SplineVizTest::Frame DepthErrors(const SplineVizTest::Frame& test,
+  const SplineVizTest::Frame& reference, vtkCamera* camera, const std::vector<double>& tolerance)
+{
+  SplineVizTest::Frame out = test;
+  for (size_t i = 0; i < test.Depth.size(); ++i)
+  {
+    if (test.Depth[i] < 1.0f && reference.Depth[i] < 1.0f)
+    {
+      const double d = SplineVizTest::ViewDepth(test.Depth[i], camera) -
+        SplineVizTest::ViewDepth(reference.Depth[i], camera);
+      if (std::abs(d) > tolerance[i])
+      {
+        out.RGB[3 * i] = d < 0.0 ? 255 : 0;
+        out.RGB[3 * i + 1] = 0;
+        out.RGB[3 * i + 2] = d < 0.0 ? 0 : 255;
+      }
+    }
+  }
+  return out;
+}
+
+struct View
+{
+  std::string Name;
+  double Zoom;
+};
+const View Views[] = { { "whole", 1.0 }, { "zoom2", 2.0 }, { "zoom5", 5.0 } };
+
+/// Camera looking along `direction` at the whole data (bounds), then zoomed
+/// by `zoom` toward `target` (the view direction kept).
+SplineVizTest::CameraSetup MakeCamera(
+  const double bounds[6], const double direction[3], const double target[3], double zoom)
+{
+  std::vector<double> b(bounds, bounds + 6);
+  std::vector<double> d(direction, direction + 3);
+  std::vector<double> t(target, target + 3);
+  return [b, d, t, zoom](vtkCamera* camera)
+  {
+    double center[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
+    double radius = 0.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      radius += 0.25 * (b[2 * k + 1] - b[2 * k]) * (b[2 * k + 1] - b[2 * k]);
+    }
+    radius = std::sqrt(radius);
+    const double viewAngle = 30.0;
+    const double distance = radius / std::sin(vtkMath::RadiansFromDegrees(0.5 * viewAngle));
+    const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    double focal[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      // Whole view: at the center; zoomed: at the target.
+      focal[k] = zoom > 1.0 ? t[k] : center[k];
+    }
+    camera->SetFocalPoint(focal);
+    camera->SetPosition(focal[0] + distance * d[0] / len, focal[1] + distance * d[1] / len,
+      focal[2] + distance * d[2] / len);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    camera->OrthogonalizeViewUp();
+    camera->SetViewAngle(viewAngle);
+    camera->Zoom(zoom);
+  };
+}
+
+struct Scene
+{
+  std::string Name;
+  Curves Lines;
+  double Direction[3];
+  double Target[3]; // a point on the data
+};
+}
+
+int TestTubeFidelity(int, char*[])
+{
+  SplineVizTestStatus status;
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(Size, Size);
+
+  std::vector<Scene> scenes;
+  {
+    Scene bundle;
+    bundle.Name = "cb_2";
+    bundle.Lines = LoadBundle();
+    if (bundle.Lines.empty())
+    {
+      std::cerr << "ERROR: could not read Testing/Data/DIPY/cb_2.vtp (116 streamlines)"
+                << std::endl;
+      return EXIT_FAILURE;
+    }
+    const auto& fibre = bundle.Lines[58];
+    const auto& middle = fibre[fibre.size() / 2];
+    bundle.Direction[0] = 1.0;
+    bundle.Direction[1] = -0.35;
+    bundle.Direction[2] = 0.3;
+    std::copy(middle.begin(), middle.begin() + 3, bundle.Target);
+    scenes.push_back(bundle);
+    Scene curls;
+    curls.Name = "curls";
+    curls.Lines = SplineVizTest::Curls();
+    curls.Direction[0] = 4.0;
+    curls.Direction[1] = 5.0;
+    curls.Direction[2] = 9.0;
+    const auto& helix = curls.Lines[0][40];
+    std::copy(helix.begin(), helix.begin() + 3, curls.Target);
+    scenes.push_back(curls);
+  }
+
+  for (const Scene& scene : scenes)
+  {
+    double rMin = 1e30;
+    double rMax = 0.0;
+    for (const auto& curve : scene.Lines)
+    {
+      for (const auto& p : curve)
+      {
+        rMin = std::min(rMin, p[3]);
+        rMax = std::max(rMax, p[3]);
+      }
+    }
+    auto lines = SplineVizTest::MakePolylines(scene.Lines);
+    auto thinLines = SplineVizTest::MakePolylines(ScaleRadii(scene.Lines, 0.85));
+    double bounds[6];
+    lines->GetBounds(bounds);
+    for (int k = 0; k < 3; ++k)
+    {
+      bounds[2 * k] -= 0.4;
+      bounds[2 * k + 1] += 0.4;
+    }
+    for (Renderer which : { RayCast, Tessellated, Stylized })
+    {
+      const std::string renderer = RendererNames[which];
+      const auto referenceTubes = MakeReference(which, scene.Lines);
+      vtkNew<vtkPolyDataMapper> reference;
+      reference->SetInputData(referenceTubes);
+      reference->ScalarVisibilityOff();
+      auto mapper = MakeMapper(which, lines);
+      const double iouTarget = which == RayCast ? 0.98 : 0.95;
+      const double depthTarget = which == RayCast ? 0.98 : (which == Tessellated ? 0.95 : 0.0);
+      for (const View& view : Views)
+      {
+        const auto setup = MakeCamera(bounds, scene.Direction, scene.Target, view.Zoom);
+        vtkNew<vtkCamera> camera;
+        const auto ref = SplineVizTest::Render(window, reference, setup, bounds, camera);
+        const auto test = SplineVizTest::Render(window, mapper, setup, bounds, camera);
+        const std::string name = scene.Name + "-" + view.Name + "-" + renderer;
+        SplineVizTest::Save(ref, scene.Name + "-" + view.Name + "-" + renderer + "-reference");
+        SplineVizTest::Save(test, name);
+        std::vector<double> tolerance =
+          SplineVizTest::RadiusFrame(window, referenceTubes, setup, bounds, rMin, rMax);
+        for (double& r : tolerance)
+        {
+          r *= 0.25;
+        }
+        const auto m = SplineVizTest::Measure(test, ref, camera, 0.0, &tolerance);
+        SplineVizTest::Save(DepthErrors(test, ref, camera, tolerance), name + "-depth-errors");
+        std::cout << name << ": covered " << m.Covered[0] << " (reference " << m.Covered[1]
+                  << "), IoU " << m.IoU << ", eye depth within r/4 on " << 100.0 * m.DepthShare
+                  << " % of " << m.Common << " common pixels (mean difference "
+                  << m.MeanDepthDifference / rMin << " rMin)" << std::endl;
+        SV_CHECK_MSG(status, m.Covered[1] > Size * Size / 200,
+          name << ": the reference covers only " << m.Covered[1] << " pixels");
+        SV_CHECK_MSG(status, m.IoU >= iouTarget, name << ": IoU " << m.IoU << " < " << iouTarget);
+        SV_CHECK_MSG(status, m.DepthShare >= depthTarget,
+          name << ": eye depth within r/4 on " << 100.0 * m.DepthShare << " % < "
+               << 100.0 * depthTarget << " %");
+
+        if (view.Zoom != 1.0)
+        {
+          continue;
+        }
+        // Negative controls at the whole view (moved by 0.3 rMax: at least
+        // 0.3 local radii everywhere).
+        auto thin = MakeMapper(which, thinLines);
+        const auto thinFrame = SplineVizTest::Render(window, thin, setup, bounds, camera);
+        const auto thinMeasure = SplineVizTest::Measure(thinFrame, ref, camera, 0.0, &tolerance);
+        std::cout << "  negative control, radii 15 % too small: IoU " << thinMeasure.IoU
+                  << std::endl;
+        SV_CHECK_MSG(status, thinMeasure.IoU < iouTarget,
+          name << ": radii 15 % too small must fail the IoU target, IoU " << thinMeasure.IoU);
+        if (depthTarget > 0.0)
+        {
+          double shift[3];
+          camera->GetDirectionOfProjection(shift);
+          for (double& c : shift)
+          {
+            c *= 0.3 * rMax;
+          }
+          const auto farFrame = SplineVizTest::Render(window, mapper, setup, bounds, camera, shift);
+          const auto farMeasure = SplineVizTest::Measure(farFrame, ref, camera, 0.0, &tolerance);
+          std::cout << "  negative control, 0.3 rMax farther: depth within r/4 on "
+                    << 100.0 * farMeasure.DepthShare << " %" << std::endl;
+          SV_CHECK_MSG(status, farMeasure.DepthShare < depthTarget,
+            name << ": moved 0.3 r away the depth must fail, " << 100.0 * farMeasure.DepthShare
+                 << " %");
+        }
+      }
+    }
+  }
+  return status.Result();
+}
