@@ -31,6 +31,22 @@ void vtkRayCastTubeRepresentation::SetRootIterations(int n)
 }
 
 //------------------------------------------------------------------------------
+void vtkRayCastTubeRepresentation::SetStraightTolerance(double tolerance)
+{
+  static_cast<vtkRayCastTubeMapper*>(this->Mapper)->SetStraightTolerance(tolerance);
+  static_cast<vtkRayCastTubeMapper*>(this->LODMapper)->SetStraightTolerance(tolerance);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkRayCastTubeRepresentation::SetOcclusionCulling(bool culling)
+{
+  static_cast<vtkRayCastTubeMapper*>(this->Mapper)->SetOcclusionCulling(culling);
+  static_cast<vtkRayCastTubeMapper*>(this->LODMapper)->SetOcclusionCulling(culling);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkRayCastTubeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

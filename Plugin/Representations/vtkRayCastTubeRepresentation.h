@@ -4,7 +4,9 @@
  *
  * A vtkSplineTubeRepresentation backed by vtkRayCastTubeMapper (Salm,
  * "Interactive Rendering of Spline Tubes", §3.2). Adds the ray-casting
- * settings SubSegments and RootIterations.
+ * settings SubSegments, RootIterations, StraightTolerance (closed-form
+ * intersection of straight segments) and OcclusionCulling (the depth
+ * pre-pass; exact, so IceT composites culled ranks as unculled ones).
  */
 #ifndef vtkRayCastTubeRepresentation_h
 #define vtkRayCastTubeRepresentation_h
@@ -25,6 +27,8 @@ public:
    */
   void SetSubSegments(int n);
   void SetRootIterations(int n);
+  void SetStraightTolerance(double tolerance);
+  void SetOcclusionCulling(bool culling);
   ///@}
 
 protected:

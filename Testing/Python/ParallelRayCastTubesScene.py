@@ -2,7 +2,9 @@
 mpiexec): the synthetic fibers, split into pieces across the ranks, drawn as
 ray-cast tubes and composited by IceT; saves a screenshot.
 
-    pvbatch ParallelRayCastTubesScene.py OUTPUT.png [color-by-rank]
+    pvbatch ParallelRayCastTubesScene.py OUTPUT.png [by-rank | culling]
+
+(culling: with the ray-cast tubes' occlusion-culling pre-pass.)
 """
 import sys
 
@@ -18,7 +20,9 @@ view.OrientationAxesVisibility = 0
 display = Show(fibers, view)  # noqa: F405
 display.SetRepresentationType("Ray-Cast Tubes")
 display.TubeRadiusArray = "Radius"
-if len(sys.argv) > 2:
+culling = len(sys.argv) > 2 and sys.argv[2] == "culling"
+display.OcclusionCulling = 1 if culling else 0
+if len(sys.argv) > 2 and not culling:
     ColorBy(display, ("POINTS", "vtkProcessId"))  # noqa: F405
 else:
     ColorBy(display, ("POINTS", "Scalar"))  # noqa: F405

@@ -3,10 +3,13 @@ by one pvbatch process and by two MPI ranks (each drawing half of the tubes,
 IceT compositing their images by depth) must give the same picture. The
 ray-cast tubes write their exact depth, so the composite is exact: any
 depth error would show where tubes of different ranks cross. A third run
-colors the tubes by rank to prove that both ranks drew.
+colors the tubes by rank to prove that both ranks drew; a fourth runs the
+two ranks with the occlusion-culling pre-pass, which must not change the
+composite either (each rank culls only against its own tubes, exactly).
 
     TestParallelRayCastTubes.sh PVBATCH MPIEXEC PVPYTHON OUTPUT_DIR
-renders the three images (one rank, two ranks, two ranks colored by rank)
+renders the four images (one rank, two ranks, two ranks colored by rank,
+two ranks with occlusion culling)
 and runs this script on them:
     pvpython TestParallelRayCastTubes.py OUTPUT_DIR
 """
@@ -27,6 +30,7 @@ out_dir = sys.argv[1]
 serial = os.path.join(out_dir, "TestParallelRayCastTubes-1rank.png")
 parallel = os.path.join(out_dir, "TestParallelRayCastTubes-2ranks.png")
 ranks = os.path.join(out_dir, "TestParallelRayCastTubes-2ranks-by-rank.png")
+culled = os.path.join(out_dir, "TestParallelRayCastTubes-2ranks-culling.png")
 
 a = read(serial)
 b = read(parallel)
@@ -40,6 +44,13 @@ if covered < 20000:
     sys.exit(1)
 if wrong > covered // 1000:
     print("ERROR: the two-rank composite differs from the serial image")
+    sys.exit(1)
+difference = abs(a - read(culled)).max(axis=1)
+wrong = int((difference > 24).sum())
+print("with occlusion culling: pixels differing by more than 24 levels: %d (largest %d)"
+      % (wrong, int(difference.max())))
+if wrong > covered // 1000:
+    print("ERROR: the two-rank composite with occlusion culling differs from the serial image")
     sys.exit(1)
 
 # Both ranks drew: two distinct tube colors in the by-rank image.

@@ -29,4 +29,6 @@ attempt "$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering 
   "$out/TestParallelRayCastTubes-2ranks.png"
 attempt "$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering "$scene" \
   "$out/TestParallelRayCastTubes-2ranks-by-rank.png" by-rank
+attempt "$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering "$scene" \
+  "$out/TestParallelRayCastTubes-2ranks-culling.png" culling
 "$pvpython" "$here/TestParallelRayCastTubes.py" "$out"

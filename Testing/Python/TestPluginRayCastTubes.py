@@ -27,6 +27,8 @@ display.TubeRadiusArray = "Radius"
 display.TubeRadiusScale = 1.0
 display.SubSegments = 4
 display.RootIterations = 12
+display.StraightTolerance = 0.05
+display.OcclusionCulling = 1
 tubes = coverage("TestPluginRayCastTubes.png")
 print("coverage: lines %.3f, ray-cast tubes %.3f" % (lines, tubes))
 if tubes < 2.0 * lines or tubes < 0.1:
@@ -40,10 +42,15 @@ print("active representation", sub.GetClassName(), "mapper", mapper.GetClassName
 if not mapper.IsA("vtkRayCastTubeMapper"):
     print("ERROR: the representation does not use the ray-cast tube mapper")
     sys.exit(1)
-if (mapper.GetSubSegments(), mapper.GetRootIterations(), mapper.GetRadiusArray()) != (4, 12, "Radius"):
-    print("ERROR: properties not forwarded:", mapper.GetSubSegments(), mapper.GetRootIterations(),
-          mapper.GetRadiusArray())
+forwarded = (mapper.GetSubSegments(), mapper.GetRootIterations(), mapper.GetRadiusArray(),
+             round(mapper.GetStraightTolerance(), 6), mapper.GetOcclusionCulling())
+if forwarded != (4, 12, "Radius", 0.05, True):
+    print("ERROR: properties not forwarded:", forwarded)
     sys.exit(1)
+if not mapper.GetLastRenderCulled():
+    print("ERROR: the occlusion-culling pre-pass was not used")
+    sys.exit(1)
+display.OcclusionCulling = 0
 print("GPU bytes per segment: %.1f" % (mapper.GetGPUMemorySize() / 3530.0))
 
 # A constant radius twice as large covers more.
