@@ -86,6 +86,10 @@
  * | 1 M segments, 1200x768   | 8955 (4329), 10.0 | 6534 (3492), 6.4  | 10051 (4997), 25.6       |
  *
  * ("long curves": 1,701 curves x 68 points, segments about 25 radii long.)
+ * Re-measured on the idle machine (one run, culling off, frame ratio to the
+ * tube filter's and first frame shorter by): Fibers2 0.93 and 3.3x at
+ * 800x600, 1.12 and 2.6x at 1200x768; long curves 0.81 and 3.6x, 0.90 and
+ * 2.7x; 1 M segments 0.66 and 6.1x, 0.72 and 5.3x.
  * With the camera among the Fibers2 tubes (800x600, another run) culling on
  * took 2286 (1099) ms, off 2038 (939) ms, and root finding everywhere
  * (StraightTolerance 0, as before) 4077 (1970) ms. The pre-pass costs a

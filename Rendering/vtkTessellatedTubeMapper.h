@@ -41,7 +41,12 @@
  *   TestTubeFidelity against vtkTubeFilter (64 sides) on DIPY's cb_2 bundle
  *   and synthetic curls at the whole view and zoomed 2x and 5x: coverage
  *   IoU 0.97-1.00 and eye depth within a quarter radius on 96.9-100 % of
- *   the shared pixels (before: IoU 0.92 and 30 % on cb_2's whole view);
+ *   the shared pixels (before: IoU 0.92 and 30 % on cb_2's whole view).
+ *   The price on llvmpipe (one idle run of SplineVizTubeBenchmark, camera
+ *   far): about one chord per segment on curved data, so the frame is
+ *   0.60-0.73 of vtkTubeFilter's (12 sides) on Fibers2 and on long smooth
+ *   curves at 800x600 and 1200x768 (before: 0.34 on Fibers2, inexact; 0.96
+ *   on the long curves);
  *   more than 8, the base mesh has at least half the needed vertices per ring
  *   (BaseSides halved down to 4) and Salm's refinement does the rest. The
  *   side count is chosen per tube so that the rings at the junctions always
