@@ -77,6 +77,16 @@ uniform float tubeSideLength; // pixels per ring edge in the single-patch mode
 const float tubeSagitta = 0.5;        // pixels
 const float tubeDepthSagitta = 0.1; // radii
 const float tubeThinEdgeFactor = 4.0; // thin tubes: edges up to 4 tubeMaxEdgeLength
+// Inside a run the evaluation stage makes the chords straddle the curve
+// (deviation at most half the sagitta, 3/4 next to the run's ends): in space
+// sagittas 1.7 times tubeDepthSagitta are admitted (the chords then stay
+// within 0.85 of it, 1.3 next to the run's ends); on screen the bound stays
+// (coverage within a pixel, TestTessellatedTubeReference). Measured with
+// TestTubeFidelity (depth share on cb_2 and the curls) and the triangles of
+// a Fibers2 frame (800x600): without straddling 96.9-97.1 %, 934k triangles
+// with the same levels; straddling with factor 1 98.1-98.4 %, 934k; 1.7
+// 96.8-97.9 %, 766k.
+const float tubeRunStraddle = 1.7;
 uniform vec4 tubeFrustum[6]; // view-coordinate planes, inside: dot >= 0
 
 //VTK::SplineTubeMath::Dec
@@ -263,7 +273,8 @@ float tubeRunLevel(int first, int count)
         float curvature = turn / (0.5 * (len3 + previousLength3));
         if (curvature > 0.0)
         {
-          shortest3 = min(shortest3, sqrt(8.0 * tubeDepthSagitta * node.w / curvature));
+          shortest3 =
+            min(shortest3, sqrt(8.0 * tubeRunStraddle * tubeDepthSagitta * node.w / curvature));
         }
       }
       direction3 = d3;

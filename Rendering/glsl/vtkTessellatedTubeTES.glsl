@@ -112,7 +112,19 @@ void main()
     // frame (svTubeSurfaceTangent), also for this one that turns with the view.
     vec4 c = svHermite(seg.p0, seg.m0, seg.p1, seg.m1, t);
     vec4 d = svHermiteDerivative(seg.p0, seg.m0, seg.p1, seg.m1, t);
+    vec4 dd = svHermiteSecondDerivative(seg.p0, seg.m0, seg.p1, seg.m1, t);
     vec3 tangent = normalize(d.xyz);
+    if (count > 1 && v > 0.0 && v < 1.0)
+    {
+      // Inside a run the chords straddle the curve: each vertex moves away
+      // from the center of curvature by half the sagitta of a chord of the
+      // run's spacing h (the chord's middle lies s = |c''_perp| h^2 / 8
+      // inside the curve), so chords deviate by at most s / 2 (3 s / 4 next
+      // to the run's ends, whose rings stay on the curve for the neighbours).
+      float h = float(count) / max(gl_TessLevelOuter[0], 1.0);
+      vec3 inward = dd.xyz - dot(dd.xyz, tangent) * tangent;
+      c.xyz -= inward * (0.0625 * h * h);
+    }
     vec3 toEye = cameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : -c.xyz;
     vec3 across = toEye - dot(toEye, tangent) * tangent;
     float distance = length(across);
@@ -145,7 +157,6 @@ void main()
     offset = svTubeOffset(front, tangent, halfSpan * sin(1.5707963267948966 * sigma));
     float outward = abs(sigma) < 1.0 ? 1.0 + 3.3 / (L * L * L) : 1.0;
     position = c.xyz + (outward * c.w) * offset;
-    vec4 dd = svHermiteSecondDerivative(seg.p0, seg.m0, seg.p1, seg.m1, t);
     normal = svTubeNormal(offset, svTubeSurfaceTangent(d.xyz, dd.xyz, c.w, d.w, offset));
   }
   else if (kind == 0)
