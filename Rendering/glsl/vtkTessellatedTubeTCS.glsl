@@ -225,6 +225,19 @@ float tubeScreenLength(vec3 a, vec3 b)
   return length(ca.xy / ca.w * halfViewport - cb.xy / cb.w * halfViewport);
 }
 
+// Curvature of a node chain at a node: the turning angle between the chord
+// `previous` (length previousLength) and the next chord d (length len) over
+// their mean length; 0 where a chord is degenerate.
+float tubeChainCurvature(vec3 d, float len, vec3 previous, float previousLength)
+{
+  if (len <= 0.0 || previousLength <= 0.0)
+  {
+    return 0.0;
+  }
+  float turn = acos(clamp(dot(d, previous) / (len * previousLength), -1.0, 1.0));
+  return turn / (0.5 * (len + previousLength));
+}
+
 // Level along a run of `count` segments from node `first` (see above).
 float tubeRunLevel(int first, int count)
 {
@@ -253,29 +266,22 @@ float tubeRunLevel(int first, int count)
       vec2 d = p - previous;
       float len = length(d);
       total += len;
-      if (k > 1 && len > 0.0 && previousLength > 0.0)
+      float curvature = k > 1 ? tubeChainCurvature(vec3(d, 0.0), len, vec3(direction, 0.0),
+                                  previousLength) : 0.0;
+      if (curvature > 0.0)
       {
-        float turn = acos(clamp(dot(d, direction) / (len * previousLength), -1.0, 1.0));
-        float curvature = turn / (0.5 * (len + previousLength));
-        if (curvature > 0.0)
-        {
-          shortest = min(shortest, sqrt(8.0 * tubeSagitta / curvature));
-        }
+        shortest = min(shortest, sqrt(8.0 * tubeSagitta / curvature));
       }
       direction = d;
       previousLength = len;
       vec3 d3 = node.xyz - previous3;
       float len3 = length(d3);
       total3 += len3;
-      if (k > 1 && len3 > 0.0 && previousLength3 > 0.0)
+      float curvature3 = k > 1 ? tubeChainCurvature(d3, len3, direction3, previousLength3) : 0.0;
+      if (curvature3 > 0.0)
       {
-        float turn = acos(clamp(dot(d3, direction3) / (len3 * previousLength3), -1.0, 1.0));
-        float curvature = turn / (0.5 * (len3 + previousLength3));
-        if (curvature > 0.0)
-        {
-          shortest3 =
-            min(shortest3, sqrt(8.0 * tubeRunStraddle * tubeDepthSagitta * node.w / curvature));
-        }
+        shortest3 =
+          min(shortest3, sqrt(8.0 * tubeRunStraddle * tubeDepthSagitta * node.w / curvature3));
       }
       direction3 = d3;
       previousLength3 = len3;

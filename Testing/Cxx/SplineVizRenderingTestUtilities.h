@@ -206,6 +206,26 @@ inline vtkSmartPointer<vtkPolyData> ReferenceTubes(
   return out;
 }
 
+/// vtkTubeFilter, 64 sides, flat caps, radius by absolute scalar "Radius",
+/// around the polylines themselves (the model of the stylized lines:
+/// circular profiles orthogonal to the vertex tangents, straight segments).
+inline vtkSmartPointer<vtkPolyData> PolylineReferenceTubes(vtkPolyData* lines)
+{
+  vtkNew<vtkPolyData> input;
+  input->ShallowCopy(lines);
+  input->GetPointData()->SetActiveScalars("Radius");
+  vtkNew<vtkTubeFilter> tubes;
+  tubes->SetInputData(input);
+  tubes->SetNumberOfSides(64);
+  tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
+  tubes->CappingOn();
+  tubes->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(tubes->GetOutput());
+  out->GetPointData()->SetActiveScalars(nullptr);
+  return out;
+}
+
 /// Rendered frame: RGB and window depth of a render window.
 struct Frame
 {

@@ -5,10 +5,9 @@
 // - Bundle(): wavy lines running along +x side by side (a fibre bundle),
 //   which a camera on the x axis sees end-on: there most tangents point at
 //   the viewer (the singular view of Stoll §4.3);
-// - ReferenceTubes(): the independent polygonal reference, vtkTubeFilter
-//   with 64 sides and flat caps around the same polylines (radius by
-//   absolute scalar), the same model as the stylized lines (circular
-//   profiles orthogonal to the vertex tangents, straight segments);
+// - PolylineReferenceTubes() (SplineVizRenderingTestUtilities.h): the
+//   independent polygonal reference, vtkTubeFilter with 64 sides and flat
+//   caps around the same polylines, the stylized lines' model;
 #ifndef StylizedLineTestScenes_h
 #define StylizedLineTestScenes_h
 
@@ -31,6 +30,7 @@ namespace StylizedLineTest
 using SplineVizTest::Curls;
 using SplineVizTest::Measure;
 using SplineVizTest::Measures;
+using SplineVizTest::PolylineReferenceTubes;
 using SplineVizTest::Save;
 using SplineVizTest::Vec4;
 
@@ -65,24 +65,6 @@ inline std::vector<std::vector<Vec4>> Ring()
     ring.push_back({ std::cos(a), 0.0, std::sin(a), 0.08 });
   }
   return { ring };
-}
-
-/// vtkTubeFilter, 64 sides, flat caps, radius by absolute scalar "Radius".
-inline vtkSmartPointer<vtkPolyData> ReferenceTubes(vtkPolyData* lines)
-{
-  vtkNew<vtkPolyData> input;
-  input->ShallowCopy(lines);
-  input->GetPointData()->SetActiveScalars("Radius");
-  vtkNew<vtkTubeFilter> tubes;
-  tubes->SetInputData(input);
-  tubes->SetNumberOfSides(64);
-  tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
-  tubes->CappingOn();
-  tubes->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(tubes->GetOutput());
-  out->GetPointData()->SetActiveScalars(nullptr);
-  return out;
 }
 
 /// Pixels whose coverage differs between two frames.

@@ -52,7 +52,7 @@ Scene MakeScene(const std::vector<std::vector<SplineVizTest::Vec4>>& curves)
 {
   Scene scene;
   scene.Lines = SplineVizTest::MakePolylines(curves);
-  scene.Reference = StylizedLineTest::ReferenceTubes(scene.Lines);
+  scene.Reference = StylizedLineTest::PolylineReferenceTubes(scene.Lines);
   scene.MinRadius = 1e30;
   for (const auto& curve : curves)
   {

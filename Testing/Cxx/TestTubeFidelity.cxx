@@ -44,7 +44,6 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
-#include "vtkTubeFilter.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include <cmath>
@@ -104,24 +103,6 @@ Curves ScaleRadii(Curves curves, double factor)
   return curves;
 }
 
-/// vtkTubeFilter (64 sides, capped) around the polylines themselves.
-vtkSmartPointer<vtkPolyData> PolylineTubes(vtkPolyData* lines)
-{
-  vtkNew<vtkPolyData> input;
-  input->ShallowCopy(lines);
-  input->GetPointData()->SetActiveScalars("Radius");
-  vtkNew<vtkTubeFilter> tubes;
-  tubes->SetInputData(input);
-  tubes->SetNumberOfSides(64);
-  tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
-  tubes->CappingOn();
-  tubes->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(tubes->GetOutput());
-  out->GetPointData()->SetActiveScalars(nullptr);
-  return out;
-}
-
 enum Renderer
 {
   RayCast,
@@ -160,7 +141,7 @@ vtkSmartPointer<vtkPolyData> MakeReference(Renderer which, const Curves& curves)
     case Tessellated:
       return SplineVizTest::ReferenceTubes(curves, 16, 64, true);
     default:
-      return PolylineTubes(SplineVizTest::MakePolylines(curves));
+      return SplineVizTest::PolylineReferenceTubes(SplineVizTest::MakePolylines(curves));
   }
 }
 
