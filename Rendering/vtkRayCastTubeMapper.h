@@ -86,10 +86,11 @@
  * | 1 M segments, 1200x768   | 8955 (4329), 10.0 | 6534 (3492), 6.4  | 10051 (4997), 25.6       |
  *
  * ("long curves": 1,701 curves x 68 points, segments about 25 radii long.)
- * Re-measured on the idle machine (one run, culling off, frame ratio to the
- * tube filter's and first frame shorter by): Fibers2 0.93 and 3.3x at
- * 800x600, 1.12 and 2.6x at 1200x768; long curves 0.81 and 3.6x, 0.90 and
- * 2.7x; 1 M segments 0.66 and 6.1x, 0.72 and 5.3x.
+ * Re-measured on the idle machine (two runs, culling off, frame ratio to
+ * the tube filter's and first frame shorter by): Fibers2 0.93 and 2.9-3.3x
+ * at 800x600, 1.01-1.12 and 2.6-2.7x at 1200x768; long curves 0.81-0.87
+ * and 3.6-3.8x, 0.84-0.90 and 2.7-4.0x; 1 M segments 0.66-0.70 and
+ * 4.5-6.1x, 0.72-0.79 and 5.2-5.3x.
  * With the camera among the Fibers2 tubes (800x600, another run) culling on
  * took 2286 (1099) ms, off 2038 (939) ms, and root finding everywhere
  * (StraightTolerance 0, as before) 4077 (1970) ms. The pre-pass costs a

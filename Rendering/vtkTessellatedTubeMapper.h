@@ -46,7 +46,7 @@
  *   the shared pixels (before: IoU 0.92 and 30 % on cb_2's whole view).
  *   The price on llvmpipe (one idle run of SplineVizTubeBenchmark, camera
  *   far): about one chord per segment on curved data, so the frame is
- *   0.60-0.73 of vtkTubeFilter's (12 sides) on Fibers2 and on long smooth
+ *   0.51-0.66 of vtkTubeFilter's (12 sides) on Fibers2 and on long smooth
  *   curves at 800x600 and 1200x768 (before: 0.34 on Fibers2, inexact; 0.96
  *   on the long curves);
  *   more than 8, the base mesh has at least half the needed vertices per ring
