@@ -34,7 +34,7 @@
 // the half circumferences in pixels over tubeSideLength (at least 3
 // intervals: the depth of the chords then stays within 0.21 radii of the
 // circle's, more where the tube turns toward the eye: see
-// tubeWallRingLevel), the caps' the whole circumferences (at least 6), and the level
+// tubeWallRingLevel), the caps' four times the circumferences (at least 8), and the level
 // along makes the edges at most tubeMaxEdgeLength long on screen and keeps
 // the chords within tubeSagitta pixels of the curve on screen and within
 // tubeDepthSagitta radii of it in space (so that the depth stays the tube's
@@ -326,7 +326,9 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
       tubeCull();
       return;
     }
-    float ring = tubeRingLevel(p, 1.0, 6.0);
+    // Caps are seen face-on, where a coarse polygon shows: edges of a
+    // quarter of tubeSideLength, at least 8.
+    float ring = tubeRingLevel(p, 4.0, 8.0);
     gl_TessLevelOuter[0] = 1.0;
     gl_TessLevelOuter[1] = ring;
     gl_TessLevelOuter[2] = 1.0;
