@@ -7,49 +7,19 @@
 #include "vtkSuperquadricGlyphMapper.h"
 #include "PointLoadGlyphScene.h"
 
-#include "vtkImageData.h"
-#include "vtkLookupTable.h"
-#include "vtkNew.h"
-#include "vtkPointData.h"
-#include "vtkPointLoad.h"
-#include "vtkRegressionTestImage.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderWindowInteractor.h"
-
-#include <algorithm>
 #include <iostream>
-#include <vector>
 
 int TestSuperquadricGlyphPointLoad(int argc, char* argv[])
 {
-  vtkNew<vtkPointLoad> load;
-  load->SetLoadValue(100.0);
-  load->SetSampleDimensions(7, 7, 7);
-  load->ComputeEffectiveStressOn();
-  load->SetModelBounds(-10, 10, -10, 10, -10, 10);
-  load->Update();
-  vtkImageData* stress = load->GetOutput();
-
-  vtkNew<vtkRenderWindow> window;
-  window->SetSize(640, 320);
-  window->SetMultiSamples(0);
-  vtkNew<vtkLookupTable> lut;
-  lut->SetHueRange(0.66, 0.0);
-  lut->Build();
-  // color range: up to the 90th percentile (the load point is singular)
-  std::vector<double> values;
-  vtkDataArray* effective = stress->GetPointData()->GetScalars();
-  for (vtkIdType i = 0; i < effective->GetNumberOfTuples(); ++i)
-  {
-    values.push_back(effective->GetTuple1(i));
-  }
-  std::sort(values.begin(), values.end());
-  const double range[2] = { values.front(), values[values.size() * 9 / 10] };
+  sqtest::PointLoadScene scene;
+  vtkRenderWindow* window = scene.Window;
+  vtkLookupTable* lut = scene.Lut;
+  const double* range = scene.Range;
 
   for (int v = 0; v < 2; ++v)
   {
     vtkNew<vtkSuperquadricGlyphMapper> mapper;
-    mapper->SetInputConnection(load->GetOutputPort());
+    mapper->SetInputConnection(scene.Load->GetOutputPort());
     mapper->SetNegativeEigenvaluePolicy(v == 0 ? vtkSuperquadricGlyphMapper::SKIP_NEGATIVE
                                                : vtkSuperquadricGlyphMapper::ABSOLUTE_VALUES);
     mapper->SetScaleMode(vtkSuperquadricGlyphMapper::SCALE_NORMALIZED);
@@ -58,19 +28,11 @@ int TestSuperquadricGlyphPointLoad(int argc, char* argv[])
     mapper->SetGlyphColorMode(vtkSuperquadricGlyphMapper::COLOR_BY_SCALARS);
     mapper->SetScalarRange(range[0], range[1]);
     mapper->SetLookupTable(lut);
-    sqtest::AddPointLoadView(window, load, mapper, v);
+    sqtest::AddPointLoadView(window, scene.Load, mapper, v);
     window->Render();
     std::cout << (v == 0 ? "skip" : "absolute") << ": " << mapper->GetNumberOfGlyphs()
               << " glyphs uploaded" << std::endl;
   }
 
-  vtkNew<vtkRenderWindowInteractor> interactor;
-  interactor->SetRenderWindow(window);
-  window->Render();
-  const int result = vtkRegressionTestImageThreshold(window, 0.05);
-  if (result == vtkRegressionTester::DO_INTERACTOR)
-  {
-    interactor->Start();
-  }
-  return result == vtkRegressionTester::FAILED ? 1 : 0;
+  return sqtest::ComparePointLoadImage(argc, argv, window) ? 0 : 1;
 }
