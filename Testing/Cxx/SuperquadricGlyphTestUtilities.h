@@ -7,6 +7,7 @@
 #ifndef SuperquadricGlyphTestUtilities_h
 #define SuperquadricGlyphTestUtilities_h
 
+#include "vtkActor.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -16,6 +17,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkProperty.h"
 #include "vtkSmartPointer.h"
 #include "vtkSuperquadricSource.h"
 #include "vtkTransform.h"
@@ -29,6 +31,16 @@
 
 namespace sqtest
 {
+/// An actor drawing `mapper` white and unlit (coverage comparisons).
+inline vtkSmartPointer<vtkActor> UnlitWhiteActor(vtkMapper* mapper)
+{
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(1, 1, 1);
+  actor->GetProperty()->LightingOff();
+  return actor;
+}
+
 struct HandTensor
 {
   double L[3];     // eigenvalues (any order, any sign)

@@ -47,10 +47,7 @@ int TestSuperquadricGlyphBlocks(int, char*[])
   mapper->SetInputData(blocks);
   mapper->SetScaleFactor(0.4);
   mapper->SetGlyphColorModeToSolid();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(1, 1, 1);
-  actor->GetProperty()->LightingOff();
+  auto actor = sqtest::UnlitWhiteActor(mapper);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   renderer->SetBackground(0, 0, 0);

@@ -125,10 +125,7 @@ int TestSuperquadricGlyphContinuity(int argc, char* argv[])
   mapper->SetGamma(3.0);
   mapper->SetMinimumThickness(0.05);
   mapper->SetGlyphColorModeToSolid();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(1, 1, 1);
-  actor->GetProperty()->LightingOff();
+  auto actor = sqtest::UnlitWhiteActor(mapper);
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   renderer->SetBackground(0, 0, 0);

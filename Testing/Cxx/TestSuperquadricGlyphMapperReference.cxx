@@ -193,17 +193,11 @@ int TestSuperquadricGlyphMapperReference(int argc, char* argv[])
   mapper->SetScaleFactor(scale);
   mapper->SetNegativeEigenvaluePolicy(vtkSuperquadricGlyphMapper::ABSOLUTE_VALUES);
   mapper->SetGlyphColorMode(vtkSuperquadricGlyphMapper::COLOR_SOLID);
-  vtkNew<vtkActor> gpuActor;
-  gpuActor->SetMapper(mapper);
-  gpuActor->GetProperty()->SetColor(1, 1, 1);
-  gpuActor->GetProperty()->LightingOff();
+  auto gpuActor = sqtest::UnlitWhiteActor(mapper);
 
   vtkNew<vtkPolyDataMapper> refMapper;
   refMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> refActor;
-  refActor->SetMapper(refMapper);
-  refActor->GetProperty()->SetColor(1, 1, 1);
-  refActor->GetProperty()->LightingOff();
+  auto refActor = sqtest::UnlitWhiteActor(refMapper);
 
   for (double gamma : { 0.0, 3.0, 20.0 })
   {

@@ -191,16 +191,10 @@ int TestSuperquadricGlyphSchultzKindlmann(int argc, char* argv[])
   mapper->SetMinimumRoundness(MinRoundness);
   mapper->SetMinimumThickness(MinThickness);
   mapper->SetGlyphColorMode(vtkSuperquadricGlyphMapper::COLOR_SOLID);
-  vtkNew<vtkActor> gpuActor;
-  gpuActor->SetMapper(mapper);
-  gpuActor->GetProperty()->SetColor(1, 1, 1);
-  gpuActor->GetProperty()->LightingOff();
+  auto gpuActor = sqtest::UnlitWhiteActor(mapper);
   vtkNew<vtkPolyDataMapper> refMapper;
   refMapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> refActor;
-  refActor->SetMapper(refMapper);
-  refActor->GetProperty()->SetColor(1, 1, 1);
-  refActor->GetProperty()->LightingOff();
+  auto refActor = sqtest::UnlitWhiteActor(refMapper);
 
   const double origin[3] = { 0, 0, 0 };
   const sqtest::SKMutation mutations[] = { sqtest::SK_SWAPPED_AXIS, sqtest::SK_ABSOLUTE_KINDLMANN,
