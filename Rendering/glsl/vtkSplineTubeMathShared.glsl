@@ -379,6 +379,38 @@ struct SvBest
   bool found;
 };
 
+SvHit svNoHit()
+{
+  SvHit result;
+  result.hit = false;
+  result.inside = false;
+  result.distance = 0.0;
+  result.l = 0.0;
+  return result;
+}
+
+// The hit of the smallest entry distance `best` (relative to the ray-space
+// origin, `shift` along the ray from the ray origin): inside when negative.
+SvHit svHitFromBest(SvBest best, real shift)
+{
+  SvHit result = svNoHit();
+  if (best.found)
+  {
+    real dist = best.f + shift;
+    if (dist < 0.0)
+    {
+      result.inside = true;
+    }
+    else
+    {
+      result.hit = true;
+      result.distance = dist;
+      result.l = best.l;
+    }
+  }
+  return result;
+}
+
 void svConsider(SV_INOUT(SvBest) best, real f, real l)
 {
   if (f < best.f)
@@ -463,11 +495,6 @@ void svRunStep(bool on, SV_INOUT(bool) previous, real a, real b, int k, SV_INOUT
 SvHit svIntersectSubSegment(
   vec3 origin, vec3 dir, vec4 q0, vec4 q1, vec4 q2, int rootIterations, int samples)
 {
-  SvHit result;
-  result.hit = false;
-  result.inside = false;
-  result.distance = 0.0;
-  result.l = 0.0;
 
   // Ray space: x along the ray, y and z across; the origin is moved along the
   // ray next to the sub-segment so that the coordinates stay small.
@@ -514,7 +541,7 @@ SvHit svIntersectSubSegment(
   real b4 = B.c0 + B.c1 + B.c2 + B.c3 + B.c4;
   if (max(max(max(B.c0, b1), max(b2, b3)), b4) < 0.0)
   {
-    return result;
+    return svNoHit();
   }
 
   // 1. Roots of polyB in [0, 1] (Salm's bracketing): the third derivative is
@@ -568,21 +595,7 @@ SvHit svIntersectSubSegment(
     svPieceMinima(A, dA, B, dB, lo, hi, samples, rootIterations, best);
   }
 
-  if (best.found)
-  {
-    real dist = best.f + shift;
-    if (dist < 0.0)
-    {
-      result.inside = true;
-    }
-    else
-    {
-      result.hit = true;
-      result.distance = dist;
-      result.l = best.l;
-    }
-  }
-  return result;
+  return svHitFromBest(best, shift);
 }
 
 //------------------------------------------------------------------------------
@@ -637,11 +650,6 @@ real svSegmentStraightness(vec4 p0, vec4 m0, vec4 p1, vec4 m1, SV_OUT(real) reac
 // where B >= 0, f' is infinite and f not minimal.
 SvHit svIntersectRoundCone(vec3 origin, vec3 dir, vec4 a, vec4 b)
 {
-  SvHit result;
-  result.hit = false;
-  result.inside = false;
-  result.distance = 0.0;
-  result.l = 0.0;
   // Relative to the point of the ray nearest to a (small numbers).
   real shift = dot(vec3(a) - origin, dir);
   vec3 w = vec3(a) - (origin + shift * dir); // a, across the ray
@@ -690,21 +698,7 @@ SvHit svIntersectRoundCone(vec3 origin, vec3 dir, vec4 a, vec4 b)
       svConsider(best, alpha * s - rootB, s);
     }
   }
-  if (best.found)
-  {
-    real dist = best.f + shift;
-    if (dist < 0.0)
-    {
-      result.inside = true;
-    }
-    else
-    {
-      result.hit = true;
-      result.distance = dist;
-      result.l = best.l;
-    }
-  }
-  return result;
+  return svHitFromBest(best, shift);
 }
 
 //------------------------------------------------------------------------------
