@@ -10,13 +10,11 @@ import sys
 
 from paraview.simple import *  # noqa: F401,F403
 
+from splineviz_testing import white_view
+
 # The plugin is on PV_PLUGIN_PATH: every rank loads it at start-up.
 fibers = SyntheticFibers(Preset=1)  # noqa: F405
-view = CreateRenderView()  # noqa: F405
-view.ViewSize = [500, 400]
-view.UseColorPaletteForBackground = 0
-view.Background = [1, 1, 1]
-view.OrientationAxesVisibility = 0
+view = white_view((500, 400))
 display = Show(fibers, view)  # noqa: F405
 display.SetRepresentationType("Ray-Cast Tubes")
 display.TubeRadiusArray = "Radius"

@@ -5,7 +5,7 @@ import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
-from splineviz_testing import coverage
+from splineviz_testing import coverage, white_view
 
 plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -91,11 +91,7 @@ if worst > 1e-6:
     print("ERROR: the streamlines are not the exact circles")
     sys.exit(1)
 
-view = CreateRenderView()  # noqa: F405
-view.ViewSize = [400, 300]
-view.UseColorPaletteForBackground = 0
-view.Background = [1, 1, 1]
-view.OrientationAxesVisibility = 0
+view = white_view((400, 300))
 display = Show(reader, view)  # noqa: F405
 ColorBy(display, ("POINTS", "Field", "Magnitude"))  # noqa: F405
 view.CameraPosition = [6, -5, 7]

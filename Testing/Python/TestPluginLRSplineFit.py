@@ -10,7 +10,7 @@ import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
-from splineviz_testing import Observed, coverage, output_dir
+from splineviz_testing import Observed, coverage, output_dir, white_view
 
 plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -89,11 +89,7 @@ if bad.GetDataInformation().GetNumberOfCells() != 0 or not observed.errors:
     sys.exit(1)
 print("zero tolerance: refused (%d error events)" % len(observed.errors))
 
-view = CreateRenderView()  # noqa: F405
-view.ViewSize = [400, 300]
-view.UseColorPaletteForBackground = 0
-view.Background = [1, 1, 1]
-view.OrientationAxesVisibility = 0
+view = white_view((400, 300))
 display = Show(fit, view)  # noqa: F405
 ColorBy(display, ("POINTS", "RTData"))  # noqa: F405
 view.CameraPosition = [60, -50, 45]

@@ -3,7 +3,7 @@ pipeline, render and check the image shows them."""
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
-from splineviz_testing import coverage
+from splineviz_testing import coverage, white_view
 
 plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -14,11 +14,7 @@ info = fibers.GetDataInformation()
 assert info.GetNumberOfCells() == 241, info.GetNumberOfCells()
 assert info.GetNumberOfPoints() == 3771, info.GetNumberOfPoints()
 
-view = CreateRenderView()  # noqa: F405
-view.ViewSize = [400, 300]
-view.UseColorPaletteForBackground = 0
-view.Background = [1, 1, 1]
-view.OrientationAxesVisibility = 0
+view = white_view((400, 300))
 display = Show(fibers, view)  # noqa: F405
 ColorBy(display, ("POINTS", "Scalar"))  # noqa: F405
 ResetCamera(view)  # noqa: F405

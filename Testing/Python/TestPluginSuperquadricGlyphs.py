@@ -11,7 +11,7 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
-from splineviz_testing import coverage as image_coverage
+from splineviz_testing import coverage as image_coverage, white_view
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 
@@ -50,11 +50,7 @@ self.GetExecutive().GetOutputInformation(0).Set(
 
 tensor_volume = ProgrammableSource(OutputDataSetType="vtkImageData", Script=SCRIPT,  # noqa: F405
                             ScriptRequestInformation=INFO)
-view = CreateRenderView()  # noqa: F405
-view.ViewSize = [500, 400]
-view.UseColorPaletteForBackground = 0
-view.Background = [1, 1, 1]
-view.OrientationAxesVisibility = 0
+view = white_view((500, 400))
 display = Show(tensor_volume, view)  # noqa: F405
 if display.GetXMLName() != "UniformGridRepresentation":
     print("ERROR: unexpected representation", display.GetXMLName())

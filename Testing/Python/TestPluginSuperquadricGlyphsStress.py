@@ -12,7 +12,7 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz  # noqa: F401
-from splineviz_testing import coverage as image_coverage
+from splineviz_testing import coverage as image_coverage, white_view
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 
@@ -38,11 +38,7 @@ def fail(message):
 
 stress = ProgrammableSource(OutputDataSetType="vtkImageData", Script=SCRIPT,  # noqa: F405
                             ScriptRequestInformation=INFO)
-view = CreateRenderView()  # noqa: F405
-view.ViewSize = [500, 400]
-view.UseColorPaletteForBackground = 0
-view.Background = [1, 1, 1]
-view.OrientationAxesVisibility = 0
+view = white_view((500, 400))
 display = Show(stress, view)  # noqa: F405
 display.SetRepresentationType("Superquadric Glyphs")
 display.SuperquadricScaleMode = 1  # normalized: every glyph of the same size

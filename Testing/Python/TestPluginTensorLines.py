@@ -7,7 +7,7 @@ import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
-from splineviz_testing import coverage
+from splineviz_testing import coverage, white_view
 from paraview import servermanager
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
@@ -60,11 +60,7 @@ if not 10 <= cloud_lines.GetNumberOfLines() <= 50:
     print("ERROR: unexpected number of lines from the point cloud")
     sys.exit(1)
 
-view = CreateRenderView()  # noqa: F405
-view.ViewSize = [500, 400]
-view.UseColorPaletteForBackground = 0
-view.Background = [1, 1, 1]
-view.OrientationAxesVisibility = 0
+view = white_view((500, 400))
 display = Show(tracer, view)  # noqa: F405
 display.SetRepresentationType("Ray-Cast Tubes")
 display.TubeRadiusArray = "FractionalAnisotropy"
