@@ -34,6 +34,7 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeTCS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeTES.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeThinVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeFS.glsl")
 
 # Superquadric tensor glyphs: the glyph math shared with the shaders

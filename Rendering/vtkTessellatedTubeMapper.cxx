@@ -35,6 +35,7 @@
 #include "vtkTessellatedTubeFS.h"
 #include "vtkTessellatedTubeTCS.h"
 #include "vtkTessellatedTubeTES.h"
+#include "vtkTessellatedTubeThinVS.h"
 #include "vtkTessellatedTubeVS.h"
 
 #include <vtk_glew.h>
@@ -69,6 +70,212 @@ std::string NumberedSource(const std::string& source)
     out << number++ << ": " << line << "\n";
   }
   return out.str();
+}
+
+/// What the thin-tube levels depend on in a view (see ThinChunkLevels).
+struct ThinView
+{
+  const float* ModelView = nullptr; // column-major, shifted model to view
+  double Proj[4][4];
+  double HalfViewport[2];
+  double PixelScale;  // pixels per view unit at clip w = 1
+  double RadiusScale; // model to view
+  double Shift[3];
+  double SideLength; // pixels per ring edge (2 MaxSilhouetteEdgeLength)
+  double Edge;       // longest edge along the tube, pixels (4 MaxEdgeLength)
+  double MaxLevel;   // MaxTessellationLevel
+  bool Parallel;
+};
+
+/// A node in view coordinates: center, radius, derivatives, clip coordinates.
+struct ViewNode
+{
+  double P[3];
+  double R;
+  double D[3];
+  double DR;
+  double Clip[4];
+};
+
+ViewNode ToView(const ThinView& v, const float* P, const float* M, const float* R, vtkIdType i)
+{
+  ViewNode n;
+  const double x[3] = { P[3 * i] - v.Shift[0], P[3 * i + 1] - v.Shift[1],
+    P[3 * i + 2] - v.Shift[2] };
+  const float* mv = v.ModelView;
+  for (int r = 0; r < 3; ++r)
+  {
+    n.P[r] = mv[r] * x[0] + mv[4 + r] * x[1] + mv[8 + r] * x[2] + mv[12 + r];
+    n.D[r] = mv[r] * M[3 * i] + mv[4 + r] * M[3 * i + 1] + mv[8 + r] * M[3 * i + 2];
+  }
+  n.R = R[2 * i] * v.RadiusScale;
+  n.DR = R[2 * i + 1] * v.RadiusScale;
+  for (int r = 0; r < 4; ++r)
+  {
+    n.Clip[r] =
+      v.Proj[r][0] * n.P[0] + v.Proj[r][1] * n.P[1] + v.Proj[r][2] * n.P[2] + v.Proj[r][3];
+  }
+  return n;
+}
+
+/// Intervals of the view-facing half ring at a node (the control stage's
+/// tubeWallRingLevel): the half circumference in steps of SideLength, at
+/// least 3, more where the tube turns toward the eye.
+double ThinRingLevel(const ThinView& v, const ViewNode& n)
+{
+  const double w = n.Clip[3];
+  if (w <= 0.0)
+  {
+    return 64.0;
+  }
+  double toEye[3] = { 0.0, 0.0, 1.0 };
+  if (!v.Parallel)
+  {
+    toEye[0] = -n.P[0];
+    toEye[1] = -n.P[1];
+    toEye[2] = -n.P[2];
+  }
+  double d[3] = { n.D[0], n.D[1], n.D[2] };
+  double sine = 1.0;
+  if (vtkMath::Normalize(d) > 0.0 && vtkMath::Normalize(toEye) > 0.0)
+  {
+    double c[3];
+    vtkMath::Cross(d, toEye, c);
+    sine = vtkMath::Norm(c);
+  }
+  const double least = std::ceil(2.9 / std::sqrt(std::max(sine, 0.34)));
+  const double arc = 0.5 * 2.0 * vtkMath::Pi() * n.R / w * v.PixelScale;
+  return std::min(std::max(std::ceil(arc / v.SideLength), least), 64.0);
+}
+
+/// Pixel position of a node (false behind the eye).
+bool ThinScreen(const ThinView& v, const ViewNode& n, double p[2])
+{
+  if (n.Clip[3] <= 0.0)
+  {
+    return false;
+  }
+  p[0] = n.Clip[0] / n.Clip[3] * v.HalfViewport[0];
+  p[1] = n.Clip[1] / n.Clip[3] * v.HalfViewport[1];
+  return true;
+}
+
+/// The turning angle between two chords over their mean length (the
+/// control stage's tubeChainCurvature).
+double ThinChainCurvature(
+  const double* d, double len, const double* previous, double previousLength, int dimension)
+{
+  if (len <= 0.0 || previousLength <= 0.0)
+  {
+    return 0.0;
+  }
+  double dot = 0.0;
+  for (int k = 0; k < dimension; ++k)
+  {
+    dot += d[k] * previous[k];
+  }
+  const double turn = std::acos(std::min(std::max(dot / (len * previousLength), -1.0), 1.0));
+  return turn / (0.5 * (len + previousLength));
+}
+
+/// Rings along a thin run of `count` segments from node `first`: the level
+/// the control stage's single-patch mode sets (tubeSinglePatch: edges at
+/// most Edge pixels on screen, chords within half a pixel of the curve on
+/// screen and within a tenth of the radius in space, 1.7 times that inside
+/// runs, whose chords straddle the curve), and the intervals of its first
+/// and last rings. The same bounds, computed once per view on the CPU
+/// instead of per patch on the GPU.
+void ThinChunkLevels(const ThinView& v, const float* P, const float* M, const float* R,
+  vtkIdType first, vtkIdType count, double& along, double& ring0, double& ring1)
+{
+  const ViewNode a = ToView(v, P, M, R, first);
+  const ViewNode b = ToView(v, P, M, R, first + count);
+  ring0 = ThinRingLevel(v, a);
+  ring1 = ThinRingLevel(v, b);
+  const double sagittaPixels = 0.5;
+  const double depthSagitta = 0.1;
+  const double straddle = 1.7;
+  if (count == 1)
+  {
+    // The cubic's deviation from its chord: |m0 - m1| / 8.
+    double pa[2];
+    double pb[2];
+    double screen = 1e30;
+    if (ThinScreen(v, a, pa) && ThinScreen(v, b, pb))
+    {
+      screen = std::hypot(pa[0] - pb[0], pa[1] - pb[1]);
+    }
+    double dm[3];
+    double middle[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      dm[k] = a.D[k] - b.D[k];
+      middle[k] = 0.5 * (a.P[k] + b.P[k]) + 0.125 * dm[k];
+    }
+    const double sagitta = 0.125 * vtkMath::Norm(dm);
+    const double w =
+      v.Proj[3][0] * middle[0] + v.Proj[3][1] * middle[1] + v.Proj[3][2] * middle[2] + v.Proj[3][3];
+    const double radius = std::min({ a.R, b.R, 0.5 * (a.R + b.R) + 0.125 * (a.DR - b.DR) });
+    const double bound =
+      std::min(sagittaPixels * std::max(w, 0.0) / v.PixelScale, depthSagitta * radius);
+    const double sagittaLevel = bound > 0.0 ? std::ceil(std::sqrt(sagitta / bound)) : 64.0;
+    along =
+      std::min(std::max(std::max(std::min(screen / v.Edge, v.MaxLevel), sagittaLevel), 1.0), 64.0);
+    return;
+  }
+  double total = 0.0;
+  double total3 = 0.0;
+  double shortest = 1e30;
+  double shortest3 = 1e30;
+  double previous[2] = { 0.0, 0.0 };
+  double direction[2] = { 0.0, 0.0 };
+  double previousLength = 0.0;
+  double previous3[3] = { 0.0, 0.0, 0.0 };
+  double direction3[3] = { 0.0, 0.0, 0.0 };
+  double previousLength3 = 0.0;
+  for (vtkIdType k = 0; k <= count; ++k)
+  {
+    const ViewNode n = k == 0 ? a : (k == count ? b : ToView(v, P, M, R, first + k));
+    double p[2];
+    if (!ThinScreen(v, n, p))
+    {
+      along = 64.0;
+      return;
+    }
+    if (k > 0)
+    {
+      const double d[2] = { p[0] - previous[0], p[1] - previous[1] };
+      const double len = std::hypot(d[0], d[1]);
+      total += len;
+      const double curvature =
+        k > 1 ? ThinChainCurvature(d, len, direction, previousLength, 2) : 0.0;
+      if (curvature > 0.0)
+      {
+        shortest = std::min(shortest, std::sqrt(8.0 * sagittaPixels / curvature));
+      }
+      direction[0] = d[0];
+      direction[1] = d[1];
+      previousLength = len;
+      const double d3[3] = { n.P[0] - previous3[0], n.P[1] - previous3[1], n.P[2] - previous3[2] };
+      const double len3 = vtkMath::Norm(d3);
+      total3 += len3;
+      const double curvature3 =
+        k > 1 ? ThinChainCurvature(d3, len3, direction3, previousLength3, 3) : 0.0;
+      if (curvature3 > 0.0)
+      {
+        shortest3 =
+          std::min(shortest3, std::sqrt(8.0 * straddle * depthSagitta * n.R / curvature3));
+      }
+      std::copy(d3, d3 + 3, direction3);
+      previousLength3 = len3;
+    }
+    previous[0] = p[0];
+    previous[1] = p[1];
+    std::copy(n.P, n.P + 3, previous3);
+  }
+  along = std::min(
+    std::max(std::ceil(std::max({ total / v.Edge, total / shortest, total3 / shortest3 })), 1.0),
+    64.0);
 }
 
 /// Compile one stage; 0 and `error` set on failure.
@@ -110,6 +317,10 @@ struct vtkTessellatedTubeMapper::vtkInternals
   static constexpr unsigned char WholeChunk = 254;   // one patch for the chunk
   static constexpr int SinglePatchSides = 8;         // ring edges made by the tessellator at most
   static constexpr double WholeChunkPixels = 1024.0; // 16-pixel edges at level 64
+  static constexpr unsigned char ThinChunk = 253;    // a thin-tube draw (no tessellator)
+  static constexpr int ThinMinSides = 3;             // intervals per half ring of thin draws
+  static constexpr int ThinMaxSides = 8;
+  static constexpr int ThinMirrorRing = 65; // vertex rings numbered from the run's end
 
   std::vector<vtkIdType> TubeFirstSegment;  // tubes + 1
   std::vector<vtkIdType> TubeFirstChunk;    // tubes + 1
@@ -128,6 +339,10 @@ struct vtkTessellatedTubeMapper::vtkInternals
   };
   std::map<std::pair<int, int>, MeshRange> WallMeshes; // (rings, sides)
   std::map<int, MeshRange> CapMeshes;                  // sides
+  // Thin-tube draws: rings along a run (the tessellation levels the control
+  // stage would choose, rounded up to this ladder) and intervals per ring.
+  std::vector<int> ThinLadder;
+  std::map<int, MeshRange> ThinMeshes; // intervals + 1 (the vertices per ring): 64 rows
   size_t MeshIndices = 0;
   int MeshBaseRings = 0;
   int MeshBaseSides = 0;
@@ -138,10 +353,12 @@ struct vtkTessellatedTubeMapper::vtkInternals
     int Sides;
     bool Caps;
     bool Chunks;      // instances are (first segment, count) pairs
+    bool Thin;        // a thin-tube draw: (first segment, count | L0 << 8 | L1 << 16)
     vtkIdType Offset; // in the instance list
     vtkIdType Count;
   };
   std::vector<unsigned char> ChunkRingBin;
+  std::vector<vtkTypeUInt32> ChunkThinLevels; // thin draws: n | L0 << 8 | L1 << 16 | L << 24
   std::vector<unsigned char> TubeSideBin;
   std::vector<vtkTypeUInt32> Instances;
   std::vector<Draw> Draws;
@@ -339,6 +556,7 @@ void vtkTessellatedTubeMapper::BuildChunks()
   in.ChunkMaxRadius.assign(static_cast<size_t>(numChunks), 0.0f);
   in.ChunkLength.assign(static_cast<size_t>(numChunks), 0.0f);
   in.ChunkRingBin.assign(static_cast<size_t>(numChunks), 0);
+  in.ChunkThinLevels.assign(static_cast<size_t>(numChunks), 0);
   in.TubeSideBin.assign(static_cast<size_t>(numTubes), 0);
   in.LastView.clear();
 
@@ -483,6 +701,63 @@ bool vtkTessellatedTubeMapper::BuildBaseMeshes()
     caps.Count = indices.size() - caps.Offset;
     in.CapMeshes[sides] = caps;
   }
+  // Thin-tube draws: triangles between rings of L + 1 vertices (see
+  // vtkTessellatedTubeThinVS.glsl), wound counter-clockwise in (s, t) as
+  // the tessellator's quads, with the diagonals mirrored at the middle of the
+  // ring and of the run, as the tessellator's (TestTubeFidelity's depth
+  // share on cb_2 and the curls: 96.9-97.9 %; one direction throughout
+  // 95.1-96.6 %, alternating rows 95.4-96.9 %). One mesh per L serves every
+  // number n of rows: its rows alternate between the run's start (row i:
+  // rings i, i + 1) and its end (the mirror image, vertices numbered from
+  // the end ring: ThinMirrorRing + rings before the end), so that the first n
+  // rows are the mesh of n rows.
+  in.ThinLadder = { 1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 48, 56, 64 };
+  in.ThinMeshes.clear();
+  for (int L = vtkInternals::ThinMinSides; L <= vtkInternals::ThinMaxSides; ++L)
+  {
+    const unsigned int perRing = static_cast<unsigned int>(L + 1);
+    const unsigned int mirror = static_cast<unsigned int>(vtkInternals::ThinMirrorRing) * perRing;
+    vtkInternals::MeshRange range;
+    range.Offset = indices.size();
+    for (int row = 0; row < in.ThinLadder.back(); ++row)
+    {
+      const unsigned int i = static_cast<unsigned int>(row / 2);
+      const bool fromEnd = (row & 1) != 0;
+      for (int j = 0; j < L; ++j)
+      {
+        const unsigned int a = (fromEnd ? mirror : 0) + i * perRing + static_cast<unsigned int>(j);
+        // Rows at the start: the diagonal from (j + 1, i) to (j, i + 1) on
+        // the ring's second half; mirrored rows (reversed winding) likewise
+        // in their numbering, which is the other diagonal in the run's.
+        const bool other = 2 * j >= L;
+        if (!fromEnd)
+        {
+          if (other)
+          {
+            indices.insert(
+              indices.end(), { a, a + 1, a + perRing, a + 1, a + 1 + perRing, a + perRing });
+          }
+          else
+          {
+            indices.insert(
+              indices.end(), { a, a + 1, a + 1 + perRing, a, a + 1 + perRing, a + perRing });
+          }
+        }
+        else if (other)
+        {
+          indices.insert(
+            indices.end(), { a, a + perRing, a + 1, a + 1, a + perRing, a + 1 + perRing });
+        }
+        else
+        {
+          indices.insert(
+            indices.end(), { a, a + 1 + perRing, a + 1, a, a + perRing, a + 1 + perRing });
+        }
+      }
+    }
+    range.Count = indices.size() - range.Offset;
+    in.ThinMeshes[L + 1] = range;
+  }
   if (!this->BaseMeshes)
   {
     this->BaseMeshes = vtkSmartPointer<vtkOpenGLBufferObject>::New();
@@ -534,6 +809,7 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
       this->LevelOfDetail ? 1.0 : 0.0, this->Capping ? 1.0 : 0.0, this->MaxEdgeLength,
       this->MaxSilhouetteEdgeLength, static_cast<double>(this->BaseRings),
       static_cast<double>(this->BaseSides), static_cast<double>(numChunks),
+      static_cast<double>(this->MaxTessellationLevel),
       static_cast<double>(this->UploadTime.GetMTime()) });
   if (view == in.LastView)
   {
@@ -574,6 +850,23 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
     const double ringTarget = 0.5 * this->MaxEdgeLength;
     const double sideTarget = 2.0 * this->MaxSilhouetteEdgeLength;
     const double twoPi = 2.0 * vtkMath::Pi();
+    ThinView thin;
+    thin.ModelView = modelView;
+    std::copy(&proj[0][0], &proj[0][0] + 16, &thin.Proj[0][0]);
+    thin.HalfViewport[0] = 0.5 * width;
+    thin.HalfViewport[1] = 0.5 * height;
+    thin.PixelScale = pixelScale;
+    thin.RadiusScale = radiusScale;
+    std::copy(this->Shift, this->Shift + 3, thin.Shift);
+    thin.SideLength = 2.0 * this->MaxSilhouetteEdgeLength;
+    thin.Edge = 4.0 * this->MaxEdgeLength;
+    thin.MaxLevel = this->MaxTessellationLevel;
+    thin.Parallel = ren->GetActiveCamera()->GetParallelProjection() != 0;
+    const float* nodeP = core->GetNodePositions()->GetPointer(0);
+    const float* nodeM = core->GetNodeTangents()->GetPointer(0);
+    const float* nodeR = core->GetNodeRadii()->GetPointer(0);
+    const vtkTypeUInt32* firstNodes = core->GetSegmentFirstNodes()->GetPointer(0);
+    const std::vector<int>& ladder = in.ThinLadder;
     vtkSMPTools::For(0, numTubes,
       [&](vtkIdType begin, vtkIdType end)
       {
@@ -645,10 +938,13 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
             }
           }
           in.TubeSideBin[t] = static_cast<unsigned char>(sideBin);
-          // Thin tubes: a chunk becomes one patch when its length on
-          // screen fits the largest tessellation level with 4-pixel edges;
-          // else each segment is one patch (2 rings) whose level along the
-          // control stage sets from the segment's length and bending.
+          // Thin tubes: a chunk whose length on screen fits the largest
+          // tessellation level with 4-pixel edges is drawn without the
+          // tessellator (a thin-tube draw, its levels computed here) unless
+          // its rings need more than ThinMaxSides intervals; then it becomes
+          // one patch. Longer chunks: each segment is one patch (2 rings)
+          // whose level along the control stage sets from the segment's
+          // length and bending.
           if (sideBin == sideBins - 1)
           {
             for (vtkIdType c = in.TubeFirstChunk[t]; c < in.TubeFirstChunk[t + 1]; ++c)
@@ -658,8 +954,30 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
               {
                 continue;
               }
-              in.ChunkRingBin[c] = pixels <= vtkInternals::WholeChunkPixels &&
-                  in.ChunkFirstSegment[c + 1] - in.ChunkFirstSegment[c] > 1
+              const vtkIdType count = in.ChunkFirstSegment[c + 1] - in.ChunkFirstSegment[c];
+              if (pixels <= vtkInternals::WholeChunkPixels)
+              {
+                double along = 1.0;
+                double ring0 = 3.0;
+                double ring1 = 3.0;
+                ThinChunkLevels(thin, nodeP, nodeM, nodeR, firstNodes[in.ChunkFirstSegment[c]],
+                  count, along, ring0, ring1);
+                if (std::max(ring0, ring1) <= vtkInternals::ThinMaxSides)
+                {
+                  size_t rung = 0;
+                  while (rung + 1 < ladder.size() && ladder[rung] < along)
+                  {
+                    ++rung;
+                  }
+                  const auto L0 = static_cast<vtkTypeUInt32>(ring0);
+                  const auto L1 = static_cast<vtkTypeUInt32>(ring1);
+                  in.ChunkRingBin[c] = vtkInternals::ThinChunk;
+                  in.ChunkThinLevels[c] = static_cast<vtkTypeUInt32>(rung) | (L0 << 8) |
+                    (L1 << 16) | (std::max(L0, L1) << 24);
+                  continue;
+                }
+              }
+              in.ChunkRingBin[c] = pixels <= vtkInternals::WholeChunkPixels && count > 1
                 ? vtkInternals::WholeChunk
                 : static_cast<unsigned char>(ringBins - 1);
             }
@@ -672,7 +990,15 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   // entries each); then the instance list.
   const int bins = ringBins * sideBins;
   const int chunkBin = bins + sideBins;
-  std::vector<vtkIdType> counts(static_cast<size_t>(chunkBin + 1), 0);
+  const int thinBase = chunkBin + 1;
+  const int thinSides = vtkInternals::ThinMaxSides - vtkInternals::ThinMinSides + 1;
+  const int thinBins = static_cast<int>(in.ThinLadder.size()) * thinSides;
+  auto thinBin = [&](vtkTypeUInt32 levels)
+  {
+    return thinBase + static_cast<int>(levels & 0xFFu) * thinSides +
+      static_cast<int>(levels >> 24) - vtkInternals::ThinMinSides;
+  };
+  std::vector<vtkIdType> counts(static_cast<size_t>(thinBase + thinBins), 0);
   in.CulledSegments = 0;
   const unsigned char* flags = core->GetSegmentFlags()->GetPointer(0);
   for (vtkIdType t = 0; t < numTubes; ++t)
@@ -689,6 +1015,10 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
       if (in.ChunkRingBin[c] == vtkInternals::WholeChunk)
       {
         counts[chunkBin] += 2;
+      }
+      else if (in.ChunkRingBin[c] == vtkInternals::ThinChunk)
+      {
+        counts[thinBin(in.ChunkThinLevels[c])] += 2;
       }
       else
       {
@@ -723,8 +1053,18 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
       {
         continue;
       }
-      const bool whole = in.ChunkRingBin[c] == vtkInternals::WholeChunk;
-      if (whole)
+      const bool thinChunk = in.ChunkRingBin[c] == vtkInternals::ThinChunk;
+      if (thinChunk)
+      {
+        const vtkTypeUInt32 levels = in.ChunkThinLevels[c];
+        vtkIdType& entry = cursor[thinBin(levels)];
+        in.Instances[entry++] = static_cast<vtkTypeUInt32>(in.ChunkFirstSegment[c]);
+        in.Instances[entry++] =
+          static_cast<vtkTypeUInt32>(in.ChunkFirstSegment[c + 1] - in.ChunkFirstSegment[c]) |
+          (levels & 0xFFFF00u);
+      }
+      const bool whole = thinChunk || in.ChunkRingBin[c] == vtkInternals::WholeChunk;
+      if (whole && !thinChunk)
       {
         vtkIdType& entry = cursor[chunkBin];
         in.Instances[entry++] = static_cast<vtkTypeUInt32>(in.ChunkFirstSegment[c]);
@@ -753,12 +1093,29 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
       continue;
     }
     vtkInternals::Draw draw;
+    draw.Thin = false;
     draw.Caps = b >= bins && b < chunkBin;
     draw.Chunks = b == chunkBin;
     draw.Rings = (draw.Caps || draw.Chunks) ? 2 : in.RingLadder[b / sideBins];
     draw.Sides = draw.Chunks ? 1 : in.SideLadder[draw.Caps ? b - bins : b % sideBins];
     draw.Offset = offsets[b];
     draw.Count = draw.Chunks ? counts[b] / 2 : counts[b];
+    in.Draws.push_back(draw);
+  }
+  for (int b = thinBase; b < thinBase + thinBins; ++b)
+  {
+    if (counts[b] == 0)
+    {
+      continue;
+    }
+    vtkInternals::Draw draw;
+    draw.Thin = true;
+    draw.Caps = false;
+    draw.Chunks = false;
+    draw.Rings = in.ThinLadder[static_cast<size_t>((b - thinBase) / thinSides)] + 1;
+    draw.Sides = (b - thinBase) % thinSides + vtkInternals::ThinMinSides + 1;
+    draw.Offset = offsets[b];
+    draw.Count = counts[b] / 2;
     in.Draws.push_back(draw);
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
@@ -780,8 +1137,8 @@ std::string vtkTessellatedTubeMapper::GetLevelOfDetailSummary()
   std::ostringstream s;
   for (const auto& draw : in.Draws)
   {
-    s << (draw.Caps ? "caps " : "") << (draw.Chunks ? "chunks " : "") << draw.Rings << " x "
-      << draw.Sides << ": " << draw.Count << "; ";
+    s << (draw.Caps ? "caps " : "") << (draw.Chunks ? "chunks " : "") << (draw.Thin ? "thin " : "")
+      << draw.Rings << " x " << draw.Sides << ": " << draw.Count << "; ";
   }
   s << "culled: " << in.CulledSegments;
   return s.str();
@@ -901,11 +1258,15 @@ void vtkTessellatedTubeMapper::UpdateShaders(
     shaders[vtkShader::Fragment] = fs;
     this->BuildShaders(shaders, ren, act);
     program = window->GetShaderCache()->ReadyShaderProgram(shaders);
-    if (program && !this->StagesFailed && !this->LinkTessellationStages(program, window))
+    if (this->BuildingThinProgram)
+    {
+      // thin-tube draws: no tessellation stages
+    }
+    else if (program && !this->StagesFailed && !this->LinkTessellationStages(program, window))
     {
       this->StagesFailed = true; // reported; do not retry every frame
     }
-    if (this->StagesFailed)
+    if (this->StagesFailed && !this->BuildingThinProgram)
     {
       program = nullptr;
     }
@@ -920,7 +1281,7 @@ void vtkTessellatedTubeMapper::UpdateShaders(
   {
     program = window->GetShaderCache()->ReadyShaderProgram(cellBO.Program);
     // A program VTK had to compile again lost our stages: link them again.
-    if (program && !this->LinkTessellationStages(program, window))
+    if (program && !this->BuildingThinProgram && !this->LinkTessellationStages(program, window))
     {
       this->StagesFailed = true;
       program = nullptr;
@@ -951,7 +1312,8 @@ void vtkTessellatedTubeMapper::GetShaderTemplate(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::GetShaderTemplate(shaders, ren, act);
-  shaders[vtkShader::Vertex]->SetSource(vtkTessellatedTubeVS);
+  shaders[vtkShader::Vertex]->SetSource(
+    this->BuildingThinProgram ? vtkTessellatedTubeThinVS : vtkTessellatedTubeVS);
   shaders[vtkShader::Geometry]->SetSource("");
 }
 
@@ -968,9 +1330,12 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
     VSSource, "//VTK::TessellatedTubeCommon::Dec", vtkTessellatedTubeCommon);
   // VTK's shader cache identifies programs by their vertex, geometry and
   // fragment sources: make the tessellation stages part of the key.
-  const size_t stagesKey = std::hash<std::string>()(
-    this->GetTessellationControlShaderSource() + this->GetTessellationEvaluationShaderSource());
-  VSSource += "\n// tessellation stages " + std::to_string(stagesKey) + "\n";
+  if (!this->BuildingThinProgram)
+  {
+    const size_t stagesKey = std::hash<std::string>()(
+      this->GetTessellationControlShaderSource() + this->GetTessellationEvaluationShaderSource());
+    VSSource += "\n// tessellation stages " + std::to_string(stagesKey) + "\n";
+  }
 
   std::string declarations = vtkTessellatedTubeFS;
   vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", math);
@@ -1000,10 +1365,11 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
 
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
 
-  DumpShaderSources({ { "VS", shaders[vtkShader::Vertex]->GetSource() },
-    { "TCS", this->GetTessellationControlShaderSource() },
-    { "TES", this->GetTessellationEvaluationShaderSource() },
-    { "FS", shaders[vtkShader::Fragment]->GetSource() } });
+  DumpShaderSources(
+    { { this->BuildingThinProgram ? "ThinVS" : "VS", shaders[vtkShader::Vertex]->GetSource() },
+      { "TCS", this->GetTessellationControlShaderSource() },
+      { "TES", this->GetTessellationEvaluationShaderSource() },
+      { "FS", shaders[vtkShader::Fragment]->GetSource() } });
 }
 
 //------------------------------------------------------------------------------
@@ -1088,17 +1454,10 @@ void vtkTessellatedTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   {
     return;
   }
-  vtkOpenGLHelper& helper = this->Primitives[PrimitiveTris];
-  this->UpdateShaders(helper, ren, act);
-  if (!helper.Program)
-  {
-    return;
-  }
-  vtkShaderProgram* program = helper.Program;
-  // UpdateShaders() may have released the VAO after binding it (new
-  // program); the draw has no attributes but core profiles need a VAO.
-  helper.VAO->Bind();
-  this->BaseMeshes->Bind();
+  const bool haveThin = std::any_of(
+    in.Draws.begin(), in.Draws.end(), [](const vtkInternals::Draw& d) { return d.Thin; });
+  const bool havePatches = std::any_of(
+    in.Draws.begin(), in.Draws.end(), [](const vtkInternals::Draw& d) { return !d.Thin; });
 
   // The walls are wound counter-clockwise seen from outside: the rasterizer
   // culls their back faces (the control stage culled most back patches
@@ -1109,7 +1468,6 @@ void vtkTessellatedTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   GLint cullMode = GL_BACK;
   state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullMode);
   state->vtkglCullFace(GL_BACK);
-  glPatchParameteri(GL_PATCH_VERTICES, 4);
   // The wireframe representation shows the tessellation (VTK 9.2 does not
   // track the polygon mode: restore the default).
   const bool wireframe = act->GetProperty()->GetRepresentation() == VTK_WIREFRAME;
@@ -1125,26 +1483,81 @@ void vtkTessellatedTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
     }
     glBeginQuery(GL_PRIMITIVES_GENERATED, this->PrimitivesQuery);
   }
-  for (const auto& draw : in.Draws)
+
+  // Patches through the tessellation stages.
+  vtkOpenGLHelper& helper = this->Primitives[PrimitiveTris];
+  if (havePatches)
   {
-    const vtkInternals::MeshRange& mesh =
-      draw.Caps ? in.CapMeshes[draw.Sides] : in.WallMeshes[std::make_pair(draw.Rings, draw.Sides)];
-    if (draw.Caps)
-    {
-      state->vtkglDisable(GL_CULL_FACE);
-    }
-    else
-    {
-      state->vtkglEnable(GL_CULL_FACE);
-    }
-    program->SetUniformi("tubeRings", draw.Rings);
-    program->SetUniformi("tubeSides", draw.Sides);
-    program->SetUniformi("tubeListOffset", static_cast<int>(draw.Offset));
-    program->SetUniformi("tubeChunks", draw.Chunks ? 1 : 0);
-    glDrawElementsInstanced(GL_PATCHES, static_cast<GLsizei>(mesh.Count), GL_UNSIGNED_INT,
-      reinterpret_cast<const void*>(mesh.Offset * sizeof(unsigned int)),
-      static_cast<GLsizei>(draw.Count));
+    this->UpdateShaders(helper, ren, act);
   }
+  if (havePatches && helper.Program)
+  {
+    vtkShaderProgram* program = helper.Program;
+    // UpdateShaders() may have released the VAO after binding it (new
+    // program); the draw has no attributes but core profiles need a VAO.
+    helper.VAO->Bind();
+    this->BaseMeshes->Bind();
+    glPatchParameteri(GL_PATCH_VERTICES, 4);
+    for (const auto& draw : in.Draws)
+    {
+      if (draw.Thin)
+      {
+        continue;
+      }
+      const vtkInternals::MeshRange& mesh = draw.Caps
+        ? in.CapMeshes[draw.Sides]
+        : in.WallMeshes[std::make_pair(draw.Rings, draw.Sides)];
+      if (draw.Caps)
+      {
+        state->vtkglDisable(GL_CULL_FACE);
+      }
+      else
+      {
+        state->vtkglEnable(GL_CULL_FACE);
+      }
+      program->SetUniformi("tubeRings", draw.Rings);
+      program->SetUniformi("tubeSides", draw.Sides);
+      program->SetUniformi("tubeListOffset", static_cast<int>(draw.Offset));
+      program->SetUniformi("tubeChunks", draw.Chunks ? 1 : 0);
+      glDrawElementsInstanced(GL_PATCHES, static_cast<GLsizei>(mesh.Count), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(mesh.Offset * sizeof(unsigned int)),
+        static_cast<GLsizei>(draw.Count));
+    }
+    this->BaseMeshes->Release();
+  }
+
+  // Thin tubes: triangles from the vertex stage alone (a second program).
+  vtkOpenGLHelper& thinHelper = this->Primitives[PrimitiveTriStrips];
+  if (haveThin)
+  {
+    this->BuildingThinProgram = true;
+    this->UpdateShaders(thinHelper, ren, act);
+    this->BuildingThinProgram = false;
+  }
+  if (haveThin && thinHelper.Program)
+  {
+    vtkShaderProgram* program = thinHelper.Program;
+    thinHelper.VAO->Bind();
+    this->BaseMeshes->Bind();
+    state->vtkglEnable(GL_CULL_FACE);
+    for (const auto& draw : in.Draws)
+    {
+      if (!draw.Thin)
+      {
+        continue;
+      }
+      const vtkInternals::MeshRange& mesh = in.ThinMeshes[draw.Sides];
+      const size_t rows = static_cast<size_t>(draw.Rings - 1);
+      program->SetUniformi("tubeRings", draw.Rings);
+      program->SetUniformi("tubeSides", draw.Sides);
+      program->SetUniformi("tubeListOffset", static_cast<int>(draw.Offset));
+      glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(6 * rows * (draw.Sides - 1)),
+        GL_UNSIGNED_INT, reinterpret_cast<const void*>(mesh.Offset * sizeof(unsigned int)),
+        static_cast<GLsizei>(draw.Count));
+    }
+    this->BaseMeshes->Release();
+  }
+
   if (this->CountPrimitives)
   {
     glEndQuery(GL_PRIMITIVES_GENERATED);
@@ -1157,7 +1570,6 @@ void vtkTessellatedTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
     glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
   }
   state->vtkglCullFace(static_cast<unsigned int>(cullMode));
-  this->BaseMeshes->Release();
   this->DeactivateTubeBuffers();
   this->FramesBuffer->Deactivate();
   in.InstancesBuffer.Deactivate();

@@ -287,6 +287,9 @@ protected:
   bool CountPrimitives = false;
   vtkTypeUInt64 NumberOfPrimitivesGenerated = 0;
   bool UsingFallback = false;
+  // Set while the program of the thin-tube draws (vertex and fragment stages
+  // only) is built and its uniforms set.
+  bool BuildingThinProgram = false;
 
 private:
   vtkTessellatedTubeMapper(const vtkTessellatedTubeMapper&) = delete;

@@ -15,15 +15,10 @@
 // A patch spanning a run of segments (count > 1) finds the segment of each
 // vertex from its curve parameter t in [0, count] and reads its nodes. In the
 // single-patch mode (tubeSides == 1, thin tubes drawn with few vertices per
-// ring) a wall ring is the view-facing half of the cross-section: from one
-// silhouette point to the other through the point nearest the eye (the
-// offsets cos(phi) F + sin(phi) (T x F), F the direction to the eye
-// orthogonal to the tangent T, phi in [-A, A] with A = acos(r / |eye - c|
-// across T), pi / 2 in parallel projection: the exact silhouette of the
-// circle seen from the eye), so the outline is the tube's; the vertices
-// between the silhouettes are placed so that the depth of the chords stays
-// within 0.21 radii of the circle's (L >= 3 intervals, see below). Caps are
-// the disk's inscribed polygon.
+// ring) a wall ring is the view-facing half of the cross-section, from one
+// silhouette point to the other (tubeHalfRingVertex, shared with the
+// thin-tube draws of vtkTessellatedTubeThinVS.glsl); caps are the disk's
+// inscribed polygon.
 
 layout(quads, equal_spacing, ccw) in;
 
@@ -39,9 +34,6 @@ patch in ivec4 tubePatchInfo;
 uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
 uniform int tubeSides;
-uniform int tubeHaveColors;
-uniform samplerBuffer tubeColors;           // per node: RGBA
-uniform isamplerBuffer tubeColorDerivatives; // per node: derivative * 127
 
 out vec4 vertexVCVSOutput;
 out vec3 tubeNormalVCVSOutput;
@@ -108,56 +100,14 @@ void main()
   vec3 normal;
   if (halfRing)
   {
-    // The view-facing half ring (see above); the normal is exact for any
-    // frame (svTubeSurfaceTangent), also for this one that turns with the view.
-    vec4 c = svHermite(seg.p0, seg.m0, seg.p1, seg.m1, t);
-    vec4 d = svHermiteDerivative(seg.p0, seg.m0, seg.p1, seg.m1, t);
-    vec4 dd = svHermiteSecondDerivative(seg.p0, seg.m0, seg.p1, seg.m1, t);
-    vec3 tangent = normalize(d.xyz);
-    if (count > 1 && v > 0.0 && v < 1.0)
-    {
-      // Inside a run the chords straddle the curve: each vertex moves away
-      // from the center of curvature by half the sagitta of a chord of the
-      // run's spacing h (the chord's middle lies s = |c''_perp| h^2 / 8
-      // inside the curve), so chords deviate by at most s / 2 (3 s / 4 next
-      // to the run's ends, whose rings stay on the curve for the neighbours).
-      float h = float(count) / max(gl_TessLevelOuter[0], 1.0);
-      vec3 inward = dd.xyz - dot(dd.xyz, tangent) * tangent;
-      c.xyz -= inward * (0.0625 * h * h);
-    }
-    vec3 toEye = cameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : -c.xyz;
-    vec3 across = toEye - dot(toEye, tangent) * tangent;
-    float distance = length(across);
-    vec3 front;
-    if (distance > 1e-6 * length(toEye))
-    {
-      front = across / distance;
-    }
-    else if (count > 1)
-    {
-      int node = tubePatchInfo.x + k;
-      front = svInterpolateFrame(tubeNodeFrame(node), tubeNodeFrame(node + 1), t, d.xyz);
-    }
-    else
-    {
-      front = svInterpolateFrame(seg.f0, seg.f1, t, d.xyz);
-    }
-    float halfSpan = cameraParallel != 0 || distance <= 0.0
-      ? 1.5707963267948966
-      : acos(clamp(c.w / distance, 0.0, 1.0));
-    // Vertices nearer the silhouettes (phi = A sin(pi/2 sigma), sigma = 2s - 1,
-    // where the circle's depth changes fastest) and, between the silhouette
-    // points, 1 + 3.3 / L^3 radii out (L intervals), so that the chords
-    // straddle the circle: the depth error stays below 0.21 r for L = 3,
-    // 0.13 r for L = 4, 0.07 r for L = 6 (up to 97 % of the half width).
+    // The view-facing half ring (see above and tubeHalfRingVertex): the ring
+    // levels are the edges' (v = 0: outer 1, v = 1: outer 3) or the inner one.
     float L = v == 0.0 ? gl_TessLevelOuter[1]
                        : (v == 1.0 ? gl_TessLevelOuter[3] : gl_TessLevelInner[0]);
-    L = max(ceil(L), 3.0);
-    float sigma = 2.0 * s - 1.0;
-    offset = svTubeOffset(front, tangent, halfSpan * sin(1.5707963267948966 * sigma));
-    float outward = abs(sigma) < 1.0 ? 1.0 + 3.3 / (L * L * L) : 1.0;
-    position = c.xyz + (outward * c.w) * offset;
-    normal = svTubeNormal(offset, svTubeSurfaceTangent(d.xyz, dd.xyz, c.w, d.w, offset));
+    float chord =
+      count > 1 && v > 0.0 && v < 1.0 ? float(count) / max(gl_TessLevelOuter[0], 1.0) : 0.0;
+    tubeHalfRingVertex(seg.p0, seg.m0, seg.p1, seg.m1, tubePatchInfo.x + k, t, s, L, chord,
+      cameraParallel != 0, position, normal);
   }
   else if (kind == 0)
   {
@@ -176,16 +126,7 @@ void main()
     normal = kind == 1 ? -axis : axis;
   }
 
-  vec4 color = vec4(1.0);
-  if (tubeHaveColors != 0)
-  {
-    int node = tubePatchInfo.x + k;
-    color = clamp(svHermite(texelFetch(tubeColors, node),
-                    vec4(texelFetch(tubeColorDerivatives, node)) / 127.0,
-                    texelFetch(tubeColors, node + 1),
-                    vec4(texelFetch(tubeColorDerivatives, node + 1)) / 127.0, t),
-      0.0, 1.0);
-  }
+  vec4 color = tubeColorAt(tubePatchInfo.x + k, t);
 
   vertexVCVSOutput = vec4(position, 1.0);
   tubeNormalVCVSOutput = normal;

@@ -59,7 +59,7 @@ for v in (lod, fixed):
     if v["bytes"] > 96:
         print("ERROR: more than Salm's 96 bytes per segment on the GPU", v["bytes"])
         sys.exit(1)
-if "chunks" not in lod["lod"] or "16 x 8" not in fixed["lod"]:
+if "thin " not in lod["lod"] or "16 x 8" not in fixed["lod"]:
     print("ERROR: unexpected base meshes", lod["lod"], fixed["lod"])
     sys.exit(1)
 if lod["triangles"] >= fixed["triangles"]:
