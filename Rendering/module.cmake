@@ -27,6 +27,7 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathPrelude.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathShared.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeVS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeGS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeFS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeCullVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeCullFS.glsl"

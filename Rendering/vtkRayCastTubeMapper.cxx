@@ -28,6 +28,7 @@
 #include "vtkRayCastTubeCullFS.h"
 #include "vtkRayCastTubeCullVS.h"
 #include "vtkRayCastTubeFS.h"
+#include "vtkRayCastTubeGS.h"
 #include "vtkRayCastTubeVS.h"
 #include "vtkSplineTubeMathPrelude.h"
 #include "vtkSplineTubeMathShared.h"
@@ -124,7 +125,7 @@ void vtkRayCastTubeMapper::GetShaderTemplate(
 {
   this->Superclass::GetShaderTemplate(shaders, ren, act);
   shaders[vtkShader::Vertex]->SetSource(vtkRayCastTubeVS);
-  shaders[vtkShader::Geometry]->SetSource("");
+  shaders[vtkShader::Geometry]->SetSource(vtkRayCastTubeGS);
 }
 
 //------------------------------------------------------------------------------
@@ -320,9 +321,7 @@ void vtkRayCastTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
   vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
   state->vtkglDisable(GL_CULL_FACE);
-  this->QuadIndices->Bind();
-  DrawQuads(count);
-  this->QuadIndices->Release();
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(count));
 
   this->DeactivateTubeBuffers();
   if (this->CullThisDraw && this->CullDepth)

@@ -2,17 +2,17 @@
 
 // Ray-cast spline tubes (Salm §3.2 'Rendering'), vertex stage.
 //
-// Indexed triangles, 4 vertices (gl_VertexID = 4 * sub-segment + corner) and
-// 2 triangles per quadratic sub-segment, no vertex attributes. Every vertex
-// reads its sub-segment's two
-// nodes from the tubes buffer, splits the cubic segment into its quadratic
-// sub-segments (svSplitSegment), takes the one it owns into view coordinates,
-// bounds it with its oriented box (svSubSegmentBox) and covers the box's
-// projection with a rectangle in the image plane, oriented along the
-// sub-segment's projected chord (a tight fit for the long, thin boxes of
-// tubes). Boxes crossing the near plane are clipped to it first; boxes
-// outside the view frustum produce a degenerate rectangle. The fragment
-// stage intersects the view ray with the sub-segment.
+// One point per quadratic sub-segment (gl_VertexID = sub-segment), no vertex
+// attributes. The vertex reads its sub-segment's two nodes from the tubes
+// buffer, splits the cubic segment into its quadratic sub-segments
+// (svSplitSegment), takes the one it owns into view coordinates, bounds it
+// with its oriented box (svSubSegmentBox) and covers the box's projection
+// with a rectangle in the image plane, oriented along the sub-segment's
+// projected chord (a tight fit for the long, thin boxes of tubes), which the
+// geometry stage (vtkRayCastTubeGS.glsl) emits. Boxes crossing the near
+// plane are clipped to it first; boxes outside the view frustum get no
+// rectangle. The fragment stage intersects the view ray with the
+// sub-segment.
 //
 // Why a rectangle and not the box itself: on Mesa llvmpipe, rasterizing the
 // box faces (from a geometry shader or an instanced box mesh) costs about
@@ -30,11 +30,16 @@ uniform int cameraParallel;
 uniform float tubeStraightTolerance; // fraction of the radius; 0: always root finding
 uniform float tubePixelScale;        // pixels per view unit (at unit distance if perspective)
 
-out vec4 vertexVCVSOutput;       // position on the rectangle, view coordinates
-flat out vec4 tubeQ0VSOutput;    // quadratic sub-segment in view coordinates
-flat out vec4 tubeQ1VSOutput;    // (xyz: control point, w: radius)
-flat out vec4 tubeQ2VSOutput;
-flat out ivec4 tubeInfoVSOutput; // first node, sub-segment, tube, flags | mode << 2
+// The sub-segment and its rectangle, for the geometry stage.
+out TubeRectangle
+{
+  flat vec4 q0;    // quadratic sub-segment in view coordinates
+  flat vec4 q1;    // (xyz: control point, w: radius)
+  flat vec4 q2;
+  flat ivec4 info; // first node, sub-segment, tube, flags | mode << 2
+  flat vec4 frame; // u (xy: the rectangle's first axis; v = (-u.y, u.x)), z of its plane, w > 0: drawn
+  flat vec4 span;  // lo (xy), hi (zw): extents along u and v
+} tubeRect;
 
 //VTK::SplineTubeMath::Dec
 
@@ -50,8 +55,9 @@ vec2 projectToPlane(vec3 p, float zp)
 
 void main()
 {
-  int id = gl_VertexID / 4;
-  int cornerId = gl_VertexID - 4 * id;
+  int id = gl_VertexID;
+  tubeRect.frame = vec4(0.0); // not drawn (unless set below)
+  tubeRect.span = vec4(0.0);
   int segment = id / subSegments;
   int k = id - segment * subSegments;
   uvec2 s = texelFetch(tubeSegments, segment).xy;
@@ -119,9 +125,7 @@ void main()
     }
     if ((mode == 2 && k != 0) || (mode == 3 && (k & 1) != 0))
     {
-      gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // drawn by another sub-segment's rectangle
-      vertexVCVSOutput = vec4(0.0, 0.0, -1.0, 1.0);
-      return;
+      return; // drawn by another sub-segment's rectangle
     }
     if (mode == 2)
     {
@@ -139,10 +143,10 @@ void main()
       q1 = 0.5 * (q0 + q2);
     }
   }
-  tubeQ0VSOutput = q0;
-  tubeQ1VSOutput = q1;
-  tubeQ2VSOutput = q2;
-  tubeInfoVSOutput = ivec4(node, k, int(s.y), flags | (mode << 2));
+  tubeRect.q0 = q0;
+  tubeRect.q1 = q1;
+  tubeRect.q2 = q2;
+  tubeRect.info = ivec4(node, k, int(s.y), flags | (mode << 2));
 
   // Fast path: the sub-segment lies in the convex hull of its control points
   // with the largest radius (Bernstein property, radii >= 0); bound the
@@ -186,17 +190,11 @@ void main()
     // Beyond the far plane: nothing (rectangles beside the viewport are
     // clipped by the rasterizer at no fragment cost).
     vec4 farClip = VCDCMatrix * vec4(0.0, 0.0, zNear, 1.0);
-    if (farClip.z > farClip.w)
+    if (farClip.z <= farClip.w)
     {
-      gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
-      vertexVCVSOutput = vec4(0.0, 0.0, -1.0, 1.0);
-      return;
+      tubeRect.frame = vec4(u, zp, 1.0);
+      tubeRect.span = vec4(lo, hi);
     }
-    int vertex = cornerId;
-    vec2 uv = vec2((vertex & 1) != 0 ? hi.x : lo.x, (vertex & 2) != 0 ? hi.y : lo.y);
-    vec3 p = vec3(uv.x * u + uv.y * v, zp);
-    vertexVCVSOutput = vec4(p, 1.0);
-    gl_Position = VCDCMatrix * vec4(p, 1.0);
     return;
   }
 
@@ -235,9 +233,7 @@ void main()
   }
   if (allLeft || allRight || allBelow || allAbove || allFar || allNear)
   {
-    gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // outside the frustum: nothing drawn
-    vertexVCVSOutput = vec4(0.0, 0.0, -1.0, 1.0);
-    return;
+    return; // outside the frustum: nothing drawn
   }
 
   // The image plane the rectangle lies in: through the nearest corner, or
@@ -298,9 +294,6 @@ void main()
     }
   }
 
-  int vertex = cornerId;
-  vec2 uv = vec2((vertex & 1) != 0 ? hi.x : lo.x, (vertex & 2) != 0 ? hi.y : lo.y);
-  vec3 p = vec3(uv.x * u + uv.y * v, zp);
-  vertexVCVSOutput = vec4(p, 1.0);
-  gl_Position = VCDCMatrix * vec4(p, 1.0);
+  tubeRect.frame = vec4(u, zp, 1.0);
+  tubeRect.span = vec4(lo, hi);
 }
