@@ -29,17 +29,25 @@
  * turned to the eye, cost 2.4 times more per frame than a rectangle in the
  * image plane (4.2 s against 1.8 s for Fibers2 without any fragment work):
  * triangle setup and geometry-shader output dominate in a software
- * rasterizer, and the box needs up to 6 triangles against 2. A rectangle
- * emitted by a geometry shader costs the same as one built by the vertex
- * stage (1.32 s against 1.36 s for a Fibers2 frame), and instancing adds a
- * per-instance cost (0.86 s against 0.72 s), so the proxy is a rectangle
- * oriented along the projected sub-segment, bounding the projection of the
- * spheres at its control points (the sub-segment's convex hull; the oriented
- * box clipped to the near plane when the camera is among the tubes), drawn
- * as indexed triangles with a small shared index pattern. (One rectangle
- * per cubic segment for segments small on screen, the fragment stage
- * testing both sub-segments, was measured too: no faster, since the
- * per-fragment root finding, not the rectangles, dominates.)
+ * rasterizer, and the box needs up to 6 triangles against 2. So the proxy
+ * is a rectangle oriented along the projected sub-segment, bounding the
+ * projection of the spheres at its control points (the sub-segment's convex
+ * hull; the oriented box clipped to the near plane when the camera is among
+ * the tubes). The vertex stage sets it up once per sub-segment (one point
+ * each) and a geometry stage emits its 4-vertex strip: built by the vertex
+ * stage per corner (indexed triangles), the set-up ran four times per
+ * sub-segment on the thread where llvmpipe shades vertices, 28 % of a
+ * 1 M-segment frame; with the geometry stage that frame went from 1.43x to
+ * 1.9-2.0x faster than vtkTubeFilter's at 800x600 and from 1.26x to
+ * 1.5-1.8x at 1200x768 (Fibers2, whose frame is spent in the fragment
+ * stage, unchanged within noise: 0.80-0.87 of the tube filter's frame at
+ * 800x600, 0.97-1.03 at 1200x768). Instancing adds a per-instance cost (0.86 s against 0.72 s
+ * for an earlier Fibers2 frame). (One rectangle per cubic segment for
+ * segments small on screen, the fragment stage testing both sub-segments,
+ * was measured too: no faster, since the per-fragment root finding, not the
+ * rectangles, dominates; nor did rectangles cut short at the node spheres
+ * the next proxy covers: llvmpipe shades fragments in 4 x 4 blocks, and
+ * the blocks a rectangle of tubes 2-4 pixels wide touches barely change.)
  *
  * **Straight segments** (StraightTolerance, default 0.02): segments and
  * quadratic sub-segments whose spheres lie within 2 % of their smallest
@@ -90,7 +98,10 @@
  * the tube filter's and first frame shorter by): Fibers2 0.93 and 2.9-3.3x
  * at 800x600, 1.01-1.12 and 2.6-2.7x at 1200x768; long curves 0.81-0.87
  * and 3.6-3.8x, 0.84-0.90 and 2.7-4.0x; 1 M segments 0.66-0.70 and
- * 4.5-6.1x, 0.72-0.79 and 5.2-5.3x.
+ * 4.5-6.1x, 0.72-0.79 and 5.2-5.3x. With the rectangles from the geometry
+ * stage (one run, 60 frames): Fibers2 0.80 and 5.1x at 800x600, 0.97 and
+ * 4.4x at 1200x768; long curves 0.80 and 5.4x, 0.81 and 5.0x; 1 M segments
+ * 0.50 and 10.0x, 0.57 and 9.8x.
  * With the camera among the Fibers2 tubes (800x600, another run) culling on
  * took 2286 (1099) ms, off 2038 (939) ms, and root finding everywhere
  * (StraightTolerance 0, as before) 4077 (1970) ms. The pre-pass costs a

@@ -32,23 +32,44 @@
  *   more where the tube turns toward the eye (the depth error of a chord
  *   grows as 1 / sin of the angle between the tangent and the ray), the
  *   vertices between the silhouettes placed so that the chords straddle the
- *   circle (depth within 0.21 radii for 3 intervals); a chunk of thin tube
- *   is one patch if it is at most 1,024 pixels long on screen (the
- *   evaluation stage finds each vertex's segment), else each segment is one
- *   patch, and the level along keeps the chords within half a pixel of the
- *   curve on screen and within a tenth of the radius in space (from the
- *   curvature of the node chain or the segment's tangents; inside a run the
- *   vertices move out by half a chord's sagitta so that the chords straddle
- *   the curve, and 1.7 times longer chords keep the bound); measured by
+ *   circle (depth within 0.21 radii for 3 intervals); the level along
+ *   keeps the chords within half a pixel of the curve on screen and within
+ *   a tenth of the radius in space (from the curvature of the node chain or
+ *   the segment's tangents; inside a run the vertices move out by half a
+ *   chord's sagitta so that the chords straddle the curve, and 1.7 times
+ *   longer chords keep the bound). A chunk of thin tube at most 1,024
+ *   pixels long on screen is drawn **without the tessellator**: the CPU
+ *   classification computes these levels for the whole chunk (the rings
+ *   along, rounded up to a ladder of 20 values, and the intervals of its
+ *   end rings, at most 8) and bins the chunks by them; one instanced draw
+ *   per bin of an indexed triangle mesh whose vertices the vertex stage
+ *   places with the evaluation stage's half-ring function
+ *   (vtkTessellatedTubeThinVS.glsl), the end rings at their own intervals so
+ *   that neighbouring chunks meet without cracks, the diagonals mirrored at
+ *   the middle of ring and run as the tessellator's. On llvmpipe the control
+ *   stage, the tessellator and its per-patch bookkeeping run on the
+ *   application's thread and cost more than the vertex shading (a profile
+ *   of a Fibers2 frame: 65 % of the samples on that thread, the rasterizer
+ *   threads half idle; without them 44 % and the rasterizer threads busy).
+ *   The caps of thin tubes stay patches: drawn as triangle fans by the same
+ *   vertex stage they made the Fibers2 frame about 25 % longer (alternating
+ *   runs), while the control stage culls the unwanted ones per patch.
+ *   Longer chunks, and chunks whose rings need more intervals, are patches
+ *   as before (a chunk one patch, or each segment one patch beyond 1,024
+ *   pixels). Measured by
  *   TestTubeFidelity against vtkTubeFilter (64 sides) on DIPY's cb_2 bundle
  *   and synthetic curls at the whole view and zoomed 2x and 5x: coverage
- *   IoU 0.97-1.00 and eye depth within a quarter radius on 96.9-100 % of
- *   the shared pixels (before: IoU 0.92 and 30 % on cb_2's whole view).
+ *   IoU 0.99-1.00 and eye depth within a quarter radius on 96.9-100 % of
+ *   the shared pixels (before thin tubes stayed tubes: IoU 0.92 and 30 % on
+ *   cb_2's whole view).
  *   The price on llvmpipe (one idle run of SplineVizTubeBenchmark, camera
- *   far): about one chord per segment on curved data, so the frame is
- *   0.51-0.66 of vtkTubeFilter's (12 sides) on Fibers2 and on long smooth
- *   curves at 800x600 and 1200x768 (before: 0.34 on Fibers2, inexact; 0.96
- *   on the long curves);
+ *   far, see the README): about one chord per segment on curved data, and a
+ *   frame 0.46-0.51 times vtkTubeFilter's (12 sides) on long smooth curves
+ *   at 800x600 and 1200x768 and on Fibers2 at 1200x768 (two runs); Fibers2
+ *   at 800x600 varies from frame to frame even for a fixed view (0.5-0.84;
+ *   not understood); with the tessellator for thin tubes 0.51-0.66, before
+ *   thin tubes stayed tubes 0.34 on Fibers2 (inexact) and 0.96 on the long
+ *   curves;
  *   more than 8, the base mesh has at least half the needed vertices per ring
  *   (BaseSides halved down to 4) and Salm's refinement does the rest. The
  *   side count is chosen per tube so that the rings at the junctions always
@@ -90,7 +111,9 @@
  * vtkSplineTubeMapper (per node 32 bytes, 8 more with scalar coloring; per
  * segment 8 bytes; per tube 8 bytes) plus the orthogonal vectors, octahedral
  * encoded in 4 bytes per node (Salm's suggested compact format), and the base
- * mesh's index buffer (once). See GetGPUMemorySize().
+ * meshes' index buffer (once; 51 KB of it for the thin-tube meshes, one per
+ * ring size, whose rows alternate between the two ends of a run so that the
+ * first n rows are the mesh of n rows). See GetGPUMemorySize().
  *
  * VTK 9.2's vtkShader has no tessellation stages: the mapper lets VTK build
  * and link the vertex and fragment stages (with all of VTK's shader
@@ -232,7 +255,9 @@ public:
   /**
    * Segments drawn by the last render with each number of vertex rings and
    * sides (level-of-detail statistics): a string "rings x sides: segments"
-   * per bin, and the number of segments culled on the CPU.
+   * per bin ("chunks ..." and "thin ...": runs of segments as one patch or
+   * one thin-tube draw, counted in runs; for thin-tube draws the sides are
+   * the vertices per ring), and the number of segments culled on the CPU.
    */
   std::string GetLevelOfDetailSummary();
 
