@@ -119,33 +119,18 @@ ViewNode ToView(const ThinView& v, const float* P, const float* M, const float* 
 }
 
 /// Intervals of the view-facing half ring at a node (the control stage's
-/// tubeWallRingLevel): the half circumference in steps of SideLength, at
-/// least 3, more where the tube turns toward the eye.
+/// tubeWallRingLevel, through the same shared functions).
 double ThinRingLevel(const ThinView& v, const ViewNode& n)
 {
-  const double w = n.Clip[3];
-  if (w <= 0.0)
-  {
-    return 64.0;
-  }
-  double toEye[3] = { 0.0, 0.0, 1.0 };
-  if (!v.Parallel)
-  {
-    toEye[0] = -n.P[0];
-    toEye[1] = -n.P[1];
-    toEye[2] = -n.P[2];
-  }
-  double d[3] = { n.D[0], n.D[1], n.D[2] };
-  double sine = 1.0;
-  if (vtkMath::Normalize(d) > 0.0 && vtkMath::Normalize(toEye) > 0.0)
-  {
-    double c[3];
-    vtkMath::Cross(d, toEye, c);
-    sine = vtkMath::Norm(c);
-  }
-  const double least = std::ceil(2.9 / std::sqrt(std::max(sine, 0.34)));
-  const double arc = 0.5 * 2.0 * vtkMath::Pi() * n.R / w * v.PixelScale;
-  return std::min(std::max(std::ceil(arc / v.SideLength), least), 64.0);
+  const vtkSplineTubeMath::vec3 d(n.D[0], n.D[1], n.D[2]);
+  const vtkSplineTubeMath::vec3 toEye = v.Parallel
+    ? vtkSplineTubeMath::vec3(0.0, 0.0, 1.0)
+    : vtkSplineTubeMath::vec3(-n.P[0], -n.P[1], -n.P[2]);
+  // (a degenerate direction counts as across the view: 3 intervals at least)
+  const double least = glm::length(d) > 0.0 && glm::length(toEye) > 0.0
+    ? vtkSplineTubeMath::svThinWallLeast(d, toEye)
+    : 3.0;
+  return vtkSplineTubeMath::svThinRingLevel(n.R, n.Clip[3], v.PixelScale, v.SideLength, 0.5, least);
 }
 
 /// Pixel position of a node (false behind the eye).
@@ -160,31 +145,14 @@ bool ThinScreen(const ThinView& v, const ViewNode& n, double p[2])
   return true;
 }
 
-/// The turning angle between two chords over their mean length (the
-/// control stage's tubeChainCurvature).
-double ThinChainCurvature(
-  const double* d, double len, const double* previous, double previousLength, int dimension)
-{
-  if (len <= 0.0 || previousLength <= 0.0)
-  {
-    return 0.0;
-  }
-  double dot = 0.0;
-  for (int k = 0; k < dimension; ++k)
-  {
-    dot += d[k] * previous[k];
-  }
-  const double turn = std::acos(std::min(std::max(dot / (len * previousLength), -1.0), 1.0));
-  return turn / (0.5 * (len + previousLength));
-}
-
 /// Rings along a thin run of `count` segments from node `first`: the level
 /// the control stage's single-patch mode sets (tubeSinglePatch: edges at
 /// most Edge pixels on screen, chords within half a pixel of the curve on
 /// screen and within a tenth of the radius in space, 1.7 times that inside
 /// runs, whose chords straddle the curve), and the intervals of its first
-/// and last rings. The same bounds, computed once per view on the CPU
-/// instead of per patch on the GPU.
+/// and last rings. The same bounds, through the same functions
+/// (vtkSplineTubeMathShared.glsl's svThin...), computed once per view on the
+/// CPU instead of per patch on the GPU.
 void ThinChunkLevels(const ThinView& v, const float* P, const float* M, const float* R,
   vtkIdType first, vtkIdType count, double& along, double& ring0, double& ring1)
 {
@@ -192,9 +160,7 @@ void ThinChunkLevels(const ThinView& v, const float* P, const float* M, const fl
   const ViewNode b = ToView(v, P, M, R, first + count);
   ring0 = ThinRingLevel(v, a);
   ring1 = ThinRingLevel(v, b);
-  const double sagittaPixels = 0.5;
-  const double depthSagitta = 0.1;
-  const double straddle = 1.7;
+  using vtkSplineTubeMath::vec3;
   if (count == 1)
   {
     // The cubic's deviation from its chord: |m0 - m1| / 8.
@@ -216,9 +182,8 @@ void ThinChunkLevels(const ThinView& v, const float* P, const float* M, const fl
     const double w =
       v.Proj[3][0] * middle[0] + v.Proj[3][1] * middle[1] + v.Proj[3][2] * middle[2] + v.Proj[3][3];
     const double radius = std::min({ a.R, b.R, 0.5 * (a.R + b.R) + 0.125 * (a.DR - b.DR) });
-    const double bound =
-      std::min(sagittaPixels * std::max(w, 0.0) / v.PixelScale, depthSagitta * radius);
-    const double sagittaLevel = bound > 0.0 ? std::ceil(std::sqrt(sagitta / bound)) : 64.0;
+    const double sagittaLevel =
+      vtkSplineTubeMath::svThinSagittaLevel(sagitta, w, radius, v.PixelScale);
     along =
       std::min(std::max(std::max(std::min(screen / v.Edge, v.MaxLevel), sagittaLevel), 1.0), 64.0);
     return;
@@ -227,51 +192,54 @@ void ThinChunkLevels(const ThinView& v, const float* P, const float* M, const fl
   double total3 = 0.0;
   double shortest = 1e30;
   double shortest3 = 1e30;
-  double previous[2] = { 0.0, 0.0 };
-  double direction[2] = { 0.0, 0.0 };
+  vec3 previous(0.0);
+  vec3 direction(0.0);
   double previousLength = 0.0;
-  double previous3[3] = { 0.0, 0.0, 0.0 };
-  double direction3[3] = { 0.0, 0.0, 0.0 };
+  vec3 previous3(0.0);
+  vec3 direction3(0.0);
   double previousLength3 = 0.0;
   for (vtkIdType k = 0; k <= count; ++k)
   {
     const ViewNode n = k == 0 ? a : (k == count ? b : ToView(v, P, M, R, first + k));
-    double p[2];
-    if (!ThinScreen(v, n, p))
+    double p2[2];
+    if (!ThinScreen(v, n, p2))
     {
       along = 64.0;
       return;
     }
+    const vec3 p(p2[0], p2[1], 0.0);
+    const vec3 p3(n.P[0], n.P[1], n.P[2]);
     if (k > 0)
     {
-      const double d[2] = { p[0] - previous[0], p[1] - previous[1] };
-      const double len = std::hypot(d[0], d[1]);
+      const vec3 d = p - previous;
+      const double len = glm::length(d);
       total += len;
       const double curvature =
-        k > 1 ? ThinChainCurvature(d, len, direction, previousLength, 2) : 0.0;
+        k > 1 ? vtkSplineTubeMath::svThinChainCurvature(d, len, direction, previousLength) : 0.0;
       if (curvature > 0.0)
       {
-        shortest = std::min(shortest, std::sqrt(8.0 * sagittaPixels / curvature));
+        shortest =
+          std::min(shortest, std::sqrt(8.0 * vtkSplineTubeMath::svThinSagittaPixels / curvature));
       }
-      direction[0] = d[0];
-      direction[1] = d[1];
+      direction = d;
       previousLength = len;
-      const double d3[3] = { n.P[0] - previous3[0], n.P[1] - previous3[1], n.P[2] - previous3[2] };
-      const double len3 = vtkMath::Norm(d3);
+      const vec3 d3 = p3 - previous3;
+      const double len3 = glm::length(d3);
       total3 += len3;
-      const double curvature3 =
-        k > 1 ? ThinChainCurvature(d3, len3, direction3, previousLength3, 3) : 0.0;
+      const double curvature3 = k > 1
+        ? vtkSplineTubeMath::svThinChainCurvature(d3, len3, direction3, previousLength3)
+        : 0.0;
       if (curvature3 > 0.0)
       {
-        shortest3 =
-          std::min(shortest3, std::sqrt(8.0 * straddle * depthSagitta * n.R / curvature3));
+        shortest3 = std::min(shortest3,
+          std::sqrt(8.0 * vtkSplineTubeMath::svThinRunStraddle *
+            vtkSplineTubeMath::svThinDepthSagitta * n.R / curvature3));
       }
-      std::copy(d3, d3 + 3, direction3);
+      direction3 = d3;
       previousLength3 = len3;
     }
-    previous[0] = p[0];
-    previous[1] = p[1];
-    std::copy(n.P, n.P + 3, previous3);
+    previous = p;
+    previous3 = p3;
   }
   along = std::min(
     std::max(std::ceil(std::max({ total / v.Edge, total / shortest, total3 / shortest3 })), 1.0),
@@ -859,7 +827,7 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
     thin.RadiusScale = radiusScale;
     std::copy(this->Shift, this->Shift + 3, thin.Shift);
     thin.SideLength = 2.0 * this->MaxSilhouetteEdgeLength;
-    thin.Edge = 4.0 * this->MaxEdgeLength;
+    thin.Edge = vtkSplineTubeMath::svThinEdgeFactor * this->MaxEdgeLength;
     thin.MaxLevel = this->MaxTessellationLevel;
     thin.Parallel = ren->GetActiveCamera()->GetParallelProjection() != 0;
     const float* nodeP = core->GetNodePositions()->GetPointer(0);

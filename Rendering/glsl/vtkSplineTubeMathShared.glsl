@@ -844,3 +844,73 @@ vec3 svTubeWallNormal(
   vec3 b = svTubeSurfacePoint(p0, m0, p1, m1, f0, f1, t - h, angle, 1.0, ob);
   return svTubeNormal(offset, a - b);
 }
+
+//------------------------------------------------------------------------------
+// Levels of thin tubes (vtkTessellatedTubeMapper: the control stage's
+// single-patch mode on the GPU and the thin-tube draws' classification on the
+// CPU, which must agree). A thin tube's wall is the view-facing half of its
+// cross-section; along the curve its chords stay within svThinSagittaPixels
+// pixels of it on screen and within svThinDepthSagitta radii in space, edges
+// at most svThinEdgeFactor times MaxEdgeLength on screen.
+const real svThinSagittaPixels = 0.5;
+const real svThinDepthSagitta = 0.1;
+const real svThinEdgeFactor = 4.0;
+// Inside a run of segments the chords straddle the curve (deviation at most
+// half the sagitta, 3/4 next to the run's ends): in space sagittas 1.7 times
+// svThinDepthSagitta are admitted (the chords then stay within 0.85 of it,
+// 1.3 next to the run's ends); on screen the bound stays (coverage within a
+// pixel, TestTessellatedTubeReference). Measured with TestTubeFidelity (depth
+// share on cb_2 and the curls) and the triangles of a Fibers2 frame
+// (800x600): without straddling 96.9-97.1 %, 934k triangles with the same
+// levels; straddling with factor 1 98.1-98.4 %, 934k; 1.7 96.8-97.9 %, 766k.
+const real svThinRunStraddle = 1.7;
+
+// Intervals of `turn` of the circumference of a ring of radius `radius`
+// (view units) whose center is at clip w `w`, in steps of `sideLength`
+// pixels (pixelScale: pixels per view unit at w = 1), at least `least`, at
+// most 64.
+real svThinRingLevel(real radius, real w, real pixelScale, real sideLength, real turn, real least)
+{
+  if (w <= 0.0)
+  {
+    return 64.0;
+  }
+  real arc = turn * 6.283185307179586 * radius / w * pixelScale;
+  return clamp(ceil(arc / sideLength), least, 64.0);
+}
+
+// The fewest intervals of a wall's half ring where the curve's derivative is
+// d and the direction to the eye toEye (both nonzero). A ray meets the wall
+// of a tube that turns toward the eye obliquely: the depth error of the
+// chords (about 1.9 / L^2 radii across the tube) grows by 1 / sin(theta),
+// theta the angle between the tangent and the ray, so L grows as
+// 1 / sqrt(sin(theta)) from 3 (at most 5, for tubes seen nearly end-on).
+real svThinWallLeast(vec3 d, vec3 toEye)
+{
+  real sine = length(cross(normalize(d), normalize(toEye)));
+  return ceil(2.9 / sqrt(max(sine, 0.34)));
+}
+
+// Chords of a curve piece with sagitta `sagitta` (view units) needed to keep
+// each within svThinSagittaPixels on screen (at clip w `w`) and within
+// svThinDepthSagitta of the radius `radius` in space (the sagitta shrinks
+// with the square of the number of chords).
+real svThinSagittaLevel(real sagitta, real w, real radius, real pixelScale)
+{
+  real bound =
+    min(svThinSagittaPixels * max(w, 0.0) / pixelScale, svThinDepthSagitta * radius);
+  return bound > 0.0 ? ceil(sqrt(sagitta / bound)) : 64.0;
+}
+
+// Curvature of a node chain at a node: the turning angle between the chord
+// `previous` (length previousLength) and the next chord d (length len) over
+// their mean length; 0 where a chord is degenerate.
+real svThinChainCurvature(vec3 d, real len, vec3 previous, real previousLength)
+{
+  if (len <= 0.0 || previousLength <= 0.0)
+  {
+    return 0.0;
+  }
+  real turn = acos(clamp(dot(d, previous) / (len * previousLength), -1.0, 1.0));
+  return turn / (0.5 * (len + previousLength));
+}

@@ -36,8 +36,8 @@
 // circle's, more where the tube turns toward the eye: see
 // tubeWallRingLevel), the caps' four times the circumferences (at least 8), and the level
 // along makes the edges at most tubeMaxEdgeLength long on screen and keeps
-// the chords within tubeSagitta pixels of the curve on screen and within
-// tubeDepthSagitta radii of it in space (so that the depth stays the tube's
+// the chords within svThinSagittaPixels pixels of the curve on screen and within
+// svThinDepthSagitta radii of it in space (so that the depth stays the tube's
 // where the curve bends toward the eye); the ring levels depend on the nodes
 // only, so neighbours agree. A patch may also span a run of `count` segments
 // of one tube (count > 1, far away thin tubes): then its rings are the run's
@@ -74,19 +74,8 @@ uniform int tubeCaps;
 uniform int tubeSides;        // 1: one patch around the segment
 uniform float tubeSideLength; // pixels per ring edge in the single-patch mode
 
-const float tubeSagitta = 0.5;        // pixels
-const float tubeDepthSagitta = 0.1; // radii
-const float tubeThinEdgeFactor = 4.0; // thin tubes: edges up to 4 tubeMaxEdgeLength
-// Inside a run the evaluation stage makes the chords straddle the curve
-// (deviation at most half the sagitta, 3/4 next to the run's ends): in space
-// sagittas 1.7 times tubeDepthSagitta are admitted (the chords then stay
-// within 0.85 of it, 1.3 next to the run's ends); on screen the bound stays
-// (coverage within a pixel, TestTessellatedTubeReference). Measured with
-// TestTubeFidelity (depth share on cb_2 and the curls) and the triangles of
-// a Fibers2 frame (800x600): without straddling 96.9-97.1 %, 934k triangles
-// with the same levels; straddling with factor 1 98.1-98.4 %, 934k; 1.7
-// 96.8-97.9 %, 766k.
-const float tubeRunStraddle = 1.7;
+// The bounds of thin tubes: svThinSagittaPixels, svThinDepthSagitta,
+// svThinEdgeFactor and svThinRunStraddle (vtkSplineTubeMathShared.glsl).
 uniform vec4 tubeFrustum[6]; // view-coordinate planes, inside: dot >= 0
 
 //VTK::SplineTubeMath::Dec
@@ -179,38 +168,19 @@ bool tubeOutsideFrustum(vec3 a, vec3 b, vec3 c, vec3 d)
 
 // Intervals of the ring around node center p (xyz, radius w) in the
 // single-patch mode: `turn` of the circumference (0.5: the view-facing half
-// ring of a wall; 1: a cap), at least `least`.
+// ring of a wall; 1: a cap), at least `least` (svThinRingLevel).
 float tubeRingLevel(vec4 p, float turn, float least)
 {
   float w = (VCDCMatrix * vec4(p.xyz, 1.0)).w;
-  if (w <= 0.0)
-  {
-    return 64.0;
-  }
-  float arc = turn * 6.283185307179586 * p.w / w * tubePixelScale();
-  return clamp(ceil(arc / tubeSideLength), least, 64.0);
+  return svThinRingLevel(p.w, w, tubePixelScale(), tubeSideLength, turn, least);
 }
 
 // Intervals of the view-facing half ring of a wall at node center p with
-// the curve's derivative d there. A ray meets the wall of a tube that turns
-// toward the eye obliquely: the depth error of the chords (about 1.9 / L^2
-// radii across the tube) grows by 1 / sin(theta), theta the angle between
-// the tangent and the ray, so L grows as 1 / sqrt(sin(theta)) from 3 (at
-// most 8, for tubes seen nearly end-on).
+// the curve's derivative d there (more where the tube turns toward the eye:
+// svThinWallLeast).
 float tubeWallRingLevel(vec4 p, vec3 d)
 {
-  float sine = length(cross(normalize(d), normalize(tubeToEye(p.xyz))));
-  return tubeRingLevel(p, 0.5, ceil(2.9 / sqrt(max(sine, 0.34))));
-}
-
-// Chords of a curve piece with sagitta `sagitta` (view units) needed to keep
-// each within tubeSagitta pixels on screen (at clip w `w`) and within
-// tubeDepthSagitta of the radius `radius` in space (the sagitta shrinks with
-// the square of the number of chords).
-float tubeSagittaLevel(float sagitta, float w, float radius)
-{
-  float bound = min(tubeSagitta * max(w, 0.0) / tubePixelScale(), tubeDepthSagitta * radius);
-  return bound > 0.0 ? ceil(sqrt(sagitta / bound)) : 64.0;
+  return tubeRingLevel(p, 0.5, svThinWallLeast(d, tubeToEye(p.xyz)));
 }
 
 float tubeScreenLength(vec3 a, vec3 b)
@@ -223,19 +193,6 @@ float tubeScreenLength(vec3 a, vec3 b)
   }
   vec2 halfViewport = 0.5 * tubeViewport;
   return length(ca.xy / ca.w * halfViewport - cb.xy / cb.w * halfViewport);
-}
-
-// Curvature of a node chain at a node: the turning angle between the chord
-// `previous` (length previousLength) and the next chord d (length len) over
-// their mean length; 0 where a chord is degenerate.
-float tubeChainCurvature(vec3 d, float len, vec3 previous, float previousLength)
-{
-  if (len <= 0.0 || previousLength <= 0.0)
-  {
-    return 0.0;
-  }
-  float turn = acos(clamp(dot(d, previous) / (len * previousLength), -1.0, 1.0));
-  return turn / (0.5 * (len + previousLength));
 }
 
 // Level along a run of `count` segments from node `first` (see above).
@@ -266,22 +223,22 @@ float tubeRunLevel(int first, int count)
       vec2 d = p - previous;
       float len = length(d);
       total += len;
-      float curvature = k > 1 ? tubeChainCurvature(vec3(d, 0.0), len, vec3(direction, 0.0),
+      float curvature = k > 1 ? svThinChainCurvature(vec3(d, 0.0), len, vec3(direction, 0.0),
                                   previousLength) : 0.0;
       if (curvature > 0.0)
       {
-        shortest = min(shortest, sqrt(8.0 * tubeSagitta / curvature));
+        shortest = min(shortest, sqrt(8.0 * svThinSagittaPixels / curvature));
       }
       direction = d;
       previousLength = len;
       vec3 d3 = node.xyz - previous3;
       float len3 = length(d3);
       total3 += len3;
-      float curvature3 = k > 1 ? tubeChainCurvature(d3, len3, direction3, previousLength3) : 0.0;
+      float curvature3 = k > 1 ? svThinChainCurvature(d3, len3, direction3, previousLength3) : 0.0;
       if (curvature3 > 0.0)
       {
         shortest3 =
-          min(shortest3, sqrt(8.0 * tubeRunStraddle * tubeDepthSagitta * node.w / curvature3));
+          min(shortest3, sqrt(8.0 * svThinRunStraddle * svThinDepthSagitta * node.w / curvature3));
       }
       direction3 = d3;
       previousLength3 = len3;
@@ -289,7 +246,7 @@ float tubeRunLevel(int first, int count)
     previous = p;
     previous3 = node.xyz;
   }
-  float edge = tubeThinEdgeFactor * tubeMaxEdgeLength;
+  float edge = svThinEdgeFactor * tubeMaxEdgeLength;
   return clamp(ceil(max(max(total / edge, total / shortest), total3 / shortest3)), 1.0, 64.0);
 }
 
@@ -356,8 +313,8 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
       float sagitta = length(seg.m0.xyz - seg.m1.xyz) * 0.125 * (tD - tA) * (tD - tA);
       vec4 middle = svHermite(seg.p0, seg.m0, seg.p1, seg.m1, 0.5 * (tA + tD));
       float w = (VCDCMatrix * vec4(middle.xyz, 1.0)).w;
-      along = clamp(max(min(screen / (tubeThinEdgeFactor * tubeMaxEdgeLength), tubeMaxLevel),
-                      tubeSagittaLevel(sagitta, w, min(min(pA.w, pD.w), middle.w))),
+      along = clamp(max(min(screen / (svThinEdgeFactor * tubeMaxEdgeLength), tubeMaxLevel),
+                      svThinSagittaLevel(sagitta, w, min(min(pA.w, pD.w), middle.w), tubePixelScale())),
         1.0, 64.0);
     }
     gl_TessLevelOuter[0] = along;

@@ -10,7 +10,8 @@
 // the vertex shading itself (see vtkTessellatedTubeMapper.h). The levels the
 // control stage would compute per view (rings along the run, intervals per
 // ring) come from the mapper's per-view classification on the CPU (the same
-// bounds: vtkTessellatedTubeMapper::ThinChunkLevels), which bins the runs by
+// bounds through the same functions: ThinChunkLevels in
+// vtkTessellatedTubeMapper.cxx), which bins the runs by
 // them: one instanced draw per (rings, intervals) of an indexed triangle
 // mesh, no vertex attributes.
 //

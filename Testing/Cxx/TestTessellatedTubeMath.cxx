@@ -15,7 +15,11 @@
 //    normal: the test checks that it would fail);
 //  - the analytic surface tangent used for the tessellation levels gives the
 //    exact normal (o' has no component along T other than -(o . T') T for any
-//    frame, and the twist part is orthogonal to the projected offset).
+//    frame, and the twist part is orthogonal to the projected offset);
+//  - the levels of thin tubes: the chord count of svThinSagittaLevel is the
+//    fewest that keeps the bound, svThinChainCurvature reproduces a circle's,
+//    svThinWallLeast grows from 3 to 5 as the tube turns toward the eye, and
+//    svThinRingLevel rounds the arc up within its limits.
 #include "vtkSplineTubeCore.h"
 #include "vtkSplineTubeMath.h"
 
@@ -23,6 +27,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
+#include "vtkMath.h"
 #include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -295,5 +300,53 @@ int TestTessellatedTubeMath(int, char*[])
   SV_CHECK_MSG(status, worstOffsetAsNormal > 0.1, "offset vs normal " << worstOffsetAsNormal);
   SV_CHECK_MSG(status, worstPlanarTangent < 1e-4, "planar level normal " << worstPlanarTangent);
   SV_CHECK_MSG(status, worstSpaceTangent < 1e-4, "space-curve level normal " << worstSpaceTangent);
+
+  // The levels of thin tubes (shared by the control stage and the CPU
+  // classification of the thin-tube draws).
+  // - svThinSagittaLevel: the fewest chords n whose sagitta s / n^2 is within
+  //   the bound (half a pixel on screen, a tenth of the radius in space).
+  for (int i = 0; i < 200; ++i)
+  {
+    const double sagitta = uniform(1e-4, 10.0);
+    const double w = uniform(0.5, 50.0);
+    const double radius = uniform(1e-3, 1.0);
+    const double pixelScale = uniform(100.0, 2000.0);
+    const double bound = std::min(0.5 * w / pixelScale, 0.1 * radius);
+    const double n = sm::svThinSagittaLevel(sagitta, w, radius, pixelScale);
+    SV_CHECK(status, n >= 1.0 && n == std::floor(n));
+    SV_CHECK(status, sagitta / (n * n) <= bound * (1.0 + 1e-12));
+    SV_CHECK(status, n == 1.0 || sagitta / ((n - 1.0) * (n - 1.0)) > bound);
+  }
+  // - svThinChainCurvature: nodes on a circle of radius rho, equal angular
+  //   steps theta: theta over the chord 2 rho sin(theta / 2).
+  for (double theta : { 0.01, 0.1, 0.5 })
+  {
+    const double rho = 3.0;
+    const vec3 a(rho, 0.0, 0.0);
+    const vec3 b(rho * std::cos(theta), rho * std::sin(theta), 0.0);
+    const vec3 c(rho * std::cos(2.0 * theta), rho * std::sin(2.0 * theta), 0.0);
+    const double k = sm::svThinChainCurvature(c - b, glm::length(c - b), b - a, glm::length(b - a));
+    SV_CHECK_NEAR(status, k, theta / (2.0 * rho * std::sin(0.5 * theta)), 1e-9);
+  }
+  SV_CHECK(status, sm::svThinChainCurvature(vec3(1.0, 0.0, 0.0), 1.0, vec3(0.0), 0.0) == 0.0);
+  // - svThinWallLeast: 3 intervals across the view, 5 seen end-on, never
+  //   fewer as the tube turns toward the eye.
+  SV_CHECK(status, sm::svThinWallLeast(vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0)) == 3.0);
+  SV_CHECK(status, sm::svThinWallLeast(vec3(0.0, 0.0, 2.0), vec3(0.0, 0.0, 1.0)) == 5.0);
+  double previousLeast = 0.0;
+  for (int i = 0; i <= 90; ++i)
+  {
+    const double angle = vtkMath::RadiansFromDegrees(90.0 - i); // tangent to ray: 90 .. 0 degrees
+    const double least =
+      sm::svThinWallLeast(vec3(std::sin(angle), 0.0, std::cos(angle)), vec3(0.0, 0.0, 1.0));
+    SV_CHECK(status, least >= previousLeast && least >= 3.0 && least <= 5.0);
+    previousLeast = least;
+  }
+  // - svThinRingLevel: the arc (turn of the circumference, in pixels) over
+  //   the side length, rounded up, within [least, 64]; 64 behind the eye.
+  SV_CHECK(status, sm::svThinRingLevel(0.01, 2.0, 1000.0, 2.0, 0.5, 3.0) == 8.0); // 15.7 px
+  SV_CHECK(status, sm::svThinRingLevel(0.001, 2.0, 1000.0, 2.0, 0.5, 3.0) == 3.0);
+  SV_CHECK(status, sm::svThinRingLevel(1.0, 2.0, 1000.0, 2.0, 0.5, 3.0) == 64.0);
+  SV_CHECK(status, sm::svThinRingLevel(0.01, -1.0, 1000.0, 2.0, 0.5, 3.0) == 64.0);
   return status.Result();
 }
