@@ -171,17 +171,17 @@ void ThinChunkLevels(const ThinView& v, const float* P, const float* M, const fl
     {
       screen = std::hypot(pa[0] - pb[0], pa[1] - pb[1]);
     }
-    double dm[3];
-    double middle[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      dm[k] = a.D[k] - b.D[k];
-      middle[k] = 0.5 * (a.P[k] + b.P[k]) + 0.125 * dm[k];
-    }
-    const double sagitta = 0.125 * vtkMath::Norm(dm);
+    // The segment's middle (svHermite at t = 1/2, position and radius).
+    using vtkSplineTubeMath::vec4;
+    const vec4 p0(a.P[0], a.P[1], a.P[2], a.R);
+    const vec4 m0(a.D[0], a.D[1], a.D[2], a.DR);
+    const vec4 p1(b.P[0], b.P[1], b.P[2], b.R);
+    const vec4 m1(b.D[0], b.D[1], b.D[2], b.DR);
+    const vec4 middle = vtkSplineTubeMath::svHermite(p0, m0, p1, m1, 0.5);
+    const double sagitta = 0.125 * glm::length(vec3(m0) - vec3(m1));
     const double w =
-      v.Proj[3][0] * middle[0] + v.Proj[3][1] * middle[1] + v.Proj[3][2] * middle[2] + v.Proj[3][3];
-    const double radius = std::min({ a.R, b.R, 0.5 * (a.R + b.R) + 0.125 * (a.DR - b.DR) });
+      v.Proj[3][0] * middle.x + v.Proj[3][1] * middle.y + v.Proj[3][2] * middle.z + v.Proj[3][3];
+    const double radius = std::min({ a.R, b.R, middle.w });
     const double sagittaLevel =
       vtkSplineTubeMath::svThinSagittaLevel(sagitta, w, radius, v.PixelScale);
     along =
