@@ -136,6 +136,14 @@ inline double CPUTime()
     1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
+/// Minor page faults of the process so far (memory the kernel had to map in).
+inline long MinorFaults()
+{
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_minflt;
+}
+
 /// What vtkOpenGLPolyDataMapper uploads for a polygonal data set: float
 /// positions and normals, RGBA colors when scalars are colored, 3 indices
 /// per triangle of the strips and polygons.

@@ -30,8 +30,10 @@
 //   SplineVizTubeBenchmark [--data fibers|fibers2|million|long] [--size WxH]
 //       [--frames N] [--renderers raycast,tubefilter,linesastubes]
 //       [--distance far|close] [--seconds S] [--samples N] [--snapshots DIR]
+//       [--trace 1]
 // Several --data/--size values may be given (comma separated). --snapshots
-// writes each renderer's first frame to DIR/<data>-<size>-<renderer>.png.
+// writes each renderer's first frame to DIR/<data>-<size>-<renderer>.png;
+// --trace 1 prints each frame's time, CPU time and minor page faults.
 #include "BenchmarkCommon.h"
 #include "vtkRayCastTubeMapper.h"
 #include "vtkSplineTubeCore.h"
@@ -81,6 +83,7 @@ struct Built
 {
   vtkSmartPointer<vtkActor> Actor;
   std::function<double()> GPUBytes;
+  std::function<std::string()> Summary; // what the renderer drew, if it can say
 };
 
 using Factory = std::function<Built(vtkPolyData*)>;
@@ -135,6 +138,7 @@ std::map<std::string, Factory> Renderers()
       b.Actor = vtkSmartPointer<vtkActor>::New();
       b.Actor->SetMapper(mapper);
       b.GPUBytes = [mapper]() { return static_cast<double>(mapper->GetGPUMemorySize()); };
+      b.Summary = [mapper]() { return mapper->GetLevelOfDetailSummary(); };
       return b;
     };
   };
@@ -197,7 +201,7 @@ struct Result
 };
 
 Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderWindow* window,
-  int frames, double maxSeconds, bool close, const std::string& snapshot)
+  int frames, double maxSeconds, bool close, const std::string& snapshot, bool trace)
 {
   const vtkIdType segments = data->GetNumberOfPoints() - data->GetNumberOfLines();
   vtkNew<vtkRenderer> renderer;
@@ -225,6 +229,10 @@ Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderW
   window->WaitForCompletion();
   r.FirstFrame = Now() - start;
   r.BytesPerSegment = built.GPUBytes() / static_cast<double>(segments);
+  if (trace && built.Summary)
+  {
+    std::printf("    first frame drew %s\n", built.Summary().c_str());
+  }
   if (!snapshot.empty())
   {
     vtkNew<vtkWindowToImageFilter> grab;
@@ -245,10 +253,16 @@ Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderW
     camera->SetClippingRange(nearPlane, farPlane);
     const double t0 = Now();
     const double c0 = CPUTime();
+    const long f0 = splineviz_benchmark::MinorFaults();
     window->Render();
     window->WaitForCompletion();
     times.push_back(Now() - t0);
     cpuTimes.push_back(CPUTime() - c0);
+    if (trace)
+    {
+      std::printf("    frame %3d: %7.1f ms, CPU %7.1f ms, %6ld minor page faults\n", i,
+        1000.0 * times.back(), 1000.0 * cpuTimes.back(), splineviz_benchmark::MinorFaults() - f0);
+    }
     if (Now() - orbitStart > maxSeconds && times.size() >= 5)
     {
       break;
@@ -271,6 +285,7 @@ const char* const Usage =
   "Usage: SplineVizTubeBenchmark [--data fibers|fibers2|million|long] [--size WxH]\n"
   "    [--frames N] [--renderers raycast,tubefilter,linesastubes,tessellated,...]\n"
   "    [--distance far|close] [--seconds S] [--samples N] [--snapshots DIR]\n"
+  "    [--trace 1] (each frame's time, CPU time and minor page faults)\n"
   "Several --data/--size/--renderers values may be given, comma separated.\n"
   "Defaults: --data fibers2 --size 800x600,1200x768 --frames 60 --seconds 30.\n";
 
@@ -294,6 +309,7 @@ int main(int argc, char* argv[])
   bool close = false;
   int samples = 0;
   std::string snapshots;
+  bool trace = false;
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string key = argv[i], value = argv[i + 1];
@@ -309,6 +325,8 @@ int main(int argc, char* argv[])
       seconds = std::atof(value.c_str());
     else if (key == "--distance")
       close = (value == "close");
+    else if (key == "--trace")
+      trace = value != "0";
     else if (key == "--samples")
       samples = std::max(0, std::atoi(value.c_str()));
     else if (key == "--snapshots")
@@ -380,7 +398,7 @@ int main(int argc, char* argv[])
         const std::string snapshot =
           snapshots.empty() ? "" : snapshots + "/" + dataset + "-" + size + "-" + name + ".png";
         const Result r =
-          Run(factories.at(name), data, boxSize, window, frames, seconds, close, snapshot);
+          Run(factories.at(name), data, boxSize, window, frames, seconds, close, snapshot, trace);
         results[name] = r;
         std::printf("  %-28s %14.3f %16.1f %10.1f %10.1f %14.1f %8d\n", name.c_str(), r.FirstFrame,
           1000.0 * r.MedianFrame, 1000.0 * r.MedianFrameCPU, 1000.0 * r.BestFrameCPU,

@@ -133,6 +133,21 @@ double ThinRingLevel(const ThinView& v, const ViewNode& n)
   return vtkSplineTubeMath::svThinRingLevel(n.R, n.Clip[3], v.PixelScale, v.SideLength, 0.5, least);
 }
 
+/// Whether the cap of `kind` (1: start, 2: end) at a node is turned to the
+/// eye, within a radius (the control stage's test for caps).
+bool ThinCapVisible(const ThinView& v, const ViewNode& n, int kind)
+{
+  const double length = std::sqrt(n.D[0] * n.D[0] + n.D[1] * n.D[1] + n.D[2] * n.D[2]);
+  if (length <= 0.0)
+  {
+    return true;
+  }
+  const double sign = kind == 1 ? -1.0 / length : 1.0 / length;
+  const double facing =
+    v.Parallel ? sign * n.D[2] : -sign * (n.D[0] * n.P[0] + n.D[1] * n.P[1] + n.D[2] * n.P[2]);
+  return facing >= -n.R;
+}
+
 /// Pixel position of a node (false behind the eye).
 bool ThinScreen(const ThinView& v, const ViewNode& n, double p[2])
 {
@@ -289,6 +304,10 @@ struct vtkTessellatedTubeMapper::vtkInternals
   static constexpr int ThinMinSides = 3;             // intervals per half ring of thin draws
   static constexpr int ThinMaxSides = 8;
   static constexpr int ThinMirrorRing = 65; // vertex rings numbered from the run's end
+  // Vertices of a thin run's cap polygon: the control stage's cap level
+  // (svThinRingLevel of a whole turn, at least 8) is 8 wherever a tube's
+  // rings are single patches (at most SinglePatchSides edges around).
+  static constexpr int ThinCapSides = 8;
 
   std::vector<vtkIdType> TubeFirstSegment;  // tubes + 1
   std::vector<vtkIdType> TubeFirstChunk;    // tubes + 1
@@ -311,6 +330,7 @@ struct vtkTessellatedTubeMapper::vtkInternals
   // stage would choose, rounded up to this ladder) and intervals per ring.
   std::vector<int> ThinLadder;
   std::map<int, MeshRange> ThinMeshes; // intervals + 1 (the vertices per ring): 64 rows
+  MeshRange ThinCapMesh;               // a fan of ThinCapSides vertices
   size_t MeshIndices = 0;
   int MeshBaseRings = 0;
   int MeshBaseSides = 0;
@@ -327,6 +347,7 @@ struct vtkTessellatedTubeMapper::vtkInternals
   };
   std::vector<unsigned char> ChunkRingBin;
   std::vector<vtkTypeUInt32> ChunkThinLevels; // thin draws: n | L0 << 8 | L1 << 16 | L << 24
+  std::vector<unsigned char> ThinCaps; // per segment of thin runs: its caps turned to the eye
   std::vector<unsigned char> TubeSideBin;
   std::vector<vtkTypeUInt32> Instances;
   std::vector<Draw> Draws;
@@ -726,6 +747,13 @@ bool vtkTessellatedTubeMapper::BuildBaseMeshes()
     range.Count = indices.size() - range.Offset;
     in.ThinMeshes[L + 1] = range;
   }
+  // Thin caps: the polygon as a fan from its vertex 0.
+  in.ThinCapMesh.Offset = indices.size();
+  for (unsigned int j = 1; j + 1 < static_cast<unsigned int>(vtkInternals::ThinCapSides); ++j)
+  {
+    indices.insert(indices.end(), { 0u, j, j + 1 });
+  }
+  in.ThinCapMesh.Count = indices.size() - in.ThinCapMesh.Offset;
   if (!this->BaseMeshes)
   {
     this->BaseMeshes = vtkSmartPointer<vtkOpenGLBufferObject>::New();
@@ -834,6 +862,8 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
     const float* nodeM = core->GetNodeTangents()->GetPointer(0);
     const float* nodeR = core->GetNodeRadii()->GetPointer(0);
     const vtkTypeUInt32* firstNodes = core->GetSegmentFirstNodes()->GetPointer(0);
+    const unsigned char* segmentFlags = core->GetSegmentFlags()->GetPointer(0);
+    in.ThinCaps.resize(static_cast<size_t>(core->GetNumberOfSegments()));
     const std::vector<int>& ladder = in.ThinLadder;
     vtkSMPTools::For(0, numTubes,
       [&](vtkIdType begin, vtkIdType end)
@@ -942,6 +972,22 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
                   in.ChunkRingBin[c] = vtkInternals::ThinChunk;
                   in.ChunkThinLevels[c] = static_cast<vtkTypeUInt32>(rung) | (L0 << 8) |
                     (L1 << 16) | (std::max(L0, L1) << 24);
+                  for (vtkIdType s = in.ChunkFirstSegment[c];
+                       this->Capping && s < in.ChunkFirstSegment[c + 1]; ++s)
+                  {
+                    unsigned char visible = 0;
+                    for (int kind = 1; kind <= 2; ++kind)
+                    {
+                      if ((segmentFlags[s] & kind) != 0 &&
+                        ThinCapVisible(thin,
+                          ToView(thin, nodeP, nodeM, nodeR, firstNodes[s] + (kind == 2 ? 1 : 0)),
+                          kind))
+                      {
+                        visible |= static_cast<unsigned char>(kind);
+                      }
+                    }
+                    in.ThinCaps[s] = visible;
+                  }
                   continue;
                 }
               }
@@ -961,12 +1007,13 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   const int thinBase = chunkBin + 1;
   const int thinSides = vtkInternals::ThinMaxSides - vtkInternals::ThinMinSides + 1;
   const int thinBins = static_cast<int>(in.ThinLadder.size()) * thinSides;
+  const int thinCapBin = thinBase + thinBins; // (segment, kind) pairs
   auto thinBin = [&](vtkTypeUInt32 levels)
   {
     return thinBase + static_cast<int>(levels & 0xFFu) * thinSides +
       static_cast<int>(levels >> 24) - vtkInternals::ThinMinSides;
   };
-  std::vector<vtkIdType> counts(static_cast<size_t>(thinBase + thinBins), 0);
+  std::vector<vtkIdType> counts(static_cast<size_t>(thinCapBin + 1), 0);
   in.CulledSegments = 0;
   const unsigned char* flags = core->GetSegmentFlags()->GetPointer(0);
   for (vtkIdType t = 0; t < numTubes; ++t)
@@ -992,7 +1039,17 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
       {
         counts[in.ChunkRingBin[c] * sideBins + sideBin] += n;
       }
-      if (this->Capping)
+      if (this->Capping && in.ChunkRingBin[c] == vtkInternals::ThinChunk)
+      {
+        for (vtkIdType s = in.ChunkFirstSegment[c]; s < in.ChunkFirstSegment[c + 1]; ++s)
+        {
+          if (flags[s] != 0)
+          {
+            counts[thinCapBin] += 2 * ((in.ThinCaps[s] & 1) + (in.ThinCaps[s] >> 1));
+          }
+        }
+      }
+      else if (this->Capping)
       {
         for (vtkIdType s = in.ChunkFirstSegment[c]; s < in.ChunkFirstSegment[c + 1]; ++s)
         {
@@ -1046,7 +1103,18 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
         {
           in.Instances[wall++] = static_cast<vtkTypeUInt32>(s);
         }
-        if (this->Capping && flags[s] != 0)
+        if (this->Capping && flags[s] != 0 && thinChunk)
+        {
+          for (vtkTypeUInt32 kind = 1; kind <= 2; ++kind)
+          {
+            if ((in.ThinCaps[s] & kind) != 0)
+            {
+              in.Instances[cursor[thinCapBin]++] = static_cast<vtkTypeUInt32>(s);
+              in.Instances[cursor[thinCapBin]++] = kind;
+            }
+          }
+        }
+        else if (this->Capping && flags[s] != 0)
         {
           in.Instances[cursor[bins + sideBin]++] = static_cast<vtkTypeUInt32>(s);
         }
@@ -1084,6 +1152,18 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
     draw.Sides = (b - thinBase) % thinSides + vtkInternals::ThinMinSides + 1;
     draw.Offset = offsets[b];
     draw.Count = counts[b] / 2;
+    in.Draws.push_back(draw);
+  }
+  if (counts[thinCapBin] > 0)
+  {
+    vtkInternals::Draw draw;
+    draw.Thin = true;
+    draw.Caps = true;
+    draw.Chunks = false;
+    draw.Rings = 1;
+    draw.Sides = vtkInternals::ThinCapSides;
+    draw.Offset = offsets[thinCapBin];
+    draw.Count = counts[thinCapBin] / 2;
     in.Draws.push_back(draw);
   }
   auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
@@ -1514,11 +1594,24 @@ void vtkTessellatedTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
       {
         continue;
       }
+      program->SetUniformi("tubeListOffset", static_cast<int>(draw.Offset));
+      program->SetUniformi("tubeCapDraw", draw.Caps ? 1 : 0);
+      if (draw.Caps)
+      {
+        // (the start caps are wound the other way: no culling, as for the
+        // caps' patches)
+        state->vtkglDisable(GL_CULL_FACE);
+        glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(in.ThinCapMesh.Count),
+          GL_UNSIGNED_INT,
+          reinterpret_cast<const void*>(in.ThinCapMesh.Offset * sizeof(unsigned int)),
+          static_cast<GLsizei>(draw.Count));
+        state->vtkglEnable(GL_CULL_FACE);
+        continue;
+      }
       const vtkInternals::MeshRange& mesh = in.ThinMeshes[draw.Sides];
       const size_t rows = static_cast<size_t>(draw.Rings - 1);
       program->SetUniformi("tubeRings", draw.Rings);
       program->SetUniformi("tubeSides", draw.Sides);
-      program->SetUniformi("tubeListOffset", static_cast<int>(draw.Offset));
       glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(6 * rows * (draw.Sides - 1)),
         GL_UNSIGNED_INT, reinterpret_cast<const void*>(mesh.Offset * sizeof(unsigned int)),
         static_cast<GLsizei>(draw.Count));

@@ -26,6 +26,16 @@
 // L1). The end rings take their own intervals (vertex j moves to the
 // nearest vertex of the L0 or L1 sampling, some triangles degenerate) so that
 // neighbouring runs, which share them, meet without cracks.
+//
+// tubeCapDraw != 0: the caps of thin runs instead (without the tessellator as
+// well: llvmpipe's evaluation stage grows its output buffer patch by patch,
+// and the heap it grows is trimmed and mapped in again frame after frame).
+// Instance gl_InstanceID is the cap at entry 2 x (tubeListOffset +
+// gl_InstanceID): (segment, kind), kind 1 the start and 2 the end cap, listed
+// only when turned to the eye (as the control stage culls them). The cap is
+// the disk's inscribed polygon of tubeCapSides vertices (a fan from vertex
+// 0), the control stage's level for caps of thin tubes, two of them the
+// silhouette points where the wall's half rings end.
 
 uniform usamplerBuffer tubeInstances;
 uniform int tubeListOffset;
@@ -33,6 +43,8 @@ uniform int tubeRings; // n + 1
 uniform int tubeSides; // L + 1
 uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
+uniform int tubeCapDraw;
+const int tubeCapSides = 8; // vtkTessellatedTubeMapper's ThinCapSides
 const int tubeMirrorRing = 65; // vtkTessellatedTubeMapper's ThinMirrorRing
 
 out vec4 vertexVCVSOutput;       // position, view coordinates
@@ -45,8 +57,50 @@ out vec4 tubeColorVSOutput;
 
 //VTK::TessellatedTubeCommon::Dec
 
+// Vertex gl_VertexID of a thin tube's cap (see above): on the circle of the
+// cap's node, counter-clockwise around the curve's direction (the start caps
+// are thus wound clockwise seen from outside, as the evaluation stage's),
+// half of them on the arc between the silhouette points that faces the eye
+// and half on the other.
+void tubeThinCap()
+{
+  int entry = tubeListOffset + 2 * gl_InstanceID;
+  int segment = int(texelFetch(tubeInstances, entry).x);
+  int kind = int(texelFetch(tubeInstances, entry + 1).x);
+  uvec2 sd = texelFetch(tubeSegments, segment).xy;
+  int first = int(sd.x & 0x3FFFFFFFu);
+  int node = kind == 1 ? first : first + 1;
+  vec4 c = tubeNodePosition(node);
+  vec3 tangent = normalize(tubeNodeDerivative(node).xyz);
+  vec3 toEye = cameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : -c.xyz;
+  vec3 across = toEye - dot(toEye, tangent) * tangent;
+  float distance = length(across);
+  vec3 front = distance > 1e-6 * length(toEye) ? across / distance : tubeNodeFrame(node);
+  float halfSpan = cameraParallel != 0 || distance <= 0.0
+    ? 1.5707963267948966
+    : acos(clamp(c.w / distance, 0.0, 1.0));
+  int halfSides = tubeCapSides / 2;
+  int j = gl_VertexID;
+  float phi = j <= halfSides
+    ? -halfSpan + 2.0 * halfSpan * float(j) / float(halfSides)
+    : halfSpan + (6.283185307179586 - 2.0 * halfSpan) * float(j - halfSides) / float(halfSides);
+  vec3 position = c.xyz + c.w * svTubeOffset(front, tangent, phi);
+
+  vertexVCVSOutput = vec4(position, 1.0);
+  tubeNormalVCVSOutput = kind == 1 ? -tangent : tangent;
+  tubeTVSOutput = kind == 1 ? 0.0 : 1.0;
+  tubeInfoVSOutput = ivec4(first, segment, int(sd.y), (kind << 2) | (1 << 4));
+  tubeColorVSOutput = tubeColorAt(first, kind == 1 ? 0.0 : 1.0);
+  gl_Position = VCDCMatrix * vec4(position, 1.0);
+}
+
 void main()
 {
+  if (tubeCapDraw != 0)
+  {
+    tubeThinCap();
+    return;
+  }
   int entry = tubeListOffset + 2 * gl_InstanceID;
   int segment = int(texelFetch(tubeInstances, entry).x);
   uint levels = texelFetch(tubeInstances, entry + 1).x;
