@@ -1,5 +1,6 @@
 #include "vtkSplineTubeMapper.h"
 
+#include "vtkSplineTubeColor.h"
 #include "vtkSplineTubeCore.h"
 #include "vtkSplineVizGPUBuffer.h"
 
@@ -44,7 +45,6 @@ vtkSplineTubeMapper::vtkSplineTubeMapper()
   , SegmentsBuffer(new vtkSplineVizGPUBuffer)
   , TubesBuffer(new vtkSplineVizGPUBuffer)
   , ColorsBuffer(new vtkSplineVizGPUBuffer)
-  , ColorDerivativesBuffer(new vtkSplineVizGPUBuffer)
 {
   // The tube data is built per data change; the VBO shift/scale machinery of
   // the superclass does not apply (we shift positions ourselves).
@@ -306,7 +306,6 @@ void vtkSplineTubeMapper::ReleaseGraphicsResources(vtkWindow* window)
   this->SegmentsBuffer->ReleaseGraphicsResources(window);
   this->TubesBuffer->ReleaseGraphicsResources(window);
   this->ColorsBuffer->ReleaseGraphicsResources(window);
-  this->ColorDerivativesBuffer->ReleaseGraphicsResources(window);
   this->UploadTime = vtkTimeStamp();
   this->Modified();
 }
@@ -369,36 +368,39 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
     ok;
   ok = this->TubesBuffer->Upload(window, tubes.data(), numTubes, 2, VTK_TYPE_INT32, GL_RG32I) && ok;
 
-  // Colors (RGBA8) and their derivatives (signed, scaled by 127, clamped to
-  // [-1, 1]: a full color change per segment), only with scalar coloring.
+  // Colors (RGBA8) and their derivatives (signed bytes, scaled by 127,
+  // clamped to [-1, 1]: a full color change per segment), one RG32UI texel
+  // per node (vtkSplineTubeColor.glsl), only with scalar coloring.
   if (this->HaveColors)
   {
-    std::vector<unsigned char> colors(static_cast<size_t>(4 * numNodes));
-    std::vector<signed char> derivatives(static_cast<size_t>(4 * numNodes));
+    std::vector<vtkTypeUInt32> colors(static_cast<size_t>(2 * numNodes));
     const float* C = core->GetNodeColors()->GetPointer(0);
     const float* D = core->GetNodeColorDerivatives()->GetPointer(0);
-    vtkSMPTools::For(0, 4 * numNodes,
+    vtkSMPTools::For(0, numNodes,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
         {
-          colors[i] =
-            static_cast<unsigned char>(std::lround(255.0f * std::min(1.0f, std::max(0.0f, C[i]))));
-          derivatives[i] =
-            static_cast<signed char>(std::lround(127.0f * std::min(1.0f, std::max(-1.0f, D[i]))));
+          vtkTypeUInt32 color = 0;
+          vtkTypeUInt32 derivative = 0;
+          for (int c = 0; c < 4; ++c)
+          {
+            const long byte = std::lround(255.0f * std::min(1.0f, std::max(0.0f, C[4 * i + c])));
+            const long slope = std::lround(127.0f * std::min(1.0f, std::max(-1.0f, D[4 * i + c])));
+            color |= static_cast<vtkTypeUInt32>(byte) << (8 * c);
+            derivative |= (static_cast<vtkTypeUInt32>(slope) & 0xFFu) << (8 * c);
+          }
+          colors[2 * i] = color;
+          colors[2 * i + 1] = derivative;
         }
       });
     ok =
-      this->ColorsBuffer->Upload(window, colors.data(), numNodes, 4, VTK_UNSIGNED_CHAR, GL_RGBA8) &&
-      ok;
-    ok = this->ColorDerivativesBuffer->Upload(
-           window, derivatives.data(), numNodes, 4, VTK_SIGNED_CHAR, GL_RGBA8I) &&
+      this->ColorsBuffer->Upload(window, colors.data(), numNodes, 2, VTK_TYPE_UINT32, GL_RG32UI) &&
       ok;
   }
   else
   {
     this->ColorsBuffer->ReleaseGraphicsResources(window);
-    this->ColorDerivativesBuffer->ReleaseGraphicsResources(window);
   }
   if (!ok)
   {
@@ -421,7 +423,6 @@ void vtkSplineTubeMapper::ActivateTubeBuffers(vtkShaderProgram* program)
   if (this->HaveColors)
   {
     this->ColorsBuffer->Activate(program, "tubeColors");
-    this->ColorDerivativesBuffer->Activate(program, "tubeColorDerivatives");
   }
 }
 
@@ -432,22 +433,19 @@ void vtkSplineTubeMapper::DeactivateTubeBuffers()
   this->SegmentsBuffer->Deactivate();
   this->TubesBuffer->Deactivate();
   this->ColorsBuffer->Deactivate();
-  this->ColorDerivativesBuffer->Deactivate();
 }
 
 //------------------------------------------------------------------------------
 size_t vtkSplineTubeMapper::GetTubeBuffersSize()
 {
   return this->NodesBuffer->GetNumberOfBytes() + this->SegmentsBuffer->GetNumberOfBytes() +
-    this->TubesBuffer->GetNumberOfBytes() + this->ColorsBuffer->GetNumberOfBytes() +
-    this->ColorDerivativesBuffer->GetNumberOfBytes();
+    this->TubesBuffer->GetNumberOfBytes() + this->ColorsBuffer->GetNumberOfBytes();
 }
 
 //------------------------------------------------------------------------------
 std::string vtkSplineTubeMapper::GetTubeColorDeclarations()
 {
-  return "uniform samplerBuffer tubeColors;\n"
-         "uniform isamplerBuffer tubeColorDerivatives;\n";
+  return vtkSplineTubeColor;
 }
 
 //------------------------------------------------------------------------------
@@ -455,12 +453,7 @@ std::string vtkSplineTubeMapper::GetTubeColorImplementation(
   const char* nodeExpression, const char* tExpression)
 {
   std::ostringstream s;
-  s << "  int tubeColorNode = " << nodeExpression << ";\n"
-    << "  vec4 tubeColor = clamp(svHermite(texelFetch(tubeColors, tubeColorNode),\n"
-    << "    vec4(texelFetch(tubeColorDerivatives, tubeColorNode)) / 127.0,\n"
-    << "    texelFetch(tubeColors, tubeColorNode + 1),\n"
-    << "    vec4(texelFetch(tubeColorDerivatives, tubeColorNode + 1)) / 127.0, " << tExpression
-    << "), 0.0, 1.0);\n";
+  s << "  vec4 tubeColor = tubeColorSpline(" << nodeExpression << ", " << tExpression << ");\n";
   return s.str();
 }
 

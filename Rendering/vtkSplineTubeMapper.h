@@ -25,8 +25,9 @@
  *   tangent and radius derivative (`tubeNodes`, 2 RGBA32F texels), per segment
  *   its first node, the TUBE_START/TUBE_END flags and its tube (`tubeSegments`,
  *   RG32UI), per tube the cell and block ids for picking (`tubeTubes`, RG32I)
- *   and, with scalar coloring, per node the color (`tubeColors`, RGBA8) and
- *   its derivative (`tubeColorDerivatives`, RGBA8I, scaled by 127);
+ *   and, with scalar coloring, per node the color and its derivative (scaled
+ *   by 127) as bytes in one texel (`tubeColors`, RG32UI; the color spline of
+ *   glsl/vtkSplineTubeColor.glsl);
  * - the fragment-shader code for the color spline and for hardware picking
  *   (cell = polyline, composite index = block).
  *
@@ -149,8 +150,8 @@ protected:
    * The tubes buffer shared by the tube mappers (see the class comment).
    * UploadTubeBuffers() uploads it from the core (positions relative to
    * Shift); ActivateTubeBuffers() binds it to the uniforms tubeNodes,
-   * tubeSegments, tubeTubes, tubeColors and tubeColorDerivatives (those the
-   * program uses); GetTubeBuffersSize() counts its bytes.
+   * tubeSegments, tubeTubes and tubeColors (those the program uses);
+   * GetTubeBuffersSize() counts its bytes.
    */
   bool UploadTubeBuffers(vtkOpenGLRenderWindow* window);
   void ActivateTubeBuffers(vtkShaderProgram* program);
@@ -159,7 +160,9 @@ protected:
   ///@}
 
   /**
-   * Fragment-shader declarations of the color spline (with scalar coloring).
+   * Shader declarations of the color spline (with scalar coloring; needs the
+   * spline-tube math before them): glsl/vtkSplineTubeColor.glsl, its
+   * function `vec4 tubeColorSpline(int node, float t)`.
    */
   static std::string GetTubeColorDeclarations();
 
@@ -297,7 +300,6 @@ protected:
   std::unique_ptr<vtkSplineVizGPUBuffer> SegmentsBuffer;
   std::unique_ptr<vtkSplineVizGPUBuffer> TubesBuffer;
   std::unique_ptr<vtkSplineVizGPUBuffer> ColorsBuffer;
-  std::unique_ptr<vtkSplineVizGPUBuffer> ColorDerivativesBuffer;
 
 private:
   vtkSplineTubeMapper(const vtkSplineTubeMapper&) = delete;

@@ -31,6 +31,7 @@
 
 #include "vtkSplineTubeMathPrelude.h"
 #include "vtkSplineTubeMathShared.h"
+#include "vtkSplineTubeColor.h"
 #include "vtkTessellatedTubeCommon.h"
 #include "vtkTessellatedTubeFS.h"
 #include "vtkTessellatedTubeTCS.h"
@@ -56,6 +57,14 @@ namespace
 std::string TubeMathSource()
 {
   return std::string(vtkSplineTubeMathPrelude) + vtkSplineTubeMathShared;
+}
+
+/// What the vertex and tessellation stages share, with the color spline.
+std::string CommonSource()
+{
+  std::string common = vtkTessellatedTubeCommon;
+  vtkShaderProgram::Substitute(common, "//VTK::SplineTubeColor::Dec", vtkSplineTubeColor);
+  return common;
 }
 
 /// The source with line numbers, for error messages.
@@ -1197,8 +1206,7 @@ std::string vtkTessellatedTubeMapper::GetTessellationControlShaderSource()
 {
   std::string source = vtkTessellatedTubeTCS;
   vtkShaderProgram::Substitute(source, "//VTK::SplineTubeMath::Dec", TubeMathSource());
-  vtkShaderProgram::Substitute(
-    source, "//VTK::TessellatedTubeCommon::Dec", vtkTessellatedTubeCommon);
+  vtkShaderProgram::Substitute(source, "//VTK::TessellatedTubeCommon::Dec", CommonSource());
   return source;
 }
 
@@ -1207,8 +1215,7 @@ std::string vtkTessellatedTubeMapper::GetTessellationEvaluationShaderSource()
 {
   std::string source = vtkTessellatedTubeTES;
   vtkShaderProgram::Substitute(source, "//VTK::SplineTubeMath::Dec", TubeMathSource());
-  vtkShaderProgram::Substitute(
-    source, "//VTK::TessellatedTubeCommon::Dec", vtkTessellatedTubeCommon);
+  vtkShaderProgram::Substitute(source, "//VTK::TessellatedTubeCommon::Dec", CommonSource());
   return source;
 }
 
@@ -1374,8 +1381,7 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
   const std::string math = TubeMathSource();
 
   vtkShaderProgram::Substitute(VSSource, "//VTK::SplineTubeMath::Dec", math);
-  vtkShaderProgram::Substitute(
-    VSSource, "//VTK::TessellatedTubeCommon::Dec", vtkTessellatedTubeCommon);
+  vtkShaderProgram::Substitute(VSSource, "//VTK::TessellatedTubeCommon::Dec", CommonSource());
   // VTK's shader cache identifies programs by their vertex, geometry and
   // fragment sources: make the tessellation stages part of the key.
   if (!this->BuildingThinProgram)

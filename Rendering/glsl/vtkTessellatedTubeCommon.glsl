@@ -51,11 +51,11 @@ TubeSegment tubeLoadSegment(int node)
   return s;
 }
 
-// The scalar-color spline (per node RGBA and derivative * 127), evaluated at
-// curve parameter t of the segment from `node`.
+// The scalar-color spline (vtkSplineTubeColor.glsl, inserted here), evaluated
+// at curve parameter t of the segment from `node`; white without scalar
+// coloring.
 uniform int tubeHaveColors;
-uniform samplerBuffer tubeColors;
-uniform isamplerBuffer tubeColorDerivatives;
+//VTK::SplineTubeColor::Dec
 
 vec4 tubeColorAt(int node, float t)
 {
@@ -63,11 +63,7 @@ vec4 tubeColorAt(int node, float t)
   {
     return vec4(1.0);
   }
-  return clamp(svHermite(texelFetch(tubeColors, node),
-                 vec4(texelFetch(tubeColorDerivatives, node)) / 127.0,
-                 texelFetch(tubeColors, node + 1),
-                 vec4(texelFetch(tubeColorDerivatives, node + 1)) / 127.0, t),
-    0.0, 1.0);
+  return tubeColorSpline(node, t);
 }
 
 // A vertex of the view-facing half ring of thin tubes (the single-patch mode
