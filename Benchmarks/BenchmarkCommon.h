@@ -17,6 +17,9 @@
 #include "vtkSmartPointer.h"
 
 #include <sys/resource.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <array>
 #include <chrono>
@@ -134,6 +137,26 @@ inline double CPUTime()
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_utime.tv_sec + usage.ru_stime.tv_sec +
     1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+/// Keep freed heap memory in the process (glibc: trim threshold 256 MB)
+/// instead of glibc's default, which returns the top of the heap to the
+/// system when more than 128 kB is free there, until the process frees its
+/// first large mapped block (the threshold then grows with it). llvmpipe
+/// allocates its bins (the triangles of a scene, tens of megabytes per frame)
+/// in 64 kB blocks and frees them after each scene: with the default, every
+/// frame of whichever renderer runs first in a fresh process maps those
+/// pages in again (thousands of page faults, up to twice the frame time),
+/// and a renderer that runs after a large free does not. Applied before any
+/// renderer runs, so that all run with the same allocator. Returns false
+/// where it is not available.
+inline bool SteadyAllocator()
+{
+#if defined(__GLIBC__)
+  return mallopt(M_TRIM_THRESHOLD, 256 * 1024 * 1024) == 1;
+#else
+  return false;
+#endif
 }
 
 /// Minor page faults of the process so far (memory the kernel had to map in).

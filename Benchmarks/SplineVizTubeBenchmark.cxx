@@ -30,10 +30,13 @@
 //   SplineVizTubeBenchmark [--data fibers|fibers2|million|long] [--size WxH]
 //       [--frames N] [--renderers raycast,tubefilter,linesastubes]
 //       [--distance far|close] [--seconds S] [--samples N] [--snapshots DIR]
-//       [--trace 1]
+//       [--trace 1] [--allocator steady|default]
 // Several --data/--size values may be given (comma separated). --snapshots
 // writes each renderer's first frame to DIR/<data>-<size>-<renderer>.png;
 // --trace 1 prints each frame's time, CPU time and minor page faults.
+// By default freed heap memory stays in the process (SteadyAllocator() of
+// BenchmarkCommon.h): otherwise whichever renderer runs first in a fresh
+// process pays page faults for llvmpipe's bin memory every frame.
 #include "BenchmarkCommon.h"
 #include "vtkRayCastTubeMapper.h"
 #include "vtkSplineTubeCore.h"
@@ -286,6 +289,7 @@ const char* const Usage =
   "    [--frames N] [--renderers raycast,tubefilter,linesastubes,tessellated,...]\n"
   "    [--distance far|close] [--seconds S] [--samples N] [--snapshots DIR]\n"
   "    [--trace 1] (each frame's time, CPU time and minor page faults)\n"
+  "    [--allocator steady|default] (steady: freed heap memory stays in the process)\n"
   "Several --data/--size/--renderers values may be given, comma separated.\n"
   "Defaults: --data fibers2 --size 800x600,1200x768 --frames 60 --seconds 30.\n";
 
@@ -310,6 +314,7 @@ int main(int argc, char* argv[])
   int samples = 0;
   std::string snapshots;
   bool trace = false;
+  bool steadyAllocator = true;
   for (int i = 1; i + 1 < argc; i += 2)
   {
     const std::string key = argv[i], value = argv[i + 1];
@@ -327,6 +332,8 @@ int main(int argc, char* argv[])
       close = (value == "close");
     else if (key == "--trace")
       trace = value != "0";
+    else if (key == "--allocator")
+      steadyAllocator = value != "default";
     else if (key == "--samples")
       samples = std::max(0, std::atoi(value.c_str()));
     else if (key == "--snapshots")
@@ -337,6 +344,11 @@ int main(int argc, char* argv[])
       return 2;
     }
   }
+  // The same allocator for every renderer (see SteadyAllocator()).
+  const bool steady = steadyAllocator && splineviz_benchmark::SteadyAllocator();
+  std::printf("allocator: %s\n",
+    steady ? "steady (freed heap memory stays in the process; --allocator default: glibc's)"
+           : "the C library's default");
   const auto factories = Renderers();
   std::vector<std::string> known;
   for (const auto& factory : factories)
