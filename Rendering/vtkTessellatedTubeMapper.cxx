@@ -1403,13 +1403,16 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
   }
   vtkShaderProgram::Substitute(FSSource, "//VTK::PositionVC::Impl", position);
   // The start caps are wound clockwise (seen from outside): flip their sense
-  // of gl_FrontFacing.
+  // of gl_FrontFacing. The thin draws' vertex stage turns the caps' normals
+  // to the eye itself (their walls show only front faces): one fragment
+  // input less, which llvmpipe sets up and bins for every triangle.
   vtkShaderProgram::Substitute(FSSource, "//VTK::Normal::Impl",
-    "  vec3 normalVCVSOutput = normalize(tubeNormalVCVSOutput);\n"
-    "  if (gl_FrontFacing != (((tubeInfoVSOutput.w >> 2) & 3) != 1))\n"
-    "  {\n"
-    "    normalVCVSOutput = -normalVCVSOutput;\n"
-    "  }\n");
+    this->BuildingThinProgram ? "  vec3 normalVCVSOutput = normalize(tubeNormalVCVSOutput);\n"
+                              : "  vec3 normalVCVSOutput = normalize(tubeNormalVCVSOutput);\n"
+                                "  if (gl_FrontFacing != (((tubeInfoVSOutput.w >> 2) & 3) != 1))\n"
+                                "  {\n"
+                                "    normalVCVSOutput = -normalVCVSOutput;\n"
+                                "  }\n");
 
   // Picking: the cell is the polyline, the composite index its block.
   this->ReplaceShaderTubePicking(FSSource, "tubeInfoVSOutput.z");

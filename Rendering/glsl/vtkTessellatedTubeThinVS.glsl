@@ -87,7 +87,9 @@ void tubeThinCap()
   vec3 position = c.xyz + c.w * svTubeOffset(front, tangent, phi);
 
   vertexVCVSOutput = vec4(position, 1.0);
-  tubeNormalVCVSOutput = kind == 1 ? -tangent : tangent;
+  // (turned to the eye: the thin program's fragment stage does not flip
+  // normals of back faces)
+  tubeNormalVCVSOutput = dot(tangent, toEye) < 0.0 ? -tangent : tangent;
   tubeTVSOutput = kind == 1 ? 0.0 : 1.0;
   tubeInfoVSOutput = ivec4(first, segment, int(sd.y), (kind << 2) | (1 << 4));
   tubeColorVSOutput = tubeColorAt(first, kind == 1 ? 0.0 : 1.0);

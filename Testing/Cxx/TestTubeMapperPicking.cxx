@@ -28,6 +28,7 @@
 
 #include <cmath>
 #include <iostream>
+#include <string>
 #include <vector>
 
 namespace
@@ -87,6 +88,15 @@ void CheckPicks(SplineVizTestStatus& status, vtkRenderWindow* window, vtkSplineT
   renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.3, 0.0);
   renderer->ResetCameraClippingRange();
   window->Render();
+  // The tubes are about 17 pixels wide: tessellated tubes are drawn without
+  // the tessellator (thin draws, their own program), which picking must
+  // reach as well.
+  if (auto* tessellated = vtkTessellatedTubeMapper::SafeDownCast(mapper))
+  {
+    const std::string summary = tessellated->GetLevelOfDetailSummary();
+    std::cout << what << ": " << summary << std::endl;
+    SV_CHECK_MSG(status, summary.find("thin ") != std::string::npos, what << ": no thin draws");
+  }
 
   vtkNew<vtkHardwareSelector> selector;
   selector->SetRenderer(renderer);
