@@ -96,15 +96,19 @@ std::map<std::string, Factory> Renderers()
   std::map<std::string, Factory> r;
   // Ray-cast tubes with and without occlusion culling and the closed-form
   // intersection of straight (sub-)segments.
-  auto raycast = [](bool culling, double straight)
+  auto raycast = [](bool culling, double straight, int subSegments = 0)
   {
-    return [culling, straight](vtkPolyData* data)
+    return [culling, straight, subSegments](vtkPolyData* data)
     {
       auto mapper = vtkSmartPointer<vtkRayCastTubeMapper>::New();
       mapper->SetInputData(data);
       mapper->SetRadiusArray("Radius");
       mapper->SetScalarRange(0.0, 1.0);
       mapper->SetOcclusionCulling(culling);
+      if (subSegments > 0)
+      {
+        mapper->SetSubSegments(subSegments);
+      }
       if (straight >= 0.0)
       {
         mapper->SetStraightTolerance(straight);
@@ -122,6 +126,9 @@ std::map<std::string, Factory> Renderers()
   r["raycast-roots-culling"] = raycast(true, 0.0);
   r["raycast-straight5"] = raycast(false, 0.05);
   r["raycast-straight5-culling"] = raycast(true, 0.05);
+  r["raycast-sub1"] = raycast(false, -1.0, 1);
+  r["raycast-sub3"] = raycast(false, -1.0, 3);
+  r["raycast-sub4"] = raycast(false, -1.0, 4);
   // Tessellated tubes: level of detail on/off, adaptive or levels 1.
   auto tessellated = [](bool lod, bool refine)
   {
