@@ -139,7 +139,8 @@ inline double CPUTime()
     1e-6 * (usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
 }
 
-/// Keep freed heap memory in the process (glibc: trim threshold 256 MB)
+/// Keep freed heap memory in the process (glibc: trim threshold 256 MB,
+/// blocks up to 32 MB from the heap)
 /// instead of glibc's default, which returns the top of the heap to the
 /// system when more than 128 kB is free there, until the process frees its
 /// first large mapped block (the threshold then grows with it). llvmpipe
@@ -153,7 +154,11 @@ inline double CPUTime()
 inline bool SteadyAllocator()
 {
 #if defined(__GLIBC__)
-  return mallopt(M_TRIM_THRESHOLD, 256 * 1024 * 1024) == 1;
+  // Setting the trim threshold also ends glibc's growing of the mapping
+  // threshold: set that to its largest value as well, or every block over
+  // 128 kB (llvmpipe's per-draw vertex buffers) is mapped in anew.
+  return mallopt(M_TRIM_THRESHOLD, 256 * 1024 * 1024) == 1 &&
+    mallopt(M_MMAP_THRESHOLD, 32 * 1024 * 1024) == 1;
 #else
   return false;
 #endif

@@ -51,9 +51,17 @@
  *   application's thread and cost more than the vertex shading (a profile
  *   of a Fibers2 frame: 65 % of the samples on that thread, the rasterizer
  *   threads half idle; without them 44 % and the rasterizer threads busy).
- *   The caps of thin tubes stay patches: drawn as triangle fans by the same
- *   vertex stage they made the Fibers2 frame about 25 % longer (alternating
- *   runs), while the control stage culls the unwanted ones per patch.
+ *   The caps of thin chunks are drawn by the same program (tubeCapDraw): the
+ *   disk's inscribed octagon (the control stage's level for such caps), two
+ *   of its vertices the silhouette points where the wall's half rings end,
+ *   listed per view only when turned to the eye (ThinCapVisible, the control
+ *   stage's test), their normals turned to the eye by the vertex stage, so
+ *   that the thin program's fragment stage needs neither a gl_FrontFacing
+ *   flip nor the flat tube-info input (one input less to set up and bin per
+ *   triangle: 150 -> 140 ms for Fibers2 at 800x600). As patches they were
+ *   the last tessellation draw of such views, and llvmpipe's evaluation
+ *   stage grows its output buffer patch by patch (a realloc per patch, in a
+ *   heap trimmed and mapped in again every frame).
  *   Longer chunks, and chunks whose rings need more intervals, are patches
  *   as before (a chunk one patch, or each segment one patch beyond 1,024
  *   pixels). Measured by
@@ -63,13 +71,18 @@
  *   the shared pixels (before thin tubes stayed tubes: IoU 0.92 and 30 % on
  *   cb_2's whole view).
  *   The price on llvmpipe (one idle run of SplineVizTubeBenchmark, camera
- *   far, see the README): about one chord per segment on curved data, and a
- *   frame 0.46-0.51 times vtkTubeFilter's (12 sides) on long smooth curves
- *   at 800x600 and 1200x768 and on Fibers2 at 1200x768 (two runs); Fibers2
- *   at 800x600 varies from frame to frame even for a fixed view (0.5-0.84;
- *   not understood); with the tessellator for thin tubes 0.51-0.66, before
- *   thin tubes stayed tubes 0.34 on Fibers2 (inexact) and 0.96 on the long
- *   curves;
+ *   far, 60 frames, see the README): about one chord per segment on curved
+ *   data; the frame 0.45 (800x600) and 0.37 (1200x768) times
+ *   vtkTubeFilter's (12 sides) on Fibers2, 0.50-0.53 on the long smooth
+ *   curves, 0.41-0.47 for 1 M segments. The Fibers2 frames at 800x600 that
+ *   used to vary from 0.15 to 0.35 s were the heap's: llvmpipe allocates each
+ *   scene's bins (tens of MB per frame) in 64 kB blocks and frees them after
+ *   the scene, and glibc returns the top of the heap to the system until the
+ *   process first frees a large mapped block; the renderer that runs first
+ *   in a fresh process then maps those pages in again every frame (the
+ *   benchmark now runs every renderer with the same allocator, see its
+ *   --allocator option). Before thin tubes stayed tubes: 0.34 on Fibers2
+ *   (inexact) and 0.96 on the long curves;
  *   more than 8, the base mesh has at least half the needed vertices per ring
  *   (BaseSides halved down to 4) and Salm's refinement does the rest. The
  *   side count is chosen per tube so that the rings at the junctions always
