@@ -101,7 +101,16 @@
  * 4.5-6.1x, 0.72-0.79 and 5.2-5.3x. With the rectangles from the geometry
  * stage (one run, 60 frames): Fibers2 0.80 and 5.1x at 800x600, 0.97 and
  * 4.4x at 1200x768; long curves 0.80 and 5.4x, 0.81 and 5.0x; 1 M segments
- * 0.50 and 10.0x, 0.57 and 9.8x.
+ * 0.50 and 10.0x, 0.57 and 9.8x. With the color spline read from one texel
+ * per node (glsl/vtkSplineTubeColor.glsl) and every renderer run with the
+ * same allocator (the benchmark's --allocator steady): Fibers2 0.90 and
+ * 4.5x, 0.97 and 3.8x; long curves 0.79 and 4.5x, 0.93 and 4.5x; 1 M
+ * segments 0.45 and 11.5x, 0.55 and 9.8x. Where that Fibers2 frame goes at
+ * 1200x768: 77 % of the CPU samples in the fragment stage; with every
+ * fragment through the closed form for cones it would take 165 ms, with
+ * every fragment through the root finding 570-630 ms, in full 340 ms; 3 or
+ * 4 sub-segments per segment (more of them straight) make it 1.3-2.2x
+ * longer (more rectangles, more overlapping fragments).
  * With the camera among the Fibers2 tubes (800x600, another run) culling on
  * took 2286 (1099) ms, off 2038 (939) ms, and root finding everywhere
  * (StraightTolerance 0, as before) 4077 (1970) ms. The pre-pass costs a

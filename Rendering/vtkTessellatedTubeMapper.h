@@ -72,9 +72,10 @@
  *   cb_2's whole view).
  *   The price on llvmpipe (one idle run of SplineVizTubeBenchmark, camera
  *   far, 60 frames, see the README): about one chord per segment on curved
- *   data; the frame 0.45 (800x600) and 0.37 (1200x768) times
- *   vtkTubeFilter's (12 sides) on Fibers2, 0.50-0.53 on the long smooth
- *   curves, 0.41-0.47 for 1 M segments. The Fibers2 frames at 800x600 that
+ *   data; the frame 0.45-0.51 (800x600) and 0.37-0.47 (1200x768) times
+ *   vtkTubeFilter's (12 sides) on Fibers2, 0.53 and 0.47-0.50 on the long
+ *   smooth curves, 0.40-0.47 for 1 M segments (two runs; identical runs
+ *   differ by about 10 % on the test machine). The Fibers2 frames at 800x600 that
  *   used to vary from 0.15 to 0.35 s were the heap's: llvmpipe allocates each
  *   scene's bins (tens of MB per frame) in 64 kB blocks and frees them after
  *   the scene, and glibc returns the top of the heap to the system until the
