@@ -187,7 +187,7 @@ void ThinChunkLevels(const ThinView& v, const float* P, const float* M, const fl
   using vtkSplineTubeMath::vec3;
   if (count == 1)
   {
-    // The cubic's deviation from its chord: |m0 - m1| / 8.
+    // The cubic's deviation from its chord (svThinSegmentSagitta).
     double pa[2];
     double pb[2];
     double screen = 1e30;
@@ -202,7 +202,7 @@ void ThinChunkLevels(const ThinView& v, const float* P, const float* M, const fl
     const vec4 p1(b.P[0], b.P[1], b.P[2], b.R);
     const vec4 m1(b.D[0], b.D[1], b.D[2], b.DR);
     const vec4 middle = vtkSplineTubeMath::svHermite(p0, m0, p1, m1, 0.5);
-    const double sagitta = 0.125 * glm::length(vec3(m0) - vec3(m1));
+    const double sagitta = vtkSplineTubeMath::svThinSegmentSagitta(m0, m1, 1.0);
     const double w =
       v.Proj[3][0] * middle.x + v.Proj[3][1] * middle.y + v.Proj[3][2] * middle.z + v.Proj[3][3];
     const double radius = std::min({ a.R, b.R, middle.w });

@@ -902,6 +902,15 @@ real svThinSagittaLevel(real sagitta, real w, real radius, real pixelScale)
   return bound > 0.0 ? ceil(sqrt(sagitta / bound)) : 64.0;
 }
 
+// How far a cubic segment with end derivatives m0 and m1 (xyz) deviates
+// from its chord over a piece of `interval` of its parameter range: about
+// |m0 - m1| / 8 times the square of the interval (exact for the whole
+// segment).
+real svThinSegmentSagitta(vec4 m0, vec4 m1, real interval)
+{
+  return 0.125 * length(vec3(m0) - vec3(m1)) * interval * interval;
+}
+
 // Curvature of a node chain at a node: the turning angle between the chord
 // `previous` (length previousLength) and the next chord d (length len) over
 // their mean length; 0 where a chord is degenerate.

@@ -308,9 +308,8 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
     }
     else
     {
-      // The cubic's deviation from its chord between tA and tD: about
-      // |m0 - m1| / 8 times the square of the interval (exact for [0, 1]).
-      float sagitta = length(seg.m0.xyz - seg.m1.xyz) * 0.125 * (tD - tA) * (tD - tA);
+      // The cubic's deviation from its chord between tA and tD.
+      float sagitta = svThinSegmentSagitta(seg.m0, seg.m1, tD - tA);
       vec4 middle = svHermite(seg.p0, seg.m0, seg.p1, seg.m1, 0.5 * (tA + tD));
       float w = (VCDCMatrix * vec4(middle.xyz, 1.0)).w;
       along = clamp(max(min(screen / (svThinEdgeFactor * tubeMaxEdgeLength), tubeMaxLevel),

@@ -317,6 +317,22 @@ int TestTessellatedTubeMath(int, char*[])
     SV_CHECK(status, sagitta / (n * n) <= bound * (1.0 + 1e-12));
     SV_CHECK(status, n == 1.0 || sagitta / ((n - 1.0) * (n - 1.0)) > bound);
   }
+  // - svThinSegmentSagitta: over the whole segment, the distance of the
+  //   segment's middle from the chord's middle (Hermite weights +-1/8 for
+  //   the derivatives there), whatever the end points; a quarter of it over
+  //   half the segment.
+  for (int i = 0; i < 100; ++i)
+  {
+    using vec4 = vtkSplineTubeMath::vec4;
+    const vec4 p0(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0), 0.1);
+    const vec4 p1(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0), 0.1);
+    const vec4 m0(uniform(-3.0, 3.0), uniform(-3.0, 3.0), uniform(-3.0, 3.0), 0.0);
+    const vec4 m1(uniform(-3.0, 3.0), uniform(-3.0, 3.0), uniform(-3.0, 3.0), 0.0);
+    const vec4 middle = sm::svHermite(p0, m0, p1, m1, 0.5);
+    const double deviation = glm::length(vec3(middle) - 0.5 * (vec3(p0) + vec3(p1)));
+    SV_CHECK_NEAR(status, sm::svThinSegmentSagitta(m0, m1, 1.0), deviation, 1e-12);
+    SV_CHECK_NEAR(status, sm::svThinSegmentSagitta(m0, m1, 0.5), 0.25 * deviation, 1e-12);
+  }
   // - svThinChainCurvature: nodes on a circle of radius rho, equal angular
   //   steps theta: theta over the chord 2 rho sin(theta / 2).
   for (double theta : { 0.01, 0.1, 0.5 })
