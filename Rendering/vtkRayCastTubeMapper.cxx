@@ -101,22 +101,29 @@ void vtkRayCastTubeMapper::ReleaseGraphicsResources(vtkWindow* window)
 //------------------------------------------------------------------------------
 void vtkRayCastTubeMapper::UploadTubes(vtkOpenGLRenderWindow* window)
 {
-  if (this->QuadIndices->GetHandle() == 0 || !this->QuadIndicesUploaded)
-  {
-    std::vector<unsigned short> indices(6 * QuadsPerDraw);
-    for (int q = 0; q < QuadsPerDraw; ++q)
-    {
-      const unsigned short v = static_cast<unsigned short>(4 * q);
-      const unsigned short pattern[6] = { v, static_cast<unsigned short>(v + 1),
-        static_cast<unsigned short>(v + 2), static_cast<unsigned short>(v + 2),
-        static_cast<unsigned short>(v + 1), static_cast<unsigned short>(v + 3) };
-      std::copy(pattern, pattern + 6, &indices[6 * q]);
-    }
-    this->QuadIndices->Upload(indices, vtkOpenGLBufferObject::ElementArrayBuffer);
-    this->QuadIndicesUploaded = true;
-  }
   // The shared tubes buffer holds everything the ray caster reads.
   this->UploadTubeBuffers(window);
+}
+
+//------------------------------------------------------------------------------
+bool vtkRayCastTubeMapper::UploadQuadIndices()
+{
+  if (this->QuadIndices->GetHandle() != 0 && this->QuadIndicesUploaded)
+  {
+    return true;
+  }
+  std::vector<unsigned short> indices(6 * QuadsPerDraw);
+  for (int q = 0; q < QuadsPerDraw; ++q)
+  {
+    const unsigned short v = static_cast<unsigned short>(4 * q);
+    const unsigned short pattern[6] = { v, static_cast<unsigned short>(v + 1),
+      static_cast<unsigned short>(v + 2), static_cast<unsigned short>(v + 2),
+      static_cast<unsigned short>(v + 1), static_cast<unsigned short>(v + 3) };
+    std::copy(pattern, pattern + 6, &indices[6 * q]);
+  }
+  this->QuadIndicesUploaded =
+    this->QuadIndices->Upload(indices, vtkOpenGLBufferObject::ElementArrayBuffer);
+  return this->QuadIndicesUploaded;
 }
 
 //------------------------------------------------------------------------------
@@ -363,6 +370,13 @@ bool vtkRayCastTubeMapper::RenderCullingPass(vtkRenderer* ren, vtkActor* act)
   const int height = viewport[3];
   if (width <= 0 || height <= 0)
   {
+    return false;
+  }
+  if (!this->UploadQuadIndices()) // (only this pass draws quads)
+  {
+    vtkErrorMacro(<< "Could not upload the occlusion-culling pre-pass' indices; drawing "
+                     "without it.");
+    this->CullFailed = true;
     return false;
   }
 

@@ -260,6 +260,10 @@ private:
   /// Draw `quads` quads of 4 vertices (gl_VertexID = 4 * quad + corner) with
   /// the shared index pattern (QuadIndices bound by the caller).
   static void DrawQuads(vtkIdType quads);
+  /// The index pattern of QuadsPerDraw quads (196 kB), uploaded on first use
+  /// by the culling pre-pass (the ray-cast pass draws points); false when
+  /// it could not be uploaded.
+  bool UploadQuadIndices();
   /// The culling pre-pass into CullDepth; false when it could not be drawn.
   bool RenderCullingPass(vtkRenderer* ren, vtkActor* act);
 
