@@ -66,6 +66,32 @@ vec4 tubeColorAt(int node, float t)
   return tubeColorSpline(node, t);
 }
 
+// The circle of center c.xyz and radius c.w across the unit tangent `tangent`
+// as seen from the eye: `front`, the unit direction to the eye orthogonal to
+// the tangent (where the tube points at the eye, the orthogonal vector of
+// the segment from `node` at curve parameter t, d the curve's derivative
+// there), and `halfSpan`, the angle from `front` to either silhouette point
+// (acos(r / |eye - c| across the tangent); pi / 2 in parallel projection).
+// The offsets cos(phi) front + sin(phi) (tangent x front), phi in
+// [-halfSpan, halfSpan], are the circle's half that faces the eye.
+void tubeViewFacingFrame(vec4 c, vec3 tangent, vec3 d, int node, float t, bool parallel,
+  out vec3 front, out float halfSpan)
+{
+  vec3 toEye = parallel ? vec3(0.0, 0.0, 1.0) : -c.xyz;
+  vec3 across = toEye - dot(toEye, tangent) * tangent;
+  float distance = length(across);
+  if (distance > 1e-6 * length(toEye))
+  {
+    front = across / distance;
+  }
+  else
+  {
+    front = svInterpolateFrame(tubeNodeFrame(node), tubeNodeFrame(node + 1), t, d);
+  }
+  halfSpan =
+    parallel || distance <= 0.0 ? 1.5707963267948966 : acos(clamp(c.w / distance, 0.0, 1.0));
+}
+
 // A vertex of the view-facing half ring of thin tubes (the single-patch mode
 // of the evaluation stage and the thin-tube draws of vtkTessellatedTubeThinVS,
 // which share it so that both draw the same surface): the wall point of the
@@ -98,20 +124,9 @@ void tubeHalfRingVertex(vec4 p0, vec4 m0, vec4 p1, vec4 m1, int node, float t, f
     vec3 inward = dd.xyz - dot(dd.xyz, tangent) * tangent;
     c.xyz -= inward * (0.0625 * chord * chord);
   }
-  vec3 toEye = parallel ? vec3(0.0, 0.0, 1.0) : -c.xyz;
-  vec3 across = toEye - dot(toEye, tangent) * tangent;
-  float distance = length(across);
   vec3 front;
-  if (distance > 1e-6 * length(toEye))
-  {
-    front = across / distance;
-  }
-  else
-  {
-    front = svInterpolateFrame(tubeNodeFrame(node), tubeNodeFrame(node + 1), t, d.xyz);
-  }
-  float halfSpan =
-    parallel || distance <= 0.0 ? 1.5707963267948966 : acos(clamp(c.w / distance, 0.0, 1.0));
+  float halfSpan;
+  tubeViewFacingFrame(c, tangent, d.xyz, node, t, parallel, front, halfSpan);
   L = max(ceil(L), 3.0);
   float sigma = 2.0 * s - 1.0;
   vec3 offset = svTubeOffset(front, tangent, halfSpan * sin(1.5707963267948966 * sigma));

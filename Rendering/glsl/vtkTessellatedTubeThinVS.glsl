@@ -69,16 +69,15 @@ void tubeThinCap()
   int kind = int(texelFetch(tubeInstances, entry + 1).x);
   uvec2 sd = texelFetch(tubeSegments, segment).xy;
   int first = int(sd.x & 0x3FFFFFFFu);
-  int node = kind == 1 ? first : first + 1;
+  float t = kind == 1 ? 0.0 : 1.0;
+  int node = first + int(t);
   vec4 c = tubeNodePosition(node);
-  vec3 tangent = normalize(tubeNodeDerivative(node).xyz);
-  vec3 toEye = cameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : -c.xyz;
-  vec3 across = toEye - dot(toEye, tangent) * tangent;
-  float distance = length(across);
-  vec3 front = distance > 1e-6 * length(toEye) ? across / distance : tubeNodeFrame(node);
-  float halfSpan = cameraParallel != 0 || distance <= 0.0
-    ? 1.5707963267948966
-    : acos(clamp(c.w / distance, 0.0, 1.0));
+  vec3 d = tubeNodeDerivative(node).xyz;
+  vec3 tangent = normalize(d);
+  // The same frame as the wall's end ring (tubeHalfRingVertex).
+  vec3 front;
+  float halfSpan;
+  tubeViewFacingFrame(c, tangent, d, first, t, cameraParallel != 0, front, halfSpan);
   int halfSides = tubeCapSides / 2;
   int j = gl_VertexID;
   float phi = j <= halfSides
@@ -89,10 +88,11 @@ void tubeThinCap()
   vertexVCVSOutput = vec4(position, 1.0);
   // (turned to the eye: the thin program's fragment stage does not flip
   // normals of back faces)
+  vec3 toEye = cameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : -c.xyz;
   tubeNormalVCVSOutput = dot(tangent, toEye) < 0.0 ? -tangent : tangent;
-  tubeTVSOutput = kind == 1 ? 0.0 : 1.0;
+  tubeTVSOutput = t;
   tubeInfoVSOutput = ivec4(first, segment, int(sd.y), (kind << 2) | (1 << 4));
-  tubeColorVSOutput = tubeColorAt(first, kind == 1 ? 0.0 : 1.0);
+  tubeColorVSOutput = tubeColorAt(first, t);
   gl_Position = VCDCMatrix * vec4(position, 1.0);
 }
 
