@@ -36,6 +36,7 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeTCS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeTES.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeThinFS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeThinVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeFS.glsl")
 

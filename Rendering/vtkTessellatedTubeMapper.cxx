@@ -36,6 +36,7 @@
 #include "vtkTessellatedTubeFS.h"
 #include "vtkTessellatedTubeTCS.h"
 #include "vtkTessellatedTubeTES.h"
+#include "vtkTessellatedTubeThinFS.h"
 #include "vtkTessellatedTubeThinVS.h"
 #include "vtkTessellatedTubeVS.h"
 
@@ -310,8 +311,12 @@ struct vtkTessellatedTubeMapper::vtkInternals
   static constexpr int SinglePatchSides = 8;         // ring edges made by the tessellator at most
   static constexpr double WholeChunkPixels = 1024.0; // 16-pixel edges at level 64
   static constexpr unsigned char ThinChunk = 253;    // a thin-tube draw (no tessellator)
-  static constexpr int ThinMinSides = 3;             // intervals per half ring of thin draws
+  // Thin draws: chunks whose rings would need at most this many intervals
+  // per half ring (tubes a few pixels wide).
   static constexpr int ThinMaxSides = 8;
+  // Vertices per ring of thin draws: the two silhouette points and the point
+  // nearest the eye (vtkTessellatedTubeThinVS.glsl's tubeRibbonSides).
+  static constexpr int ThinRibbonSides = 3;
   static constexpr int ThinMirrorRing = 65; // vertex rings numbered from the run's end
   // Vertices of a thin run's cap polygon: the control stage's cap level
   // (svThinRingLevel of a whole turn, at least 8) is 8 wherever a tube's
@@ -336,10 +341,10 @@ struct vtkTessellatedTubeMapper::vtkInternals
   std::map<std::pair<int, int>, MeshRange> WallMeshes; // (rings, sides)
   std::map<int, MeshRange> CapMeshes;                  // sides
   // Thin-tube draws: rings along a run (the tessellation levels the control
-  // stage would choose, rounded up to this ladder) and intervals per ring.
+  // stage would choose, rounded up to this ladder), two vertices per ring.
   std::vector<int> ThinLadder;
-  std::map<int, MeshRange> ThinMeshes; // intervals + 1 (the vertices per ring): 64 rows
-  MeshRange ThinCapMesh;               // a fan of ThinCapSides vertices
+  MeshRange ThinMesh;    // 64 rows of rings of ThinRibbonSides vertices
+  MeshRange ThinCapMesh; // a fan of ThinCapSides vertices
   size_t MeshIndices = 0;
   int MeshBaseRings = 0;
   int MeshBaseSides = 0;
@@ -355,7 +360,7 @@ struct vtkTessellatedTubeMapper::vtkInternals
     vtkIdType Count;
   };
   std::vector<unsigned char> ChunkRingBin;
-  std::vector<vtkTypeUInt32> ChunkThinLevels; // thin draws: n | L0 << 8 | L1 << 16 | L << 24
+  std::vector<vtkTypeUInt32> ChunkThinLevels; // thin draws: the rung of ThinLadder
   std::vector<unsigned char> ThinCaps; // per segment of thin runs: its caps turned to the eye
   std::vector<unsigned char> TubeSideBin;
   std::vector<vtkTypeUInt32> Instances;
@@ -699,24 +704,20 @@ bool vtkTessellatedTubeMapper::BuildBaseMeshes()
     caps.Count = indices.size() - caps.Offset;
     in.CapMeshes[sides] = caps;
   }
-  // Thin-tube draws: triangles between rings of L + 1 vertices (see
-  // vtkTessellatedTubeThinVS.glsl), wound counter-clockwise in (s, t) as
-  // the tessellator's quads, with the diagonals mirrored at the middle of the
-  // ring and of the run, as the tessellator's (TestTubeFidelity's depth
-  // share on cb_2 and the curls: 96.9-97.9 %; one direction throughout
-  // 95.1-96.6 %, alternating rows 95.4-96.9 %). One mesh per L serves every
-  // number n of rows: its rows alternate between the run's start (row i:
-  // rings i, i + 1) and its end (the mirror image, vertices numbered from
-  // the end ring: ThinMirrorRing + rings before the end), so that the first n
-  // rows are the mesh of n rows.
+  // Thin-tube draws: triangles between consecutive rings of ThinRibbonSides
+  // vertices (the silhouette points and the point nearest the eye, see
+  // vtkTessellatedTubeThinVS.glsl), wound counter-clockwise seen from the
+  // eye, the diagonals mirrored at the middle of the ring and of the run as
+  // the tessellator's. One mesh serves every number n of rows: its rows
+  // alternate between the run's start (row i: rings i, i + 1) and its end
+  // (the mirror image, vertices numbered from the end ring: ThinMirrorRing +
+  // rings before the end), so that the first n rows are the mesh of n rows.
   in.ThinLadder = { 1, 2, 3, 4, 5, 6, 7, 8, 10, 12, 14, 16, 20, 24, 28, 32, 40, 48, 56, 64 };
-  in.ThinMeshes.clear();
-  for (int L = vtkInternals::ThinMinSides; L <= vtkInternals::ThinMaxSides; ++L)
+  in.ThinMesh.Offset = indices.size();
   {
-    const unsigned int perRing = static_cast<unsigned int>(L + 1);
+    const int L = vtkInternals::ThinRibbonSides - 1;
+    const auto perRing = static_cast<unsigned int>(vtkInternals::ThinRibbonSides);
     const unsigned int mirror = static_cast<unsigned int>(vtkInternals::ThinMirrorRing) * perRing;
-    vtkInternals::MeshRange range;
-    range.Offset = indices.size();
     for (int row = 0; row < in.ThinLadder.back(); ++row)
     {
       const unsigned int i = static_cast<unsigned int>(row / 2);
@@ -753,9 +754,8 @@ bool vtkTessellatedTubeMapper::BuildBaseMeshes()
         }
       }
     }
-    range.Count = indices.size() - range.Offset;
-    in.ThinMeshes[L + 1] = range;
   }
+  in.ThinMesh.Count = indices.size() - in.ThinMesh.Offset;
   // Thin caps: the polygon as a fan from its vertex 0.
   in.ThinCapMesh.Offset = indices.size();
   for (unsigned int j = 1; j + 1 < static_cast<unsigned int>(vtkInternals::ThinCapSides); ++j)
@@ -976,11 +976,8 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
                   {
                     ++rung;
                   }
-                  const auto L0 = static_cast<vtkTypeUInt32>(ring0);
-                  const auto L1 = static_cast<vtkTypeUInt32>(ring1);
                   in.ChunkRingBin[c] = vtkInternals::ThinChunk;
-                  in.ChunkThinLevels[c] = static_cast<vtkTypeUInt32>(rung) | (L0 << 8) |
-                    (L1 << 16) | (std::max(L0, L1) << 24);
+                  in.ChunkThinLevels[c] = static_cast<vtkTypeUInt32>(rung);
                   for (vtkIdType s = in.ChunkFirstSegment[c];
                        this->Capping && s < in.ChunkFirstSegment[c + 1]; ++s)
                   {
@@ -1014,14 +1011,9 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   const int bins = ringBins * sideBins;
   const int chunkBin = bins + sideBins;
   const int thinBase = chunkBin + 1;
-  const int thinSides = vtkInternals::ThinMaxSides - vtkInternals::ThinMinSides + 1;
-  const int thinBins = static_cast<int>(in.ThinLadder.size()) * thinSides;
+  const int thinBins = static_cast<int>(in.ThinLadder.size());
   const int thinCapBin = thinBase + thinBins; // (segment, kind) pairs
-  auto thinBin = [&](vtkTypeUInt32 levels)
-  {
-    return thinBase + static_cast<int>(levels & 0xFFu) * thinSides +
-      static_cast<int>(levels >> 24) - vtkInternals::ThinMinSides;
-  };
+  auto thinBin = [&](vtkTypeUInt32 rung) { return thinBase + static_cast<int>(rung); };
   std::vector<vtkIdType> counts(static_cast<size_t>(thinCapBin + 1), 0);
   in.CulledSegments = 0;
   const unsigned char* flags = core->GetSegmentFlags()->GetPointer(0);
@@ -1093,9 +1085,12 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
         const vtkTypeUInt32 levels = in.ChunkThinLevels[c];
         vtkIdType& entry = cursor[thinBin(levels)];
         in.Instances[entry++] = static_cast<vtkTypeUInt32>(in.ChunkFirstSegment[c]);
+        // (count | whether the run starts and ends its tube << 8)
+        const vtkIdType last = in.ChunkFirstSegment[c + 1] - 1;
         in.Instances[entry++] =
           static_cast<vtkTypeUInt32>(in.ChunkFirstSegment[c + 1] - in.ChunkFirstSegment[c]) |
-          (levels & 0xFFFF00u);
+          (static_cast<vtkTypeUInt32>((flags[in.ChunkFirstSegment[c]] & 1) | (flags[last] & 2))
+            << 8);
       }
       const bool whole = thinChunk || in.ChunkRingBin[c] == vtkInternals::WholeChunk;
       if (whole && !thinChunk)
@@ -1157,8 +1152,8 @@ bool vtkTessellatedTubeMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
     draw.Thin = true;
     draw.Caps = false;
     draw.Chunks = false;
-    draw.Rings = in.ThinLadder[static_cast<size_t>((b - thinBase) / thinSides)] + 1;
-    draw.Sides = (b - thinBase) % thinSides + vtkInternals::ThinMinSides + 1;
+    draw.Rings = in.ThinLadder[static_cast<size_t>(b - thinBase)] + 1;
+    draw.Sides = vtkInternals::ThinRibbonSides;
     draw.Offset = offsets[b];
     draw.Count = counts[b] / 2;
     in.Draws.push_back(draw);
@@ -1391,7 +1386,8 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
     VSSource += "\n// tessellation stages " + std::to_string(stagesKey) + "\n";
   }
 
-  std::string declarations = vtkTessellatedTubeFS;
+  std::string declarations =
+    this->BuildingThinProgram ? vtkTessellatedTubeThinFS : vtkTessellatedTubeFS;
   vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", math);
   vtkShaderProgram::Substitute(FSSource, "//VTK::Normal::Dec", declarations);
   vtkShaderProgram::Substitute(FSSource, "//VTK::PositionVC::Dec", "in vec4 vertexVCVSOutput;");
@@ -1402,17 +1398,44 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
     position += "  vec4 tubeColor = tubeColorVSOutput;\n";
   }
   vtkShaderProgram::Substitute(FSSource, "//VTK::PositionVC::Impl", position);
-  // The start caps are wound clockwise (seen from outside): flip their sense
-  // of gl_FrontFacing. The thin draws' vertex stage turns the caps' normals
-  // to the eye itself (their walls show only front faces): one fragment
-  // input less, which llvmpipe sets up and bins for every triangle.
-  vtkShaderProgram::Substitute(FSSource, "//VTK::Normal::Impl",
-    this->BuildingThinProgram ? "  vec3 normalVCVSOutput = normalize(tubeNormalVCVSOutput);\n"
-                              : "  vec3 normalVCVSOutput = normalize(tubeNormalVCVSOutput);\n"
-                                "  if (gl_FrontFacing != (((tubeInfoVSOutput.w >> 2) & 3) != 1))\n"
-                                "  {\n"
-                                "    normalVCVSOutput = -normalVCVSOutput;\n"
-                                "  }\n");
+  if (this->BuildingThinProgram)
+  {
+    // Thin walls: the front surface along the ray from the ribbon (depth and
+    // normal); caps as drawn. The vertex stage turns the caps' normals to the
+    // eye (their walls show only front faces): no gl_FrontFacing flip.
+    vtkShaderProgram::Substitute(FSSource, "//VTK::Depth::Impl",
+      std::string("  vec3 tubeThinNormal = tubeNormalVCVSOutput.xyz;\n"
+                  "  if (tubeAxisVCVSOutput.w > 0.0)\n"
+                  "  {\n"
+                  "    vec3 tubeHitVC;\n"
+                  "    if (!tubeThinSurface(vertexVC.xyz, tubeHitVC, tubeThinNormal))\n"
+                  "    {\n"
+                  "      discard;\n"
+                  "    }\n"
+                  "    vertexVC = vec4(tubeHitVC, 1.0);\n"
+                  "    vec4 tubeHitDC = VCDCMatrix * vertexVC;\n"
+                  "    gl_FragDepth = 0.5 * (gl_DepthRange.diff * (tubeHitDC.z / tubeHitDC.w) +\n"
+                  "      gl_DepthRange.near + gl_DepthRange.far);\n"
+                  "  }\n"
+                  "  else\n"
+                  "  {\n"
+                  "    gl_FragDepth = gl_FragCoord.z;\n"
+                  "  }\n") +
+        GetFragDepthWrittenMarker());
+    vtkShaderProgram::Substitute(
+      FSSource, "//VTK::Normal::Impl", "  vec3 normalVCVSOutput = normalize(tubeThinNormal);\n");
+  }
+  else
+  {
+    // The start caps are wound clockwise (seen from outside): flip their
+    // sense of gl_FrontFacing.
+    vtkShaderProgram::Substitute(FSSource, "//VTK::Normal::Impl",
+      "  vec3 normalVCVSOutput = normalize(tubeNormalVCVSOutput);\n"
+      "  if (gl_FrontFacing != (((tubeInfoVSOutput.w >> 2) & 3) != 1))\n"
+      "  {\n"
+      "    normalVCVSOutput = -normalVCVSOutput;\n"
+      "  }\n");
+  }
 
   // Picking: the cell is the polyline, the composite index its block.
   this->ReplaceShaderTubePicking(FSSource, "tubeInfoVSOutput.z");
@@ -1421,6 +1444,14 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
   shaders[vtkShader::Fragment]->SetSource(FSSource);
 
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
+  if (this->BuildingThinProgram)
+  {
+    // Render passes (depth peeling) compare gl_FragCoord.z with their depth
+    // textures; for thin walls the depth is the one written above.
+    FSSource = shaders[vtkShader::Fragment]->GetSource();
+    UseWrittenFragDepth(FSSource);
+    shaders[vtkShader::Fragment]->SetSource(FSSource);
+  }
 
   DumpShaderSources(
     { { this->BuildingThinProgram ? "ThinVS" : "VS", shaders[vtkShader::Vertex]->GetSource() },
@@ -1617,12 +1648,11 @@ void vtkTessellatedTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
         state->vtkglEnable(GL_CULL_FACE);
         continue;
       }
-      const vtkInternals::MeshRange& mesh = in.ThinMeshes[draw.Sides];
       const size_t rows = static_cast<size_t>(draw.Rings - 1);
       program->SetUniformi("tubeRings", draw.Rings);
-      program->SetUniformi("tubeSides", draw.Sides);
-      glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(6 * rows * (draw.Sides - 1)),
-        GL_UNSIGNED_INT, reinterpret_cast<const void*>(mesh.Offset * sizeof(unsigned int)),
+      glDrawElementsInstanced(GL_TRIANGLES,
+        static_cast<GLsizei>(6 * rows * (vtkInternals::ThinRibbonSides - 1)), GL_UNSIGNED_INT,
+        reinterpret_cast<const void*>(in.ThinMesh.Offset * sizeof(unsigned int)),
         static_cast<GLsizei>(draw.Count));
     }
     this->BaseMeshes->Release();

@@ -40,28 +40,45 @@
  *   longer chords keep the bound). A chunk of thin tube at most 1,024
  *   pixels long on screen is drawn **without the tessellator**: the CPU
  *   classification computes these levels for the whole chunk (the rings
- *   along, rounded up to a ladder of 20 values, and the intervals of its
- *   end rings, at most 8) and bins the chunks by them; one instanced draw
- *   per bin of an indexed triangle mesh whose vertices the vertex stage
- *   places with the evaluation stage's half-ring function
- *   (vtkTessellatedTubeThinVS.glsl), the end rings at their own intervals so
- *   that neighbouring chunks meet without cracks, the diagonals mirrored at
- *   the middle of ring and run as the tessellator's. On llvmpipe the control
- *   stage, the tessellator and its per-patch bookkeeping run on the
- *   application's thread and cost more than the vertex shading (a profile
- *   of a Fibers2 frame: 65 % of the samples on that thread, the rasterizer
- *   threads half idle; without them 44 % and the rasterizer threads busy).
+ *   along, rounded up to a ladder of 20 values; the chunk is thin when its
+ *   end rings need at most 8 intervals) and bins the chunks by them; one
+ *   instanced draw per bin of an indexed triangle mesh of three vertices per
+ *   ring, placed by the vertex stage (vtkTessellatedTubeThinVS.glsl): the
+ *   two silhouette points of the ring (tubeViewFacingFrame, as the
+ *   evaluation stage's half rings, so that neighbouring chunks and patches
+ *   meet without cracks) and the point nearest the eye. The fragment stage
+ *   (vtkTessellatedTubeThinFS.glsl) finds the tube's front surface along
+ *   each pixel's ray from there, on the cylinder of the interpolated ring
+ *   center, radius and tangent (svCylinderFrontDistance), and writes its
+ *   depth and normal: exact for straight tubes, within the chords' sagitta
+ *   elsewhere; fragments whose surface point lies beyond a tube's end are
+ *   dropped for its cap. This replaced half rings of 3-5 intervals (the
+ *   polygon carried the depth, within 0.21 radii for 3, more intervals
+ *   where the tube turns toward the eye, whose chords straddled the circle):
+ *   2-3 times the triangles and vertices, whose shading, set-up and binning
+ *   on llvmpipe's application thread were the frame (a profile of the long
+ *   curves at 800x600: 47 % of the samples on that thread, 23 % in the
+ *   vertex shader and triangle set-up code), while llvmpipe's missing early
+ *   depth test for a shader that writes gl_FragDepth costs little for
+ *   tubes a few pixels wide (the same frames with and without such a write:
+ *   79 and 86 ms). Two vertices per ring (the silhouettes only) would halve
+ *   the triangles again (frame 0.22-0.30 of the tube filter's) but lose the
+ *   half ellipse a ring turned to the eye shows beyond its silhouette points
+ *   (21 pixels missing in TestTessellatedTubeReference's whole view, 8
+ *   allowed). The control stage, the tessellator and its per-patch
+ *   bookkeeping run on the application's thread too and cost more than the
+ *   vertex shading (a profile of a Fibers2 frame: 65 % of the samples on
+ *   that thread, the rasterizer threads half idle; without them 44 % and the
+ *   rasterizer threads busy).
  *   The caps of thin chunks are drawn by the same program (tubeCapDraw): the
  *   disk's inscribed octagon (the control stage's level for such caps), two
  *   of its vertices the silhouette points where the wall's half rings end,
  *   listed per view only when turned to the eye (ThinCapVisible, the control
  *   stage's test), their normals turned to the eye by the vertex stage, so
- *   that the thin program's fragment stage needs neither a gl_FrontFacing
- *   flip nor the flat tube-info input (one input less to set up and bin per
- *   triangle: 150 -> 140 ms for Fibers2 at 800x600). As patches they were
- *   the last tessellation draw of such views, and llvmpipe's evaluation
- *   stage grows its output buffer patch by patch (a realloc per patch, in a
- *   heap trimmed and mapped in again every frame).
+ *   that the thin program's fragment stage needs no gl_FrontFacing flip. As
+ *   patches they were the last tessellation draw of such views, and
+ *   llvmpipe's evaluation stage grows its output buffer patch by patch (a
+ *   realloc per patch, in a heap trimmed and mapped in again every frame).
  *   Longer chunks, and chunks whose rings need more intervals, are patches
  *   as before (a chunk one patch, or each segment one patch beyond 1,024
  *   pixels). Measured by
@@ -125,9 +142,9 @@
  * vtkSplineTubeMapper (per node 32 bytes, 8 more with scalar coloring; per
  * segment 8 bytes; per tube 8 bytes) plus the orthogonal vectors, octahedral
  * encoded in 4 bytes per node (Salm's suggested compact format), and the base
- * meshes' index buffer (once; 51 KB of it for the thin-tube meshes, one per
- * ring size, whose rows alternate between the two ends of a run so that the
- * first n rows are the mesh of n rows). See GetGPUMemorySize().
+ * meshes' index buffer (once; 3 KB of it for the thin-tube mesh, whose rows
+ * alternate between the two ends of a run so that the first n rows are the
+ * mesh of n rows). See GetGPUMemorySize().
  *
  * VTK 9.2's vtkShader has no tessellation stages: the mapper lets VTK build
  * and link the vertex and fragment stages (with all of VTK's shader

@@ -865,6 +865,31 @@ const real svThinEdgeFactor = 4.0;
 // levels; straddling with factor 1 98.1-98.4 %, 934k; 1.7 96.8-97.9 %, 766k.
 const real svThinRunStraddle = 1.7;
 
+// The front surface of a thin tube along a fragment's ray, locally the
+// infinite cylinder of axis through c along the unit vector a and radius r:
+// the smaller s at which the line p + s dir (dir the unit view ray, away from
+// the eye) meets it. p lies on the tube's view-facing ribbon (between its
+// silhouette lines, so inside or on the cylinder: s <= 0); where the line
+// misses the cylinder (p just outside, where the ribbon's chords leave a
+// bending tube) the nearest approach; where the line runs along the axis 0,
+// and |s| at most `cap` (the surface seen ever more obliquely moves away
+// without bound as the ray turns along the axis).
+real svCylinderFrontDistance(vec3 p, vec3 dir, vec3 c, vec3 a, real r, real cap)
+{
+  vec3 w = p - c;
+  vec3 wp = w - dot(w, a) * a;
+  vec3 dp = dir - dot(dir, a) * a;
+  real qa = dot(dp, dp);
+  if (qa <= 1e-12)
+  {
+    return 0.0;
+  }
+  real qb = dot(wp, dp);
+  real qc = dot(wp, wp) - r * r;
+  real s = (-qb - sqrt(max(qb * qb - qa * qc, 0.0))) / qa;
+  return clamp(s, -cap, cap);
+}
+
 // Intervals of `turn` of the circumference of a ring of radius `radius`
 // (view units) whose center is at clip w `w`, in steps of `sideLength`
 // pixels (pixelScale: pixels per view unit at w = 1), at least `least`, at

@@ -92,6 +92,28 @@ void tubeViewFacingFrame(vec4 c, vec3 tangent, vec3 d, int node, float t, bool p
     parallel || distance <= 0.0 ? 1.5707963267948966 : acos(clamp(c.w / distance, 0.0, 1.0));
 }
 
+// The center and radius of a thin tube's ring at curve parameter t of the
+// segment (p0, m0, p1, m1), with the curve's derivatives and unit tangent
+// there. chord > 0: the ring lies inside a run whose rings are `chord` apart
+// in t; it then moves away from the center of curvature by half the sagitta
+// of such a chord (the chord's middle lies |c''_perp| h^2 / 8 inside the
+// curve), so that the chords deviate by at most half their sagitta (3/4
+// next to the run's ends, whose rings stay on the curve for the neighbours).
+vec4 tubeRingCenter(vec4 p0, vec4 m0, vec4 p1, vec4 m1, float t, float chord, out vec4 d,
+  out vec4 dd, out vec3 tangent)
+{
+  vec4 c = svHermite(p0, m0, p1, m1, t);
+  d = svHermiteDerivative(p0, m0, p1, m1, t);
+  dd = svHermiteSecondDerivative(p0, m0, p1, m1, t);
+  tangent = normalize(d.xyz);
+  if (chord > 0.0)
+  {
+    vec3 inward = dd.xyz - dot(dd.xyz, tangent) * tangent;
+    c.xyz -= inward * (0.0625 * chord * chord);
+  }
+  return c;
+}
+
 // A vertex of the view-facing half ring of thin tubes (the single-patch mode
 // of the evaluation stage and the thin-tube draws of vtkTessellatedTubeThinVS,
 // which share it so that both draw the same surface): the wall point of the
@@ -107,23 +129,14 @@ void tubeViewFacingFrame(vec4 c, vec3 tangent, vec3 d, int node, float t, bool p
 // circle's depth changes fastest) and 1 + 3.3 / L^3 radii out, so that the
 // chords straddle the circle: the depth error stays below 0.21 r for L = 3,
 // 0.13 r for L = 4, 0.07 r for L = 6 (up to 97 % of the half width).
-// chord > 0: the ring lies inside a run whose rings are `chord` apart in t;
-// it then moves away from the center of curvature by half the sagitta of
-// such a chord (the chord's middle lies |c''_perp| h^2 / 8 inside the curve),
-// so that the chords deviate by at most half their sagitta (3/4 next to the
-// run's ends, whose rings stay on the curve for the neighbours).
+// chord > 0: inside a run, see tubeRingCenter.
 void tubeHalfRingVertex(vec4 p0, vec4 m0, vec4 p1, vec4 m1, int node, float t, float s,
   float L, float chord, bool parallel, out vec3 position, out vec3 normal)
 {
-  vec4 c = svHermite(p0, m0, p1, m1, t);
-  vec4 d = svHermiteDerivative(p0, m0, p1, m1, t);
-  vec4 dd = svHermiteSecondDerivative(p0, m0, p1, m1, t);
-  vec3 tangent = normalize(d.xyz);
-  if (chord > 0.0)
-  {
-    vec3 inward = dd.xyz - dot(dd.xyz, tangent) * tangent;
-    c.xyz -= inward * (0.0625 * chord * chord);
-  }
+  vec4 d;
+  vec4 dd;
+  vec3 tangent;
+  vec4 c = tubeRingCenter(p0, m0, p1, m1, t, chord, d, dd, tangent);
   vec3 front;
   float halfSpan;
   tubeViewFacingFrame(c, tangent, d.xyz, node, t, parallel, front, halfSpan);

@@ -3,29 +3,37 @@
 // Tessellated spline tubes (Salm §3.1), thin tubes without the tessellator.
 //
 // A tube a few pixels wide is drawn as the view-facing half of its wall
-// (tubeHalfRingVertex, the surface the evaluation stage's single-patch mode
-// makes), but from a vertex stage alone: on a software rasterizer (Mesa
-// llvmpipe) the control stage, the fixed-function tessellator and its
-// per-patch bookkeeping run on the application's thread and cost more than
-// the vertex shading itself (see vtkTessellatedTubeMapper.h). The levels the
-// control stage would compute per view (rings along the run, intervals per
-// ring) come from the mapper's per-view classification on the CPU (the same
-// bounds through the same functions: ThinChunkLevels in
-// vtkTessellatedTubeMapper.cxx), which bins the runs by
-// them: one instanced draw per (rings, intervals) of an indexed triangle
-// mesh, no vertex attributes.
+// with three vertices per ring: the exact silhouette points of the ring's
+// circle seen from the eye and the point nearest the eye between them
+// (tubeViewFacingFrame, as the evaluation stage's half rings). The
+// fragment stage (vtkTessellatedTubeThinFS.glsl) finds the tube's front
+// surface along each pixel's ray from there (the local cylinder of the
+// interpolated ring center, radius and tangent: exact depth and normal). A
+// half ring of 3-5 intervals whose polygon had to carry the depth (within
+// 0.21 radii for 3) cost 2-3 times the triangles and vertices, and on a
+// software rasterizer (Mesa llvmpipe) their shading, set-up and binning on
+// the application's thread are the frame; two vertices per ring (the
+// silhouettes only) lose the half ellipse a ring turned to the eye shows
+// beyond them (TestTessellatedTubeReference's coverage). From a vertex stage
+// alone: the control stage, the fixed-function tessellator and its
+// per-patch bookkeeping run on the application's thread as well and cost
+// more than the vertex shading itself (see vtkTessellatedTubeMapper.h). The
+// rings along a run come from the mapper's per-view classification on the
+// CPU (the level the control stage would compute, through the same
+// functions: ThinChunkLevels in vtkTessellatedTubeMapper.cxx), which bins
+// the runs by them: one instanced draw per ring count of an indexed
+// triangle mesh, no vertex attributes.
 //
 // Instance gl_InstanceID is the run at entry 2 x (tubeListOffset +
-// gl_InstanceID) of the instance list: (first segment, count | L0 << 8 |
-// L1 << 16), count segments of one tube, L0 and L1 the intervals of its first
-// and last ring. Vertex gl_VertexID = ring x tubeSides + j: ring 0 .. n
-// (n = tubeRings - 1 rings apart, evenly in the run's curve parameter
-// t in [0, count]; from tubeMirrorRing on numbered from the end ring, for the
-// mesh rows that mirror the start's: see vtkTessellatedTubeMapper's
-// BuildBaseMeshes), j = 0 .. L (L = tubeSides - 1 intervals, at least L0 and
-// L1). The end rings take their own intervals (vertex j moves to the
-// nearest vertex of the L0 or L1 sampling, some triangles degenerate) so that
-// neighbouring runs, which share them, meet without cracks.
+// gl_InstanceID) of the instance list: (first segment, count | ends << 8),
+// count segments of one tube, ends bit 0 (1) when the run starts its tube
+// and bit 1 (2) when it ends it. Vertex gl_VertexID = tubeRibbonSides x ring
+// + j: ring 0 .. n (n = tubeRings - 1 rings apart, evenly in the run's curve
+// parameter t in [0, count]; from tubeMirrorRing on numbered from the end
+// ring, for the mesh rows that mirror the start's: see
+// vtkTessellatedTubeMapper's BuildBaseMeshes), j = 0 .. 2 from one
+// silhouette point to the other. Neighbouring runs share their end rings and
+// meet without cracks.
 //
 // tubeCapDraw != 0: the caps of thin runs instead (without the tessellator as
 // well: llvmpipe's evaluation stage grows its output buffer patch by patch,
@@ -40,15 +48,18 @@
 uniform usamplerBuffer tubeInstances;
 uniform int tubeListOffset;
 uniform int tubeRings; // n + 1
-uniform int tubeSides; // L + 1
 uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
 uniform int tubeCapDraw;
 const int tubeCapSides = 8; // vtkTessellatedTubeMapper's ThinCapSides
 const int tubeMirrorRing = 65; // vtkTessellatedTubeMapper's ThinMirrorRing
+const int tubeRibbonSides = 3; // vtkTessellatedTubeMapper's ThinRibbonSides
 
-out vec4 vertexVCVSOutput;       // position, view coordinates
-out vec3 tubeNormalVCVSOutput;   // normal, view coordinates
+out vec4 vertexVCVSOutput; // position, view coordinates
+// Walls: the ring's center and radius, and the curve's derivative by t
+// (position and radius). Caps: radius 0, and the normal.
+out vec4 tubeAxisVCVSOutput;
+out vec4 tubeNormalVCVSOutput;
 out float tubeTVSOutput;         // curve parameter in the run
 flat out ivec4 tubeInfoVSOutput; // first node, segment, tube, count << 4
 out vec4 tubeColorVSOutput;
@@ -89,7 +100,8 @@ void tubeThinCap()
   // (turned to the eye: the thin program's fragment stage does not flip
   // normals of back faces)
   vec3 toEye = cameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : -c.xyz;
-  tubeNormalVCVSOutput = dot(tangent, toEye) < 0.0 ? -tangent : tangent;
+  tubeAxisVCVSOutput = vec4(0.0);
+  tubeNormalVCVSOutput = vec4(dot(tangent, toEye) < 0.0 ? -tangent : tangent, 0.0);
   tubeTVSOutput = t;
   tubeInfoVSOutput = ivec4(first, segment, int(sd.y), (kind << 2) | (1 << 4));
   tubeColorVSOutput = tubeColorAt(first, t);
@@ -105,23 +117,15 @@ void main()
   }
   int entry = tubeListOffset + 2 * gl_InstanceID;
   int segment = int(texelFetch(tubeInstances, entry).x);
-  uint levels = texelFetch(tubeInstances, entry + 1).x;
-  int count = int(levels & 0xFFu);
+  uint run = texelFetch(tubeInstances, entry + 1).x;
+  int count = int(run & 0xFFu);
   int intervals = tubeRings - 1;
-  int L = tubeSides - 1;
-  int ring = gl_VertexID / tubeSides;
-  int j = gl_VertexID - ring * tubeSides;
+  int ring = gl_VertexID / tubeRibbonSides;
+  int j = gl_VertexID - tubeRibbonSides * ring;
   if (ring >= tubeMirrorRing)
   {
     ring = intervals - (ring - tubeMirrorRing); // numbered from the run's end
   }
-  int level = L;
-  if (ring == 0 || ring == intervals)
-  {
-    level = int(ring == 0 ? (levels >> 8u) & 0xFFu : (levels >> 16u) & 0xFFu);
-    j = (2 * j * level + L) / (2 * L); // the nearest vertex of the end ring's sampling
-  }
-  float s = float(j) / float(level);
   float tGlobal = float(count) * (float(ring) / float(intervals));
   int k = clamp(int(ceil(tGlobal)) - 1, 0, count - 1);
   float t = tGlobal - float(k);
@@ -135,15 +139,21 @@ void main()
   vec4 m1 = tubeNodeDerivative(node + 1);
   float chord =
     count > 1 && ring > 0 && ring < intervals ? float(count) / float(intervals) : 0.0;
-  vec3 position;
-  vec3 normal;
-  tubeHalfRingVertex(
-    p0, m0, p1, m1, node, t, s, float(level), chord, cameraParallel != 0, position, normal);
+  vec4 d;
+  vec4 dd;
+  vec3 tangent;
+  vec4 c = tubeRingCenter(p0, m0, p1, m1, t, chord, d, dd, tangent);
+  vec3 front;
+  float halfSpan;
+  tubeViewFacingFrame(c, tangent, d.xyz, node, t, cameraParallel != 0, front, halfSpan);
+  float phi = float(j - 1) * halfSpan;
+  vec3 position = c.xyz + c.w * svTubeOffset(front, tangent, phi);
 
   vertexVCVSOutput = vec4(position, 1.0);
-  tubeNormalVCVSOutput = normal;
+  tubeAxisVCVSOutput = c;
+  tubeNormalVCVSOutput = d;
   tubeTVSOutput = tGlobal;
-  tubeInfoVSOutput = ivec4(first, segment, int(sd.y), count << 4);
+  tubeInfoVSOutput = ivec4(first, segment, int(sd.y), (count << 4) | int((run >> 8u) & 3u));
   tubeColorVSOutput = tubeColorAt(node, t);
   gl_Position = VCDCMatrix * vec4(position, 1.0);
 }
