@@ -84,15 +84,16 @@
  *   pixels). Measured by
  *   TestTubeFidelity against vtkTubeFilter (64 sides) on DIPY's cb_2 bundle
  *   and synthetic curls at the whole view and zoomed 2x and 5x: coverage
- *   IoU 0.99-1.00 and eye depth within a quarter radius on 96.9-100 % of
- *   the shared pixels (before thin tubes stayed tubes: IoU 0.92 and 30 % on
- *   cb_2's whole view).
+ *   IoU 0.985-0.999 and eye depth within a quarter radius on 98.8-100 % of
+ *   the shared pixels (96.9-100 % with the half rings' polygons; before thin
+ *   tubes stayed tubes: IoU 0.92 and 30 % on cb_2's whole view).
  *   The price on llvmpipe (one idle run of SplineVizTubeBenchmark, camera
  *   far, 60 frames, see the README): about one chord per segment on curved
- *   data; the frame 0.45-0.51 (800x600) and 0.37-0.47 (1200x768) times
- *   vtkTubeFilter's (12 sides) on Fibers2, 0.53 and 0.47-0.50 on the long
- *   smooth curves, 0.40-0.47 for 1 M segments (two runs; identical runs
- *   differ by about 10 % on the test machine). The Fibers2 frames at 800x600 that
+ *   data; the frame 0.39 (800x600) and 0.43 (1200x768) times vtkTubeFilter's
+ *   (12 sides) on Fibers2, 0.40 and 0.35 on the long smooth curves, 0.30 for
+ *   1 M segments (with the half rings 0.45-0.51, 0.37-0.47, 0.53,
+ *   0.47-0.50 and 0.40-0.47; identical runs differ by about 10 % on the
+ *   test machine). The Fibers2 frames at 800x600 that
  *   used to vary from 0.15 to 0.35 s were the heap's: llvmpipe allocates each
  *   scene's bins (tens of MB per frame) in 64 kB blocks and frees them after
  *   the scene, and glibc returns the top of the heap to the system until the
