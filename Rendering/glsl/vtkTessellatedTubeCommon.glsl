@@ -92,15 +92,17 @@ void tubeViewFacingFrame(vec4 c, vec3 tangent, vec3 d, int node, float t, bool p
     parallel || distance <= 0.0 ? 1.5707963267948966 : acos(clamp(c.w / distance, 0.0, 1.0));
 }
 
-// The center and radius of a thin tube's ring at curve parameter t of the
-// segment (p0, m0, p1, m1), with the curve's derivatives and unit tangent
-// there. chord > 0: the ring lies inside a run whose rings are `chord` apart
-// in t; it then moves away from the center of curvature by half the sagitta
-// of such a chord (the chord's middle lies |c''_perp| h^2 / 8 inside the
-// curve), so that the chords deviate by at most half their sagitta (3/4
-// next to the run's ends, whose rings stay on the curve for the neighbours).
-vec4 tubeRingCenter(vec4 p0, vec4 m0, vec4 p1, vec4 m1, float t, float chord, out vec4 d,
-  out vec4 dd, out vec3 tangent)
+// A thin tube's ring at curve parameter t of the segment (p0, m0, p1, m1)
+// (its first node `node`): the center and radius (returned), the curve's
+// derivatives and unit tangent there, and its view-facing frame
+// (tubeViewFacingFrame). chord > 0: the ring lies inside a run whose rings
+// are `chord` apart in t; it then moves away from the center of curvature
+// by half the sagitta of such a chord (the chord's middle lies
+// |c''_perp| h^2 / 8 inside the curve), so that the chords deviate by at
+// most half their sagitta (3/4 next to the run's ends, whose rings stay on
+// the curve for the neighbours).
+vec4 tubeViewFacingRing(vec4 p0, vec4 m0, vec4 p1, vec4 m1, int node, float t, float chord,
+  bool parallel, out vec4 d, out vec4 dd, out vec3 tangent, out vec3 front, out float halfSpan)
 {
   vec4 c = svHermite(p0, m0, p1, m1, t);
   d = svHermiteDerivative(p0, m0, p1, m1, t);
@@ -111,6 +113,7 @@ vec4 tubeRingCenter(vec4 p0, vec4 m0, vec4 p1, vec4 m1, float t, float chord, ou
     vec3 inward = dd.xyz - dot(dd.xyz, tangent) * tangent;
     c.xyz -= inward * (0.0625 * chord * chord);
   }
+  tubeViewFacingFrame(c, tangent, d.xyz, node, t, parallel, front, halfSpan);
   return c;
 }
 
@@ -129,17 +132,17 @@ vec4 tubeRingCenter(vec4 p0, vec4 m0, vec4 p1, vec4 m1, float t, float chord, ou
 // circle's depth changes fastest) and 1 + 3.3 / L^3 radii out, so that the
 // chords straddle the circle: the depth error stays below 0.21 r for L = 3,
 // 0.13 r for L = 4, 0.07 r for L = 6 (up to 97 % of the half width).
-// chord > 0: inside a run, see tubeRingCenter.
+// chord > 0: inside a run, see tubeViewFacingRing.
 void tubeHalfRingVertex(vec4 p0, vec4 m0, vec4 p1, vec4 m1, int node, float t, float s,
   float L, float chord, bool parallel, out vec3 position, out vec3 normal)
 {
   vec4 d;
   vec4 dd;
   vec3 tangent;
-  vec4 c = tubeRingCenter(p0, m0, p1, m1, t, chord, d, dd, tangent);
   vec3 front;
   float halfSpan;
-  tubeViewFacingFrame(c, tangent, d.xyz, node, t, parallel, front, halfSpan);
+  vec4 c =
+    tubeViewFacingRing(p0, m0, p1, m1, node, t, chord, parallel, d, dd, tangent, front, halfSpan);
   L = max(ceil(L), 3.0);
   float sigma = 2.0 * s - 1.0;
   vec3 offset = svTubeOffset(front, tangent, halfSpan * sin(1.5707963267948966 * sigma));

@@ -85,7 +85,7 @@ void tubeThinCap()
   vec4 c = tubeNodePosition(node);
   vec3 d = tubeNodeDerivative(node).xyz;
   vec3 tangent = normalize(d);
-  // The same frame as the wall's end ring (tubeHalfRingVertex).
+  // The same frame as the wall's end ring (tubeViewFacingRing).
   vec3 front;
   float halfSpan;
   tubeViewFacingFrame(c, tangent, d, first, t, cameraParallel != 0, front, halfSpan);
@@ -142,10 +142,10 @@ void main()
   vec4 d;
   vec4 dd;
   vec3 tangent;
-  vec4 c = tubeRingCenter(p0, m0, p1, m1, t, chord, d, dd, tangent);
   vec3 front;
   float halfSpan;
-  tubeViewFacingFrame(c, tangent, d.xyz, node, t, cameraParallel != 0, front, halfSpan);
+  vec4 c = tubeViewFacingRing(
+    p0, m0, p1, m1, node, t, chord, cameraParallel != 0, d, dd, tangent, front, halfSpan);
   float phi = float(j - 1) * halfSpan;
   vec3 position = c.xyz + c.w * svTubeOffset(front, tangent, phi);
 
