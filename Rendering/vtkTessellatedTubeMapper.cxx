@@ -341,7 +341,8 @@ struct vtkTessellatedTubeMapper::vtkInternals
   std::map<std::pair<int, int>, MeshRange> WallMeshes; // (rings, sides)
   std::map<int, MeshRange> CapMeshes;                  // sides
   // Thin-tube draws: rings along a run (the tessellation levels the control
-  // stage would choose, rounded up to this ladder), two vertices per ring.
+  // stage would choose, rounded up to this ladder), ThinRibbonSides vertices
+  // per ring.
   std::vector<int> ThinLadder;
   MeshRange ThinMesh;    // 64 rows of rings of ThinRibbonSides vertices
   MeshRange ThinCapMesh; // a fan of ThinCapSides vertices

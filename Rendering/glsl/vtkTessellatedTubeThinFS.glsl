@@ -19,7 +19,7 @@
 in vec4 tubeAxisVCVSOutput;   // walls: ring center (xyz), radius (w); caps: 0
 in vec4 tubeNormalVCVSOutput; // walls: derivative by t (position, radius); caps: normal
 in float tubeTVSOutput;
-flat in ivec4 tubeInfoVSOutput; // first node, segment, tube, flags | kind << 2
+flat in ivec4 tubeInfoVSOutput; // first node, segment, tube, count << 4 | ends (caps: kind << 2)
 in vec4 tubeColorVSOutput;
 uniform mat4 VCDCMatrix;
 

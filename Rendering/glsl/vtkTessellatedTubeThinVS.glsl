@@ -61,7 +61,7 @@ out vec4 vertexVCVSOutput; // position, view coordinates
 out vec4 tubeAxisVCVSOutput;
 out vec4 tubeNormalVCVSOutput;
 out float tubeTVSOutput;         // curve parameter in the run
-flat out ivec4 tubeInfoVSOutput; // first node, segment, tube, count << 4
+flat out ivec4 tubeInfoVSOutput; // first node, segment, tube, count << 4 | ends (caps: kind << 2)
 out vec4 tubeColorVSOutput;
 
 //VTK::SplineTubeMath::Dec
