@@ -404,8 +404,9 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   {
     vtkPointData* pd = grids[g]->GetPointData();
     vtkFieldData* fd = grids[g]->GetFieldData();
+    vtkDataArray* rational = fd ? fd->GetArray("LRRational") : nullptr;
     if (pd->GetRationalWeights() || pd->GetArray("RationalWeights") ||
-      (fd && fd->GetArray("LRRational")))
+      (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0))
     {
       return done(in.Fail("patch " + std::to_string(g) +
         " is rational (it has rational weights): the volume mapper renders polynomial "
