@@ -234,7 +234,7 @@ bool vtkIFEMFile::ListChildren(const std::string& path, std::vector<std::string>
     H5O_info_t objectInfo;
     if (H5Oget_info_by_name(group.Get(), name.c_str(), &objectInfo, H5P_DEFAULT) < 0)
     {
-      return Fail(error, "cannot inspect \"" + path + "/" + name + "\"");
+      return Fail(error, "cannot inspect \"" + (path == "/" ? "" : path) + "/" + name + "\"");
     }
     names.push_back(name);
     if (isGroup)

@@ -11,7 +11,7 @@ HDF5 datasets with h5py and sums every basis function of the file's patch text
 (Cox-de Boor on each function's local knots, times gamma), to 1e-12 of the
 values' magnitude. Element values (knotspan) must equal the file's. The same
 for cube-2patch.lr, surface-refined.lr and GoTools' LR formats 293 / 793
-(written here from the LRSplines text of real patches). Negative controls: a
+(written by ifem_reference.gotools_lr from the LRSplines text of real patches). Negative controls: a
 coefficient perturbed by 1e-9 of the magnitude, in the geometry and in a
 field, must be detected; the rational shell read as polynomial is refused and
 its points lie on the cylinder only when read as rational.
@@ -275,70 +275,6 @@ def compare_lagrange(label, grid, text, fields, knotspans):
     check_knotspans(label, grid, {k: v.reshape(len(elements), -1) for k, v in knotspans.items()})
 
 
-# --- GoTools' LR formats, written from LRSplines text -----------------------------------------
-def gotools_lr(text, rational=False):
-    """Class 293 / 793 text of the LRSplines text patch `text` (GoTools'
-    LRSplineSurface / LRSplineVolume::write layout: see docs/spline-formats.md)."""
-    lines = text.splitlines()
-    patch = R.parse_lr(text)[0]
-    pd = patch.pardim
-    # Mesh rectangles of the LRSplines text (lines for surfaces).
-    rects = []
-    in_mesh = False
-    for line in lines:
-        if line.startswith("# Mesh"):
-            in_mesh = True
-            continue
-        if line.startswith("# Elements"):
-            break
-        if in_mesh and line.strip():
-            body, mult = line.rsplit("(", 1)
-            mult = int(mult.strip(" )"))
-            parts = body.split("x")
-            lo, hi = [], []
-            for part in parts:
-                nums = R._numbers(part.replace("[", " ").replace("]", " "))
-                lo.append(nums[0])
-                hi.append(nums[-1])
-            rects.append((lo, hi, mult))
-    knots = [np.unique(np.r_[patch.lo[:, d], patch.hi[:, d]]) for d in range(pd)]
-    out = ["%d 1 0 0" % (293 if pd == 2 else 793), "%d 1e-12" % (1 if rational else 0)]
-    for d in range(pd):
-        out.append("%d %s" % (len(knots[d]), " ".join(repr(v) for v in knots[d])))
-    index = [{v: i for i, v in enumerate(k)} for k in knots]
-    for d in range(pd):
-        planes = []
-        for pos, value in enumerate(knots[d]):
-            mine = [(lo, hi, m) for lo, hi, m in rects if lo[d] == hi[d] == value]
-            if pd == 2:
-                o = 1 - d
-                mult = np.zeros(len(knots[o]) - 1, dtype=int)
-                for lo, hi, m in mine:
-                    mult[index[o][lo[o]]:index[o][hi[o]]] = m
-                runs = [(0, mult[0])] + [(j, mult[j]) for j in range(1, len(mult))
-                                         if mult[j] != mult[j - 1]]
-                planes.append("%d %s" % (len(runs), " ".join("%d %d" % r for r in runs)))
-            else:
-                a, b = (d + 1) % 3, (d + 2) % 3
-                items = ["%d %d %d %d %d" % (index[a][lo[a]], index[b][lo[b]], index[a][hi[a]],
-                                             index[b][hi[b]], m) for lo, hi, m in mine]
-                planes.append("%d %s" % (len(items), " ".join(items)))
-        out.append("%d\n%s" % (len(planes), "\n".join(planes)))
-    out.append("%d" % patch.nb)
-    dim = patch.coefs.shape[1] - (1 if rational else 0)
-    for i in range(patch.nb):
-        c = patch.coefs[i]
-        weight = c[-1] if rational else 1.0
-        cart = c[:dim] / weight
-        out.append("%d %d\n%s %r %r" % (dim, 1 if rational else 0,
-                                          " ".join(repr(v * patch.gamma[i]) for v in cart),
-                                          patch.gamma[i], weight))
-        for d in range(pd):
-            kv = patch.knots[d][i]
-            out.append("%d %s" % (len(kv), " ".join(str(index[d][v]) for v in kv)))
-    return "\n".join(out) + "\n"
-
-
 def lr_reader(text=None, path=None, geometry=False, ext=".lr"):
     reader = vtkLRSplineReader()
     if path is None:
@@ -385,18 +321,18 @@ def lr_files():
     if lr_reader(text).GetBlock(0).GetCellType(0) != 77:
         fail("an LR surface is not read as Bezier quadrilaterals")
     # GoTools 293 (surface) and 793 (volume) from the same patches.
-    field_mode_block("surface-refined as class 293", lr_reader(gotools_lr(text), ext=".g2")
+    field_mode_block("surface-refined as class 293", lr_reader(R.gotools_lr(text), ext=".g2")
                      .GetBlock(0), patch)
     cube = open(os.path.join(DATA, "cube-3patch-refined.lr")).read()
     first = cube[:cube.index("# LRSPLINE VOLUME", 10)]
     patch = R.parse_lr(first)[0]
     field_mode_block("cube-3patch-refined patch 0 as class 793",
-                     lr_reader(gotools_lr(first), ext=".g2").GetBlock(0), patch)
+                     lr_reader(R.gotools_lr(first), ext=".g2").GetBlock(0), patch)
     # A rational class 293: the NURBS shell's basis, with weights.
     f = h5py.File(os.path.join(DATA, "ifem", "ScordelisPoint-NURBS.hdf5"), "r")
     shell = text_of(f["1/Elasticity-1/basis/1"])
     patch = R.parse_lr(shell)[0]
-    out = lr_reader(gotools_lr(shell, rational=True), geometry=True, ext=".g2")
+    out = lr_reader(R.gotools_lr(shell, rational=True), geometry=True, ext=".g2")
     compare_spline_block("rational shell as class 293", out.GetBlock(0), patch, True, {}, {},
                          n_elem=20)
 

@@ -205,3 +205,66 @@ def lagrange_hex(p, r, nodal):
     L = [lagrange_1d(p, r[d]) for d in range(3)]
     w = np.einsum("k,j,i->kji", L[2], L[1], L[0]).ravel()
     return w @ nodal
+
+
+def gotools_lr(text, rational=False):
+    """Class 293 / 793 text of the LRSplines text patch `text` (GoTools'
+    LRSplineSurface / LRSplineVolume::write layout: see docs/spline-formats.md)."""
+    lines = text.splitlines()
+    patch = parse_lr(text)[0]
+    pd = patch.pardim
+    # Mesh rectangles of the LRSplines text (lines for surfaces).
+    rects = []
+    in_mesh = False
+    for line in lines:
+        if line.startswith("# Mesh"):
+            in_mesh = True
+            continue
+        if line.startswith("# Elements"):
+            break
+        if in_mesh and line.strip():
+            body, mult = line.rsplit("(", 1)
+            mult = int(mult.strip(" )"))
+            parts = body.split("x")
+            lo, hi = [], []
+            for part in parts:
+                nums = _numbers(part.replace("[", " ").replace("]", " "))
+                lo.append(nums[0])
+                hi.append(nums[-1])
+            rects.append((lo, hi, mult))
+    knots = [np.unique(np.r_[patch.lo[:, d], patch.hi[:, d]]) for d in range(pd)]
+    out = ["%d 1 0 0" % (293 if pd == 2 else 793), "%d 1e-12" % (1 if rational else 0)]
+    for d in range(pd):
+        out.append("%d %s" % (len(knots[d]), " ".join(repr(v) for v in knots[d])))
+    index = [{v: i for i, v in enumerate(k)} for k in knots]
+    for d in range(pd):
+        planes = []
+        for pos, value in enumerate(knots[d]):
+            mine = [(lo, hi, m) for lo, hi, m in rects if lo[d] == hi[d] == value]
+            if pd == 2:
+                o = 1 - d
+                mult = np.zeros(len(knots[o]) - 1, dtype=int)
+                for lo, hi, m in mine:
+                    mult[index[o][lo[o]]:index[o][hi[o]]] = m
+                runs = [(0, mult[0])] + [(j, mult[j]) for j in range(1, len(mult))
+                                         if mult[j] != mult[j - 1]]
+                planes.append("%d %s" % (len(runs), " ".join("%d %d" % r for r in runs)))
+            else:
+                a, b = (d + 1) % 3, (d + 2) % 3
+                items = ["%d %d %d %d %d" % (index[a][lo[a]], index[b][lo[b]], index[a][hi[a]],
+                                             index[b][hi[b]], m) for lo, hi, m in mine]
+                planes.append("%d %s" % (len(items), " ".join(items)))
+        out.append("%d\n%s" % (len(planes), "\n".join(planes)))
+    out.append("%d" % patch.nb)
+    dim = patch.coefs.shape[1] - (1 if rational else 0)
+    for i in range(patch.nb):
+        c = patch.coefs[i]
+        weight = c[-1] if rational else 1.0
+        cart = c[:dim] / weight
+        out.append("%d %d\n%s %r %r" % (dim, 1 if rational else 0,
+                                          " ".join(repr(v * patch.gamma[i]) for v in cart),
+                                          patch.gamma[i], weight))
+        for d in range(pd):
+            kv = patch.knots[d][i]
+            out.append("%d %s" % (len(kv), " ".join(str(index[d][v]) for v in kv)))
+    return "\n".join(out) + "\n"
