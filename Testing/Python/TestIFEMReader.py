@@ -106,8 +106,9 @@ def check(label, got, ref, scale, kind):
 
 
 def compare_spline_block(label, grid, patch, rational, fields, knotspans, n_elem=12, n_pts=2,
-                         negative=False):
-    """VTK's interpolation of the block against the reference evaluation."""
+                         negative=False, piece=False):
+    """VTK's interpolation of the block against the reference evaluation
+    (piece: the grid holds some of the elements; the others are skipped)."""
     pd = patch.pardim
     nsd = patch.coefs.shape[1] - (1 if rational else 0)
     lookup = cells_by_box(grid, pd)
@@ -119,7 +120,8 @@ def compare_spline_block(label, grid, patch, rational, fields, knotspans, n_elem
     for e in elements:
         key = tuple(np.round(np.r_[patch.lo[e], patch.hi[e]], 12))
         if key not in lookup:
-            fail("%s: element %d (box %s) has no cell" % (label, e, key))
+            if not piece:
+                fail("%s: element %d (box %s) has no cell" % (label, e, key))
             continue
         cell = lookup[key]
         for _ in range(n_pts):
@@ -263,10 +265,10 @@ def compare_lagrange(label, grid, text, fields, knotspans):
         e = ids[cell]
         r = RNG.uniform(0.02, 0.98, 3)
         x, w, pts = vtk_evaluate(grid, cell, r)
-        check(label + " Lagrange geometry", x, R.lagrange_hex(p, r, nodes[elements[e]]), scale,
+        check(label + " Lagrange geometry", x, R.lagrange_tensor(p, r, nodes[elements[e]]), scale,
               "geometry")
         for name, values in fields.items():
-            ref = R.lagrange_hex(p, r, values[elements[e]])
+            ref = R.lagrange_tensor(p, r, values[elements[e]])
             s = max(np.nanmax(np.abs(values)), 1e-300)
             for c, array in enumerate(component_names(name, values.shape[1])):
                 a = array_values(grid, array)
@@ -363,11 +365,67 @@ def rational_controls():
         fail("the rational shell read as polynomial is not refused")
 
 
+def pieces():
+    """Pieces split every patch's elements: together they are the whole, each exact."""
+    path = os.path.join(DATA, "ifem", "Field3D-1PLR.hdf5")
+    f = h5py.File(path, "r")
+    patch = R.parse_patch_text(text_of(f["0/Stokes-1/basis/1"]))[0]
+    u = f["0/Stokes-1/fields/u/1"][()].reshape(patch.nb, -1)
+    seen = []
+    for piece in range(3):
+        reader = vtkIFEMReader()
+        reader.SetFileName(path)
+        reader.UpdatePiece(piece, 3, 0)
+        grid = reader.GetOutput().GetBlock(0).GetBlock(0)
+        seen += list(array_values(grid, "LRElementId", "cell")[:, 0].astype(int))
+        compare_spline_block("Field3D-1PLR piece %d of 3" % piece, grid, patch, False, {"u": u}, {},
+                             n_elem=27, n_pts=1, piece=True)
+    print("pieces: elements %s" % sorted(seen))
+    if sorted(seen) != list(range(len(patch.lo))):
+        fail("the three pieces do not hold every element once")
+
+
+def lagrange_quads():
+    """A biquadratic Lagrange surface in 3D (IFEM's "quad" patches), made here."""
+    path = os.path.join(OUT, "TestIFEMReader-lagrange-quad.hdf5")
+    n = 5
+    nodes = np.array([[i / 4 + 0.1 * np.sin(j), j / 4 + 0.05 * i * i, 0.3 * i * j]
+                      for j in range(n) for i in range(n)])
+    elements = [[(2 * ey + b) * n + 2 * ex + a for b in range(3) for a in range(3)]
+                for ey in range(2) for ex in range(2)]
+    text = "# LAGRANGIAN nodes=%d elements=4 type=quad\n" % len(nodes) + \
+        "".join("%r %r %r\n" % tuple(x) for x in nodes) + \
+        "".join(" ".join(str(k) for k in e) + "\n" for e in elements)
+    temperature = np.cos(nodes[:, 0] * 3) + nodes[:, 1] ** 2
+    with h5py.File(path, "w") as out:
+        out["0/Heat-1/basis/1"] = np.frombuffer(text.encode(), dtype=np.int8)
+        out["0/Heat-1/fields/T/1"] = temperature
+    reader = vtkIFEMReader()
+    reader.SetFileName(path)
+    reader.Update()
+    grid = reader.GetOutput().GetBlock(0).GetBlock(0)
+    ids = array_values(grid, "LRElementId", "cell")[:, 0].astype(int)
+    T = array_values(grid, "T")
+    for cell in range(grid.GetNumberOfCells()):
+        for _ in range(3):
+            r = RNG.uniform(0.02, 0.98, 2)
+            x, w, pts = vtk_evaluate(grid, cell, np.r_[r, 0.0])
+            e = np.array(elements[ids[cell]])
+            check("Lagrange quad geometry", x, R.lagrange_tensor(2, r, nodes[e], 2), 1.0,
+                  "geometry")
+            check("Lagrange quad field", w @ T[pts, 0],
+                  R.lagrange_tensor(2, r, temperature[e], 2), 2.0, "field")
+    print("Lagrange quadrilaterals: %d cells of type %d" % (grid.GetNumberOfCells(),
+                                                          grid.GetCellType(0)))
+
+
 def main():
     for path in sorted(glob.glob(os.path.join(DATA, "ifem", "*.hdf5"))):
         ifem_file(path, negative=os.path.basename(path) == "Field3D-1PLR.hdf5")
     lr_files()
     rational_controls()
+    pieces()
+    lagrange_quads()
     print("largest relative errors: geometry %.3g over %d points, fields %.3g over %d values "
           "(tolerance %g)" % (worst["geometry"], counts["geometry"], worst["field"],
                               counts["field"], TOL))

@@ -199,11 +199,14 @@ def lagrange_1d(p, s):
     return out
 
 
-def lagrange_hex(p, r, nodal):
-    """Tensor Lagrange interpolation in an element whose (p+1)^3 nodal values
-    are numbered with the first direction fastest (IFEM's order)."""
-    L = [lagrange_1d(p, r[d]) for d in range(3)]
-    w = np.einsum("k,j,i->kji", L[2], L[1], L[0]).ravel()
+def lagrange_tensor(p, r, nodal, dim=3):
+    """Tensor Lagrange interpolation in an element whose (p+1)^dim nodal
+    values are numbered with the first direction fastest (IFEM's order)."""
+    L = [lagrange_1d(p, r[d]) for d in range(dim)]
+    if dim == 3:
+        w = np.einsum("k,j,i->kji", L[2], L[1], L[0]).ravel()
+    else:
+        w = np.einsum("j,i->ji", L[1], L[0]).ravel()
     return w @ nodal
 
 
