@@ -4,51 +4,34 @@
  * element values, time steps) as exact Bezier cells in physical space.
  *
  * IFEM (SINTEF's isogeometric FEM library) writes one HDF5 group per output
- * level (time step or adaptive step; "timeinfo/level" holds the time), in it
- * one group per basis "<Sim>-<b>" with the patch text (basis/<patch>:
- * LRSplines text, GoTools g2 or "# LAGRANGIAN"), nodal fields
- * (fields/<name>/<patch>, components interleaved) and element values
- * (knotspan/<name>/<patch>). A basis is written again only when it changes
- * (adaptive refinement, moving meshes); the reader carries every basis and
- * field forward from the last level that wrote it. The layout is in
- * docs/ifem.md.
+ * level ("timeinfo/level" holds the time), in it one group per basis
+ * "<Sim>-<b>" with the patch text (basis/<patch>: LRSplines text, GoTools g2
+ * or "# LAGRANGIAN"), nodal fields (fields/<name>/<patch>) and element values
+ * (knotspan/<name>/<patch>); a basis is written again only when it changes.
+ * The layout and every convention below are in docs/ifem.md.
  *
- * Output: per time step a vtkMultiBlockDataSet with one block per basis
- * (named like the basis), holding one block per patch ("Patch 1", ...): a
- * vtkUnstructuredGrid made by vtkIFEMBlockBuilder. Spline patches become
- * VTK_BEZIER_HEXAHEDRON / VTK_BEZIER_QUADRILATERAL cells whose control points
- * are the geometry's Bezier coefficients (rational bases with VTK's
- * RationalWeights) and whose point data are the fields' Bezier coefficients
- * on that basis, so VTK's interpolation of a cell is the simulation's
- * geometry and field, exactly; Lagrange patches become Lagrange cells. Field
- * names, split components and vectors follow vtkIFEMBlockBuilder::ArraysFor;
- * element values are cell data. Field data of each patch: the LR keys of
- * vtkLRSplineBezierGrid ("LRMode" 1, "LRParameterBox" per element, degrees,
- * "LRParametricDimension", "LRRational", point data
- * "LRParameterCoordinates") and "IFEMBasis", "IFEMPatch" (from 1),
- * "IFEMLevel", "IFEMBasisLevel" (the level that wrote the basis shown),
- * "IFEMTime", "IFEMSpatialDimension"; a basis "<Sim>-<b>" other than
- * "<Sim>-1" also "LRGeometryReferenceBasis" and "LRGeometryDeviation", the
- * exact largest distance between its geometry and that of "<Sim>-1" (mixed
- * methods write each basis with its own geometry coefficients; a deviation
- * above 1e-9 of the patch size is warned about, the fields being drawn on
- * their own basis' geometry).
+ * Output per time step: a vtkMultiBlockDataSet with one block per basis,
+ * holding one vtkUnstructuredGrid per patch ("Patch 1", ...), made by
+ * vtkIFEMBlockBuilder: spline patches as VTK_BEZIER_HEXAHEDRON /
+ * VTK_BEZIER_QUADRILATERAL cells whose control points are the geometry's
+ * Bezier coefficients (rational bases with VTK's RationalWeights) and whose
+ * point data are the fields' Bezier coefficients, so VTK's interpolation is
+ * the simulation's geometry and field exactly; Lagrange patches as Lagrange
+ * cells; element values as cell data. Field data: the LR keys of
+ * vtkLRSplineBezierGrid (geometry mode) and "IFEMBasis", "IFEMPatch",
+ * "IFEMLevel", "IFEMBasisLevel", "IFEMTime", "IFEMSpatialDimension"; for the
+ * further bases of a mixed method "LRGeometryDeviation", the exact distance
+ * of their geometry from "<Sim>-1"'s (warned about above 1e-9 of the size).
  *
- * Time steps: the times of "timeinfo" when every level has one and they
- * increase, otherwise the level numbers. Fields of a group that has no basis
- * of its own (coupled simulators sharing a mesh) are attached to the one
- * basis whose patches all match their sizes; when none or several do, they
- * are skipped with a warning.
- *
- * Settings: the bases, nodal fields and element fields to read (array
- * selections, by the names written in the file), RationalMode (how
- * LRSplines text patches are told rational: see
- * vtkLRSplinePatch::RationalModes; Automatic is SISO's rule, dim > pardim),
- * MergePoints. Pieces split every spline patch's elements (each piece's
- * Bezier form is exact by itself). Bad input (missing groups, size
- * mismatches, unknown patch text, values that are not finite, absurd sizes)
- * is an error naming the dataset, with an empty output; nothing is allocated
- * for sizes the file cannot hold.
+ * Time steps: the times of "timeinfo" when every level has an increasing one,
+ * else the level numbers; bases and fields are carried forward from the last
+ * level that wrote them. Fields of a group without a basis of its own are
+ * attached to the one basis their sizes fit. Settings: the bases, nodal and
+ * element fields to read (selections by the names in the file),
+ * RationalMode (vtkLRSplinePatch::RationalModes), MergePoints. Pieces split
+ * every spline patch's elements. Bad input (missing groups, size mismatches,
+ * unknown patch text, absurd sizes) is an error naming the dataset, with an
+ * empty output, before anything is allocated for it.
  */
 
 #ifndef vtkIFEMReader_h

@@ -33,20 +33,13 @@
  * the control points (an IFEM-style geometry shows its real shape; it needs 2
  * or 3 components).
  *
- * Control points shared by neighbouring elements with equal coefficients are
- * merged (MergePoints), so the grid's boundary is the spline's boundary.
- *
- * Piece requests are honoured: piece p of n gets the elements
- * [p N / n, (p + 1) N / n) of every patch (the Bezier form of an element does
- * not depend on the others, so the pieces are exact too).
- *
- * Progress is reported per patch and abort honoured between patches (an
- * aborted read gives an empty output). ReadFromInputString reads the text
- * from memory (used by the fuzz target Testing/Fuzz/FuzzLRSplineReader).
- *
- * Bad input gives an error naming the file and the line (truncated files,
- * wrong counts, unknown headers, non-finite numbers, knot vectors of the
- * wrong length, inconsistent meshes) and an empty output; RequestData returns 0.
+ * Shared control points with equal coefficients are merged (MergePoints).
+ * Piece p of n gets the elements [p N / n, (p + 1) N / n) of every patch
+ * (exact too). Progress is reported per patch, abort honoured between patches
+ * (empty output). ReadFromInputString reads the text from memory (the fuzz
+ * target). Bad input (truncated files, wrong counts, unknown headers,
+ * non-finite numbers, inconsistent meshes) gives an error naming the file and
+ * the line and an empty output; RequestData returns 0.
  */
 
 #ifndef vtkLRSplineReader_h
