@@ -92,6 +92,9 @@ public:
    */
   static bool LooksLikeIFEM(const char* fileName);
 
+  /// HDF5 files and objects open in this process (tests: 0 after every read).
+  static long GetNumberOfOpenObjects();
+
 private:
   bool ListChildren(const std::string& path, std::vector<std::string>& names,
     std::vector<bool>* isGroup, std::string* error);
