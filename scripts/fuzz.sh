@@ -31,12 +31,15 @@ while [ $# -gt 0 ]; do
 done
 if [ ${#targets[@]} -eq 0 ]; then
   targets=(FuzzLRSplineParser FuzzG2Parser FuzzLRSplineReader)
+  targets+=(FuzzIFEMReader)
 fi
 fuzz="$here/Testing/Fuzz"
 work="$build/fuzz"
 mkdir -p "$work"
 export ASAN_SYMBOLIZER_PATH="${ASAN_SYMBOLIZER_PATH:-$(command -v llvm-symbolizer || true)}"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}"
+# The leak suppressions of the sanitizer build (each proven outside SplineViz).
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$here/Testing/Sanitizers/lsan.supp:print_suppressions=0}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 # The targets are single-threaded (one input at a time); VTK's SMP tools
 # stay sequential so that a crash points at the input that caused it.
@@ -51,6 +54,7 @@ run_target() {
   case "$t" in
     FuzzLRSplineParser) seeds=("$fuzz/corpus/lr") ;;
     FuzzG2Parser) seeds=("$fuzz/corpus/g2") ;;
+    FuzzIFEMReader) seeds=("$fuzz/corpus/ifem") ;;
     *) seeds=("$fuzz/corpus/lr" "$fuzz/corpus/g2") ;;
   esac
   # The real files (the 1.2 MB .lr too: -max_len cuts it, truncated files are
@@ -59,7 +63,7 @@ run_target() {
   mkdir -p "$ext"
   for f in "$here"/Testing/Data/External/*.lr "$here"/Testing/Data/External/*.g2; do
     case "$t:$f" in
-      FuzzLRSplineParser:*.g2 | FuzzG2Parser:*.lr) ;;
+      FuzzLRSplineParser:*.g2 | FuzzG2Parser:*.lr | FuzzIFEMReader:*) ;;
       *) cp -f "$f" "$ext/" ;;
     esac
   done
@@ -69,7 +73,9 @@ run_target() {
   mkdir -p "$work/corpus-$t"
   log="$work/$t.log"
   start=$(date +%s)
-  if "$exe" "${limit[@]}" -timeout=1 -rss_limit_mb=2048 -max_len=4096 \
+  maxlen=4096
+  [ "$t" = FuzzIFEMReader ] && maxlen=32768 # HDF5 files: the seeds are 7-27 kB
+  if "$exe" "${limit[@]}" -timeout=1 -rss_limit_mb=2048 -max_len=$maxlen \
       -print_final_stats=1 -artifact_prefix="$work/$t-" \
       "$work/corpus-$t" "${seeds[@]}" "$ext" >"$log" 2>&1; then
     echo "== $t (${limit[*]}): ok after $(( $(date +%s) - start )) s"
