@@ -45,6 +45,7 @@ std::string TubeMathSource()
 
 //------------------------------------------------------------------------------
 vtkRayCastTubeMapper::vtkRayCastTubeMapper()
+  : ChunkList(new vtkSplineVizGPUBuffer)
 {
   // Sphere-swept tubes need no cross-section frames.
   this->Core->ComputeFramesOff();
@@ -67,7 +68,14 @@ void vtkRayCastTubeMapper::SetSubSegments(int n)
 //------------------------------------------------------------------------------
 size_t vtkRayCastTubeMapper::GetGPUMemorySize()
 {
-  return this->GetTubeBuffersSize();
+  return this->GetTubeBuffersSize() + this->ChunkList->GetNumberOfBytes();
+}
+
+//------------------------------------------------------------------------------
+void vtkRayCastTubeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->ChunkList->ReleaseGraphicsResources(window);
+  this->Superclass::ReleaseGraphicsResources(window);
 }
 
 //------------------------------------------------------------------------------
@@ -183,6 +191,7 @@ void vtkRayCastTubeMapper::SetMapperShaderParameters(
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   vtkShaderProgram* program = cellBO.Program;
   program->SetUniformi("subSegments", this->SubSegments);
+  program->SetUniformi("tubeChunkSegments", vtkSplineTubeCore::ChunkSegments);
   program->SetUniformi("rootIterations", this->RootIterations);
   program->SetUniformi("rootSamples", this->RootSamples);
   program->SetUniformf("tubeStraightTolerance", static_cast<float>(this->StraightTolerance));
@@ -229,34 +238,33 @@ void vtkRayCastTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
   state->vtkglDisable(GL_CULL_FACE);
 
-  // One point per sub-segment (gl_VertexID = SubSegments * segment + k):
-  // the visible chunks' segment ranges, consecutive chunks merged.
+  // One point per sub-segment of the chunks of each group: their list
+  // (first segment, count) read by the vertex stage, one draw per group.
   const vtkTypeUInt32* chunkFirst = this->Core->GetChunkFirstSegments()->GetPointer(0);
-  const GLint sub = this->SubSegments;
-  std::vector<GLint> firsts;
-  std::vector<GLsizei> counts;
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkShaderProgram* program = helper.Program;
+  std::vector<vtkTypeUInt32> list;
   this->DrawVisibleChunks(ren, act,
     [&](const std::vector<std::uint32_t>& chunks)
     {
-      firsts.clear();
-      counts.clear();
-      for (std::uint32_t c : chunks)
+      list.resize(2 * chunks.size());
+      for (size_t i = 0; i < chunks.size(); ++i)
       {
-        const GLint first = static_cast<GLint>(chunkFirst[c]) * sub;
-        const GLsizei count = static_cast<GLsizei>(chunkFirst[c + 1] - chunkFirst[c]) * sub;
-        if (!firsts.empty() && firsts.back() + counts.back() == first)
-        {
-          counts.back() += count;
-        }
-        else
-        {
-          firsts.push_back(first);
-          counts.push_back(count);
-        }
+        list[2 * i] = chunkFirst[chunks[i]];
+        list[2 * i + 1] = chunkFirst[chunks[i] + 1] - chunkFirst[chunks[i]];
       }
-      glMultiDrawArrays(
-        GL_POINTS, firsts.data(), counts.data(), static_cast<GLsizei>(firsts.size()));
+      if (!this->ChunkList->Upload(
+            window, list.data(), chunks.size(), 2, VTK_TYPE_UINT32, GL_RG32UI))
+      {
+        vtkErrorMacro(<< "Could not upload the chunk list: "
+                      << vtkSplineVizGPUBuffer::GetLastUploadError());
+        return;
+      }
+      this->ChunkList->Activate(program, "tubeChunkList");
+      glDrawArrays(GL_POINTS, 0,
+        static_cast<GLsizei>(chunks.size() * vtkSplineTubeCore::ChunkSegments * this->SubSegments));
     });
+  this->ChunkList->Deactivate();
   this->DeactivateTubeBuffers();
 }
 

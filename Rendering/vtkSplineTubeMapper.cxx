@@ -297,6 +297,7 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   // The superclass reads CurrentInput in places (timers, shader decisions);
   // an empty polydata keeps those paths neutral.
   this->CurrentInput = this->EmptyInput;
+  this->RenderStart = std::chrono::steady_clock::now();
   this->RenderPieceStart(ren, actor);
   if (vtkHardwareSelector* selector = ren->GetSelector())
   {
@@ -400,20 +401,37 @@ void vtkSplineTubeMapper::DrawVisibleChunks(vtkRenderer* ren, vtkActor* act,
   // read back (not multisampled).
   GLint sampleBuffers = 0;
   glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
-  const bool occlusion = this->OcclusionCulling && sampleBuffers == 0 &&
+  const bool occlusionPossible = this->OcclusionCulling && sampleBuffers == 0 &&
     !act->IsRenderingTranslucentPolygonalGeometry() && view.Width > 0 && view.Height > 0;
 
   // The interaction subset: the fraction that met the budget last time; the
-  // first interactive frame after a still one scales the still frame's time.
-  const double budget = std::max(act->GetAllocatedRenderTime(), 1e-3);
+  // first interactive frame after a still one scales the still frame's cost.
+  const double budget = this->InteractiveFrameTime > 0.0
+    ? this->InteractiveFrameTime
+    : std::max(act->GetAllocatedRenderTime(), 1e-3);
   double fraction = 1.0;
   if (this->InteractiveRender)
   {
-    fraction = this->LastRenderInteractive || this->LastStillDrawTime <= 0.0
-      ? this->InteractiveFraction
-      : std::max(1e-3, std::min(1.0, budget / this->LastStillDrawTime));
+    fraction = this->InteractiveFraction;
+    if (!this->LastRenderInteractive && this->LastProportionalTime > 0.0)
+    {
+      // From the still frame's cost, undamped.
+      const double available = std::max(budget - this->LastFixedTime, budget / 3.0);
+      fraction = std::max(
+        MinimumLineFraction, std::min(1.0, available / std::max(this->LastProportionalTime, 1e-9)));
+    }
   }
-  this->Visibility->BeginFrame(view, fraction, occlusion, true);
+  // Small subsets hide little: no occlusion culling (its read-backs would
+  // cost more than they save).
+  const bool occlusion = occlusionPossible && fraction >= 0.1;
+  double fixed = std::chrono::duration<double>(start - this->RenderStart).count();
+  auto timed = [&fixed](const std::function<void()>& work)
+  {
+    const auto t = std::chrono::steady_clock::now();
+    work();
+    fixed += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  timed([&]() { this->Visibility->BeginFrame(view, fraction, occlusion, true); });
   std::vector<std::uint32_t> chunks;
   const int groups = this->Visibility->GetNumberOfGroups();
   bool pyramid = false;
@@ -423,39 +441,50 @@ void vtkSplineTubeMapper::DrawVisibleChunks(vtkRenderer* ren, vtkActor* act,
     {
       pyramid = this->ReadDepthPyramid(ren);
     }
-    this->Visibility->CullGroup(g, pyramid ? &this->Pyramid->Pyramid : nullptr, chunks);
+    timed([&]()
+      { this->Visibility->CullGroup(g, pyramid ? &this->Pyramid->Pyramid : nullptr, chunks); });
     if (!chunks.empty())
     {
       draw(chunks);
     }
   }
-  // Remember what is visible in the finished picture for the next frame.
-  const bool finalPyramid = occlusion && groups > 0 && this->ReadDepthPyramid(ren);
-  this->Visibility->EndFrame(finalPyramid ? &this->Pyramid->Pyramid : nullptr);
+  // Remember what is visible in the finished picture for the next frame
+  // (still frames only: a subset's visible chunks hide less).
+  if (!this->InteractiveRender)
+  {
+    const bool finalPyramid = occlusion && groups > 0 && this->ReadDepthPyramid(ren);
+    timed([&]() { this->Visibility->EndFrame(finalPyramid ? &this->Pyramid->Pyramid : nullptr); });
+  }
 
   // The time to the end of the GPU's work adapts the interaction subset.
   if (this->InteractiveSubset)
   {
     glFinish();
   }
+  // Cost model: the per-view work (classification, projection, culling
+  // tests) is fixed, the rest (drawing, waiting for the rasterizer) grows
+  // with the lines drawn.
   this->LastDrawTime =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - this->RenderStart).count();
+  this->LastFixedTime = fixed;
+  this->LastProportionalTime = std::max(this->LastDrawTime - fixed, 1e-6) / fraction;
   this->LastLineFraction = fraction;
   this->LastRenderInteractive = this->InteractiveRender;
-  if (!this->InteractiveSubset)
+  if (this->InteractiveRender)
   {
-    return;
+    this->InteractiveFraction = this->NextFraction(fraction, budget);
   }
-  if (!this->InteractiveRender)
-  {
-    this->LastStillDrawTime = this->LastDrawTime;
-  }
-  else
-  {
-    // Damped multiplicative update toward the budget.
-    const double ratio = budget / std::max(this->LastDrawTime, 1e-6);
-    this->InteractiveFraction = std::max(1e-3, std::min(1.0, fraction * std::pow(ratio, 0.7)));
-  }
+}
+
+//------------------------------------------------------------------------------
+double vtkSplineTubeMapper::NextFraction(double fraction, double budget) const
+{
+  // The fraction whose drawing fits what the fixed work leaves of the
+  // budget (at least a third of it), damped.
+  const double available = std::max(budget - this->LastFixedTime, budget / 3.0);
+  const double wanted = available / std::max(this->LastProportionalTime, 1e-9);
+  const double ratio = std::max(0.2, std::min(5.0, wanted / fraction));
+  return std::max(MinimumLineFraction, std::min(1.0, fraction * std::pow(ratio, 0.8)));
 }
 
 //------------------------------------------------------------------------------
@@ -919,4 +948,5 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveSubset: " << this->InteractiveSubset << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "ForceInteractive: " << this->ForceInteractive << "\n";
+  os << indent << "InteractiveFrameTime: " << this->InteractiveFrameTime << "\n";
 }

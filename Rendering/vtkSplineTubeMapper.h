@@ -41,6 +41,7 @@
 #include "vtkNew.h"          // for vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 
+#include <chrono>     // for std::chrono::steady_clock
 #include <cstdint>    // for std::uint32_t
 #include <functional> // for std::function
 #include <iosfwd>     // for std::ostream
@@ -122,13 +123,16 @@ public:
   ///@{
   /**
    * Interaction budget (default on): while the camera moves (the render
-   * window's desired update rate at least InteractiveUpdateRate, as VTK's
-   * interactors set it during interaction), draw a stable, spatially even
-   * subset of the lines sized so that the mapper's frame fits the actor's
-   * allocated render time (1 / desired update rate for a single actor); all
-   * lines when the camera stops. The subset is a fraction of the lines by a
-   * fixed hash of their index (nested: a larger fraction adds lines), so
-   * nothing is uploaded again. ForceInteractive draws the subset always (the
+   * window's desired update rate at least InteractiveUpdateRate, default 1,
+   * as VTK's interactors set it during interaction), draw a stable,
+   * spatially even subset of the lines sized so that the mapper's frame fits
+   * InteractiveFrameTime (seconds; 0, the default: the actor's allocated
+   * render time, 1 / desired update rate for a single actor); all lines when
+   * the camera stops. The subset is a fraction of the lines (at least
+   * MinimumLineFraction) by a fixed hash of their index (nested: a larger
+   * fraction adds lines), so nothing is uploaded again; its size follows a
+   * cost model (per-view work fixed, drawing proportional to the lines) fitted
+   * to the frames measured. ForceInteractive draws the subset always (the
    * ParaView representations' level-of-detail mapper).
    */
   vtkSetMacro(InteractiveSubset, bool);
@@ -136,6 +140,9 @@ public:
   vtkBooleanMacro(InteractiveSubset, bool);
   vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(InteractiveUpdateRate, double);
+  vtkSetClampMacro(InteractiveFrameTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(InteractiveFrameTime, double);
+  static constexpr double MinimumLineFraction = 0.002;
   vtkSetMacro(ForceInteractive, bool);
   vtkGetMacro(ForceInteractive, bool);
   vtkBooleanMacro(ForceInteractive, bool);
@@ -145,7 +152,7 @@ public:
   /**
    * What the last render drew: the fraction of the lines (1 at rest), the
    * chunks in the view frustum, the chunks drawn and those dropped as hidden,
-   * the depth pyramids read back, and the time the draw took (seconds, to
+   * the depth pyramids read back, and the time the render took (seconds, to
    * the end of the GPU's work).
    */
   double GetLastLineFraction() const { return this->LastLineFraction; }
@@ -370,6 +377,7 @@ protected:
   bool InteractiveSubset = true;
   double InteractiveUpdateRate = 1.0;
   bool ForceInteractive = false;
+  double InteractiveFrameTime = 0.0;
 
   std::unique_ptr<vtkSplineTubeVisibility> Visibility;
 
@@ -401,8 +409,12 @@ private:
 
   bool InteractiveRender = false;
   bool LastRenderInteractive = false;
-  double InteractiveFraction = 1.0; ///< the subset's fraction for the next interactive frame
-  double LastStillDrawTime = 0.0;   ///< seconds, all lines
+  double InteractiveFraction = 1.0;  ///< the subset's fraction for the next interactive frame
+  double LastFixedTime = 0.0;        ///< seconds of per-view work in the last render
+  double LastProportionalTime = 0.0; ///< seconds of drawing per unit of line fraction
+  std::chrono::steady_clock::time_point RenderStart;
+  /// The fraction for the next interactive frame (see InteractiveSubset).
+  double NextFraction(double fraction, double budget) const;
   double LastLineFraction = 1.0;
   double LastDrawTime = 0.0;
   int LastNumberOfDepthPyramids = 0;

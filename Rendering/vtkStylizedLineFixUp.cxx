@@ -7,6 +7,7 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSplineTubeCore.h"
+#include "vtkSplineTubeVisibility.h"
 #include "vtkTypeUInt32Array.h"
 
 #include <algorithm>
@@ -172,6 +173,8 @@ void vtkStylizedLineFixUp::Build(vtkSplineTubeCore* core, const double shift[3])
       }
     });
   this->Flags.assign(this->Batches.size(), 0);
+  this->Stamps.assign(this->Batches.size(), 0);
+  this->ViewStamp = 0;
   this->Candidates = 0;
 }
 
@@ -210,81 +213,72 @@ std::vector<unsigned char> vtkStylizedLineFixUp::ClassifyAllVertices(const View&
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizedLineFixUp::Classify(const View& view, bool enabled,
-  std::vector<std::uint32_t>& segments, std::vector<std::uint32_t>& joints)
+bool vtkStylizedLineFixUp::NeedsFixUp(const Batch& batch, const View& view, double thetaEps) const
 {
-  const vtkIdType numBatches = static_cast<vtkIdType>(this->Batches.size());
-  this->Flags.assign(this->Batches.size(), 0);
-  this->Candidates = 0;
-  if (enabled && this->Core)
+  const vec3 c =
+    TransformPoint(view.ModelView, vec3(batch.Center[0], batch.Center[1], batch.Center[2]));
+  vec3 a = TransformVector(view.ModelView, vec3(batch.Axis[0], batch.Axis[1], batch.Axis[2]));
+  const double al = glm::length(a);
+  a = al > 0.0 ? a / al : vec3(1.0, 0.0, 0.0);
+  const double radius = batch.Radius * view.RadiusScale;
+  const double lineRadius = batch.MaxRadius * view.RadiusScale;
+  bool candidate = false;
+  vec3 dir(0.0, 0.0, -1.0);
+  double beta = 0.0;
+  double dist = 0.0;
+  if (!view.Parallel)
   {
-    const double epsilon = std::max(0.0, std::min(1.0, view.Epsilon));
-    const double thetaEps = std::acos(1.0 - epsilon);
-    vtkSMPThreadLocal<vtkIdType> candidates(0);
-    vtkSMPTools::For(0, numBatches,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        vtkIdType& local = candidates.Local();
-        for (vtkIdType b = begin; b < end; ++b)
-        {
-          const Batch& batch = this->Batches[b];
-          const vec3 c =
-            TransformPoint(view.ModelView, vec3(batch.Center[0], batch.Center[1], batch.Center[2]));
-          vec3 a =
-            TransformVector(view.ModelView, vec3(batch.Axis[0], batch.Axis[1], batch.Axis[2]));
-          const double al = glm::length(a);
-          a = al > 0.0 ? a / al : vec3(1.0, 0.0, 0.0);
-          const double radius = batch.Radius * view.RadiusScale;
-          const double lineRadius = batch.MaxRadius * view.RadiusScale;
-          bool candidate = false;
-          vec3 dir(0.0, 0.0, -1.0);
-          double beta = 0.0;
-          double dist = 0.0;
-          if (!view.Parallel)
-          {
-            dist = glm::length(c);
-            if (dist <= radius * 1.0001)
-            {
-              candidate = true; // the eye is inside the batch's sphere
-            }
-            else
-            {
-              dir = c / dist;
-              beta = std::asin(std::min(1.0, radius / dist));
-            }
-          }
-          if (!candidate)
-          {
-            const double theta = std::acos(std::min(1.0, std::abs(glm::dot(dir, a))));
-            // The smallest angle any vertex tangent can make with its view ray.
-            const double minAngle = theta - batch.Cone - beta;
-            if (minAngle <= thetaEps + 1e-6)
-            {
-              candidate = true;
-            }
-            else if (!view.Parallel)
-            {
-              // |u_perp| = |u| sin(angle) < SL_NEAR_AXIS r needs a near eye.
-              const double nearDistance = SL_NEAR_AXIS * lineRadius / std::sin(minAngle);
-              candidate = dist - radius < nearDistance * 1.0001;
-            }
-          }
-          if (candidate)
-          {
-            ++local;
-            this->Flags[b] = this->TestVertices(batch, view) ? 1 : 0;
-          }
-        }
-      });
-    for (vtkIdType n : candidates)
+    dist = glm::length(c);
+    if (dist <= radius * 1.0001)
     {
-      this->Candidates += n;
+      candidate = true; // the eye is inside the batch's sphere
+    }
+    else
+    {
+      dir = c / dist;
+      beta = std::asin(std::min(1.0, radius / dist));
     }
   }
+  if (!candidate)
+  {
+    const double theta = std::acos(std::min(1.0, std::abs(glm::dot(dir, a))));
+    // The smallest angle any vertex tangent can make with its view ray.
+    const double minAngle = theta - batch.Cone - beta;
+    if (minAngle <= thetaEps + 1e-6)
+    {
+      candidate = true;
+    }
+    else if (!view.Parallel)
+    {
+      // |u_perp| = |u| sin(angle) < SL_NEAR_AXIS r needs a near eye.
+      const double nearDistance = SL_NEAR_AXIS * lineRadius / std::sin(minAngle);
+      candidate = dist - radius < nearDistance * 1.0001;
+    }
+  }
+  if (!candidate)
+  {
+    return false;
+  }
+  ++this->Candidates; // (atomic)
+  return this->TestVertices(batch, view);
+}
 
-  // The fix-up's lists, tube by tube.
-  segments.clear();
-  joints.clear();
+//------------------------------------------------------------------------------
+void vtkStylizedLineFixUp::BeginView(const View& view, bool enabled)
+{
+  this->CurrentView = view;
+  this->Enabled = enabled && this->Core;
+  this->Candidates = 0;
+  ++this->ViewStamp;
+  if (this->ViewStamp == 0)
+  {
+    std::fill(this->Stamps.begin(), this->Stamps.end(), 0);
+    this->ViewStamp = 1;
+  }
+  // The largest radius on screen of the polylines' ends (their caps), and of
+  // the fixed-up points of the last view.
+  this->MaximumScreenRadius = this->FixedScreenRadius;
+  this->FixedScreenRadius = 0.0;
   if (!this->Core)
   {
     return;
@@ -292,67 +286,79 @@ void vtkStylizedLineFixUp::Classify(const View& view, bool enabled,
   const vtkIdType numTubes = this->Core->GetNumberOfTubes();
   const vtkIdType* tubeFirst = this->Core->GetTubeFirstNodes()->GetPointer(0);
   const vtkIdType* tubeNodes = this->Core->GetTubeNumberOfNodes()->GetPointer(0);
-  const float* P = this->Core->GetNodePositions()->GetPointer(0);
-  const float* R = this->Core->GetNodeRadii()->GetPointer(0);
-  auto point = [P](vtkIdType i) { return vec3(P[3 * i], P[3 * i + 1], P[3 * i + 2]); };
-  // The radius on screen of point i, in pixels (0 behind the eye).
-  auto screenRadius = [&](vtkIdType i)
-  {
-    const vec3 p = TransformPoint(view.ModelView,
-      vec3(
-        P[3 * i] - this->Shift[0], P[3 * i + 1] - this->Shift[1], P[3 * i + 2] - this->Shift[2]));
-    const double r = R[2 * i] * view.RadiusScale * view.PixelsPerUnit;
-    if (view.Parallel)
+  vtkSMPThreadLocal<double> largest(0.0);
+  vtkSMPTools::For(0, numTubes,
+    [&](vtkIdType begin, vtkIdType end)
     {
-      return r;
-    }
-    return p.z < 0.0 ? r / std::max(-p.z, 1e-30) : 0.0;
-  };
-  this->MaximumScreenRadius = 0.0;
-  for (vtkIdType t = 0; t < numTubes; ++t)
+      double& local = largest.Local();
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        local = std::max({ local, this->ScreenRadius(tubeFirst[t]),
+          this->ScreenRadius(tubeFirst[t] + tubeNodes[t] - 1) });
+      }
+    });
+  for (double r : largest)
   {
-    const vtkIdType last = tubeFirst[t] + tubeNodes[t] - 1;
-    this->MaximumScreenRadius =
-      std::max({ this->MaximumScreenRadius, screenRadius(tubeFirst[t]), screenRadius(last) });
-    for (vtkIdType b = this->TubeFirstBatch[t]; b < this->TubeFirstBatch[t + 1]; ++b)
-    {
-      if (!this->Flags[b])
-      {
-        continue;
-      }
-      const Batch& batch = this->Batches[b];
-      for (int s = 0; s < batch.Segments; ++s)
-      {
-        segments.push_back(batch.FirstNode + static_cast<std::uint32_t>(s));
-        this->MaximumScreenRadius =
-          std::max(this->MaximumScreenRadius, screenRadius(batch.FirstNode + s));
-      }
-      // Joints: the batch's points, each once (consecutive fixed batches
-      // share one), but those whose sphere would stick out of an end cap.
-      for (vtkIdType i = batch.FirstNode; i <= batch.FirstNode + batch.Segments; ++i)
-      {
-        if (!joints.empty() && joints.back() >= i)
-        {
-          continue;
-        }
-        const double clearance = view.JointRadius * R[2 * i];
-        if (glm::distance(point(i), point(tubeFirst[t])) > clearance &&
-          glm::distance(point(i), point(last)) > clearance)
-        {
-          joints.push_back(static_cast<std::uint32_t>(i));
-        }
-      }
-    }
+    this->MaximumScreenRadius = std::max(this->MaximumScreenRadius, r);
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizedLineFixUp::BuildStrips(const std::vector<std::uint32_t>& batches,
-  std::vector<int>& stripFirsts, std::vector<int>& stripCounts, std::vector<std::uint32_t>& caps)
+double vtkStylizedLineFixUp::ScreenRadius(vtkIdType i) const
+{
+  const View& view = this->CurrentView;
+  const float* P = this->Core->GetNodePositions()->GetPointer(0);
+  const float* R = this->Core->GetNodeRadii()->GetPointer(0);
+  const vec3 p = TransformPoint(view.ModelView,
+    vec3(P[3 * i] - this->Shift[0], P[3 * i + 1] - this->Shift[1], P[3 * i + 2] - this->Shift[2]));
+  const double r = R[2 * i] * view.RadiusScale * view.PixelsPerUnit;
+  if (view.Parallel)
+  {
+    return r;
+  }
+  return p.z < 0.0 ? r / std::max(-p.z, 1e-30) : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizedLineFixUp::BuildDraws(const std::vector<std::uint32_t>& batches,
+  std::vector<int>& stripFirsts, std::vector<int>& stripCounts, std::vector<std::uint32_t>& caps,
+  std::vector<std::uint32_t>& segments, std::vector<std::uint32_t>& joints)
 {
   stripFirsts.clear();
   stripCounts.clear();
   caps.clear();
+  segments.clear();
+  joints.clear();
+  if (!this->Core)
+  {
+    return;
+  }
+  const View& view = this->CurrentView;
+  // Classify the batches not yet classified in this view (in parallel).
+  if (this->Enabled)
+  {
+    const double epsilon = std::max(0.0, std::min(1.0, view.Epsilon));
+    const double thetaEps = std::acos(1.0 - epsilon);
+    const vtkIdType n = static_cast<vtkIdType>(batches.size());
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          const std::uint32_t b = batches[i];
+          if (this->Stamps[b] != this->ViewStamp)
+          {
+            this->Stamps[b] = this->ViewStamp;
+            this->Flags[b] = this->NeedsFixUp(this->Batches[b], view, thetaEps) ? 1 : 0;
+          }
+        }
+      });
+  }
+  const float* P = this->Core->GetNodePositions()->GetPointer(0);
+  const float* R = this->Core->GetNodeRadii()->GetPointer(0);
+  const vtkIdType* tubeFirst = this->Core->GetTubeFirstNodes()->GetPointer(0);
+  const vtkIdType* tubeNodes = this->Core->GetTubeNumberOfNodes()->GetPointer(0);
+  auto point = [P](vtkIdType i) { return vec3(P[3 * i], P[3 * i + 1], P[3 * i + 2]); };
   for (std::uint32_t b : batches)
   {
     const Batch& batch = this->Batches[b];
@@ -364,40 +370,95 @@ void vtkStylizedLineFixUp::BuildStrips(const std::vector<std::uint32_t>& batches
     {
       caps.push_back(2 * batch.Tube + 1);
     }
-    if (b < this->Flags.size() && this->Flags[b])
+    if (!this->Enabled || this->Stamps[b] != this->ViewStamp || !this->Flags[b])
     {
-      continue; // drawn by the fix-up
+      // Two strip vertices per point; a batch continuing the last strip
+      // (its first point the strip's last) extends it.
+      const int first = static_cast<int>(2 * batch.FirstNode);
+      const int count = 2 * (batch.Segments + 1);
+      if (!stripFirsts.empty() && stripFirsts.back() + stripCounts.back() - 2 == first)
+      {
+        stripCounts.back() += count - 2;
+      }
+      else
+      {
+        stripFirsts.push_back(first);
+        stripCounts.push_back(count);
+      }
+      continue;
     }
-    // Two strip vertices per point; a batch continuing the last strip (its
-    // first point the strip's last) extends it.
-    const int first = static_cast<int>(2 * batch.FirstNode);
-    const int count = 2 * (batch.Segments + 1);
-    if (!stripFirsts.empty() && stripFirsts.back() + stripCounts.back() - 2 == first)
+    // Fixed up: its segments as cylinders; joints at its points but those
+    // whose sphere would stick out of an end cap.
+    const vtkIdType tubeStart = tubeFirst[batch.Tube];
+    const vtkIdType tubeLast = tubeStart + tubeNodes[batch.Tube] - 1;
+    for (int s = 0; s < batch.Segments; ++s)
     {
-      stripCounts.back() += count - 2;
+      segments.push_back(batch.FirstNode + static_cast<std::uint32_t>(s));
+      this->FixedScreenRadius =
+        std::max(this->FixedScreenRadius, this->ScreenRadius(batch.FirstNode + s));
     }
-    else
+    for (vtkIdType i = batch.FirstNode; i <= batch.FirstNode + batch.Segments; ++i)
     {
-      stripFirsts.push_back(first);
-      stripCounts.push_back(count);
+      const double clearance = view.JointRadius * R[2 * i];
+      if (glm::distance(point(i), point(tubeStart)) > clearance &&
+        glm::distance(point(i), point(tubeLast)) > clearance)
+      {
+        joints.push_back(static_cast<std::uint32_t>(i));
+      }
     }
   }
+  // Consecutive fixed-up batches share a point: one joint.
+  std::sort(joints.begin(), joints.end());
+  joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
+  this->MaximumScreenRadius = std::max(this->MaximumScreenRadius, this->FixedScreenRadius);
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizedLineFixUp::GetCullingChunks(
-  double widen, std::vector<float>& spheres, std::vector<std::uint32_t>& tubes) const
+void vtkStylizedLineFixUp::GetCullingChunks(double widen, std::vector<float>& spheres,
+  std::vector<std::uint32_t>& tubes, std::vector<std::uint32_t>& parts,
+  std::vector<std::uint32_t>& partFirsts) const
 {
   const size_t n = this->Batches.size();
   spheres.resize(4 * n);
   tubes.resize(n);
+  partFirsts.resize(n + 1);
+  partFirsts[0] = 0;
   for (size_t b = 0; b < n; ++b)
   {
-    const Batch& batch = this->Batches[b];
-    std::copy(batch.Center, batch.Center + 3, &spheres[4 * b]);
-    spheres[4 * b + 3] = static_cast<float>(
-      (batch.Radius + widen * batch.MaxRadius) * (1.0 + 1e-6) + 1e-6 * std::abs(batch.Center[0]) +
-      1e-6 * std::abs(batch.Center[1]) + 1e-6 * std::abs(batch.Center[2]));
-    tubes[b] = batch.Tube;
+    partFirsts[b + 1] = partFirsts[b] + static_cast<std::uint32_t>(this->Batches[b].Segments);
   }
+  parts.resize(partFirsts[n]);
+  const float* P = this->Core ? this->Core->GetNodePositions()->GetPointer(0) : nullptr;
+  const float* R = this->Core ? this->Core->GetNodeRadii()->GetPointer(0) : nullptr;
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType b = begin; b < end; ++b)
+      {
+        const Batch& batch = this->Batches[b];
+        const double extent =
+          std::abs(batch.Center[0]) + std::abs(batch.Center[1]) + std::abs(batch.Center[2]);
+        std::copy(batch.Center, batch.Center + 3, &spheres[4 * b]);
+        spheres[4 * b + 3] = static_cast<float>(
+          (batch.Radius + widen * batch.MaxRadius) * (1.0 + 1e-6) + 1e-6 * extent);
+        tubes[b] = batch.Tube;
+        // The segments: straight, within `widen` radii of their points.
+        for (int s = 0; s < batch.Segments; ++s)
+        {
+          const vtkIdType i = batch.FirstNode + s;
+          double part[4];
+          double half2 = 0.0;
+          for (int k = 0; k < 3; ++k)
+          {
+            const double a = P[3 * i + k] - this->Shift[k];
+            const double c = P[3 * i + 3 + k] - this->Shift[k];
+            part[k] = 0.5 * (a + c);
+            half2 += 0.25 * (c - a) * (c - a);
+          }
+          part[3] = (std::sqrt(half2) + widen * std::max(R[2 * i], R[2 * i + 2])) * (1.0 + 1e-6) +
+            1e-6 * extent;
+          parts[partFirsts[b] + s] = vtkSplineTubeVisibility::EncodePart(&spheres[4 * b], part);
+        }
+      }
+    });
 }

@@ -84,17 +84,16 @@ struct vtkStylizedLineMapper::vtkInternals
   std::vector<std::uint32_t> Caps;
   std::vector<float> CullingSpheres; // the batches as chunks of the visibility
   std::vector<std::uint32_t> CullingTubes;
+  std::vector<std::uint32_t> CullingParts;
+  std::vector<std::uint32_t> CullingPartFirsts;
   double CullingWiden = -1.0; // the halo the spheres were made for
   std::vector<std::uint32_t> FixedSegments;
   std::vector<std::uint32_t> Joints;
-  std::vector<std::uint32_t> UploadedSegments; // what the buffers hold
-  std::vector<float> StageNodes;               // upload staging, kept between uploads
+  std::vector<float> StageNodes; // upload staging, kept between uploads
   std::vector<vtkTypeInt16> StageTangents;
   std::vector<unsigned char> StageColors;
   std::vector<float> StageCoords;
   std::vector<vtkTypeInt16> StageFrames;
-  std::vector<std::uint32_t> UploadedJoints;
-  bool ListsUploaded = false;
   std::vector<double> LastView;
 
   // Whole polylines as strips (the shadow map's draw), per data.
@@ -211,7 +210,6 @@ void vtkStylizedLineMapper::ReleaseGraphicsResources(vtkWindow* window)
   in.MeshBytes = 0;
   in.MeshSides = 0;
   in.LastView.clear();
-  in.ListsUploaded = false;
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
@@ -247,7 +245,6 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   const vtkIdType numTubes = core->GetNumberOfTubes();
   in.LastView.clear();
   in.FixedSegments.clear();
-  in.ListsUploaded = false;
   if (numNodes >= (vtkIdType(1) << 30))
   {
     vtkErrorMacro(<< "Too many line vertices (" << numNodes << "); at most 2^30 are supported.");
@@ -443,9 +440,11 @@ void vtkStylizedLineMapper::SetVisibilityChunks()
   // and fix-up geometry, within a radius).
   vtkInternals& in = *this->Internals;
   in.CullingWiden = 1.0 + std::max(0.0, this->HaloWidth);
-  in.FixUp.GetCullingChunks(in.CullingWiden, in.CullingSpheres, in.CullingTubes);
+  in.FixUp.GetCullingChunks(
+    in.CullingWiden, in.CullingSpheres, in.CullingTubes, in.CullingParts, in.CullingPartFirsts);
   this->Visibility->SetChunks(in.CullingSpheres.data(), in.CullingTubes.data(),
-    static_cast<vtkIdType>(in.CullingTubes.size()));
+    static_cast<vtkIdType>(in.CullingTubes.size()), in.CullingParts.data(),
+    in.CullingPartFirsts.data());
 }
 
 //------------------------------------------------------------------------------
@@ -480,29 +479,10 @@ void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   v.Epsilon = this->FixUpEpsilon;
   v.JointRadius = 1.0 + this->HaloWidth;
   v.PixelsPerUnit = pixelsPerUnit;
-  in.FixUp.Classify(v, this->FixUp, in.FixedSegments, in.Joints);
+  in.FixUp.BeginView(v, this->FixUp);
   // Sides of about 3 pixels for the largest cap or cylinder on screen.
   const double sides = std::ceil(2.0 * vtkMath::Pi() * in.FixUp.GetMaximumScreenRadius() / 3.0);
   in.Sides = static_cast<int>(std::max(8.0, std::min<double>(this->FixUpSides, sides)));
-  // Upload the lists only when they changed (a turning camera often keeps them).
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  if (!in.ListsUploaded || in.FixedSegments != in.UploadedSegments ||
-    in.Joints != in.UploadedJoints)
-  {
-    if (!in.Segments.Upload(
-          window, in.FixedSegments.data(), in.FixedSegments.size(), 1, VTK_TYPE_UINT32, GL_R32UI) ||
-      !in.JointsBuffer.Upload(
-        window, in.Joints.data(), in.Joints.size(), 1, VTK_TYPE_UINT32, GL_R32UI))
-    {
-      vtkErrorMacro(<< "Could not upload the fix-up's segment lists: "
-                    << vtkSplineVizGPUBuffer::GetLastUploadError());
-      in.FixedSegments.clear();
-      in.Joints.clear();
-    }
-    in.UploadedSegments = in.FixedSegments;
-    in.UploadedJoints = in.Joints;
-    in.ListsUploaded = true;
-  }
   in.LastView = view;
 }
 
@@ -992,20 +972,30 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
   state->vtkglDisable(GL_CULL_FACE);
 
-  // Group by group (vtkSplineVisibility): 1. the silhouette quads of the
-  // visible batches, one multi-draw; 2. their polylines' caps, 3. the
-  // fix-up's cylinders and joints (with the first group: few, and found per
-  // view); then the caps' halos.
+  // Group by group (vtkSplineTubeVisibility): 1. the silhouette quads of
+  // the visible batches, one multi-draw; 2. their polylines' caps, 3. the
+  // fix-up's cylinders and joints of the batches fixed up; then the caps'
+  // halos.
   auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   const GLsizei sides = static_cast<GLsizei>(in.MeshSides);
   const void* capOffset = reinterpret_cast<const void*>(6 * sizeof(unsigned short) * in.MeshSides);
   const size_t jointOffset = 9 * sizeof(unsigned short) * in.MeshSides;
-  const GLsizei fixed = static_cast<GLsizei>(in.FixedSegments.size());
-  bool firstGroup = true;
+  auto list = [&](vtkSplineVizGPUBuffer& buffer, const std::vector<std::uint32_t>& values,
+                const char* uniform)
+  {
+    if (values.empty() ||
+      !buffer.Upload(window, values.data(), values.size(), 1, VTK_TYPE_UINT32, GL_R32UI))
+    {
+      return false;
+    }
+    buffer.Activate(program, uniform);
+    return true;
+  };
   this->DrawVisibleChunks(ren, act,
     [&](const std::vector<std::uint32_t>& batches)
     {
-      in.FixUp.BuildStrips(batches, in.StripFirsts, in.StripCounts, in.Caps);
+      in.FixUp.BuildDraws(
+        batches, in.StripFirsts, in.StripCounts, in.Caps, in.FixedSegments, in.Joints);
       program->SetUniformi("lineMode", STRIPS);
       program->SetUniformi("lineHaloPass", 0);
       if (!in.StripFirsts.empty())
@@ -1013,13 +1003,10 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
         glMultiDrawArrays(GL_TRIANGLE_STRIP, in.StripFirsts.data(), in.StripCounts.data(),
           static_cast<GLsizei>(in.StripFirsts.size()));
       }
-      const bool caps = this->Capping && !in.Caps.empty() &&
-        in.CapsBuffer.Upload(window, in.Caps.data(), in.Caps.size(), 1, VTK_TYPE_UINT32, GL_R32UI);
-      if (caps)
-      {
-        in.CapsBuffer.Activate(program, "lineCaps");
-        program->SetUniformi("lineCapList", 1);
-      }
+      const bool caps = this->Capping && list(in.CapsBuffer, in.Caps, "lineCaps");
+      const bool fixed = list(in.Segments, in.FixedSegments, "lineSegments");
+      const bool joints = list(in.JointsBuffer, in.Joints, "lineJoints");
+      program->SetUniformi("lineCapList", 1);
       in.Meshes->Bind();
       for (int halo = 0; halo < (this->HaloWidth > 0.0 ? 2 : 1); ++halo)
       {
@@ -1034,12 +1021,13 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
         // length a halo ring would cut the line's own parts further back
         // wherever they curve out of its profile (Stoll's halo is the
         // quads' band).
-        if (fixed > 0 && halo == 0 && firstGroup)
+        if (fixed && halo == 0)
         {
           program->SetUniformi("lineMode", FIXUP_CYLINDERS);
-          glDrawElementsInstanced(GL_TRIANGLES, 6 * sides, GL_UNSIGNED_SHORT, nullptr, fixed);
+          glDrawElementsInstanced(GL_TRIANGLES, 6 * sides, GL_UNSIGNED_SHORT, nullptr,
+            static_cast<GLsizei>(in.FixedSegments.size()));
         }
-        if (!in.Joints.empty() && halo == 0 && firstGroup)
+        if (joints && halo == 0)
         {
           program->SetUniformi("lineMode", FIXUP_JOINTS);
           glDrawElementsInstanced(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT,
@@ -1047,10 +1035,7 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
         }
       }
       in.Meshes->Release();
-      firstGroup = false;
     });
-  in.Meshes->Bind();
-  in.Meshes->Release();
   if (shadows)
   {
     in.ShadowMap->Deactivate();

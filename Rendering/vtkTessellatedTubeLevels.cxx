@@ -354,6 +354,7 @@ void vtkTessellatedTubeLevels::SetCore(vtkSplineTubeCore* core)
   this->ChunkPixels.assign(static_cast<size_t>(numChunks), -1.0f);
   this->ChunkThinLevels.assign(static_cast<size_t>(numChunks), 0);
   this->TubeSideBin.assign(static_cast<size_t>(core->GetNumberOfTubes()), Culled);
+  this->TubeStamp.assign(static_cast<size_t>(core->GetNumberOfTubes()), 0);
   this->ThinCaps.assign(static_cast<size_t>(core->GetNumberOfSegments()), 0);
   this->LastView.clear();
 }
@@ -366,7 +367,6 @@ bool vtkTessellatedTubeLevels::ClassifyView(const View& view, const Settings& se
   {
     return false;
   }
-  const vtkIdType numTubes = core->GetNumberOfTubes();
   const vtkIdType numChunks = core->GetNumberOfChunks();
 
   // Skip the classification when nothing it depends on changed.
@@ -386,24 +386,20 @@ bool vtkTessellatedTubeLevels::ClassifyView(const View& view, const Settings& se
   this->CurrentView = view;
   this->CurrentSettings = settings;
 
-  const int ringBins = static_cast<int>(this->RingLadder.size());
-  const int sideBins = static_cast<int>(this->SideLadder.size());
-  if (!settings.LevelOfDetail)
+  // The tubes are classified when first drawn in this view (ClassifyTube()).
+  ++this->ViewStamp;
+  if (this->ViewStamp == 0)
   {
-    std::fill(this->ChunkRingBin.begin(), this->ChunkRingBin.end(), 0);
-    std::fill(this->ChunkPixels.begin(), this->ChunkPixels.end(), 0.0f);
-    std::fill(this->TubeSideBin.begin(), this->TubeSideBin.end(), 0);
-    return true;
+    std::fill(this->TubeStamp.begin(), this->TubeStamp.end(), 0);
+    this->ViewStamp = 1;
   }
-  const double(*proj)[4] = view.Proj;
-  const float* modelView = view.ModelView;
   // Frustum planes (view coordinates, normalized): row3 +- row0, +- row1, +- row2.
-  double planes[6][4];
+  const double(*proj)[4] = view.Proj;
   for (int k = 0; k < 3; ++k)
   {
     for (int side = 0; side < 2; ++side)
     {
-      double* p = planes[2 * k + side];
+      double* p = this->Planes[2 * k + side];
       for (int c = 0; c < 4; ++c)
       {
         p[c] = proj[3][c] + (side == 0 ? 1.0 : -1.0) * proj[k][c];
@@ -415,6 +411,31 @@ bool vtkTessellatedTubeLevels::ClassifyView(const View& view, const Settings& se
       }
     }
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTessellatedTubeLevels::ClassifyTube(vtkIdType t)
+{
+  vtkSplineTubeCore* core = this->Core;
+  const View& view = this->CurrentView;
+  const Settings& settings = this->CurrentSettings;
+  const int ringBins = static_cast<int>(this->RingLadder.size());
+  const int sideBins = static_cast<int>(this->SideLadder.size());
+  const vtkIdType* tubeFirstChunk = core->GetTubeFirstChunks()->GetPointer(0);
+  if (!settings.LevelOfDetail)
+  {
+    for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
+    {
+      this->ChunkRingBin[c] = 0;
+      this->ChunkPixels[c] = 0.0f;
+    }
+    this->TubeSideBin[t] = 0;
+    return;
+  }
+  const double(*proj)[4] = view.Proj;
+  const float* modelView = view.ModelView;
+  const double(*planes)[4] = this->Planes;
   const double pixelScale =
     0.5 * std::max(proj[0][0] * view.Width, proj[1][1] * view.Height); // pixels per unit at w = 1
   const double wSlope =
@@ -422,82 +443,73 @@ bool vtkTessellatedTubeLevels::ClassifyView(const View& view, const Settings& se
   const double ringTarget = 0.5 * settings.MaxEdgeLength;
   const double sideTarget = 2.0 * settings.MaxSilhouetteEdgeLength;
   const double twoPi = 2.0 * vtkMath::Pi();
-  const vtkIdType* tubeFirstChunk = core->GetTubeFirstChunks()->GetPointer(0);
   const float* spheres = core->GetChunkSpheres()->GetPointer(0);
   const float* sizes = core->GetChunkSizes()->GetPointer(0);
   const double radiusScale = view.RadiusScale;
-  vtkSMPTools::For(0, numTubes,
-    [&](vtkIdType begin, vtkIdType end)
+  double widest = -1.0; // pixels; < 0: the tube is culled
+  for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
+  {
+    const float* sphere = spheres + 4 * c;
+    double center[3];
+    for (int r = 0; r < 3; ++r)
     {
-      for (vtkIdType t = begin; t < end; ++t)
+      center[r] = modelView[r] * sphere[0] + modelView[4 + r] * sphere[1] +
+        modelView[8 + r] * sphere[2] + modelView[12 + r];
+    }
+    const double radius = sphere[3] * radiusScale;
+    bool outside = false;
+    for (int k = 0; k < 6 && !outside; ++k)
+    {
+      outside = planes[k][0] * center[0] + planes[k][1] * center[1] + planes[k][2] * center[2] +
+          planes[k][3] <
+        -radius;
+    }
+    if (outside)
+    {
+      this->ChunkRingBin[c] = Culled;
+      this->ChunkPixels[c] = -1.0f;
+      continue;
+    }
+    const double w = proj[3][0] * center[0] + proj[3][1] * center[1] + proj[3][2] * center[2] +
+      proj[3][3] - wSlope * radius;
+    int ringBin = 0;
+    double radiusPixels = VTK_DOUBLE_MAX;
+    double lengthPixels = VTK_DOUBLE_MAX;
+    if (w > 1e-6 * (std::abs(proj[3][3]) + std::abs(center[2]) + radius))
+    {
+      const double scale = pixelScale * radiusScale / w;
+      lengthPixels = sizes[3 * c] * scale;
+      const double intervals = sizes[3 * c + 1] * scale / ringTarget;
+      radiusPixels = sizes[3 * c + 2] * scale;
+      ringBin = ringBins - 1;
+      while (ringBin > 0 && this->RingLadder[ringBin] - 1 < intervals)
       {
-        double widest = -1.0; // pixels; < 0: the tube is culled
-        for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
-        {
-          const float* sphere = spheres + 4 * c;
-          double center[3];
-          for (int r = 0; r < 3; ++r)
-          {
-            center[r] = modelView[r] * sphere[0] + modelView[4 + r] * sphere[1] +
-              modelView[8 + r] * sphere[2] + modelView[12 + r];
-          }
-          const double radius = sphere[3] * radiusScale;
-          bool outside = false;
-          for (int k = 0; k < 6 && !outside; ++k)
-          {
-            outside = planes[k][0] * center[0] + planes[k][1] * center[1] +
-                planes[k][2] * center[2] + planes[k][3] <
-              -radius;
-          }
-          if (outside)
-          {
-            this->ChunkRingBin[c] = Culled;
-            this->ChunkPixels[c] = -1.0f;
-            continue;
-          }
-          const double w = proj[3][0] * center[0] + proj[3][1] * center[1] +
-            proj[3][2] * center[2] + proj[3][3] - wSlope * radius;
-          int ringBin = 0;
-          double radiusPixels = VTK_DOUBLE_MAX;
-          double lengthPixels = VTK_DOUBLE_MAX;
-          if (w > 1e-6 * (std::abs(proj[3][3]) + std::abs(center[2]) + radius))
-          {
-            const double scale = pixelScale * radiusScale / w;
-            lengthPixels = sizes[3 * c] * scale;
-            const double intervals = sizes[3 * c + 1] * scale / ringTarget;
-            radiusPixels = sizes[3 * c + 2] * scale;
-            ringBin = ringBins - 1;
-            while (ringBin > 0 && this->RingLadder[ringBin] - 1 < intervals)
-            {
-              --ringBin;
-            }
-          }
-          this->ChunkRingBin[c] = static_cast<unsigned char>(ringBin);
-          this->ChunkPixels[c] = static_cast<float>(std::min(lengthPixels, 1e30));
-          widest = std::max(widest, radiusPixels);
-        }
-        // Sides: one patch around when at most SinglePatchSides ring edges
-        // are needed (the tessellator makes them), else the fewest base
-        // vertices that the silhouette refinement can at least double to
-        // the need.
-        int sideBin = Culled;
-        if (widest >= 0.0)
-        {
-          const double sidesNeeded = twoPi * widest / sideTarget;
-          sideBin = sideBins - 1;
-          if (sidesNeeded > SinglePatchSides)
-          {
-            sideBin = sideBins - 2;
-            while (sideBin > 0 && this->SideLadder[sideBin] < 0.5 * sidesNeeded)
-            {
-              --sideBin;
-            }
-          }
-        }
-        this->TubeSideBin[t] = static_cast<unsigned char>(sideBin);
+        --ringBin;
       }
-    });
-  return true;
+    }
+    this->ChunkRingBin[c] = static_cast<unsigned char>(ringBin);
+    this->ChunkPixels[c] = static_cast<float>(std::min(lengthPixels, 1e30));
+    widest = std::max(widest, radiusPixels);
+  }
+  // Sides: one patch around when at most SinglePatchSides ring edges are
+  // needed (the tessellator makes them), else the fewest base vertices that
+  // the silhouette refinement can at least double to the need. From the
+  // widest chunk of the tube in view, so that the rings of its chunks match.
+  int sideBin = Culled;
+  if (widest >= 0.0)
+  {
+    const double sidesNeeded = twoPi * widest / sideTarget;
+    sideBin = sideBins - 1;
+    if (sidesNeeded > SinglePatchSides)
+    {
+      sideBin = sideBins - 2;
+      while (sideBin > 0 && this->SideLadder[sideBin] < 0.5 * sidesNeeded)
+      {
+        --sideBin;
+      }
+    }
+  }
+  this->TubeSideBin[t] = static_cast<unsigned char>(sideBin);
 }
 
 //------------------------------------------------------------------------------
@@ -587,9 +599,27 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
   const vtkTypeUInt32* chunkTube = core->GetChunkTubes()->GetPointer(0);
   const unsigned char* flags = core->GetSegmentFlags()->GetPointer(0);
 
-  // The thin tubes' chunks: their levels, for this view, in parallel. (The
-  // ring bins of ClassifyView() are kept for the other tubes.)
+  // The tubes of these chunks not yet classified in this view (in parallel),
+  // then the thin tubes' chunks: their levels, in parallel.
   const vtkIdType n = static_cast<vtkIdType>(chunks.size());
+  std::vector<std::uint32_t> tubes;
+  for (std::uint32_t c : chunks)
+  {
+    const std::uint32_t t = chunkTube[c];
+    if (this->TubeStamp[t] != this->ViewStamp)
+    {
+      this->TubeStamp[t] = this->ViewStamp;
+      tubes.push_back(t);
+    }
+  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(tubes.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        this->ClassifyTube(tubes[i]);
+      }
+    });
   if (settings.LevelOfDetail)
   {
     vtkSMPTools::For(0, n,

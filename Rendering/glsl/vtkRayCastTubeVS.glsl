@@ -2,8 +2,9 @@
 
 // Ray-cast spline tubes (Salm §3.2 'Rendering'), vertex stage.
 //
-// One point per quadratic sub-segment (gl_VertexID = sub-segment), no vertex
-// attributes. The vertex reads its sub-segment's two nodes from the tubes
+// One point per quadratic sub-segment of the chunks drawn (gl_VertexID =
+// (entry of tubeChunkList) x tubeChunkSegments x subSegments + sub-segment
+// in the chunk), no vertex attributes. The vertex reads its sub-segment's two nodes from the tubes
 // buffer, splits the cubic segment into its quadratic sub-segments
 // (svSplitSegment), takes the one it owns into view coordinates, bounds it
 // with its oriented box (svSubSegmentBox) and covers the box's projection
@@ -22,6 +23,8 @@
 uniform samplerBuffer tubeNodes;     // per node: (x, y, z, r), (dx, dy, dz, dr)
 uniform usamplerBuffer tubeSegments; // per segment: (first node | flags << 30, tube)
 uniform int subSegments;             // quadratic sub-segments per cubic segment
+uniform usamplerBuffer tubeChunkList; // per chunk drawn: its first segment, its segment count
+uniform int tubeChunkSegments;       // the longest chunk, in segments
 uniform mat4 tubeMCVC;               // model (shifted) to view
 uniform float tubeRadiusScale;       // model to view scale of radii
 uniform float tubeNearPlane;         // distance of the near plane (view units)
@@ -55,11 +58,20 @@ vec2 projectToPlane(vec3 p, float zp)
 
 void main()
 {
-  int id = gl_VertexID;
   tubeRect.frame = vec4(0.0); // not drawn (unless set below)
   tubeRect.span = vec4(0.0);
-  int segment = id / subSegments;
-  int k = id - segment * subSegments;
+  int perChunk = tubeChunkSegments * subSegments;
+  int entry = gl_VertexID / perChunk;
+  int local = gl_VertexID - entry * perChunk;
+  uvec2 chunk = texelFetch(tubeChunkList, entry).xy;
+  if (local >= int(chunk.y) * subSegments)
+  {
+    tubeRect.info = ivec4(0);
+    tubeRect.q0 = tubeRect.q1 = tubeRect.q2 = vec4(0.0);
+    return; // past the chunk's end: no rectangle
+  }
+  int segment = int(chunk.x) + local / subSegments;
+  int k = local - (local / subSegments) * subSegments;
   uvec2 s = texelFetch(tubeSegments, segment).xy;
   int node = int(s.x & 0x3FFFFFFFu);
   int flags = int(s.x >> 30u);
