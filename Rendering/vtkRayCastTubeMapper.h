@@ -156,8 +156,10 @@ private:
   vtkRayCastTubeMapper(const vtkRayCastTubeMapper&) = delete;
   void operator=(const vtkRayCastTubeMapper&) = delete;
 
-  /// The chunks of the group being drawn (first segment, count).
+  /// The chunks of the group being drawn (first node, count).
   std::unique_ptr<vtkSplineVizGPUBuffer> ChunkList;
+  /// Chunks per draw call (bounds the memory a software rasterizer's geometry stage takes).
+  static constexpr size_t DrawChunks = 16384;
 };
 
 #endif

@@ -1,6 +1,7 @@
 #include "vtkSplineTubeMapper.h"
 
 #include "vtkSplineTubeColor.h"
+#include "vtkSplineTubeNodes.h"
 #include "vtkSplineTubeCore.h"
 #include "vtkSplineTubeVisibility.h"
 #include "vtkSplineVizGPUBuffer.h"
@@ -50,7 +51,7 @@ struct vtkSplineTubeMapper::PyramidHolder
 //------------------------------------------------------------------------------
 vtkSplineTubeMapper::vtkSplineTubeMapper()
   : NodesBuffer(new vtkSplineVizGPUBuffer)
-  , SegmentsBuffer(new vtkSplineVizGPUBuffer)
+  , NodeInfoBuffer(new vtkSplineVizGPUBuffer)
   , TubesBuffer(new vtkSplineVizGPUBuffer)
   , ColorsBuffer(new vtkSplineVizGPUBuffer)
   , Visibility(new vtkSplineTubeVisibility)
@@ -206,13 +207,8 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
     addLeaf(vtkPolyData::SafeDownCast(input), 0);
   }
   this->Core->Build();
-  // The largest cell id the shaders write, once per data (picking needs it).
-  this->MaximumCellId = 0;
-  vtkIdTypeArray* cellIds = this->Core->GetSegmentCellIds();
-  for (vtkIdType s = 0; s < cellIds->GetNumberOfTuples(); ++s)
-  {
-    this->MaximumCellId = std::max(this->MaximumCellId, cellIds->GetValue(s));
-  }
+  // The largest cell id the shaders write (picking needs it).
+  this->MaximumCellId = this->Core->GetMaximumCellId();
   this->HaveColors = this->Core->HasColors();
   if (this->Core->GetNumberOfTubes() == 0 && inputCells > 0 &&
     this->Core->GetNumberOfSkippedLines() == 0)
@@ -500,7 +496,7 @@ void vtkSplineTubeMapper::ReleaseGraphicsResources(vtkWindow* window)
     this->SelectionPrimitives[i].ReleaseGraphicsResources(window);
   }
   this->NodesBuffer->ReleaseGraphicsResources(window);
-  this->SegmentsBuffer->ReleaseGraphicsResources(window);
+  this->NodeInfoBuffer->ReleaseGraphicsResources(window);
   this->TubesBuffer->ReleaseGraphicsResources(window);
   this->ColorsBuffer->ReleaseGraphicsResources(window);
   this->UploadTime = vtkTimeStamp();
@@ -512,88 +508,55 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
 {
   vtkSplineTubeCore* core = this->Core;
   const vtkIdType numNodes = core->GetNumberOfNodes();
-  const vtkIdType numSegments = core->GetNumberOfSegments();
   const vtkIdType numTubes = core->GetNumberOfTubes();
-  if (numNodes >= (vtkIdType(1) << 30))
+  if (numTubes > static_cast<vtkIdType>(vtkSplineTubeCore::NODE_TUBE_MASK))
   {
-    vtkErrorMacro(<< "Too many nodes (" << numNodes << "); at most 2^30 are supported.");
+    vtkErrorMacro(<< "Too many tubes (" << numTubes << "); at most 2^30 are supported.");
     return false;
   }
-
-  // Nodes: (x, y, z, r), (dx, dy, dz, dr), positions relative to Shift.
-  std::vector<float> nodes(static_cast<size_t>(8 * numNodes));
-  const float* P = core->GetNodePositions()->GetPointer(0);
-  const float* M = core->GetNodeTangents()->GetPointer(0);
-  const float* R = core->GetNodeRadii()->GetPointer(0);
+  // Filled piece by piece from the input: no copy of the whole data on the
+  // CPU side (vtkSplineTubeCore::Fill...).
   const double shift[3] = { this->Shift[0], this->Shift[1], this->Shift[2] };
-  vtkSMPTools::For(0, numNodes,
-    [&](vtkIdType begin, vtkIdType end)
+  bool ok = this->NodesBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 4, VTK_FLOAT,
+    GL_RGBA32F,
+    [&](size_t first, size_t count, void* destination)
     {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        float* n = &nodes[8 * i];
-        for (int c = 0; c < 3; ++c)
-        {
-          n[c] = static_cast<float>(P[3 * i + c] - shift[c]);
-          n[4 + c] = M[3 * i + c];
-        }
-        n[3] = R[2 * i];
-        n[7] = R[2 * i + 1];
-      }
+      core->FillNodes(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count), shift,
+        static_cast<float*>(destination));
     });
-  bool ok = this->NodesBuffer->Upload(window, nodes.data(), 2 * numNodes, 4, VTK_FLOAT, GL_RGBA32F);
-
-  // Segments: (first node | flags << 30, tube); tubes: (cell id, block id).
-  std::vector<vtkTypeUInt32> segments(static_cast<size_t>(2 * numSegments));
-  std::vector<vtkTypeInt32> tubes(static_cast<size_t>(2 * std::max<vtkIdType>(numTubes, 1)));
-  const vtkTypeUInt32* first = core->GetSegmentFirstNodes()->GetPointer(0);
-  const unsigned char* flags = core->GetSegmentFlags()->GetPointer(0);
-  vtkIdType s = 0;
-  for (vtkIdType t = 0; t < numTubes; ++t)
-  {
-    const vtkIdType n = core->GetTubeNumberOfNodes()->GetValue(t);
-    tubes[2 * t] = static_cast<vtkTypeInt32>(core->GetSegmentCellIds()->GetValue(s));
-    tubes[2 * t + 1] = static_cast<vtkTypeInt32>(core->GetSegmentBlockIds()->GetValue(s));
-    for (vtkIdType k = 0; k + 1 < n; ++k, ++s)
-    {
-      segments[2 * s] = first[s] | (static_cast<vtkTypeUInt32>(flags[s]) << 30);
-      segments[2 * s + 1] = static_cast<vtkTypeUInt32>(t);
-    }
-  }
-  ok = this->SegmentsBuffer->Upload(
-         window, segments.data(), numSegments, 2, VTK_TYPE_UINT32, GL_RG32UI) &&
-    ok;
-  ok = this->TubesBuffer->Upload(window, tubes.data(), numTubes, 2, VTK_TYPE_INT32, GL_RG32I) && ok;
-
-  // Colors (RGBA8) and their derivatives (signed bytes, scaled by 127,
-  // clamped to [-1, 1]: a full color change per segment), one RG32UI texel
-  // per node (vtkSplineTubeColor.glsl), only with scalar coloring.
-  if (this->HaveColors)
-  {
-    std::vector<vtkTypeUInt32> colors(static_cast<size_t>(2 * numNodes));
-    const float* C = core->GetNodeColors()->GetPointer(0);
-    const float* D = core->GetNodeColorDerivatives()->GetPointer(0);
-    vtkSMPTools::For(0, numNodes,
-      [&](vtkIdType begin, vtkIdType end)
+  ok = ok &&
+    this->NodeInfoBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 1,
+      VTK_TYPE_UINT32, GL_R32UI,
+      [&](size_t first, size_t count, void* destination)
       {
-        for (vtkIdType i = begin; i < end; ++i)
+        core->FillNodeInfo(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+          static_cast<unsigned int*>(destination));
+      });
+  // Per tube: (cell id, block id), for picking.
+  ok = ok &&
+    this->TubesBuffer->UploadInPieces(window, static_cast<size_t>(numTubes), 2, VTK_TYPE_INT32,
+      GL_RG32I,
+      [&](size_t first, size_t count, void* destination)
+      {
+        auto* ids = static_cast<vtkTypeInt32*>(destination);
+        for (size_t t = 0; t < count; ++t)
         {
-          vtkTypeUInt32 color = 0;
-          vtkTypeUInt32 derivative = 0;
-          for (int c = 0; c < 4; ++c)
-          {
-            const long byte = std::lround(255.0f * std::min(1.0f, std::max(0.0f, C[4 * i + c])));
-            const long slope = std::lround(127.0f * std::min(1.0f, std::max(-1.0f, D[4 * i + c])));
-            color |= static_cast<vtkTypeUInt32>(byte) << (8 * c);
-            derivative |= (static_cast<vtkTypeUInt32>(slope) & 0xFFu) << (8 * c);
-          }
-          colors[2 * i] = color;
-          colors[2 * i + 1] = derivative;
+          ids[2 * t] = static_cast<vtkTypeInt32>(core->GetTubeCellId(first + t));
+          ids[2 * t + 1] = static_cast<vtkTypeInt32>(core->GetTubeBlockId(first + t));
         }
       });
-    ok =
-      this->ColorsBuffer->Upload(window, colors.data(), numNodes, 2, VTK_TYPE_UINT32, GL_RG32UI) &&
-      ok;
+  // Colors (RGBA8, one word per node), only with scalar coloring; the
+  // derivatives come from the neighbours in the shaders.
+  if (this->HaveColors)
+  {
+    ok = ok &&
+      this->ColorsBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 1,
+        VTK_TYPE_UINT32, GL_R32UI,
+        [&](size_t first, size_t count, void* destination)
+        {
+          core->FillColors(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+            static_cast<unsigned int*>(destination));
+        });
   }
   else
   {
@@ -612,7 +575,7 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
 void vtkSplineTubeMapper::ActivateTubeBuffers(vtkShaderProgram* program)
 {
   this->NodesBuffer->Activate(program, "tubeNodes");
-  this->SegmentsBuffer->Activate(program, "tubeSegments");
+  this->NodeInfoBuffer->Activate(program, "tubeNodeInfo");
   if (program->IsUniformUsed("tubeTubes"))
   {
     this->TubesBuffer->Activate(program, "tubeTubes");
@@ -627,7 +590,7 @@ void vtkSplineTubeMapper::ActivateTubeBuffers(vtkShaderProgram* program)
 void vtkSplineTubeMapper::DeactivateTubeBuffers()
 {
   this->NodesBuffer->Deactivate();
-  this->SegmentsBuffer->Deactivate();
+  this->NodeInfoBuffer->Deactivate();
   this->TubesBuffer->Deactivate();
   this->ColorsBuffer->Deactivate();
 }
@@ -635,8 +598,14 @@ void vtkSplineTubeMapper::DeactivateTubeBuffers()
 //------------------------------------------------------------------------------
 size_t vtkSplineTubeMapper::GetTubeBuffersSize()
 {
-  return this->NodesBuffer->GetNumberOfBytes() + this->SegmentsBuffer->GetNumberOfBytes() +
+  return this->NodesBuffer->GetNumberOfBytes() + this->NodeInfoBuffer->GetNumberOfBytes() +
     this->TubesBuffer->GetNumberOfBytes() + this->ColorsBuffer->GetNumberOfBytes();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSplineTubeMapper::GetTubeNodesDeclarations()
+{
+  return vtkSplineTubeNodes;
 }
 
 //------------------------------------------------------------------------------

@@ -21,13 +21,14 @@
  * - bounds that include the tubes' radii.
  *
  * - the tubes buffer on the GPU (Salm §3, Fig. 3), as buffer textures read by
- *   the shaders with texelFetch: per node the position and radius, the
- *   tangent and radius derivative (`tubeNodes`, 2 RGBA32F texels), per segment
- *   its first node, the TUBE_START/TUBE_END flags and its tube (`tubeSegments`,
- *   RG32UI), per tube the cell and block ids for picking (`tubeTubes`, RG32I)
- *   and, with scalar coloring, per node the color and its derivative (scaled
- *   by 127) as bytes in one texel (`tubeColors`, RG32UI; the color spline of
- *   glsl/vtkSplineTubeColor.glsl);
+ *   the shaders with texelFetch (glsl/vtkSplineTubeNodes.glsl): per node the
+ *   position and radius (`tubeNodes`, RGBA32F) and its tube with the flags
+ *   first and last node of the tube (`tubeNodeInfo`, R32UI); the derivatives
+ *   are the neighbours' differences, computed where they are used (the same
+ *   as vtkSplineTubeCore's); per tube the cell and block ids for picking
+ *   (`tubeTubes`, RG32I); with scalar coloring, per node the color (RGBA8,
+ *   `tubeColors`, R32UI). 20 bytes per node, 24 with colors, uploaded in
+ *   pieces from the input (no copy of the data kept on the CPU side);
  * - the fragment-shader code for the color spline and for hardware picking
  *   (cell = polyline, composite index = block).
  *
@@ -240,7 +241,7 @@ protected:
    * The tubes buffer shared by the tube mappers (see the class comment).
    * UploadTubeBuffers() uploads it from the core (positions relative to
    * Shift); ActivateTubeBuffers() binds it to the uniforms tubeNodes,
-   * tubeSegments, tubeTubes and tubeColors (those the program uses);
+   * tubeNodeInfo, tubeTubes and tubeColors (those the program uses);
    * GetTubeBuffersSize() counts its bytes.
    */
   bool UploadTubeBuffers(vtkOpenGLRenderWindow* window);
@@ -250,9 +251,15 @@ protected:
   ///@}
 
   /**
-   * Shader declarations of the color spline (with scalar coloring; needs the
-   * spline-tube math before them): glsl/vtkSplineTubeColor.glsl, its
-   * function `vec4 tubeColorSpline(int node, float t)`.
+   * Shader declarations of the tubes buffer (needs the spline-tube math
+   * before them): glsl/vtkSplineTubeNodes.glsl, e.g. tubeSegmentModel().
+   */
+  static std::string GetTubeNodesDeclarations();
+
+  /**
+   * Shader declarations of the color spline (needs the tubes buffer's before
+   * them): glsl/vtkSplineTubeColor.glsl, its function
+   * `vec4 tubeColorSpline(int node, float t)`.
    */
   static std::string GetTubeColorDeclarations();
 
@@ -394,7 +401,7 @@ protected:
   int ShaderVariant = -1;        ///< colors and composite input the shaders were made for
 
   std::unique_ptr<vtkSplineVizGPUBuffer> NodesBuffer;
-  std::unique_ptr<vtkSplineVizGPUBuffer> SegmentsBuffer;
+  std::unique_ptr<vtkSplineVizGPUBuffer> NodeInfoBuffer;
   std::unique_ptr<vtkSplineVizGPUBuffer> TubesBuffer;
   std::unique_ptr<vtkSplineVizGPUBuffer> ColorsBuffer;
 

@@ -31,6 +31,7 @@
 #define vtkStylizedLineFixUp_h
 
 #include "SplineVizModule.h" // for export macro
+#include "vtkStylizedLineMath.h" // for vec3
 #include "vtkType.h"
 
 #include <atomic>
@@ -96,8 +97,11 @@ public:
     std::vector<std::uint32_t>& tubes, std::vector<std::uint32_t>& parts,
     std::vector<std::uint32_t>& partFirsts) const;
 
-  /// Unit tangent per line vertex (3 floats each), made by Build().
-  const std::vector<float>& GetTangents() const { return this->Tangents; }
+  /// The unit tangent of a line vertex (the bisector; the segment's direction at the ends).
+  void GetTangent(vtkIdType node, double tangent[3]) const;
+
+  /// The tangents of the vertices [first, first + count), octahedral, 2 int16 each (in parallel).
+  void FillTangents(vtkIdType first, vtkIdType count, short* octahedral) const;
 
   /**
    * The largest radius on screen, in pixels, of the polylines' ends (the
@@ -136,6 +140,9 @@ private:
     float MaxRadius; ///< largest line radius in the batch
   };
   bool TestVertices(const Batch& batch, const View& view) const;
+  /// Nodes [k0, k1] of a tube (positions and radii, 4 each; may be nullptr) and their tangents.
+  void Nodes(vtkIdType tube, vtkIdType k0, vtkIdType k1, double* xyzr,
+    vtkStylizedLineMath::vec3* tangents) const;
   /// The cone test, then the vertices of the candidates.
   bool NeedsFixUp(const Batch& batch, const View& view, double thetaEps) const;
   /// Radius on screen (pixels) of point i in the current view (0 behind the eye).
@@ -143,7 +150,6 @@ private:
 
   vtkSplineTubeCore* Core = nullptr;
   double Shift[3] = { 0.0, 0.0, 0.0 };
-  std::vector<float> Tangents;
   std::vector<Batch> Batches;
   std::vector<vtkIdType> TubeFirstBatch; ///< tubes + 1
   std::vector<unsigned char> Flags;

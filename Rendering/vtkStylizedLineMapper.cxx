@@ -89,11 +89,6 @@ struct vtkStylizedLineMapper::vtkInternals
   double CullingWiden = -1.0; // the halo the spheres were made for
   std::vector<std::uint32_t> FixedSegments;
   std::vector<std::uint32_t> Joints;
-  std::vector<float> StageNodes; // upload staging, kept between uploads
-  std::vector<vtkTypeInt16> StageTangents;
-  std::vector<unsigned char> StageColors;
-  std::vector<float> StageCoords;
-  std::vector<vtkTypeInt16> StageFrames;
   std::vector<double> LastView;
 
   // Whole polylines as strips (the shadow map's draw), per data.
@@ -137,8 +132,6 @@ bool vtkStylizedLineMapper::NeedsTextureData() const
 void vtkStylizedLineMapper::ConfigureTubeCore(vtkSplineTubeCore* core)
 {
   const bool texture = this->NeedsTextureData();
-  // Frames only for the texture's circumferential coordinate.
-  core->SetComputeFrames(texture);
   core->SetNodeScalarRole("orientation");
   core->SetNodeScalarArrayName(texture && this->OrientationArray && this->OrientationArray[0]
       ? this->OrientationArray
@@ -253,80 +246,56 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
     in.StripCounts.clear();
     return;
   }
-  const float* P = core->GetNodePositions()->GetPointer(0);
-  const float* R = core->GetNodeRadii()->GetPointer(0);
   const double shift[3] = { this->Shift[0], this->Shift[1], this->Shift[2] };
-  // The fix-up's batches (per data); it owns the vertex tangents.
+  // The fix-up's batches (per data).
   in.FixUp.Build(core, this->Shift);
-  const float* M = in.FixUp.GetTangents().data();
 
-  // Positions (relative to the shift) and radii; unit tangents, octahedral.
-  // Staging arrays kept between uploads (moving lines upload every frame).
-  std::vector<float>& nodes = in.StageNodes;
-  std::vector<vtkTypeInt16>& tangents = in.StageTangents;
-  nodes.resize(static_cast<size_t>(4 * numNodes));
-  tangents.resize(static_cast<size_t>(2 * numNodes));
-  vtkSMPTools::For(0, numNodes,
-    [&](vtkIdType begin, vtkIdType end)
+  // Positions (relative to the shift) and radii; unit tangents, octahedral;
+  // filled piece by piece from the input (no copy kept on the CPU side).
+  const size_t nodes = static_cast<size_t>(numNodes);
+  bool ok = in.Nodes.UploadInPieces(window, nodes, 4, VTK_FLOAT, GL_RGBA32F,
+    [&](size_t first, size_t count, void* destination)
     {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          nodes[4 * i + c] = static_cast<float>(P[3 * i + c] - shift[c]);
-        }
-        nodes[4 * i + 3] = R[2 * i];
-        const vtkSplineTubeMath::vec2 e = vtkSplineTubeMath::svOctEncode(
-          vtkSplineTubeMath::vec3(M[3 * i], M[3 * i + 1], M[3 * i + 2]));
-        tangents[2 * i] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.x));
-        tangents[2 * i + 1] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.y));
-      }
+      core->FillNodes(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count), shift,
+        static_cast<float*>(destination));
     });
-  bool ok = in.Nodes.Upload(window, nodes.data(), numNodes, 4, VTK_FLOAT, GL_RGBA32F);
-  ok = in.Tangents.Upload(window, tangents.data(), numNodes, 2, VTK_TYPE_INT16, GL_RG16I) && ok;
+  ok = ok &&
+    in.Tangents.UploadInPieces(window, nodes, 2, VTK_TYPE_INT16, GL_RG16I,
+      [&](size_t first, size_t count, void* destination)
+      {
+        in.FixUp.FillTangents(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+          static_cast<short*>(destination));
+      });
 
   // Polylines: first vertices (and the end), cell and block ids.
   std::vector<vtkTypeUInt32> starts(static_cast<size_t>(numTubes + 1));
   std::vector<vtkTypeInt32> tubes(static_cast<size_t>(2 * std::max<vtkIdType>(numTubes, 1)), 0);
-  const vtkIdType* tubeFirst = core->GetTubeFirstNodes()->GetPointer(0);
-  const vtkIdType* tubeNodes = core->GetTubeNumberOfNodes()->GetPointer(0);
-  vtkIdType segment = 0;
-  for (vtkIdType t = 0; t < numTubes; ++t)
-  {
-    starts[t] = static_cast<vtkTypeUInt32>(tubeFirst[t]);
-    tubes[2 * t] = static_cast<vtkTypeInt32>(core->GetSegmentCellIds()->GetValue(segment));
-    tubes[2 * t + 1] = static_cast<vtkTypeInt32>(core->GetSegmentBlockIds()->GetValue(segment));
-    segment += tubeNodes[t] - 1;
-  }
-  starts[numTubes] = static_cast<vtkTypeUInt32>(numNodes);
   in.WholeFirsts.resize(static_cast<size_t>(numTubes));
   in.WholeCounts.resize(static_cast<size_t>(numTubes));
   for (vtkIdType t = 0; t < numTubes; ++t)
   {
-    in.WholeFirsts[t] = static_cast<int>(2 * tubeFirst[t]);
-    in.WholeCounts[t] = static_cast<int>(2 * tubeNodes[t]);
+    starts[t] = static_cast<vtkTypeUInt32>(core->GetTubeFirstNode(t));
+    tubes[2 * t] = static_cast<vtkTypeInt32>(core->GetTubeCellId(t));
+    tubes[2 * t + 1] = static_cast<vtkTypeInt32>(core->GetTubeBlockId(t));
+    in.WholeFirsts[t] = static_cast<int>(2 * core->GetTubeFirstNode(t));
+    in.WholeCounts[t] = static_cast<int>(2 * core->GetTubeNumberOfNodes(t));
   }
+  starts[numTubes] = static_cast<vtkTypeUInt32>(numNodes);
   in.LastShadowKey.clear();
-  ok =
-    in.TubeStarts.Upload(window, starts.data(), numTubes + 1, 1, VTK_TYPE_UINT32, GL_R32UI) && ok;
-  ok = this->TubesBuffer->Upload(window, tubes.data(), numTubes, 2, VTK_TYPE_INT32, GL_RG32I) && ok;
+  ok = ok &&
+    in.TubeStarts.Upload(window, starts.data(), numTubes + 1, 1, VTK_TYPE_UINT32, GL_R32UI);
+  ok = ok && this->TubesBuffer->Upload(window, tubes.data(), numTubes, 2, VTK_TYPE_INT32, GL_RG32I);
 
-  // Colors, with scalar coloring.
+  // Colors (RGBA8), with scalar coloring.
   if (this->HaveColors)
   {
-    const float* C = core->GetNodeColors()->GetPointer(0);
-    std::vector<unsigned char>& colors = in.StageColors;
-    colors.resize(static_cast<size_t>(4 * numNodes));
-    vtkSMPTools::For(0, 4 * numNodes,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
+    ok = ok &&
+      in.Colors.UploadInPieces(window, nodes, 4, VTK_UNSIGNED_CHAR, GL_RGBA8,
+        [&](size_t first, size_t count, void* destination)
         {
-          colors[i] =
-            static_cast<unsigned char>(std::lround(255.0f * std::min(1.0f, std::max(0.0f, C[i]))));
-        }
-      });
-    ok = in.Colors.Upload(window, colors.data(), numNodes, 4, VTK_UNSIGNED_CHAR, GL_RGBA8) && ok;
+          core->FillColors(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+            static_cast<unsigned int*>(destination));
+        });
   }
   else
   {
@@ -336,45 +305,54 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   // With a texture: the coordinate along each line (arc length, or its
   // integral over 1 / radius, along the straight segments), the orientation
   // angle, and the rotation-minimizing frame vectors.
-  in.TextureData = core->GetNodeFrames()->GetNumberOfTuples() == numNodes && numNodes > 0;
+  in.TextureData = this->NeedsTextureData() && numNodes > 0;
   if (in.TextureData)
   {
-    const float* F = core->GetNodeFrames()->GetPointer(0);
-    vtkFloatArray* scalars = core->GetNodeScalars();
-    const float* O =
-      scalars->GetNumberOfTuples() == numNodes && numNodes > 0 ? scalars->GetPointer(0) : nullptr;
     const bool radii = this->TextureRepeatUnits == RADII;
-    std::vector<float>& coords = in.StageCoords;
-    std::vector<vtkTypeInt16>& frames = in.StageFrames;
-    coords.resize(static_cast<size_t>(2 * numNodes));
-    frames.resize(static_cast<size_t>(2 * numNodes));
-    vtkSMPTools::For(0, numTubes,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType t = begin; t < end; ++t)
+    ok = ok &&
+      in.TexCoords.UploadInPieces(window, nodes, 2, VTK_FLOAT, GL_RG32F,
+        [&](size_t first, size_t count, void* destination)
         {
-          double s = 0.0;
-          for (vtkIdType k = 0; k < tubeNodes[t]; ++k)
+          auto* coords = static_cast<float*>(destination);
+          std::vector<float> orientation(count);
+          core->FillScalars(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+            orientation.data());
+          const vtkIdType end = static_cast<vtkIdType>(first + count);
+          std::vector<double> p;
+          for (vtkIdType b = static_cast<vtkIdType>(first), t = core->GetTubeOfNode(b); b < end;
+               ++t)
           {
-            const vtkIdType i = tubeFirst[t] + k;
-            if (k > 0)
+            // The arc length from the tube's first node.
+            const vtkIdType tubeFirst = core->GetTubeFirstNode(t);
+            const vtkIdType stop = std::min(end, tubeFirst + core->GetTubeNumberOfNodes(t));
+            p.resize(static_cast<size_t>(4 * (stop - tubeFirst)));
+            core->GetTubeNodes(t, 0, stop - tubeFirst, p.data(), nullptr);
+            double s = 0.0;
+            for (vtkIdType k = 0; k < stop - tubeFirst; ++k)
             {
-              const double d =
-                glm::distance(vtkSplineTubeMath::vec3(P[3 * i - 3], P[3 * i - 2], P[3 * i - 1]),
-                  vtkSplineTubeMath::vec3(P[3 * i], P[3 * i + 1], P[3 * i + 2]));
-              s += radii ? 0.5 * d * (1.0 / R[2 * i - 2] + 1.0 / R[2 * i]) : d;
+              if (k > 0)
+              {
+                const double d = std::sqrt(vtkMath::Distance2BetweenPoints(&p[4 * k - 4], &p[4 * k]));
+                s += radii ? 0.5 * d * (1.0 / p[4 * k - 1] + 1.0 / p[4 * k + 3]) : d;
+              }
+              const vtkIdType i = tubeFirst + k;
+              if (i >= b)
+              {
+                coords[2 * (i - static_cast<vtkIdType>(first))] = static_cast<float>(s);
+                coords[2 * (i - static_cast<vtkIdType>(first)) + 1] =
+                  orientation[i - static_cast<vtkIdType>(first)];
+              }
             }
-            coords[2 * i] = static_cast<float>(s);
-            coords[2 * i + 1] = O ? O[i] : 0.0f;
-            const vtkSplineTubeMath::vec2 e = vtkSplineTubeMath::svOctEncode(
-              vtkSplineTubeMath::vec3(F[3 * i], F[3 * i + 1], F[3 * i + 2]));
-            frames[2 * i] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.x));
-            frames[2 * i + 1] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.y));
+            b = stop;
           }
-        }
-      });
-    ok = in.TexCoords.Upload(window, coords.data(), numNodes, 2, VTK_FLOAT, GL_RG32F) && ok;
-    ok = in.Frames.Upload(window, frames.data(), numNodes, 2, VTK_TYPE_INT16, GL_RG16I) && ok;
+        });
+    ok = ok &&
+      in.Frames.UploadInPieces(window, nodes, 2, VTK_TYPE_INT16, GL_RG16I,
+        [&](size_t first, size_t count, void* destination)
+        {
+          core->FillFrames(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+            static_cast<short*>(destination));
+        });
   }
   else
   {

@@ -20,10 +20,9 @@
 // 3 times more triangles per sub-segment and the triangle setup dominates the
 // frame time (see vtkRayCastTubeMapper.h for the measurements).
 
-uniform samplerBuffer tubeNodes;     // per node: (x, y, z, r), (dx, dy, dz, dr)
-uniform usamplerBuffer tubeSegments; // per segment: (first node | flags << 30, tube)
 uniform int subSegments;             // quadratic sub-segments per cubic segment
-uniform usamplerBuffer tubeChunkList; // per chunk drawn: its first segment, its segment count
+uniform usamplerBuffer tubeChunkList; // per chunk drawn: its first node, its segment count
+uniform int tubeHaveColors;          // the color spline's ends for the fragment stage
 uniform int tubeChunkSegments;       // the longest chunk, in segments
 uniform mat4 tubeMCVC;               // model (shifted) to view
 uniform float tubeRadiusScale;       // model to view scale of radii
@@ -42,6 +41,10 @@ out TubeRectangle
   flat ivec4 info; // first node, sub-segment, tube, flags | mode << 2
   flat vec4 frame; // u (xy: the rectangle's first axis; v = (-u.y, u.x)), z of its plane, w > 0: drawn
   flat vec4 span;  // lo (xy), hi (zw): extents along u and v
+  flat vec4 c0;    // the color spline: colors and derivatives at the segment's ends
+  flat vec4 d0;
+  flat vec4 c1;
+  flat vec4 d1;
 } tubeRect;
 
 //VTK::SplineTubeMath::Dec
@@ -68,18 +71,18 @@ void main()
   {
     tubeRect.info = ivec4(0);
     tubeRect.q0 = tubeRect.q1 = tubeRect.q2 = vec4(0.0);
+    tubeRect.c0 = tubeRect.d0 = tubeRect.c1 = tubeRect.d1 = vec4(0.0);
     return; // past the chunk's end: no rectangle
   }
-  int segment = int(chunk.x) + local / subSegments;
+  int node = int(chunk.x) + local / subSegments;
   int k = local - (local / subSegments) * subSegments;
-  uvec2 s = texelFetch(tubeSegments, segment).xy;
-  int node = int(s.x & 0x3FFFFFFFu);
-  int flags = int(s.x >> 30u);
-
-  vec4 p0 = texelFetch(tubeNodes, 2 * node);
-  vec4 m0 = texelFetch(tubeNodes, 2 * node + 1);
-  vec4 p1 = texelFetch(tubeNodes, 2 * node + 2);
-  vec4 m1 = texelFetch(tubeNodes, 2 * node + 3);
+  vec4 p0;
+  vec4 m0;
+  vec4 p1;
+  vec4 m1;
+  int flags;
+  int tube;
+  tubeSegmentModel(node, p0, m0, p1, m1, flags, tube);
   // The segment in view coordinates (Hermite and Bezier forms transform with
   // their control points), then its sub-segment k.
   vec4 a = vec4((tubeMCVC * vec4(p0.xyz, 1.0)).xyz, p0.w * tubeRadiusScale);
@@ -158,7 +161,14 @@ void main()
   tubeRect.q0 = q0;
   tubeRect.q1 = q1;
   tubeRect.q2 = q2;
-  tubeRect.info = ivec4(node, k, int(s.y), flags | (mode << 2));
+  tubeRect.info = ivec4(node, k, tube, flags | (mode << 2));
+  if (tubeHaveColors != 0)
+  {
+    tubeRect.c0 = tubeNodeColor(node);
+    tubeRect.d0 = tubeNodeColorDerivative(node);
+    tubeRect.c1 = tubeNodeColor(node + 1);
+    tubeRect.d1 = tubeNodeColorDerivative(node + 1);
+  }
 
   // Fast path: the sub-segment lies in the convex hull of its control points
   // with the largest radius (Bernstein property, radii >= 0); bound the
