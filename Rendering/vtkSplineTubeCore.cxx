@@ -636,6 +636,12 @@ void vtkSplineTubeCore::GetNode(vtkIdType node, double xyzr[4]) const
 }
 
 //------------------------------------------------------------------------------
+void vtkSplineTubeCore::GetTubeNode(vtkIdType tube, vtkIdType k, double xyzr[4]) const
+{
+  this->Internal->Node(tube, k, xyzr);
+}
+
+//------------------------------------------------------------------------------
 void vtkSplineTubeCore::GetNodeDerivative(vtkIdType node, double dxyzr[4]) const
 {
   const Internals& in = *this->Internal;

@@ -183,6 +183,8 @@ public:
    * [0, 1], white without colors) and scalar (0 without NodeScalarArrayName).
    */
   void GetNode(vtkIdType node, double xyzr[4]) const;
+  /// Node k of a tube (0 its first): the same as GetNode() without finding the tube.
+  void GetTubeNode(vtkIdType tube, vtkIdType k, double xyzr[4]) const;
   void GetNodeDerivative(vtkIdType node, double dxyzr[4]) const;
   void GetNodeColor(vtkIdType node, double rgba[4]) const;
   double GetNodeScalar(vtkIdType node) const;

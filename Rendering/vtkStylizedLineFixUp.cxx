@@ -345,9 +345,8 @@ void vtkStylizedLineFixUp::BeginView(const View& view, bool enabled)
       double& local = largest.Local();
       for (vtkIdType t = begin; t < end; ++t)
       {
-        const vtkIdType first = core->GetTubeFirstNode(t);
-        local = std::max({ local, this->ScreenRadius(first),
-          this->ScreenRadius(first + core->GetTubeNumberOfNodes(t) - 1) });
+        local = std::max(
+          { local, this->ScreenRadius(t, 0), this->ScreenRadius(t, core->GetTubeNumberOfNodes(t) - 1) });
       }
     });
   for (double r : largest)
@@ -357,11 +356,11 @@ void vtkStylizedLineFixUp::BeginView(const View& view, bool enabled)
 }
 
 //------------------------------------------------------------------------------
-double vtkStylizedLineFixUp::ScreenRadius(vtkIdType i) const
+double vtkStylizedLineFixUp::ScreenRadius(vtkIdType t, vtkIdType k) const
 {
   const View& view = this->CurrentView;
   double P[4];
-  this->Core->GetNode(i, P);
+  this->Core->GetTubeNode(t, k, P);
   const vec3 p = TransformPoint(
     view.ModelView, vec3(P[0] - this->Shift[0], P[1] - this->Shift[1], P[2] - this->Shift[2]));
   const double r = P[3] * view.RadiusScale * view.PixelsPerUnit;
@@ -408,10 +407,10 @@ void vtkStylizedLineFixUp::BuildDraws(const std::vector<std::uint32_t>& batches,
       });
   }
   vtkSplineTubeCore* core = this->Core;
-  auto point = [core](vtkIdType i)
+  auto point = [core](vtkIdType t, vtkIdType k)
   {
     double p[4];
-    core->GetNode(i, p);
+    core->GetTubeNode(t, k, p);
     return vec4(p[0], p[1], p[2], p[3]);
   };
   for (std::uint32_t b : batches)
@@ -445,18 +444,19 @@ void vtkStylizedLineFixUp::BuildDraws(const std::vector<std::uint32_t>& batches,
     // Fixed up: its segments as cylinders; joints at its points but those
     // whose sphere would stick out of an end cap.
     const vtkIdType tubeStart = core->GetTubeFirstNode(batch.Tube);
-    const vtkIdType tubeLast = tubeStart + core->GetTubeNumberOfNodes(batch.Tube) - 1;
-    const vec3 start = vec3(point(tubeStart));
-    const vec3 end = vec3(point(tubeLast));
+    const vtkIdType last = core->GetTubeNumberOfNodes(batch.Tube) - 1;
+    const vec3 start = vec3(point(batch.Tube, 0));
+    const vec3 end = vec3(point(batch.Tube, last));
+    const vtkIdType local = batch.FirstNode - tubeStart; // the batch's first node in its tube
     for (int s = 0; s < batch.Segments; ++s)
     {
       segments.push_back(batch.FirstNode + static_cast<std::uint32_t>(s));
       this->FixedScreenRadius =
-        std::max(this->FixedScreenRadius, this->ScreenRadius(batch.FirstNode + s));
+        std::max(this->FixedScreenRadius, this->ScreenRadius(batch.Tube, local + s));
     }
     for (vtkIdType i = batch.FirstNode; i <= batch.FirstNode + batch.Segments; ++i)
     {
-      const vec4 p = point(i);
+      const vec4 p = point(batch.Tube, i - tubeStart);
       const double clearance = view.JointRadius * p.w;
       if (glm::distance(vec3(p), start) > clearance && glm::distance(vec3(p), end) > clearance)
       {

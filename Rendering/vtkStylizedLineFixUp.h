@@ -146,7 +146,8 @@ private:
   /// The cone test, then the vertices of the candidates.
   bool NeedsFixUp(const Batch& batch, const View& view, double thetaEps) const;
   /// Radius on screen (pixels) of point i in the current view (0 behind the eye).
-  double ScreenRadius(vtkIdType i) const;
+  /// The radius in pixels of node k of tube t in the current view.
+  double ScreenRadius(vtkIdType t, vtkIdType k) const;
 
   vtkSplineTubeCore* Core = nullptr;
   double Shift[3] = { 0.0, 0.0, 0.0 };
