@@ -16,6 +16,8 @@ pieces; a seeded random fraction is the same set for any number of pieces,
 of a size within 4 standard deviations of the fraction, another seed
 another set.
 
+Progress rises to 1 in piece reads; an abort leaves an empty output.
+
 Bad input: a damaged triplet or an end marker inside the data, a truncated
 file, a .trk record count running past the end, a .tsf that does not match:
 the pieces that meet the damage fail with a message and an empty output,
@@ -331,6 +333,40 @@ for keep in (False, True):
     check(all(same(s, expected) for s in sets),
           ".tck with empty streamlines (%s), every 2nd: the file's [::2] for 1, 2, 3, 7 pieces"
           % ("kept" if keep else "dropped"))
+
+# ---------------------------------------------------------------------------
+# Progress and abort in the piece reads
+
+
+def progress_run(path, piece, pieces, abort_at=None, **kw):
+    reader = splineviz.vtkTractogramReader()
+    errors = Errors(reader)
+    reader.SetFileName(path)
+    if kw.get("stride"):
+        reader.SetSubsetModeToStride()
+        reader.SetSubsetStride(3)
+    seen = []
+
+    def on_progress(caller, event):
+        seen.append(caller.GetProgress())
+        if abort_at is not None and caller.GetProgress() >= abort_at:
+            caller.SetAbortExecute(1)
+
+    reader.AddObserver(vtkCommand.ProgressEvent, on_progress)
+    reader.UpdatePiece(piece, pieces, 0)
+    return seen, reader.GetOutput().GetNumberOfCells(), errors.messages
+
+
+for label, path, kw in ((".tck", sub_tck, {}), (".tck every 3rd", sub_tck, {"stride": True}),
+                        (".trk", sub_trk, {})):
+    full, cells, messages = progress_run(path, 1, 2, **kw)
+    check(len(full) >= 4 and full == sorted(full) and full[-1] == 1.0 and cells > 0,
+          "%s piece 1 of 2: progress rises to 1 (%d reports)" % (label, len(full)))
+    # (the pipeline reports 0 before and 1 after the reader's own reports)
+    seen, cells, messages = progress_run(path, 1, 2, abort_at=0.0, **kw)
+    check(cells == 0 and not messages and len(seen) < len(full),
+          "%s piece 1 of 2 aborted at its first report: empty output, no error, stops early (%d "
+          "reports)" % (label, len(seen)))
 
 # ---------------------------------------------------------------------------
 # Bad input: the pieces that meet the damage fail quickly with a message, the others read
