@@ -1185,7 +1185,7 @@ int vtkTractogramReader::RequestData(
   {
     return fail("no file name was given");
   }
-  const std::string where = std::string("cannot read \"") + this->FileName + "\": ";
+  std::string where = std::string("cannot read \"") + this->FileName + "\": ";
   int format = this->FileFormat;
   if (format == AUTOMATIC)
   {
@@ -1208,6 +1208,11 @@ int vtkTractogramReader::RequestData(
     this->Piece = std::max(0,
       std::min(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()),
         this->NumberOfPieces - 1));
+  }
+  if (this->NumberOfPieces > 1)
+  {
+    where +=
+      "piece " + std::to_string(this->Piece) + " of " + std::to_string(this->NumberOfPieces) + ": ";
   }
 
   Streamlines lines;
@@ -1359,7 +1364,16 @@ int vtkTractogramReader::RequestData(
           float* dst = pf + 3 * (o + j);
           for (int r = 0; r < 3; ++r)
           {
-            dst[r] = static_cast<float>(a[r][0] * x[0] + a[r][1] * x[1] + a[r][2] * x[2] + a[r][3]);
+            const double y = a[r][0] * x[0] + a[r][1] * x[1] + a[r][2] * x[2] + a[r][3];
+            if (!(std::abs(y) <= std::numeric_limits<float>::max()))
+            {
+              // beyond float32 after the voxel-mm to RAS+ map (a voxel size
+              // near 0, a huge vox_to_ras): as unusable as a NaN
+              vtkIdType expected = -1;
+              badLine.compare_exchange_strong(expected, static_cast<vtkIdType>(s));
+              return;
+            }
+            dst[r] = static_cast<float>(y);
           }
           for (std::size_t k = 0; k < pointTargets.size(); ++k)
           {
@@ -1408,8 +1422,12 @@ int vtkTractogramReader::RequestData(
   }
   if (badLine.load() >= 0)
   {
+    // the streamline's index in the file, when the piece knows it; else in the piece
+    badLine = badLine.load() + std::max(0LL, lines.FirstIndex);
+    where += lines.FirstIndex < 0 ? "counting from the piece's first streamline, " : "";
     return fail(where + "streamline " + std::to_string(badLine.load()) +
-      " has NaN or infinite coordinates (a damaged file)");
+      " has NaN or infinite coordinates, in the file or after the voxel-mm to RAS+ map (a damaged "
+      "file or header)");
   }
   lines.Data.clear();
 

@@ -418,6 +418,12 @@ check_bad(".trk with a point count past the end (streamline 200)", damaged("coun
 raw[pos:pos + 4] = np.int32(-5).tobytes()
 check_bad(".trk with a negative point count (streamline 200)", damaged("negative.trk", raw), 3,
           [2])
+raw[pos:pos + 4] = open(trk, "rb").read()[pos:pos + 4]
+raw[pos + 4:pos + 8] = np.float32(np.nan).tobytes()  # the first point of streamline 200
+parts = read_pieces(damaged("nan.trk", raw), 3)
+check([p.ok for p in parts] == [1, 1, 0] and "piece 2 of 3: streamline 200 has NaN" in parts[2].message,
+      ".trk with a NaN point in streamline 200: piece 2 fails, naming the streamline by its index "
+      "in the file")
 check_bad(".trk truncated", damaged("truncated.trk", open(trk, "rb").read()[:-5000]), 3,
           [2])
 
