@@ -3,9 +3,8 @@
  * @brief   Reads tractograms (fibre tracts) in MRtrix .tck (with .tsf per-point scalars) and
  * TrackVis .trk format as vtkPolyData polylines in world RAS+ millimetres.
  *
- * One polyline per streamline (formats: vtkTractogramFormats), in world RAS+
- * mm with voxel centres at integer voxel coordinates (nibabel's and MRtrix's
- * convention), where vtkNIfTITensorReader puts the image they were tracked in.
+ * One polyline per streamline (formats: vtkTractogramFormats) in world RAS+ mm,
+ * where vtkNIfTITensorReader puts the image they were tracked in.
  * - **.tck**: points as stored (float32, either byte order; float64 read as
  *   double); the header's `key: value` lines as field data "MRtrixHeader".
  *   Companion **.tsf** files (AddScalarFileName()) become 1-component point
@@ -34,12 +33,11 @@
  * its key is below SubsetFraction (key: its index in a .trk, the index of its
  * first triplet in a .tck, so no counting is needed).
  *
- * Large reads go in 16 MiB chunks in parallel (vtkSMPTools) with progress;
- * AbortExecute is honoured between chunks, batches and skipped records. Bad
- * input (wrong magic, no or misplaced end marker, a damaged triplet, a .trk
- * count past the end of the file, a .tsf that does not match, NaN points)
- * gives an error (vtkErrorMacro, RequestData returns 0) and an empty output;
- * nothing is allocated from a count before the file is known to hold it.
+ * Reads go in 16 MiB chunks in parallel (vtkSMPTools) with progress and
+ * abort. Bad input (wrong magic, a missing or misplaced end marker, damaged
+ * triplets, .trk counts past the end of the file, a .tsf that does not match,
+ * NaN points) fails RequestData with an error and an empty output; nothing is
+ * allocated from a count before the file is known to hold it.
  */
 
 #ifndef vtkTractogramReader_h
