@@ -632,15 +632,16 @@ bool vtkTractogramReader::ScanMRtrixRange(const std::string& fileName, std::uint
     }
     MRtrixSpecials specials;
     FindSpecials(block.data(), n, valueSize, swap, tupleSize, specials);
-    if (specials.Invalid != MRtrixSpecials::None)
-    {
-      error = InvalidTupleError(t + specials.Invalid);
-      ok = false;
-    }
-    else if (stopAtFirst && !specials.Separators.empty())
+    // (separators are found only before damage: what lies after the first belongs to others)
+    if (stopAtFirst && !specials.Separators.empty())
     {
       found = t + specials.Separators.front();
       break;
+    }
+    else if (specials.Invalid != MRtrixSpecials::None)
+    {
+      error = InvalidTupleError(t + specials.Invalid);
+      ok = false;
     }
     else if (specials.Terminator != MRtrixSpecials::None)
     {
