@@ -23,31 +23,13 @@
  * clipping planes, depth peeling passes and hardware picking (cell = the
  * polyline, composite block index) go through VTK's usual shader machinery.
  *
- * Proxy choice, measured on this machine (Mesa llvmpipe, 2 cores) with
- * Benchmarks/SplineVizTubeBenchmark: the paper's oriented box per
- * sub-segment, rasterized from a geometry shader emitting only the faces
- * turned to the eye, cost 2.4 times more per frame than a rectangle in the
- * image plane (4.2 s against 1.8 s for Fibers2 without any fragment work):
- * triangle setup and geometry-shader output dominate in a software
- * rasterizer, and the box needs up to 6 triangles against 2. So the proxy
- * is a rectangle oriented along the projected sub-segment, bounding the
- * projection of the spheres at its control points (the sub-segment's convex
- * hull; the oriented box clipped to the near plane when the camera is among
- * the tubes). The vertex stage sets it up once per sub-segment (one point
- * each) and a geometry stage emits its 4-vertex strip: built by the vertex
- * stage per corner (indexed triangles), the set-up ran four times per
- * sub-segment on the thread where llvmpipe shades vertices, 28 % of a
- * 1 M-segment frame; with the geometry stage that frame went from 1.43x to
- * 1.9-2.0x faster than vtkTubeFilter's at 800x600 and from 1.26x to
- * 1.5-1.8x at 1200x768 (Fibers2, whose frame is spent in the fragment
- * stage, unchanged within noise: 0.80-0.87 of the tube filter's frame at
- * 800x600, 0.97-1.03 at 1200x768). Instancing adds a per-instance cost (0.86 s against 0.72 s
- * for an earlier Fibers2 frame). (One rectangle per cubic segment for
- * segments small on screen, the fragment stage testing both sub-segments,
- * was measured too: no faster, since the per-fragment root finding, not the
- * rectangles, dominates; nor did rectangles cut short at the node spheres
- * the next proxy covers: llvmpipe shades fragments in 4 x 4 blocks, and
- * the blocks a rectangle of tubes 2-4 pixels wide touches barely change.)
+ * The proxy is a rectangle in the image plane per sub-segment, oriented
+ * along its projection and bounding the spheres at its control points (its
+ * convex hull; the oriented box clipped to the near plane when the camera is
+ * among the tubes): set up once per sub-segment in the vertex stage (one
+ * point each), emitted as a 4-vertex strip by the geometry stage. On a
+ * software rasterizer it costs less than the paper's box (2 triangles
+ * against up to 6); the measurements are in docs/performance.md.
  *
  * **Straight segments** (StraightTolerance, default 0.02): segments and
  * quadratic sub-segments whose spheres lie within 2 % of their smallest
@@ -60,11 +42,9 @@
  * vtkSplineTubeMapper); while the camera moves, a subset of the tubes that
  * fits the frame budget (InteractiveSubset).
  *
- * Data on the GPU (uploaded once per data change): per node the position,
- * radius, tangent and radius derivative (32 bytes) and, with scalar coloring,
- * the color and its derivative (8 bytes); per segment the first node and flags
- * (4 bytes) and the tube index (4 bytes); per tube its cell and block ids.
- * See GetGPUMemorySize().
+ * Data on the GPU (uploaded once per data change): the line mappers' node
+ * buffers (vtkSplineTubeMapper: 20 bytes per node, 24 with scalar colors) and
+ * per tube its cell and block ids. See GetGPUMemorySize().
  *
  * Limitations: translucent tubes show their nearest surface only (the far
  * wall of the same sub-segment is not drawn); point picking is not

@@ -858,7 +858,13 @@ void vtkSplineTubeCore::PropagateFrames(
     for (int k = 1; k <= 8; ++k)
     {
       const vec3 cur = unitTangent(s, k / 8.0);
-      turning += std::acos(std::max(-1.0, std::min(1.0, glm::dot(prev, cur))));
+      // The angle between unit vectors from their distance c: 2 asin(c / 2),
+      // by its series below c = 1 (relative error under 1e-3; acos was a
+      // fifth of the first frame's CPU time on whole-brain tractograms).
+      const double c = glm::length(cur - prev);
+      const double c2 = c * c;
+      turning += c < 1.0 ? c * (1.0 + c2 * (1.0 / 24.0 + c2 * (3.0 / 640.0)))
+                         : 2.0 * std::asin(std::min(1.0, 0.5 * c));
       prev = cur;
     }
     const int steps = std::max(1, std::min(256, static_cast<int>(std::ceil(turning / maxAngle))));

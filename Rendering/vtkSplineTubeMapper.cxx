@@ -7,6 +7,7 @@
 #include "vtkSplineVizGPUBuffer.h"
 
 #include "vtkActor.h"
+#include "vtkBoundingBox.h"
 #include "vtkCamera.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataPipeline.h"
@@ -98,7 +99,10 @@ std::string vtkSplineTubeMapper::BuildSignature()
 {
   std::ostringstream s;
   s.precision(17);
-  s << this->Radius << '|' << (this->RadiusArray ? this->RadiusArray : "") << '|'
+  s << this->Radius << '|' << this->AutomaticRadiusBounds[0] << ',' << this->AutomaticRadiusBounds[1]
+    << ',' << this->AutomaticRadiusBounds[2] << ',' << this->AutomaticRadiusBounds[3] << ','
+    << this->AutomaticRadiusBounds[4] << ',' << this->AutomaticRadiusBounds[5] << '|'
+    << (this->RadiusArray ? this->RadiusArray : "") << '|'
     << this->RadiusScale << '|' << (this->CellIdArrayName ? this->CellIdArrayName : "") << '|'
     << this->ScalarVisibility << '|' << this->ScalarMode << '|' << this->ArrayAccessMode << '|'
     << this->ArrayId << '|' << this->ArrayName << '|' << this->ArrayComponent << '|'
@@ -107,6 +111,59 @@ std::string vtkSplineTubeMapper::BuildSignature()
     << '|' << (this->LookupTable ? this->LookupTable->GetMTime() : 0);
   this->AppendBuildSignature(s);
   return s.str();
+}
+
+//------------------------------------------------------------------------------
+double vtkSplineTubeMapper::ComputeAutomaticRadius(const double bounds[6])
+{
+  double diagonal2 = 0.0;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double extent = bounds[2 * i + 1] - bounds[2 * i];
+    diagonal2 += extent > 0.0 ? extent * extent : 0.0;
+  }
+  const double diagonal = std::sqrt(diagonal2);
+  return diagonal > 0.0 && std::isfinite(diagonal) ? AutomaticRadiusFactor * diagonal : 0.01;
+}
+
+namespace
+{
+// The bounds of the points of every polydata in `input` (invalid if none).
+void ComputeInputBounds(vtkDataObject* input, double bounds[6])
+{
+  vtkBoundingBox box;
+  auto add = [&box](vtkDataObject* leaf)
+  {
+    auto* pd = vtkPolyData::SafeDownCast(leaf);
+    if (pd && pd->GetNumberOfPoints() > 0)
+    {
+      double b[6];
+      pd->GetBounds(b);
+      box.AddBounds(b);
+    }
+  };
+  if (auto* cd = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    auto it = vtk::TakeSmartPointer(cd->NewIterator());
+    it->SkipEmptyNodesOn();
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      add(it->GetCurrentDataObject());
+    }
+  }
+  else
+  {
+    add(input);
+  }
+  if (box.IsValid())
+  {
+    box.GetBounds(bounds);
+  }
+  else
+  {
+    vtkMath::UninitializeBounds(bounds);
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -121,7 +178,18 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
   }
 
   this->Core->Initialize();
-  this->Core->SetRadius(this->Radius);
+  this->EffectiveRadius = this->Radius;
+  if (this->Radius <= 0.0)
+  {
+    double bounds[6];
+    std::copy(this->AutomaticRadiusBounds, this->AutomaticRadiusBounds + 6, bounds);
+    if (!(bounds[0] <= bounds[1]))
+    {
+      ComputeInputBounds(input, bounds);
+    }
+    this->EffectiveRadius = ComputeAutomaticRadius(bounds);
+  }
+  this->Core->SetRadius(this->EffectiveRadius);
   this->Core->SetRadiusArrayName(
     this->RadiusArray && this->RadiusArray[0] ? this->RadiusArray : nullptr);
   this->Core->SetRadiusScale(this->RadiusScale);
@@ -739,6 +807,21 @@ void vtkSplineTubeMapper::SetCameraShaderParameters(
   this->ComputeTubeMatrices(ren, act, modelView, viewModel, radiusScale);
   program->SetUniformMatrix4x4("tubeMCVC", modelView);
   program->SetUniformf("tubeRadiusScale", radiusScale);
+  if (program->IsUniformUsed("tubeMinimumRadius"))
+  {
+    // The narrowest drawn radius at view distance d: a + b d (view units).
+    vtkMatrix4x4* vcdc = GetViewToDisplayMatrix(ren);
+    int width = 1;
+    int height = 1;
+    ren->GetTiledSize(&width, &height);
+    const double pixelScale = 0.5 *
+      std::max(std::abs(vcdc->GetElement(0, 0)) * width, std::abs(vcdc->GetElement(1, 1)) * height);
+    const double halfWidth = 0.5 * this->MinimumPixelWidth / std::max(pixelScale, 1e-30);
+    const bool parallel = ren->GetActiveCamera()->GetParallelProjection() != 0;
+    const float minimum[2] = { static_cast<float>(parallel ? halfWidth : 0.0),
+      static_cast<float>(parallel ? 0.0 : halfWidth) };
+    program->SetUniform2f("tubeMinimumRadius", minimum);
+  }
   if (program->IsUniformUsed("tubeVCMC"))
   {
     program->SetUniformMatrix4x4("tubeVCMC", viewModel);
@@ -907,7 +990,12 @@ void vtkSplineTubeMapper::ComputeTubeMatrices(vtkMatrix4x4* worldToView, vtkActo
 void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "Radius: " << this->Radius << " (in use: " << this->EffectiveRadius << ")\n";
+  os << indent << "AutomaticRadiusBounds: " << this->AutomaticRadiusBounds[0] << ' '
+     << this->AutomaticRadiusBounds[1] << ' ' << this->AutomaticRadiusBounds[2] << ' '
+     << this->AutomaticRadiusBounds[3] << ' ' << this->AutomaticRadiusBounds[4] << ' '
+     << this->AutomaticRadiusBounds[5] << "\n";
+  os << indent << "MinimumPixelWidth: " << this->MinimumPixelWidth << "\n";
   os << indent << "RadiusArray: " << (this->RadiusArray ? this->RadiusArray : "(none)") << "\n";
   os << indent << "RadiusScale: " << this->RadiusScale << "\n";
   os << indent << "CellIdArrayName: " << (this->CellIdArrayName ? this->CellIdArrayName : "(none)")

@@ -139,9 +139,9 @@
  * - Multisampling works when the render window has samples; the actor's
  *   wireframe representation shows the tessellated triangles.
  *
- * Data on the GPU (uploaded once per data change): the tubes buffer of
- * vtkSplineTubeMapper (per node 32 bytes, 8 more with scalar coloring; per
- * segment 8 bytes; per tube 8 bytes) plus the orthogonal vectors, octahedral
+ * Data on the GPU (uploaded once per data change): the node buffers of
+ * vtkSplineTubeMapper (per node 20 bytes, 4 more with scalar coloring; per
+ * tube 8 bytes) plus the orthogonal vectors, octahedral
  * encoded in 4 bytes per node (Salm's suggested compact format), and the base
  * meshes' index buffer (once; 3 KB of it for the thin-tube mesh, whose rows
  * alternate between the two ends of a run so that the first n rows are the

@@ -1,10 +1,14 @@
 #include "vtkSplineTubeRepresentation.h"
 
+#include "vtkCommunicator.h"
 #include "vtkInformation.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVRenderView.h"
 #include "vtkSplineTubeMapper.h"
 
+#include <algorithm>
+#include <cfloat>
 #include <cstring>
 
 //------------------------------------------------------------------------------
@@ -85,11 +89,56 @@ int vtkSplineTubeRepresentation::ProcessViewRequest(
     return 1;
   }
   const int result = this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo);
+  if (request_type == vtkPVView::REQUEST_UPDATE())
+  {
+    this->UpdateAutomaticRadiusBounds();
+  }
   if (request_type == vtkPVView::REQUEST_RENDER() && this->Mapper->GetNumberOfInputConnections(0))
   {
     this->LODMapper->SetInputConnection(0, this->Mapper->GetInputConnection(0, 0));
   }
   return result;
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeRepresentation::UpdateAutomaticRadiusBounds()
+{
+  // The bounds of the data on every rank (REQUEST_UPDATE reaches the
+  // representation on all of them): as minima of (min, -max).
+  double local[6];
+  double global[6];
+  const double* b = this->VisibleDataBounds;
+  const bool valid = b[0] <= b[1] && b[2] <= b[3] && b[4] <= b[5];
+  for (int i = 0; i < 3; ++i)
+  {
+    local[i] = valid ? b[2 * i] : DBL_MAX;
+    local[3 + i] = valid ? -b[2 * i + 1] : DBL_MAX;
+  }
+  std::copy(local, local + 6, global);
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    controller->AllReduce(local, global, 6, vtkCommunicator::MIN_OP);
+  }
+  double bounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
+  if (global[0] <= -global[3])
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      bounds[2 * i] = global[i];
+      bounds[2 * i + 1] = -global[3 + i];
+    }
+  }
+  this->GetTubeMapper()->SetAutomaticRadiusBounds(bounds);
+  this->GetLODTubeMapper()->SetAutomaticRadiusBounds(bounds);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeRepresentation::SetMinimumPixelWidth(double width)
+{
+  this->GetTubeMapper()->SetMinimumPixelWidth(width);
+  this->GetLODTubeMapper()->SetMinimumPixelWidth(width);
+  this->Modified();
 }
 
 //------------------------------------------------------------------------------

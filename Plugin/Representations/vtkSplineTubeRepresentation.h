@@ -16,6 +16,10 @@
  * (vtkSplineTubeMapper::ForceInteractive), instead of the decimated geometry
  * ParaView makes for surfaces (a quadric clustering that would break the
  * lines and cost seconds on large tractograms).
+ *
+ * The automatic radius (Tube Radius 0, the default) is taken from the bounds
+ * of the whole data set, reduced over the ranks of a parallel server, so
+ * that every piece is drawn with the same radius.
  */
 #ifndef vtkSplineTubeRepresentation_h
 #define vtkSplineTubeRepresentation_h
@@ -41,6 +45,7 @@ public:
   void SetRadiusArray(const char* name);
   void SetRadiusScale(double scale);
   void SetOcclusionCulling(bool culling);
+  void SetMinimumPixelWidth(double width);
   ///@}
 
   /// The LOD mapper draws the full data (see the class comment).
@@ -66,6 +71,9 @@ protected:
   vtkSplineTubeMapper* GetLODTubeMapper();
 
 private:
+  /// The mappers' automatic radius from the bounds of the data on all ranks.
+  void UpdateAutomaticRadiusBounds();
+
   vtkSplineTubeRepresentation(const vtkSplineTubeRepresentation&) = delete;
   void operator=(const vtkSplineTubeRepresentation&) = delete;
 };

@@ -31,6 +31,7 @@ uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
 uniform float tubeStraightTolerance; // fraction of the radius; 0: always root finding
 uniform float tubePixelScale;        // pixels per view unit (at unit distance if perspective)
+uniform vec2 tubeMinimumRadius;      // the narrowest drawn radius: x + y (view distance)
 
 // The sub-segment and its rectangle, for the geometry stage.
 out TubeRectangle
@@ -89,6 +90,8 @@ void main()
   vec4 b = vec4((tubeMCVC * vec4(p1.xyz, 1.0)).xyz, p1.w * tubeRadiusScale);
   vec4 da = vec4(mat3(tubeMCVC) * m0.xyz, m0.w * tubeRadiusScale);
   vec4 db = vec4(mat3(tubeMCVC) * m1.xyz, m1.w * tubeRadiusScale);
+  a.w = svDrawnRadius(a.w, a.z, tubeMinimumRadius);
+  b.w = svDrawnRadius(b.w, b.z, tubeMinimumRadius);
   vec4 q0;
   vec4 q1;
   vec4 q2;

@@ -973,3 +973,12 @@ real svThinChainCurvature(vec3 d, real len, vec3 previous, real previousLength)
   real turn = acos(clamp(dot(d, previous) / (len * previousLength), -1.0, 1.0));
   return turn / (0.5 * (len + previousLength));
 }
+
+//------------------------------------------------------------------------------
+// The radius a tube is drawn with at view depth z (z < 0 in front of the eye
+// in perspective): its radius r, but at least minimum[0] + minimum[1] (-z),
+// the mapper's MinimumPixelWidth as a view-space radius at that distance.
+real svDrawnRadius(real r, real z, vec2 minimum)
+{
+  return max(r, minimum[0] + minimum[1] * max(-z, 0.0));
+}

@@ -38,6 +38,7 @@ uniform int lineCapList;
 uniform int lineNumberOfTubes;
 uniform mat4 tubeMCVC;        // shifted model to view
 uniform float tubeRadiusScale; // model to view scale of radii
+uniform vec2 tubeMinimumRadius; // the narrowest drawn radius: x + y (view distance)
 uniform mat4 VCDCMatrix;
 uniform int cameraParallel;
 uniform int lineMode;
@@ -135,7 +136,7 @@ void main()
     float side = (gl_VertexID & 1) != 0 ? 1.0 : -1.0;
     vec4 pr = texelFetch(lineNodes, node);
     vec3 p = (tubeMCVC * vec4(pr.xyz, 1.0)).xyz;
-    float r = pr.w * tubeRadiusScale;
+    float r = svDrawnRadius(pr.w * tubeRadiusScale, p.z, tubeMinimumRadius);
     vec3 t = lineViewTangent(node);
     vec3 u = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : p;
     vec3 x;
@@ -172,7 +173,7 @@ void main()
     vec3 n = cos(phi) * a + sin(phi) * b;
     vec4 pr = texelFetch(lineNodes, node);
     vec3 p = (tubeMCVC * vec4(pr.xyz, 1.0)).xyz;
-    float r = pr.w * tubeRadiusScale;
+    float r = svDrawnRadius(pr.w * tubeRadiusScale, p.z, tubeMinimumRadius);
     position = p + (r * (lineHaloPass != 0 ? lineWiden : 1.0)) * n;
     lineXVSOutput = n;
     lineYVSOutput = cross(n, t);
@@ -188,7 +189,7 @@ void main()
     node = int(texelFetch(lineJoints, gl_InstanceID).x);
     vec4 pr = texelFetch(lineNodes, node);
     vec3 p = (tubeMCVC * vec4(pr.xyz, 1.0)).xyz;
-    float r = pr.w * tubeRadiusScale;
+    float r = svDrawnRadius(pr.w * tubeRadiusScale, p.z, tubeMinimumRadius);
     float rr = r * (lineHaloPass != 0 ? lineWiden : 1.0);
     // A square in the plane through the center, orthogonal to the view ray
     // to it, that bounds the sphere's projection (the cone tangent to it).
@@ -223,7 +224,7 @@ void main()
                     : int(texelFetch(lineTubeStarts, tube).x);
     vec4 pr = texelFetch(lineNodes, node);
     vec3 p = (tubeMCVC * vec4(pr.xyz, 1.0)).xyz;
-    float r = pr.w * tubeRadiusScale;
+    float r = svDrawnRadius(pr.w * tubeRadiusScale, p.z, tubeMinimumRadius);
     vec3 t = lineViewTangent(node);
     vec3 outward = end != 0 ? t : -t;
     vec3 toEye = cameraParallel != 0 ? vec3(0.0, 0.0, 1.0) : -p;

@@ -5,6 +5,7 @@
 uniform isamplerBuffer tubeFrames;   // per node: orthogonal vector, octahedral, int16
 uniform mat4 tubeMCVC;               // model (shifted) to view
 uniform float tubeRadiusScale;       // model to view scale of radii
+uniform vec2 tubeMinimumRadius;      // the narrowest drawn radius: x + y (view distance)
 
 // A cubic segment in view coordinates: nodes (xyz, radius), derivatives
 // (xyz, radius derivative) and orthogonal vectors.
@@ -21,7 +22,8 @@ struct TubeSegment
 vec4 tubeNodePosition(int node)
 {
   vec4 p = tubeNodeModel(node);
-  return vec4((tubeMCVC * vec4(p.xyz, 1.0)).xyz, p.w * tubeRadiusScale);
+  vec3 x = (tubeMCVC * vec4(p.xyz, 1.0)).xyz;
+  return vec4(x, svDrawnRadius(p.w * tubeRadiusScale, x.z, tubeMinimumRadius));
 }
 
 vec4 tubeNodeDerivative(int node)

@@ -5,7 +5,10 @@ ray-cast tubes write their exact depth, so the composite is exact: any
 depth error would show where tubes of different ranks cross. A third run
 colors the tubes by rank to prove that both ranks drew; a fourth runs the
 two ranks with the occlusion-culling pre-pass, which must not change the
-composite either (each rank culls only against its own tubes, exactly).
+composite either (each rank culls only against its own tubes, exactly). A
+fifth pair draws with the automatic radius (Tube Radius 0): every rank must
+take it from the bounds of the whole data set, so that two ranks draw the
+serial picture.
 
     TestParallelRayCastTubes.sh PVBATCH MPIEXEC PVPYTHON OUTPUT_DIR
 renders the four images (one rank, two ranks, two ranks colored by rank,
@@ -51,6 +54,17 @@ print("with occlusion culling: pixels differing by more than 24 levels: %d (larg
       % (wrong, int(difference.max())))
 if wrong > covered // 1000:
     print("ERROR: the two-rank composite with occlusion culling differs from the serial image")
+    sys.exit(1)
+
+a_auto = read(os.path.join(out_dir, "TestParallelRayCastTubes-1rank-automatic.png"))
+b_auto = read(os.path.join(out_dir, "TestParallelRayCastTubes-2ranks-automatic.png"))
+covered_auto = int((a_auto.min(axis=1) < 250).sum())
+difference = abs(a_auto - b_auto).max(axis=1)
+wrong = int((difference > 24).sum())
+print("automatic radius: covered pixels %d, pixels differing by more than 24 levels: %d"
+      % (covered_auto, wrong))
+if covered_auto < 5000 or wrong > covered_auto // 1000:
+    print("ERROR: with the automatic radius the two-rank composite differs from the serial image")
     sys.exit(1)
 
 # Both ranks drew: two distinct tube colors in the by-rank image.

@@ -31,4 +31,8 @@ attempt "$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering 
   "$out/TestParallelRayCastTubes-2ranks-by-rank.png" by-rank
 attempt "$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering "$scene" \
   "$out/TestParallelRayCastTubes-2ranks-culling.png" culling
+attempt "$pvbatch" --force-offscreen-rendering "$scene" \
+  "$out/TestParallelRayCastTubes-1rank-automatic.png" automatic
+attempt "$mpiexec" --oversubscribe -np 2 "$pvbatch" --force-offscreen-rendering "$scene" \
+  "$out/TestParallelRayCastTubes-2ranks-automatic.png" automatic
 "$pvpython" "$here/TestParallelRayCastTubes.py" "$out"
