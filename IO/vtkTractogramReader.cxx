@@ -17,6 +17,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkStringArray.h"
@@ -63,42 +64,37 @@ inline double Value(const char* p, int size, bool swap)
   return d;
 }
 
-// The streamline structure of an MRtrix stream of k-tuples (3 for .tck,
-// 1 for .tsf): the tuples before the first all-infinite one, split at the
-// all-NaN ones. Parallel over chunks of tuples.
-struct MRtrixStructure
+// The special tuples of a block of an MRtrix stream of k-tuples (3 for .tck,
+// 1 for .tsf): all-NaN separators (ends of streamlines), the first
+// all-infinite tuple (the end marker) and the first tuple mixing NaN or
+// infinite values with numbers (damage). Indices are tuples of the block.
+// Parallel over chunks of tuples.
+struct MRtrixSpecials
 {
-  std::vector<std::uint64_t> Start; // first tuple of each streamline
-  std::vector<vtkIdType> Count;     // its number of tuples
+  static constexpr std::uint64_t None = std::numeric_limits<std::uint64_t>::max();
+  std::vector<std::uint64_t> Separators; // before Terminator and Invalid
+  std::uint64_t Terminator = None;
+  std::uint64_t Invalid = None;
 };
 
-template <typename Buffer>
-bool ScanMRtrix(const Buffer& data, int valueSize, bool swap, int tupleSize, MRtrixStructure& out,
-  std::string& error, bool& trailing)
+void FindSpecials(const char* data, std::uint64_t tuples, int valueSize, bool swap, int tupleSize,
+  MRtrixSpecials& out)
 {
   const std::size_t tupleBytes = static_cast<std::size_t>(valueSize) * tupleSize;
-  const std::uint64_t tuples = data.size() / tupleBytes;
-  const bool partialTail = data.size() % tupleBytes != 0;
   const std::uint64_t chunk = 1 << 20;
   const std::uint64_t chunks = (tuples + chunk - 1) / chunk;
-  struct ChunkResult
-  {
-    std::vector<std::uint64_t> Separators;
-    std::uint64_t Terminator = std::numeric_limits<std::uint64_t>::max();
-    std::uint64_t Invalid = std::numeric_limits<std::uint64_t>::max();
-  };
-  std::vector<ChunkResult> results(static_cast<std::size_t>(chunks));
+  std::vector<MRtrixSpecials> results(static_cast<std::size_t>(chunks));
   vtkSMPTools::For(0, static_cast<vtkIdType>(chunks),
     [&](vtkIdType c0, vtkIdType c1)
     {
       for (vtkIdType c = c0; c < c1; ++c)
       {
-        ChunkResult& r = results[static_cast<std::size_t>(c)];
+        MRtrixSpecials& r = results[static_cast<std::size_t>(c)];
         const std::uint64_t t0 = static_cast<std::uint64_t>(c) * chunk;
         const std::uint64_t t1 = std::min(tuples, t0 + chunk);
         for (std::uint64_t t = t0; t < t1; ++t)
         {
-          const char* p = data.data() + t * tupleBytes;
+          const char* p = data + t * tupleBytes;
           if (valueSize == 4)
           {
             // fast path: a float32 is NaN or infinite iff its exponent bits are all set
@@ -143,51 +139,66 @@ bool ScanMRtrix(const Buffer& data, int valueSize, bool swap, int tupleSize, MRt
         }
       }
     });
-  // The first end marker ends the data; an invalid tuple before it is an error.
-  std::uint64_t terminator = std::numeric_limits<std::uint64_t>::max();
-  std::uint64_t invalid = std::numeric_limits<std::uint64_t>::max();
-  for (const ChunkResult& r : results)
+  out = MRtrixSpecials();
+  for (MRtrixSpecials& r : results)
   {
-    invalid = std::min(invalid, r.Invalid);
-    if (r.Terminator != std::numeric_limits<std::uint64_t>::max())
+    out.Separators.insert(out.Separators.end(), r.Separators.begin(), r.Separators.end());
+    if (r.Terminator != MRtrixSpecials::None || r.Invalid != MRtrixSpecials::None)
     {
-      terminator = r.Terminator;
+      out.Terminator = r.Terminator;
+      out.Invalid = r.Invalid;
       break;
     }
   }
-  if (invalid < terminator)
+}
+
+// The message for a damaged tuple.
+std::string InvalidTupleError(std::uint64_t tuple)
+{
+  return "value tuple " + std::to_string(tuple) +
+    " mixes NaN or infinite values with numbers (a damaged file)";
+}
+
+// The streamline structure of a whole MRtrix stream: the tuples before the
+// first all-infinite one, split at the all-NaN ones.
+struct MRtrixStructure
+{
+  std::vector<std::uint64_t> Start; // first tuple of each streamline
+  std::vector<vtkIdType> Count;     // its number of tuples
+  std::uint64_t Terminator = 0;     // the end marker's tuple
+};
+
+template <typename Buffer>
+bool ScanMRtrix(const Buffer& data, int valueSize, bool swap, int tupleSize, MRtrixStructure& out,
+  std::string& error, bool& trailing)
+{
+  const std::size_t tupleBytes = static_cast<std::size_t>(valueSize) * tupleSize;
+  const bool partialTail = data.size() % tupleBytes != 0;
+  MRtrixSpecials specials;
+  FindSpecials(data.data(), data.size() / tupleBytes, valueSize, swap, tupleSize, specials);
+  if (specials.Invalid != MRtrixSpecials::None)
   {
-    error = "value tuple " + std::to_string(invalid) +
-      " mixes NaN or infinite values with numbers (a damaged file)";
+    error = InvalidTupleError(specials.Invalid);
     return false;
   }
-  if (terminator == std::numeric_limits<std::uint64_t>::max())
+  if (specials.Terminator == MRtrixSpecials::None)
   {
     error = partialTail
       ? "the file ends inside a value tuple and has no end marker (a truncated file)"
       : "the file has no end marker (inf inf inf): a truncated file";
     return false;
   }
+  const std::uint64_t terminator = specials.Terminator;
   trailing = (terminator + 1) * tupleBytes < data.size();
   out.Start.clear();
   out.Count.clear();
+  out.Terminator = terminator;
   std::uint64_t begin = 0;
-  for (const ChunkResult& r : results)
+  for (std::uint64_t s : specials.Separators)
   {
-    for (std::uint64_t s : r.Separators)
-    {
-      if (s > terminator)
-      {
-        break;
-      }
-      out.Start.push_back(begin);
-      out.Count.push_back(static_cast<vtkIdType>(s - begin));
-      begin = s + 1;
-    }
-    if (r.Terminator == terminator)
-    {
-      break;
-    }
+    out.Start.push_back(begin);
+    out.Count.push_back(static_cast<vtkIdType>(s - begin));
+    begin = s + 1;
   }
   if (begin != terminator)
   {
@@ -195,6 +206,60 @@ bool ScanMRtrix(const Buffer& data, int valueSize, bool swap, int tupleSize, MRt
     return false;
   }
   return true;
+}
+
+// floor(total * p / n) without overflow.
+std::uint64_t Share(std::uint64_t total, int p, int n)
+{
+  const std::uint64_t un = static_cast<std::uint64_t>(n), up = static_cast<std::uint64_t>(p);
+  return (total / un) * up + (total % un) * up / un;
+}
+
+// Random reads of a file (the probes and record-header scans of piece
+// reads), unbuffered: only the requested bytes are read; counted.
+class FileCursor
+{
+public:
+  explicit FileCursor(const std::string& name)
+  {
+    this->In.rdbuf()->pubsetbuf(nullptr, 0);
+    this->In.open(name, std::ios::in | std::ios::binary);
+  }
+  bool Read(std::uint64_t offset, std::size_t n, void* dst)
+  {
+    this->In.clear();
+    this->In.seekg(static_cast<std::streamoff>(offset), std::ios::beg);
+    this->In.read(static_cast<char*>(dst), static_cast<std::streamsize>(n));
+    this->BytesRead += static_cast<std::uint64_t>(this->In.gcount());
+    return static_cast<bool>(this->In);
+  }
+  std::uint64_t BytesRead = 0;
+
+private:
+  std::ifstream In;
+};
+
+// The kind of an MRtrix k-tuple: 0 numbers, 1 all NaN, 2 all infinite, 3 mixed.
+int TupleKind(const char* p, int valueSize, bool swap, int tupleSize)
+{
+  int nan = 0, inf = 0;
+  for (int k = 0; k < tupleSize; ++k)
+  {
+    const double v = Value(p + k * valueSize, valueSize, swap);
+    nan += std::isnan(v) ? 1 : 0;
+    inf += std::isinf(v) ? 1 : 0;
+  }
+  return nan == tupleSize ? 1 : inf == tupleSize ? 2 : (nan + inf == 0 ? 0 : 3);
+}
+
+// The subset's random choice: a uniform number in [0, 1) from the seed and a key (splitmix64).
+double SubsetHash(std::uint64_t key, int seed)
+{
+  std::uint64_t z = key + 0x9e3779b97f4a7c15ull * (static_cast<std::uint64_t>(seed) + 1);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
 }
 
 std::string BaseName(const std::string& path)
@@ -242,14 +307,21 @@ struct vtkTractogramReader::Internals
 };
 
 // What a parser found: the raw data and where each streamline is in it.
+// A piece's streamlines are those of its data buffer it owns (all of the
+// file's for one piece), in file order.
 struct vtkTractogramReader::Streamlines
 {
   int Format = TF::UNKNOWN;
   DataBuffer Data;
   std::vector<std::uint64_t> Start; // .tck: first triplet; .trk: byte offset of the count
   std::vector<vtkIdType> Count;     // points
+  long long FirstIndex = 0;         // index in the file of the first streamline; -1: unknown
   int ValueSize = 4;
   bool Swap = false;
+  // .tck
+  std::uint64_t FirstTuple = 0;          // the file's triplet at the start of Data
+  std::uint64_t End = 0;                 // the triplets before the end marker
+  std::vector<std::uint64_t> Separators; // of Data, for the .tsf check of a piece
   // .trk
   int ScalarsPerPoint = 0;
   int PropertiesPerLine = 0;
@@ -259,8 +331,7 @@ struct vtkTractogramReader::Streamlines
   struct Scalars
   {
     std::string Name;
-    DataBuffer Data;
-    std::vector<std::uint64_t> Start;
+    DataBuffer Data; // the values of the tractogram's triplets in Data
     int ValueSize = 4;
     bool Swap = false;
   };
@@ -391,6 +462,8 @@ bool vtkTractogramReader::ReadChunked(const std::string& fileName, unsigned long
       error = "cannot read the data of \"" + fileName + "\"";
       return false;
     }
+    this->LastBytesRead += static_cast<vtkTypeInt64>(
+      std::min(size, b1 * ReadChunkBytes) - std::min(size, b0 * ReadChunkBytes));
     this->UpdateProgress(progressBegin + (progressEnd - progressBegin) * b1 / double(chunks));
     if (this->GetAbortExecute())
     {
@@ -409,6 +482,392 @@ unsigned long long FileSize(const std::string& name)
   const std::streamoff s = in ? static_cast<std::streamoff>(in.tellg()) : std::streamoff(-1);
   return s < 0 ? 0ull : static_cast<unsigned long long>(s);
 }
+
+// Polylines over consecutive points (offsets: nLines + 1 values); 32-bit
+// storage when it fits (half the memory).
+vtkSmartPointer<vtkCellArray> MakePolylines(vtkIdTypeArray* offsets, vtkIdType nPoints)
+{
+  const vtkIdType nLines = offsets->GetNumberOfValues() - 1;
+  const vtkIdType* off = offsets->GetPointer(0);
+  vtkNew<vtkCellArray> cells;
+  if (nPoints < std::numeric_limits<std::int32_t>::max())
+  {
+    vtkNew<vtkTypeInt32Array> offsets32, connectivity;
+    offsets32->SetNumberOfValues(nLines + 1);
+    connectivity->SetNumberOfValues(nPoints);
+    std::int32_t* o32 = offsets32->GetPointer(0);
+    std::int32_t* conn = connectivity->GetPointer(0);
+    vtkSMPTools::For(0, nLines + 1,
+      [o32, off](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          o32[k] = static_cast<std::int32_t>(off[k]);
+        }
+      });
+    vtkSMPTools::For(0, nPoints,
+      [conn](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          conn[k] = static_cast<std::int32_t>(k);
+        }
+      });
+    cells->SetData(offsets32, connectivity);
+  }
+  else
+  {
+    vtkNew<vtkIdTypeArray> connectivity;
+    connectivity->SetNumberOfValues(nPoints);
+    vtkIdType* conn = connectivity->GetPointer(0);
+    vtkSMPTools::For(0, nPoints,
+      [conn](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType k = b; k < e; ++k)
+        {
+          conn[k] = k;
+        }
+      });
+    cells->SetData(offsets, connectivity);
+  }
+  return cells;
+}
+
+// The sizes of a .trk record's parts.
+struct TrkLayout
+{
+  bool Swap;
+  std::uint64_t PointBytes;
+  std::uint64_t PropertyBytes;
+};
+
+// The point count and size of the .trk record that starts with the (file-order) count `bytes`,
+// checked against the `remaining` bytes of the data.
+bool TrkRecord(const TrkLayout& layout, const char* bytes, std::uint64_t index,
+  std::uint64_t remaining, vtkIdType& points, std::uint64_t& record, std::string& error)
+{
+  if (remaining < 4)
+  {
+    error = "the file ends inside the point count of streamline " + std::to_string(index) +
+      " (a truncated file)";
+    return false;
+  }
+  std::int32_t m;
+  std::memcpy(&m, bytes, 4);
+  if (layout.Swap)
+  {
+    TF::SwapBytes(&m, 4, 1);
+  }
+  if (m < 0)
+  {
+    error = "streamline " + std::to_string(index) + " has a negative point count (" +
+      std::to_string(m) + ")";
+    return false;
+  }
+  record = 4 + static_cast<std::uint64_t>(m) * layout.PointBytes + layout.PropertyBytes;
+  if (record > remaining)
+  {
+    error = "streamline " + std::to_string(index) + " (" + std::to_string(m) +
+      " points) runs past the end of the file (a truncated file, or wrong counts)";
+    return false;
+  }
+  points = m;
+  return true;
+}
+}
+
+//------------------------------------------------------------------------------
+// The number of tuples before the end marker when the file ends with its end
+// marker right after a separator (or holds no streamline), as MRtrix writes
+// it; such a file can be split into byte ranges. False (`end` unchanged)
+// otherwise: the file is then read whole (to find its end marker or report
+// its damage exactly as a whole read would).
+bool vtkTractogramReader::ProbeMRtrixEnd(const std::string& fileName, std::uint64_t offset,
+  std::uint64_t dataBytes, int valueSize, bool swap, int tupleSize, std::uint64_t& end)
+{
+  const std::uint64_t tupleBytes = static_cast<std::uint64_t>(valueSize) * tupleSize;
+  const std::uint64_t tuples = dataBytes / tupleBytes;
+  if (tuples == 0)
+  {
+    return false;
+  }
+  FileCursor cursor(fileName);
+  char tail[2 * 3 * 8];
+  const std::uint64_t probe = std::min<std::uint64_t>(2, tuples);
+  const bool ok = cursor.Read(offset + (tuples - probe) * tupleBytes, probe * tupleBytes, tail);
+  this->LastBytesRead += static_cast<vtkTypeInt64>(cursor.BytesRead);
+  if (!ok || TupleKind(tail + (probe - 1) * tupleBytes, valueSize, swap, tupleSize) != 2 ||
+    (probe == 2 && TupleKind(tail, valueSize, swap, tupleSize) != 1))
+  {
+    return false;
+  }
+  end = tuples - 1;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Streams tuples [from, to) of an MRtrix file in blocks (nothing kept) and
+// finds its special tuples: the number of separators, or (stopAtFirst) the
+// first separator's index in `found`. An end marker or a damaged tuple in the
+// range is an error.
+bool vtkTractogramReader::ScanMRtrixRange(const std::string& fileName, std::uint64_t offset,
+  int valueSize, bool swap, int tupleSize, std::uint64_t from, std::uint64_t to, bool stopAtFirst,
+  std::uint64_t& found, double progressBegin, double progressEnd, std::string& error)
+{
+  const std::uint64_t tupleBytes = static_cast<std::uint64_t>(valueSize) * tupleSize;
+  FileCursor cursor(fileName);
+  std::vector<char> block;
+  std::uint64_t blockTuples = stopAtFirst ? 64 : ReadChunkBytes / tupleBytes;
+  found = stopAtFirst ? MRtrixSpecials::None : 0;
+  bool ok = true;
+  for (std::uint64_t t = from; t < to && ok;)
+  {
+    const std::uint64_t n = std::min(blockTuples, to - t);
+    block.resize(static_cast<std::size_t>(n * tupleBytes));
+    if (!cursor.Read(offset + t * tupleBytes, block.size(), block.data()))
+    {
+      error = "cannot read the data of \"" + fileName + "\"";
+      ok = false;
+      break;
+    }
+    MRtrixSpecials specials;
+    FindSpecials(block.data(), n, valueSize, swap, tupleSize, specials);
+    // (separators are found only before damage: what lies after the first belongs to others)
+    if (stopAtFirst && !specials.Separators.empty())
+    {
+      found = t + specials.Separators.front();
+      break;
+    }
+    else if (specials.Invalid != MRtrixSpecials::None)
+    {
+      error = InvalidTupleError(t + specials.Invalid);
+      ok = false;
+    }
+    else if (specials.Terminator != MRtrixSpecials::None)
+    {
+      error = "an end marker (inf inf inf) at value tuple " +
+        std::to_string(t + specials.Terminator) + ", before the end of the data (a damaged file)";
+      ok = false;
+    }
+    found += stopAtFirst ? 0 : specials.Separators.size();
+    t += n;
+    blockTuples = std::min<std::uint64_t>(2 * blockTuples, ReadChunkBytes / tupleBytes);
+    this->UpdateProgress(progressBegin + (progressEnd - progressBegin) * (t - from) / (to - from));
+    if (ok && this->GetAbortExecute())
+    {
+      error = "aborted";
+      ok = false;
+    }
+  }
+  this->LastBytesRead += static_cast<vtkTypeInt64>(cursor.BytesRead);
+  if (ok && stopAtFirst && found == MRtrixSpecials::None)
+  {
+    error = "no streamline end (NaN triplet) after value tuple " + std::to_string(from);
+    ok = false;
+  }
+  return ok;
+}
+
+//------------------------------------------------------------------------------
+// A piece of a .tck file that ends with its end marker after `end` tuples:
+// the piece owns the streamlines whose first point lies in its share of the
+// tuples, [end p / n, end (p + 1) / n); it reads from the tuple before its
+// share (to know whether a streamline starts at its first tuple) to the end
+// of its last streamline, which may run past its share.
+bool vtkTractogramReader::ReadTCKPiece(const std::string& fileName, std::uint64_t offset,
+  std::uint64_t end, Streamlines& lines, std::string& error)
+{
+  const int vs = lines.ValueSize;
+  const std::uint64_t tupleBytes = 3ull * vs;
+  const std::uint64_t a = Share(end, this->Piece, this->NumberOfPieces);
+  const std::uint64_t b = Share(end, this->Piece + 1, this->NumberOfPieces);
+  lines.FirstIndex = a == 0 ? 0 : -1;
+  lines.FirstTuple = a;
+  if (a == b)
+  {
+    return true;
+  }
+  std::uint64_t before = 0;
+  if (a > 0 && this->SubsetMode == SUBSET_STRIDE)
+  {
+    // every k-th needs the streamline's index in the file: count the separators before the share
+    if (!this->ScanMRtrixRange(
+          fileName, offset, vs, lines.Swap, 3, 0, a - 1, false, before, 0.0, 0.1, error))
+    {
+      return false;
+    }
+    lines.FirstIndex = static_cast<long long>(before) + 1;
+  }
+  std::uint64_t last = 0; // the separator that ends the streamline holding tuple b - 1
+  if (!this->ScanMRtrixRange(
+        fileName, offset, vs, lines.Swap, 3, b - 1, end, true, last, 0.1, 0.1, error))
+  {
+    return false;
+  }
+  const std::uint64_t r0 = a > 0 ? a - 1 : 0;
+  const std::uint64_t tuples = last - r0 + 1;
+  if (!this->ReadChunked(
+        fileName, offset + r0 * tupleBytes, tuples * tupleBytes, lines.Data, 0.1, 0.3, error))
+  {
+    return false;
+  }
+  MRtrixSpecials specials;
+  FindSpecials(lines.Data.data(), tuples, vs, lines.Swap, 3, specials);
+  if (specials.Invalid != MRtrixSpecials::None)
+  {
+    error = InvalidTupleError(r0 + specials.Invalid);
+    return false;
+  }
+  if (specials.Terminator != MRtrixSpecials::None)
+  {
+    error = "an end marker (inf inf inf) at value tuple " +
+      std::to_string(r0 + specials.Terminator) + ", before the end of the data (a damaged file)";
+    return false;
+  }
+  lines.FirstTuple = r0;
+  // Streamlines start at tuple 0 and after each separator; each ends at the next separator.
+  std::vector<std::uint64_t>& separators = lines.Separators;
+  separators.swap(specials.Separators);
+  if (a == 0)
+  {
+    lines.Start.push_back(0);
+    lines.Count.push_back(static_cast<vtkIdType>(separators.front()));
+  }
+  for (std::size_t k = 0; k + 1 < separators.size(); ++k)
+  {
+    const std::uint64_t start = separators[k] + 1;
+    if (r0 + start >= a && r0 + start < b)
+    {
+      lines.Start.push_back(start);
+      lines.Count.push_back(static_cast<vtkIdType>(separators[k + 1] - start));
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// A .tck file read whole (its end marker not at its end: data after it, or no
+// end marker, which is an error); the piece's streamlines are then chosen by
+// the same rule as ReadTCKPiece's.
+bool vtkTractogramReader::ReadTCKWhole(const std::string& fileName, std::uint64_t offset,
+  std::uint64_t dataBytes, Streamlines& lines, std::string& error)
+{
+  if (!this->ReadChunked(fileName, offset, dataBytes, lines.Data, 0.0, 0.3, error))
+  {
+    return false;
+  }
+  MRtrixStructure structure;
+  bool trailing = false;
+  if (!ScanMRtrix(lines.Data, lines.ValueSize, lines.Swap, 3, structure, error, trailing))
+  {
+    return false;
+  }
+  if (trailing)
+  {
+    vtkWarningMacro(<< fileName << ": data after the end marker ignored");
+  }
+  lines.Start.swap(structure.Start);
+  lines.Count.swap(structure.Count);
+  lines.FirstTuple = 0;
+  lines.FirstIndex = 0;
+  lines.End = structure.Terminator;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Keeps the streamlines of a whole read whose first tuple lies in the piece's share.
+void vtkTractogramReader::KeepPieceOfWhole(Streamlines& lines)
+{
+  const std::uint64_t a = Share(lines.End, this->Piece, this->NumberOfPieces);
+  const std::uint64_t b = Share(lines.End, this->Piece + 1, this->NumberOfPieces);
+  const auto first = std::lower_bound(lines.Start.begin(), lines.Start.end(), a);
+  const auto last = std::lower_bound(lines.Start.begin(), lines.Start.end(), b);
+  const std::size_t i0 = static_cast<std::size_t>(first - lines.Start.begin());
+  const std::size_t i1 = static_cast<std::size_t>(last - lines.Start.begin());
+  lines.Start = std::vector<std::uint64_t>(lines.Start.begin() + i0, lines.Start.begin() + i1);
+  lines.Count = std::vector<vtkIdType>(lines.Count.begin() + i0, lines.Count.begin() + i1);
+  lines.FirstIndex = static_cast<long long>(i0);
+}
+
+//------------------------------------------------------------------------------
+// A companion .tsf: value i belongs to the tractogram's tuple i (both have one
+// entry per point and one separator per streamline). A piece reads the values
+// of its tuples and checks that its separators are the tractogram's and that
+// the end marker is where the tractogram's is; a whole read compares all.
+bool vtkTractogramReader::ReadTSF(const std::string& name, const std::string& tckHeaderTimestamp,
+  bool piece, Streamlines& lines, double progressBegin, double progressEnd, std::string& error)
+{
+  TF::MRtrixHeader th;
+  if (!TF::ReadMRtrixHeader(name, "mrtrix track scalars", th, error))
+  {
+    return false;
+  }
+  Streamlines::Scalars s;
+  s.Name = ScalarArrayName(name, this->FileName);
+  s.ValueSize = th.ValueSize;
+  s.Swap = th.BigEndian == TF::HostIsLittleEndian();
+  const std::uint64_t dataBytes = FileSize(name) - th.DataOffset;
+  const std::string mismatch = "it does not match the tractogram (other numbers of streamlines "
+                               "or points)";
+  if (piece)
+  {
+    char marker[8];
+    FileCursor cursor(name);
+    const std::uint64_t values = dataBytes / s.ValueSize;
+    const bool ok = lines.End < values &&
+      cursor.Read(th.DataOffset + lines.End * s.ValueSize, s.ValueSize, marker);
+    this->LastBytesRead += static_cast<vtkTypeInt64>(cursor.BytesRead);
+    if (!ok || TupleKind(marker, s.ValueSize, s.Swap, 1) != 2)
+    {
+      error = mismatch + ": its end marker is not at value " + std::to_string(lines.End);
+      return false;
+    }
+    const std::uint64_t tuples = lines.Data.size() / (3ull * lines.ValueSize);
+    if (tuples > 0)
+    {
+      if (!this->ReadChunked(name, th.DataOffset + lines.FirstTuple * s.ValueSize,
+            tuples * s.ValueSize, s.Data, progressBegin, progressEnd, error))
+      {
+        return false;
+      }
+      MRtrixSpecials specials;
+      FindSpecials(s.Data.data(), tuples, s.ValueSize, s.Swap, 1, specials);
+      if (specials.Invalid != MRtrixSpecials::None || specials.Terminator != MRtrixSpecials::None ||
+        specials.Separators != lines.Separators)
+      {
+        error = mismatch + " between values " + std::to_string(lines.FirstTuple) + " and " +
+          std::to_string(lines.FirstTuple + tuples);
+        return false;
+      }
+    }
+  }
+  else
+  {
+    if (!this->ReadChunked(
+          name, th.DataOffset, dataBytes, s.Data, progressBegin, progressEnd, error))
+    {
+      return false;
+    }
+    MRtrixStructure ts;
+    bool tsTrailing = false;
+    if (!ScanMRtrix(s.Data, s.ValueSize, s.Swap, 1, ts, error, tsTrailing))
+    {
+      return false;
+    }
+    if (ts.Count != lines.Count)
+    {
+      error = mismatch + ": " + std::to_string(ts.Count.size()) + " streamlines instead of " +
+        std::to_string(lines.Count.size()) + ", or other numbers of points";
+      return false;
+    }
+  }
+  if (!th.Timestamp.empty() && !tckHeaderTimestamp.empty() && th.Timestamp != tckHeaderTimestamp)
+  {
+    vtkWarningMacro(<< "track scalar file \"" << name
+                    << "\" has another timestamp than the tractogram");
+  }
+  lines.PointScalars.push_back(std::move(s));
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -419,29 +878,22 @@ bool vtkTractogramReader::ReadTCK(Streamlines& lines, std::string& error)
   {
     return false;
   }
-  const unsigned long long size = FileSize(this->FileName);
-  const double readShare = this->Internal->ScalarFileNames.Size() == 0 ? 0.4 : 0.25;
-  if (!this->ReadChunked(this->FileName, header.DataOffset, size - header.DataOffset, lines.Data,
-        0.0, readShare, error))
-  {
-    return false;
-  }
   lines.Format = TF::TCK;
   lines.ValueSize = header.ValueSize;
   lines.Swap = header.BigEndian == TF::HostIsLittleEndian();
-  MRtrixStructure structure;
-  bool trailing = false;
-  if (!ScanMRtrix(lines.Data, lines.ValueSize, lines.Swap, 3, structure, error, trailing))
+  const std::uint64_t dataBytes = FileSize(this->FileName) - header.DataOffset;
+  const bool piece = this->ProbeMRtrixEnd(
+    this->FileName, header.DataOffset, dataBytes, lines.ValueSize, lines.Swap, 3, lines.End);
+  if (piece ? !this->ReadTCKPiece(this->FileName, header.DataOffset, lines.End, lines, error)
+            : !this->ReadTCKWhole(this->FileName, header.DataOffset, dataBytes, lines, error))
   {
     return false;
   }
-  if (trailing)
-  {
-    vtkWarningMacro(<< this->FileName << ": data after the end marker ignored");
-  }
-  lines.Start.swap(structure.Start);
-  lines.Count.swap(structure.Count);
-  if (header.Count >= 0 && header.Count != static_cast<long long>(lines.Count.size()))
+  // the number of streamlines in the file: known when everything was read
+  const bool all = !piece || this->NumberOfPieces == 1;
+  this->NumberOfStreamlinesInFile =
+    all ? static_cast<vtkIdType>(lines.Count.size()) : static_cast<vtkIdType>(header.Count);
+  if (all && header.Count >= 0 && header.Count != static_cast<long long>(lines.Count.size()))
   {
     vtkWarningMacro(<< this->FileName << ": the header's count says " << header.Count
                     << " streamlines, the file holds " << lines.Count.size());
@@ -454,77 +906,52 @@ bool vtkTractogramReader::ReadTCK(Streamlines& lines, std::string& error)
   }
   lines.Field->AddArray(fields);
 
-  // Companion .tsf files: the same streamline structure, one value per point.
   const std::size_t nScalarFiles = this->Internal->ScalarFileNames.Names.size();
   for (std::size_t f = 0; f < nScalarFiles; ++f)
   {
     const std::string& name = this->Internal->ScalarFileNames.Names[f];
-    TF::MRtrixHeader th;
-    std::string e;
-    if (!TF::ReadMRtrixHeader(name, "mrtrix track scalars", th, e))
+    const double p0 = 0.3 + 0.1 * f / nScalarFiles;
+    if (!this->ReadTSF(name, header.Timestamp, piece, lines, p0, p0 + 0.1 / nScalarFiles, error))
     {
-      error = "track scalar file \"" + name + "\": " + e;
+      error = "track scalar file \"" + name + "\": " + error;
       return false;
     }
-    Streamlines::Scalars s;
-    s.Name = ScalarArrayName(name, this->FileName);
-    s.ValueSize = th.ValueSize;
-    s.Swap = th.BigEndian == TF::HostIsLittleEndian();
-    const double p0 = readShare + 0.15 * f / nScalarFiles;
-    if (!this->ReadChunked(name, th.DataOffset, FileSize(name) - th.DataOffset, s.Data, p0,
-          p0 + 0.15 / nScalarFiles, e))
-    {
-      error = "track scalar file \"" + name + "\": " + e;
-      return false;
-    }
-    MRtrixStructure ts;
-    bool tsTrailing = false;
-    if (!ScanMRtrix(s.Data, s.ValueSize, s.Swap, 1, ts, e, tsTrailing))
-    {
-      error = "track scalar file \"" + name + "\": " + e;
-      return false;
-    }
-    if (ts.Count != lines.Count)
-    {
-      error = "track scalar file \"" + name +
-        "\" does not match the tractogram: " + std::to_string(ts.Count.size()) +
-        " streamlines instead of " + std::to_string(lines.Count.size()) +
-        ", or other numbers of points";
-      return false;
-    }
-    if (!th.Timestamp.empty() && !header.Timestamp.empty() && th.Timestamp != header.Timestamp)
-    {
-      vtkWarningMacro(<< "track scalar file \"" << name
-                      << "\" has another timestamp than the tractogram");
-    }
-    s.Start.swap(ts.Start);
-    lines.PointScalars.push_back(std::move(s));
+  }
+  if (!piece)
+  {
+    this->KeepPieceOfWhole(lines);
   }
   return true;
 }
 
 //------------------------------------------------------------------------------
+// A .trk piece: the streamlines [N p / n, (p + 1) N / n) of the N in the file
+// (n_count; counted first when the header does not record it). The records
+// before the piece are skipped by their counts (4 bytes read per record); the
+// piece's records are read in one go (the last piece reads to the end of the
+// data and parses the counts in memory, as a whole read does).
 bool vtkTractogramReader::ReadTRK(Streamlines& lines, std::string& error)
 {
   const unsigned long long size = FileSize(this->FileName);
-  std::ifstream in(this->FileName, std::ios::in | std::ios::binary);
-  if (!in)
   {
-    error = "cannot open the file (it does not exist or is not readable)";
-    return false;
+    std::ifstream in(this->FileName, std::ios::in | std::ios::binary);
+    if (!in)
+    {
+      error = "cannot open the file (it does not exist or is not readable)";
+      return false;
+    }
+    unsigned char bytes[TF::TRK_HEADER_SIZE];
+    if (size < TF::TRK_HEADER_SIZE || !in.read(reinterpret_cast<char*>(bytes), sizeof(bytes)))
+    {
+      error = "the file is shorter than a TrackVis header (1000 bytes)";
+      return false;
+    }
+    if (!TF::ParseTrkHeader(bytes, lines.Trk, error))
+    {
+      return false;
+    }
   }
-  unsigned char bytes[TF::TRK_HEADER_SIZE];
-  if (size < TF::TRK_HEADER_SIZE || !in.read(reinterpret_cast<char*>(bytes), sizeof(bytes)))
-  {
-    error = "the file is shorter than a TrackVis header (1000 bytes)";
-    return false;
-  }
-  in.close();
-  TF::TrkHeader& h = lines.Trk;
-  if (!TF::ParseTrkHeader(bytes, h, error))
-  {
-    return false;
-  }
+  const TF::TrkHeader& h = lines.Trk;
   if (h.Version == 3)
   {
     vtkWarningMacro(<< this->FileName << ": a TrackVis version 3 file, read as version 2");
@@ -533,72 +960,154 @@ bool vtkTractogramReader::ReadTRK(Streamlines& lines, std::string& error)
   {
     return false;
   }
-  if (!this->ReadChunked(this->FileName, TF::TRK_HEADER_SIZE, size - TF::TRK_HEADER_SIZE,
-        lines.Data, 0.0, 0.4, error))
-  {
-    return false;
-  }
   lines.Format = TF::TRK;
   lines.Swap = h.Swapped;
   lines.ScalarsPerPoint = h.NumberOfScalars;
   lines.PropertiesPerLine = h.NumberOfProperties;
-  // The records are found one after the other (each starts with its count);
-  // a record must fit in the file before it is accepted.
-  const std::uint64_t pointBytes = 4ull * (3 + lines.ScalarsPerPoint);
-  const std::uint64_t propertyBytes = 4ull * lines.PropertiesPerLine;
-  const std::uint64_t dataSize = lines.Data.size();
-  const std::uint64_t expected =
+  const TrkLayout layout{ lines.Swap, 4ull * (3 + lines.ScalarsPerPoint),
+    4ull * lines.PropertiesPerLine };
+  const std::uint64_t dataSize = size - TF::TRK_HEADER_SIZE;
+  std::uint64_t total =
     h.NumberOfStreamlines > 0 ? static_cast<std::uint64_t>(h.NumberOfStreamlines) : 0;
-  if (expected > 0 && expected * (4 + propertyBytes) > dataSize)
+  if (total > 0 && total * (4 + layout.PropertyBytes) > dataSize)
   {
-    error = "the header's n_count (" + std::to_string(expected) +
-      " streamlines) exceeds what the " + std::to_string(dataSize) + " bytes of data can hold";
+    error = "the header's n_count (" + std::to_string(total) + " streamlines) exceeds what the " +
+      std::to_string(dataSize) + " bytes of data can hold";
     return false;
   }
-  std::uint64_t pos = 0;
-  while (pos < dataSize && (expected == 0 || lines.Start.size() < expected))
+  const bool recorded = total > 0;
+
+  // Skips records [from, to) (or up to the end of the data) from byte `pos` by their counts.
+  FileCursor cursor(this->FileName);
+  auto skip = [&](std::uint64_t from, std::uint64_t to, std::uint64_t& pos, std::uint64_t& index,
+                bool keep, double p0, double p1)
   {
-    if (dataSize - pos < 4)
+    for (index = from; index < to && pos < dataSize; ++index)
     {
-      error = "the file ends inside the point count of streamline " +
-        std::to_string(lines.Start.size()) + " (a truncated file)";
+      char count[4] = { 0, 0, 0, 0 };
+      if (dataSize - pos >= 4 && !cursor.Read(TF::TRK_HEADER_SIZE + pos, 4, count))
+      {
+        error = "cannot read the data";
+        return false;
+      }
+      vtkIdType m = 0;
+      std::uint64_t record = 0;
+      if (!TrkRecord(layout, count, index, dataSize - pos, m, record, error))
+      {
+        return false;
+      }
+      if (keep)
+      {
+        lines.Start.push_back(pos);
+        lines.Count.push_back(m);
+      }
+      pos += record;
+      if ((index & 0xffff) == 0xffff)
+      {
+        this->UpdateProgress(p0 + (p1 - p0) * (index - from) / double(to - from));
+        if (this->GetAbortExecute())
+        {
+          error = "aborted";
+          return false;
+        }
+      }
+    }
+    return true;
+  };
+  const std::uint64_t unlimited = std::numeric_limits<std::uint64_t>::max();
+  std::uint64_t pos = 0, index = 0;
+  if (!recorded && this->NumberOfPieces > 1)
+  {
+    // no n_count: count the records first (every piece must agree on the split)
+    bool ok = skip(0, unlimited, pos, total, false, 0.0, 0.05);
+    this->LastBytesRead += static_cast<vtkTypeInt64>(cursor.BytesRead);
+    cursor.BytesRead = 0;
+    if (!ok)
+    {
       return false;
     }
-    std::int32_t m;
-    std::memcpy(&m, lines.Data.data() + pos, 4);
-    if (lines.Swap)
-    {
-      TF::SwapBytes(&m, 4, 1);
-    }
-    if (m < 0)
-    {
-      error = "streamline " + std::to_string(lines.Start.size()) + " has a negative point count (" +
-        std::to_string(m) + ")";
-      return false;
-    }
-    const std::uint64_t record = 4 + static_cast<std::uint64_t>(m) * pointBytes + propertyBytes;
-    if (record > dataSize - pos)
-    {
-      error = "streamline " + std::to_string(lines.Start.size()) + " (" + std::to_string(m) +
-        " points) runs past the end of the file (a truncated file, or wrong counts)";
-      return false;
-    }
-    lines.Start.push_back(pos);
-    lines.Count.push_back(m);
-    pos += record;
+    pos = 0;
   }
-  if (expected > 0 && lines.Start.size() < expected)
+  const bool toEnd = !recorded && this->NumberOfPieces == 1;
+  const std::uint64_t b = toEnd ? 0 : Share(total, this->Piece, this->NumberOfPieces);
+  const std::uint64_t e = toEnd ? unlimited : Share(total, this->Piece + 1, this->NumberOfPieces);
+  const bool last = toEnd || e == total;
+  bool ok = skip(0, b, pos, index, false, 0.0, 0.1);
+  if (ok && index < b)
   {
-    error = "the header's n_count says " + std::to_string(expected) +
-      " streamlines, the file holds " + std::to_string(lines.Start.size()) + " (a truncated file)";
+    error = "the header's n_count says " + std::to_string(total) + " streamlines, the file holds " +
+      std::to_string(index) + " (a truncated file)";
+    ok = false;
+  }
+  const std::uint64_t base = pos;
+  lines.FirstIndex = static_cast<long long>(b);
+  if (ok && !last)
+  {
+    ok = skip(b, e, pos, index, true, 0.1, 0.15);
+    for (std::uint64_t& start : lines.Start)
+    {
+      start -= base;
+    }
+  }
+  this->LastBytesRead += static_cast<vtkTypeInt64>(cursor.BytesRead);
+  if (!ok)
+  {
     return false;
   }
-  if (pos < dataSize)
+  if (!last && index < e)
   {
-    vtkWarningMacro(<< this->FileName << ": " << (dataSize - pos)
-                    << " bytes after the last of the header's " << expected
-                    << " streamlines ignored");
+    error = "the header's n_count says " + std::to_string(total) + " streamlines, the file holds " +
+      std::to_string(index) + " (a truncated file)";
+    return false;
   }
+  const std::uint64_t readEnd = last ? dataSize : pos;
+  if (!this->ReadChunked(
+        this->FileName, TF::TRK_HEADER_SIZE + base, readEnd - base, lines.Data, 0.15, 0.4, error))
+  {
+    return false;
+  }
+  if (last)
+  {
+    // the last piece: its records from the data in memory, up to the count or the end of the data
+    const std::uint64_t n = readEnd - base;
+    std::uint64_t at = 0;
+    std::uint64_t i = b;
+    for (; at < n && i < e; ++i)
+    {
+      vtkIdType m = 0;
+      std::uint64_t record = 0;
+      if (!TrkRecord(layout, lines.Data.data() + at, i, n - at, m, record, error))
+      {
+        return false;
+      }
+      lines.Start.push_back(at);
+      lines.Count.push_back(m);
+      at += record;
+    }
+    if (recorded && i < total)
+    {
+      error = "the header's n_count says " + std::to_string(total) +
+        " streamlines, the file holds " + std::to_string(i) + " (a truncated file)";
+      return false;
+    }
+    if (at < n)
+    {
+      vtkWarningMacro(<< this->FileName << ": " << (n - at)
+                      << " bytes after the last of the header's " << total
+                      << " streamlines ignored");
+    }
+    total = toEnd ? i : total;
+  }
+  this->NumberOfStreamlinesInFile = static_cast<vtkIdType>(total);
+  this->AddTrkFieldData(lines);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// The TrackVis geometry as field data, for vtkTractogramWriter.
+void vtkTractogramReader::AddTrkFieldData(Streamlines& lines)
+{
+  const TF::TrkHeader& h = lines.Trk;
   auto add = [&lines](const char* name, std::initializer_list<double> values)
   {
     vtkNew<vtkDoubleArray> a;
@@ -623,7 +1132,38 @@ bool vtkTractogramReader::ReadTRK(Streamlines& lines, std::string& error)
   order->SetName("TrackVisVoxelOrder");
   order->InsertNextValue(h.VoxelOrder);
   lines.Field->AddArray(order);
-  return true;
+}
+
+//------------------------------------------------------------------------------
+// The streamlines of the piece to output: those of the subset, non-empty ones
+// unless empty ones are kept.
+std::vector<vtkIdType> vtkTractogramReader::SelectStreamlines(const Streamlines& lines) const
+{
+  std::vector<vtkIdType> selected;
+  selected.reserve(lines.Count.size());
+  for (std::size_t s = 0; s < lines.Count.size(); ++s)
+  {
+    if (lines.Count[s] == 0 && !this->KeepEmptyStreamlines)
+    {
+      continue;
+    }
+    const std::uint64_t index = static_cast<std::uint64_t>(lines.FirstIndex) + s;
+    if (this->SubsetMode == SUBSET_STRIDE && index % std::max(1, this->SubsetStride) != 0)
+    {
+      continue;
+    }
+    if (this->SubsetMode == SUBSET_RANDOM_FRACTION)
+    {
+      // .tck pieces do not know the streamlines' indices in the file: their first triplet's
+      const std::uint64_t key = lines.Format == TF::TCK ? lines.FirstTuple + lines.Start[s] : index;
+      if (SubsetHash(key, this->SubsetSeed) >= this->SubsetFraction)
+      {
+        continue;
+      }
+    }
+    selected.push_back(static_cast<vtkIdType>(s));
+  }
+  return selected;
 }
 
 //------------------------------------------------------------------------------
@@ -646,7 +1186,7 @@ int vtkTractogramReader::RequestData(
   {
     return fail("no file name was given");
   }
-  const std::string where = std::string("cannot read \"") + this->FileName + "\": ";
+  std::string where = std::string("cannot read \"") + this->FileName + "\": ";
   int format = this->FileFormat;
   if (format == AUTOMATIC)
   {
@@ -661,6 +1201,7 @@ int vtkTractogramReader::RequestData(
   }
   this->Piece = 0;
   this->NumberOfPieces = 1;
+  this->LastBytesRead = 0;
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
   {
     this->NumberOfPieces =
@@ -668,6 +1209,11 @@ int vtkTractogramReader::RequestData(
     this->Piece = std::max(0,
       std::min(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()),
         this->NumberOfPieces - 1));
+  }
+  if (this->NumberOfPieces > 1)
+  {
+    where +=
+      "piece " + std::to_string(this->Piece) + " of " + std::to_string(this->NumberOfPieces) + ": ";
   }
 
   Streamlines lines;
@@ -682,24 +1228,7 @@ int vtkTractogramReader::RequestData(
     }
     return fail(where + error);
   }
-  this->NumberOfStreamlinesInFile = static_cast<vtkIdType>(lines.Count.size());
-
-  // The streamlines to output: non-empty ones (unless kept), then this piece's share.
-  std::vector<vtkIdType> selected;
-  selected.reserve(lines.Count.size());
-  for (std::size_t s = 0; s < lines.Count.size(); ++s)
-  {
-    if (lines.Count[s] > 0 || this->KeepEmptyStreamlines)
-    {
-      selected.push_back(static_cast<vtkIdType>(s));
-    }
-  }
-  {
-    const vtkIdType n = static_cast<vtkIdType>(selected.size());
-    const vtkIdType b = n * this->Piece / this->NumberOfPieces;
-    const vtkIdType e = n * (this->Piece + 1) / this->NumberOfPieces;
-    selected = std::vector<vtkIdType>(selected.begin() + b, selected.begin() + e);
-  }
+  const std::vector<vtkIdType> selected = this->SelectStreamlines(lines);
   const vtkIdType nLines = static_cast<vtkIdType>(selected.size());
   vtkNew<vtkIdTypeArray> offsets;
   offsets->SetNumberOfValues(nLines + 1);
@@ -805,7 +1334,7 @@ int vtkTractogramReader::RequestData(
         for (std::size_t k = 0; k < lines.PointScalars.size(); ++k)
         {
           const auto& sc = lines.PointScalars[k];
-          const char* q = sc.Data.data() + sc.Start[s] * sc.ValueSize;
+          const char* q = sc.Data.data() + lines.Start[s] * sc.ValueSize;
           float* dst = pointTargets[k] + o;
           for (vtkIdType j = 0; j < m; ++j)
           {
@@ -836,7 +1365,16 @@ int vtkTractogramReader::RequestData(
           float* dst = pf + 3 * (o + j);
           for (int r = 0; r < 3; ++r)
           {
-            dst[r] = static_cast<float>(a[r][0] * x[0] + a[r][1] * x[1] + a[r][2] * x[2] + a[r][3]);
+            const double y = a[r][0] * x[0] + a[r][1] * x[1] + a[r][2] * x[2] + a[r][3];
+            if (!(std::abs(y) <= std::numeric_limits<float>::max()))
+            {
+              // beyond float32 after the voxel-mm to RAS+ map (a voxel size
+              // near 0, a huge vox_to_ras): as unusable as a NaN
+              vtkIdType expected = -1;
+              badLine.compare_exchange_strong(expected, static_cast<vtkIdType>(s));
+              return;
+            }
+            dst[r] = static_cast<float>(y);
           }
           for (std::size_t k = 0; k < pointTargets.size(); ++k)
           {
@@ -885,53 +1423,16 @@ int vtkTractogramReader::RequestData(
   }
   if (badLine.load() >= 0)
   {
+    // the streamline's index in the file, when the piece knows it; else in the piece
+    badLine = badLine.load() + std::max(0LL, lines.FirstIndex);
+    where += lines.FirstIndex < 0 ? "counting from the piece's first streamline, " : "";
     return fail(where + "streamline " + std::to_string(badLine.load()) +
-      " has NaN or infinite coordinates (a damaged file)");
+      " has NaN or infinite coordinates, in the file or after the voxel-mm to RAS+ map (a damaged "
+      "file or header)");
   }
   lines.Data.clear();
 
-  // Polylines over consecutive points; 32-bit storage when it fits (half the memory).
-  vtkNew<vtkCellArray> cells;
-  if (nPoints < std::numeric_limits<std::int32_t>::max())
-  {
-    vtkNew<vtkTypeInt32Array> offsets32, connectivity;
-    offsets32->SetNumberOfValues(nLines + 1);
-    connectivity->SetNumberOfValues(nPoints);
-    std::int32_t* o32 = offsets32->GetPointer(0);
-    std::int32_t* conn = connectivity->GetPointer(0);
-    vtkSMPTools::For(0, nLines + 1,
-      [o32, off](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType k = b; k < e; ++k)
-        {
-          o32[k] = static_cast<std::int32_t>(off[k]);
-        }
-      });
-    vtkSMPTools::For(0, nPoints,
-      [conn](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType k = b; k < e; ++k)
-        {
-          conn[k] = static_cast<std::int32_t>(k);
-        }
-      });
-    cells->SetData(offsets32, connectivity);
-  }
-  else
-  {
-    vtkNew<vtkIdTypeArray> connectivity;
-    connectivity->SetNumberOfValues(nPoints);
-    vtkIdType* conn = connectivity->GetPointer(0);
-    vtkSMPTools::For(0, nPoints,
-      [conn](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType k = b; k < e; ++k)
-        {
-          conn[k] = k;
-        }
-      });
-    cells->SetData(offsets, connectivity);
-  }
+  vtkSmartPointer<vtkCellArray> cells = MakePolylines(offsets, nPoints);
   output->SetPoints(points);
   output->SetLines(cells);
   for (auto& a : pointArrays)
@@ -960,5 +1461,10 @@ void vtkTractogramReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KeepEmptyStreamlines: " << this->KeepEmptyStreamlines << "\n";
   os << indent << "ScalarFileNames:";
   this->Internal->ScalarFileNames.Print(os);
+  os << indent << "SubsetMode: " << this->SubsetMode << "\n";
+  os << indent << "SubsetStride: " << this->SubsetStride << "\n";
+  os << indent << "SubsetFraction: " << this->SubsetFraction << "\n";
+  os << indent << "SubsetSeed: " << this->SubsetSeed << "\n";
   os << indent << "NumberOfStreamlinesInFile: " << this->NumberOfStreamlinesInFile << "\n";
+  os << indent << "LastBytesRead: " << this->LastBytesRead << "\n";
 }

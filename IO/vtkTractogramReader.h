@@ -3,56 +3,41 @@
  * @brief   Reads tractograms (fibre tracts) in MRtrix .tck (with .tsf per-point scalars) and
  * TrackVis .trk format as vtkPolyData polylines in world RAS+ millimetres.
  *
- * The two file formats diffusion MRI tractography writes (MRtrix3
- * `tckgen`, DIPY, TrackVis / Diffusion Toolkit, nibabel): see
- * vtkTractogramFormats for what they contain. The output is one polyline per
- * streamline, its points in world ("scanner") coordinates, RAS+ (x to the
- * subject's right, y anterior, z superior), in mm, the point (0, 0, 0) of a
- * voxel grid at the centre of voxel (0, 0, 0) (nibabel's and MRtrix's
- * convention), so the lines lie where vtkNIfTITensorReader puts the image
- * they were tracked in; the tube mappers, the Superquadric Glyphs and every
- * VTK filter take them directly.
+ * One polyline per streamline (formats: vtkTractogramFormats) in world RAS+ mm,
+ * where vtkNIfTITensorReader puts the image they were tracked in.
+ * - **.tck**: points as stored (float32, either byte order; float64 read as
+ *   double); the header's `key: value` lines as field data "MRtrixHeader".
+ *   Companion **.tsf** files (AddScalarFileName()) become 1-component point
+ *   arrays named after the file (`tracks_FA.tsf` next to `tracks.tck` -> "FA").
+ * - **.trk** (versions 1 and 2, either byte order): points mapped from voxel mm
+ *   to RAS+ mm as nibabel does (vtkTractogramFormats::TrkVoxmmToRAS); per-point
+ *   scalars become point arrays, per-streamline properties cell arrays (named
+ *   as in the header); the geometry is kept as "TrackVis..." field data.
+ * Empty streamlines are dropped unless KeepEmptyStreamlines is on.
  *
- * - **.tck**: points as stored (float32, little- or big-endian as the header's
- *   `datatype` says; Float64 is accepted too and read as double). The
- *   header's `key: value` lines are kept as field data "MRtrixHeader"
- *   (a vtkStringArray of "key: value"), so that vtkTractogramWriter can write
- *   them back. Companion **.tsf** files (AddScalarFileName()) become
- *   1-component point arrays named after the file: `fibres.tsf` -> "fibres",
- *   and `tracks_FA.tsf` or `tracks.FA.tsf` next to `tracks.tck` -> "FA"; their
- *   streamlines must have the same numbers of points as the tractogram's
- *   (else an error), a differing `timestamp` gives a warning.
- * - **.trk** (versions 1 and 2, either byte order): points mapped from
- *   TrackVis "voxel mm" to RAS+ mm exactly as nibabel does
- *   (vtkTractogramFormats::TrkVoxmmToRAS; version 1 and an unrecorded
- *   vox_to_ras are taken as the identity, an empty voxel order as "LPS");
- *   the per-point scalars become point arrays and the per-streamline
- *   properties cell arrays, named as in the header ("name\0N" names an
- *   N-component array; values no name covers are "scalars" / "properties").
- *   The geometry is kept as field data "TrackVisVoxelToRAS" (16, row-major),
- *   "TrackVisVoxelSize", "TrackVisDimensions" and "TrackVisVoxelOrder" for
- *   the writer. Points are float32 (as stored), mapped in double precision.
+ * **Pieces** (ParaView's parallel pipeline): a piece reads only its share of
+ * the file. A .tck's triplets before its end marker are split into n ranges;
+ * a piece owns the streamlines whose first point lies in its range, reads
+ * from the triplet before it (to know whether a streamline starts there) to
+ * the NaN that ends its last streamline, and the same values of each .tsf. A
+ * .tck whose end marker is not its last triplet (data after it, or none) is
+ * read whole, with the same ownership. A .trk piece gets streamlines
+ * [N p / n, N (p + 1) / n) (N = n_count, counted first when not recorded); the
+ * records before it are skipped by their 4-byte point counts.
+ * GetLastBytesRead() tells how many data bytes a read took.
  *
- * Empty streamlines (no points) are dropped unless KeepEmptyStreamlines is on
- * (then they are polylines without points, so that cell i is streamline i of
- * the file); nibabel drops them from .tck files too.
+ * **Subsets** at read time (like `tckedit -number`), the same streamlines for
+ * any number of pieces: SubsetMode STRIDE keeps every SubsetStride-th
+ * streamline of the file (a .tck piece first counts the separators before
+ * its range); RANDOM_FRACTION keeps a streamline when a hash of SubsetSeed and
+ * its key is below SubsetFraction (key: its index in a .trk, the index of its
+ * first triplet in a .tck, so no counting is needed).
  *
- * Large files are read in chunks of 16 MiB with progress reports and parsed
- * in parallel (vtkSMPTools: the separators of a .tck are found by chunk, the
- * points of all streamlines converted and copied in parallel batches); the
- * reader honours AbortExecute between chunks and batches. Piece requests are
- * honoured: piece p of n gets the streamlines [p N / n, (p + 1) N / n) of the
- * N in the file.
- *
- * Bad input gives an error (vtkErrorMacro, RequestData returns 0) and an
- * empty output, never a partly filled one: no such file, wrong magic, no
- * END, an unsupported data type or multi-file .tck, a .tck without its
- * `inf inf inf` end marker or cut inside a triplet, triplets mixing NaN or
- * infinite values with numbers, a .trk whose header (hdr_size, version,
- * counts, voxel sizes, vox_to_ras) is invalid, whose streamlines run past the
- * end of the file or are fewer than n_count says, a negative point count,
- * NaN or infinite coordinates, a .tsf that does not match its tractogram.
- * Nothing is allocated from a count before the file is known to hold it.
+ * Reads go in 16 MiB chunks in parallel (vtkSMPTools) with progress and
+ * abort. Bad input (wrong magic, a missing or misplaced end marker, damaged
+ * triplets, .trk counts past the end of the file, a .tsf that does not match,
+ * NaN points) fails RequestData with an error and an empty output; nothing is
+ * allocated from a count before the file is known to hold it.
  */
 
 #ifndef vtkTractogramReader_h
@@ -61,8 +46,10 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-#include <memory> // for std::unique_ptr
-#include <string> // for std::string
+#include <cstdint> // for std::uint64_t
+#include <memory>  // for std::unique_ptr
+#include <string>  // for std::string
+#include <vector>  // for std::vector
 
 class SPLINEVIZ_EXPORT vtkTractogramReader : public vtkPolyDataAlgorithm
 {
@@ -107,8 +94,46 @@ public:
   vtkBooleanMacro(KeepEmptyStreamlines, vtkTypeBool);
   ///@}
 
-  /// Number of streamlines in the file (all pieces, empty ones included) after the last read.
+  enum SubsetModes
+  {
+    SUBSET_ALL = 0,            ///< every streamline
+    SUBSET_STRIDE = 1,         ///< the streamlines 0, k, 2k, ... of the file (k = SubsetStride)
+    SUBSET_RANDOM_FRACTION = 2 ///< a seeded random choice of about SubsetFraction of them
+  };
+  ///@{
+  /// Which streamlines to read (like `tckedit -number`); the same set for any
+  /// number of pieces. Default SUBSET_ALL.
+  vtkSetClampMacro(SubsetMode, int, SUBSET_ALL, SUBSET_RANDOM_FRACTION);
+  vtkGetMacro(SubsetMode, int);
+  void SetSubsetModeToAll() { this->SetSubsetMode(SUBSET_ALL); }
+  void SetSubsetModeToStride() { this->SetSubsetMode(SUBSET_STRIDE); }
+  void SetSubsetModeToRandomFraction() { this->SetSubsetMode(SUBSET_RANDOM_FRACTION); }
+  ///@}
+
+  ///@{
+  /// SUBSET_STRIDE keeps the streamlines whose index in the file is a multiple of this. Default 10.
+  vtkSetClampMacro(SubsetStride, int, 1, VTK_INT_MAX);
+  vtkGetMacro(SubsetStride, int);
+  ///@}
+
+  ///@{
+  /// SUBSET_RANDOM_FRACTION keeps each streamline with this probability. Default 0.1.
+  vtkSetClampMacro(SubsetFraction, double, 0.0, 1.0);
+  vtkGetMacro(SubsetFraction, double);
+  ///@}
+
+  ///@{
+  /// The seed of SUBSET_RANDOM_FRACTION (the same seed, the same streamlines). Default 0.
+  vtkSetMacro(SubsetSeed, int);
+  vtkGetMacro(SubsetSeed, int);
+  ///@}
+
+  /// Number of streamlines in the file (all pieces, empty ones included) after the last read;
+  /// for a piece of a .tck file, the header's count (-1 if it has none).
   vtkGetMacro(NumberOfStreamlinesInFile, vtkIdType);
+
+  /// The bytes of streamline data (headers excluded) the last read took from its files.
+  vtkGetMacro(LastBytesRead, vtkTypeInt64);
 
   /// Can this reader read the file (an MRtrix tracks or TrackVis header)?
   static int CanReadFile(const char* fileName);
@@ -133,11 +158,30 @@ protected:
   bool ReadTRK(Streamlines& lines, std::string& error);
   bool ReadChunked(const std::string& fileName, unsigned long long offset, unsigned long long size,
     DataBuffer& buffer, double progressBegin, double progressEnd, std::string& error);
+  bool ProbeMRtrixEnd(const std::string& fileName, std::uint64_t offset, std::uint64_t dataBytes,
+    int valueSize, bool swap, int tupleSize, std::uint64_t& end);
+  bool ScanMRtrixRange(const std::string& fileName, std::uint64_t offset, int valueSize, bool swap,
+    int tupleSize, std::uint64_t from, std::uint64_t to, bool stopAtFirst, std::uint64_t& found,
+    double progressBegin, double progressEnd, std::string& error);
+  bool ReadTCKPiece(const std::string& fileName, std::uint64_t offset, std::uint64_t end,
+    Streamlines& lines, std::string& error);
+  bool ReadTCKWhole(const std::string& fileName, std::uint64_t offset, std::uint64_t dataBytes,
+    Streamlines& lines, std::string& error);
+  void KeepPieceOfWhole(Streamlines& lines);
+  bool ReadTSF(const std::string& name, const std::string& tckHeaderTimestamp, bool piece,
+    Streamlines& lines, double progressBegin, double progressEnd, std::string& error);
+  void AddTrkFieldData(Streamlines& lines);
+  std::vector<vtkIdType> SelectStreamlines(const Streamlines& lines) const;
 
   char* FileName = nullptr;
   int FileFormat = AUTOMATIC;
   vtkTypeBool KeepEmptyStreamlines = 0;
+  int SubsetMode = SUBSET_ALL;
+  int SubsetStride = 10;
+  double SubsetFraction = 0.1;
+  int SubsetSeed = 0;
   vtkIdType NumberOfStreamlinesInFile = 0;
+  vtkTypeInt64 LastBytesRead = 0;
   std::string LastError;
   int Piece = 0;
   int NumberOfPieces = 1;

@@ -180,6 +180,21 @@ if path == trk:
     print("tubes: coverage %.3f" % cover)
     check(mapper.IsA("vtkRayCastTubeMapper") and cover > 0.1, "the .trk drawn as Ray-Cast Tubes")
 
+# The subset properties: every 3rd streamline, a random half (a seed of its own)
+subset = OpenDataFile(tck)  # noqa: F405
+subset.SubsetMode = "Every k-th Streamline"
+subset.SubsetStride = 3
+subset.UpdatePipeline()
+every3 = subset.GetDataInformation().GetNumberOfCells()
+subset.SubsetMode = "Random Fraction"
+subset.SubsetFraction = 0.5
+subset.SubsetSeed = 7
+subset.UpdatePipeline()
+half = subset.GetDataInformation().GetNumberOfCells()
+print("subsets: every 3rd %d, random half %d of %d" % (every3, half, len(fibres)))
+check(every3 == (len(fibres) + 2) // 3 and 0.3 * len(fibres) < half < 0.7 * len(fibres),
+      "Tractogram Reader subsets: every 3rd streamline, a random half")
+
 if failures:
     print("ERROR: %d check(s) failed:\n  " % len(failures) + "\n  ".join(failures))
     sys.exit(1)
