@@ -6,6 +6,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkLRSplineGeometryMap.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkSMPThreadLocal.h"
@@ -100,11 +101,23 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     bool axisAligned = true;
     vtkFieldData* fd = grid->GetFieldData();
     vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
+    std::shared_ptr<vtkLRSplineGeometryMap> geometry;
     if (mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1 && !parameterSpace)
     {
-      return fail("patch " + std::to_string(g) +
-        " was read in geometry mode: its physical points are not an affine image of the "
-        "parameter domain, so it can only be evaluated in parameter space");
+      // Isoparametric: the points are the geometry's control points.
+      geometry = std::make_shared<vtkLRSplineGeometryMap>();
+      if (!geometry->Build(grid, blocks, &msg))
+      {
+        return fail("patch " + std::to_string(g) + " (geometry): " + msg);
+      }
+      if (geometry->IsAffine())
+      {
+        // The fast path: an affine image of the parameter domain.
+        geometry->GetAffineMap(matrix, offset);
+        axisAligned = matrix[1] == 0 && matrix[2] == 0 && matrix[3] == 0 && matrix[5] == 0 &&
+          matrix[6] == 0 && matrix[7] == 0 && matrix[0] > 0 && matrix[4] > 0 && matrix[8] > 0;
+        geometry.reset();
+      }
     }
     vtkDataArray* transform = fd ? fd->GetArray("LRPhysicalTransform") : nullptr;
     if (transform && !parameterSpace && transform->GetNumberOfTuples() > 0)
@@ -154,7 +167,15 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     {
       return fail("patch " + std::to_string(g) + ": " + msg);
     }
-    if (axisAligned)
+    if (geometry)
+    {
+      if (!evaluator->SetGeometry(std::move(geometry)))
+      {
+        return fail("patch " + std::to_string(g) + ": the geometry and the field \"" + name +
+          "\" have different elements");
+      }
+    }
+    else if (axisAligned)
     {
       const double scale[3] = { matrix[0], matrix[4], matrix[8] };
       evaluator->SetPhysicalTransform(scale, offset);
