@@ -1,6 +1,7 @@
 #include "vtkLRSplineVolumeMapper.h"
 
 #include "vtkLRSplineField.h"
+#include "vtkLRSplineGeometryMap.h"
 #include "vtkSplineVizGPUBuffer.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -78,6 +79,7 @@ struct PatchInfo
   int Blocks[3] = { 1, 1, 1 };    // forest resolution
   int Starts[4] = { 0, 0, 0, 0 }; // heads, nodes, octree, first element
   int Locator = 0;                // 0: forest-like, 1: octree
+  int Curved = 0;                 // 1: a curved geometry map (Lo/Hi: its physical domain)
 };
 
 // Set a GLSL mat4 from a row-major vtkMatrix4x4 (vtkShaderProgram uploads
@@ -144,6 +146,7 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   int NumberOfComponents = 1;
   double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
   double MinimumSide = 0.0; // data units
+  bool Curved = false;      // some patch has a curved geometry map
   std::vector<PatchInfo> Patches;
   std::vector<std::uint32_t> Heads, NodeWords, Octree, Offsets;
   std::vector<float> NodeSplits, Boxes, Coefficients;
@@ -412,14 +415,6 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
         " is rational (it has rational weights): the volume mapper renders polynomial "
         "LR splines only"));
     }
-    vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
-    if (mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1)
-    {
-      return done(in.Fail("patch " + std::to_string(g) +
-        " is in geometry mode (its points are a spline geometry map, e.g. an IFEM result or "
-        "vtkLRSplineReader's GeometryMode): the volume mapper renders field-mode volumes over "
-        "their parameter box only"));
-    }
     if (pd->GetNumberOfArrays() == 0)
     {
       return done(in.Fail("patch " + std::to_string(g) +
@@ -468,6 +463,7 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   in.NumberOfComponents = nc;
   in.Field.GetBounds(in.Bounds);
   in.MinimumSide = VTK_DOUBLE_MAX;
+  in.Curved = false;
 
   // Flatten every patch into the GPU arrays.
   const int per = (degree[0] + 1) * (degree[1] + 1) * (degree[2] + 1) * nc;
@@ -507,8 +503,30 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
           " has NaN or infinite coefficients in \"" + in.Field.GetArrayName() + "\""));
       }
     }
+    // A curved patch: its geometry's Bezier coefficients follow the
+    // field's per element, its search structure is the geometry map's.
+    const vtkLRSplineGeometryMap* geometryMap = patch.GetGeometry();
+    vtkLRSplineBezierVolume geometryRaised;
+    if (geometryMap)
+    {
+      if (this->ElementLocator == OCTREE || this->ElementLocator == TEXTURE)
+      {
+        return done(in.Fail("patch " + std::to_string(p) +
+          " has a curved geometry: its elements are found with a k-d forest or tree, not the " +
+          "octree or the look-up texture"));
+      }
+      geometryRaised = geometryMap->GetVolume();
+      geometryRaised.CoefficientsFloat.clear();
+      if (!geometryRaised.ElevateDegree(degree))
+      {
+        return done(in.Fail("patch " + std::to_string(p) + ": the geometry's degree is too high"));
+      }
+      in.Curved = true;
+    }
+    const vtkLRSplineElementLocator& search = geometryMap ? geometryMap->GetLocator() : locator;
     PatchInfo info;
-    const double* domain = locator.GetDomain();
+    info.Curved = geometryMap ? 1 : 0;
+    const double* domain = search.GetDomain();
     const double* A = patch.GetMatrix();
     const double* inverse = patch.GetInverseMatrix();
     const double* offset = patch.GetOffset();
@@ -533,20 +551,20 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     info.Starts[1] = static_cast<int>(in.NodeWords.size());
     info.Starts[2] = static_cast<int>(in.Octree.size());
     info.Starts[3] = static_cast<int>(firstElement);
-    if (locator.GetType() == vtkLRSplineElementLocator::OCTREE)
+    if (search.GetType() == vtkLRSplineElementLocator::OCTREE)
     {
       info.Locator = 1;
-      const auto& oct = locator.GetOctreeNodes();
+      const auto& oct = search.GetOctreeNodes();
       in.Octree.insert(in.Octree.end(), oct.begin(), oct.end());
     }
     else
     {
       info.Locator = 0;
-      const int* nb = locator.GetNumberOfBlocks();
+      const int* nb = search.GetNumberOfBlocks();
       std::copy(nb, nb + 3, info.Blocks);
-      const auto& heads = locator.GetHeads();
-      const auto& words = locator.GetNodeWords();
-      const std::vector<float> splits = locator.GetNodeSplitsFloat();
+      const auto& heads = search.GetHeads();
+      const auto& words = search.GetNodeWords();
+      const std::vector<float> splits = search.GetNodeSplitsFloat();
       in.Heads.insert(in.Heads.end(), heads.begin(), heads.end());
       in.NodeWords.insert(in.NodeWords.end(), words.begin(), words.end());
       in.NodeSplits.insert(in.NodeSplits.end(), splits.begin(), splits.end());
@@ -555,14 +573,38 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     for (vtkIdType e = 0; e < ne; ++e)
     {
       const double* b = volume->GetBox(e);
-      in.Boxes.insert(in.Boxes.end(),
-        { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]), 0.0f,
-          static_cast<float>(b[3]), static_cast<float>(b[4]), static_cast<float>(b[5]), 0.0f });
+      if (geometryMap)
+      {
+        // The physical box; its fourth value the element's shortest side
+        // (data units, > 0: marks a curved element).
+        const double* pb = geometryMap->GetPhysicalBox(e);
+        const double side = geometryMap->GetElementMinimumSide(e);
+        in.Boxes.insert(in.Boxes.end(),
+          { static_cast<float>(pb[0]), static_cast<float>(pb[1]), static_cast<float>(pb[2]), 0.0f,
+            static_cast<float>(pb[3]), static_cast<float>(pb[4]), static_cast<float>(pb[5]),
+            static_cast<float>(side) });
+        in.MinimumSide = std::min(in.MinimumSide, side);
+      }
+      else
+      {
+        in.Boxes.insert(in.Boxes.end(),
+          { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]), 0.0f,
+            static_cast<float>(b[3]), static_cast<float>(b[4]), static_cast<float>(b[5]), 0.0f });
+      }
       in.Offsets.push_back(static_cast<std::uint32_t>(in.Coefficients.size()));
       const double* c = volume->GetElementCoefficients(e);
       for (int i = 0; i < per; ++i)
       {
         in.Coefficients.push_back(static_cast<float>(c[i]));
+      }
+      if (geometryMap)
+      {
+        const double* gc = geometryRaised.GetElementCoefficients(e);
+        const int gper = 3 * per / nc;
+        for (int i = 0; i < gper; ++i)
+        {
+          in.Coefficients.push_back(static_cast<float>(gc[i]));
+        }
       }
       // Coefficient ranges (the element's values lie within them).
       double magnitudeLow = 0.0, magnitudeHigh = 0.0;
@@ -589,7 +631,7 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
       }
       in.MagnitudeRanges.push_back(static_cast<float>(magnitudeLow));
       in.MagnitudeRanges.push_back(static_cast<float>(magnitudeHigh));
-      for (int k = 0; k < 3; ++k)
+      for (int k = 0; k < 3 && !geometryMap; ++k)
       {
         in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * edge[k]);
       }
@@ -857,6 +899,9 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
             skip = skip && !(v >= r[0] && v <= r[1]);
           }
         }
+        // (Curved elements are never skipped: the jump to an element's
+        // exit is computed for parameter boxes.)
+        skip = skip && in.Boxes[8 * e + 7] == 0.0f;
         in.Boxes[8 * e + 3] = skip ? 1.0f : 0.0f;
         skipped += skip ? 1 : 0;
       }
@@ -928,7 +973,8 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
             << "\n#define LR_TRIM "
             << (this->GetNumberOfInputConnections(1) > 0 || this->GetInputDataObject(1, 0) ? 1 : 0)
             << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0)
-            << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_SUPERSAMPLING "
+            << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_CURVED "
+            << (in.Curved ? 1 : 0) << "\n#define LR_SUPERSAMPLING "
             << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
             << "\n#define LR_LIGHTS " << lightList.size() << "\n#define LR_MAX_PATCHES "
             << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
@@ -1236,7 +1282,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     const int np = static_cast<int>(in.Patches.size());
     std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
-    std::vector<int> blocks, starts, locators;
+    std::vector<int> blocks, starts, locators, curved;
     for (const PatchInfo& p : in.Patches)
     {
       lo.insert(lo.end(), p.Lo, p.Lo + 3);
@@ -1248,6 +1294,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       blocks.insert(blocks.end(), p.Blocks, p.Blocks + 3);
       starts.insert(starts.end(), p.Starts, p.Starts + 4);
       locators.push_back(p.Locator);
+      curved.push_back(p.Curved);
     }
     auto set3f = [&](const char* name, std::vector<float>& v)
     { program->SetUniform3fv(name, np, reinterpret_cast<const float(*)[3]>(v.data())); };
@@ -1273,6 +1320,11 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     program->SetUniform1iv("lrPatchBlocks", 3 * np, blocks.data());
     program->SetUniform1iv("lrPatchStarts", 4 * np, starts.data());
     program->SetUniform1iv("lrPatchLocator", np, locators.data());
+    if (in.Curved)
+    {
+      program->SetUniform1iv("lrPatchCurved", np, curved.data());
+      program->SetUniformf("lrMinimumSide", static_cast<float>(in.MinimumSide));
+    }
   }
 
   // Clipping planes, in data coordinates.

@@ -47,6 +47,13 @@ uniform vec3 lrPatchBoxHi[LR_MAX_PATCHES];
 uniform int lrPatchBlocks[3 * LR_MAX_PATCHES]; // forest resolution (3 per patch)
 uniform int lrPatchStarts[4 * LR_MAX_PATCHES]; // heads, nodes, octree, first element
 uniform int lrPatchLocator[LR_MAX_PATCHES];  // 0: forest (k-d tree, texture), 1: octree
+#if LR_CURVED
+// 1: a curved geometry map (lrPatchLo/Hi: the physical domain of its forest;
+// the element boxes are physical, their fourth hi value the shortest side;
+// the geometry's coefficients follow the field's per element).
+uniform int lrPatchCurved[LR_MAX_PATCHES];
+uniform float lrMinimumSide; // the smallest element's shortest side (data units)
+#endif
 
 uniform usamplerBuffer lrHeads;
 uniform usamplerBuffer lrNodeWords;
@@ -125,6 +132,97 @@ bool lrCurrentSkip = false; // the element adds nothing (empty-space skipping)
 int lrSamples = 0;
 float lrWorldPerData = 1.0; // world length of a data unit along the ray
 
+#if LR_CURVED
+int lrCurrentElement = -1;    // curved patches: the element (global index)
+vec3 lrCurrentS = vec3(0.5);  // and the local coordinates of the previous sample
+mat3 lrCurrentJinv = mat3(1.0);
+float lrCurrentSide = 0.0;
+
+// Is x in curved element e (global index) of patch p? Newton from `seed`;
+// on success the element becomes the current one.
+bool lrTryCurved(int p, int e, vec3 x, vec3 seed)
+{
+  vec4 lo = texelFetch(lrBoxes, 2 * e);
+  vec4 hi = texelFetch(lrBoxes, 2 * e + 1);
+  vec3 tol = 1e-5 * (hi.xyz - lo.xyz);
+  if (any(lessThan(x, lo.xyz - tol)) || any(greaterThan(x, hi.xyz + tol)))
+  {
+    return false;
+  }
+  int offset = int(texelFetch(lrOffsets, e).x);
+  int geometry = offset + (LR_DU + 1) * (LR_DV + 1) * (LR_DW + 1) * LR_NC;
+  vec3 s = seed;
+  mat3 jinv;
+  if (!lrInvert(geometry, LR_DU, LR_DV, LR_DW, x, 1e-4, s, jinv))
+  {
+    return false;
+  }
+  lrCurrentPatch = p;
+  lrCurrentElement = e;
+  lrCurrentOffset = offset;
+  lrCurrentS = s;
+  lrCurrentJinv = jinv;
+  lrCurrentSide = hi.w;
+  lrCurrentSkip = false;
+  return true;
+}
+
+// The element of curved patch p containing physical point x: the previous
+// sample's, else the candidates of the k-d forest over the physical boxes
+// (a leaf or a list leaf: word (3 << 29) | count, then the elements).
+bool lrFindCurved(int p, vec3 x)
+{
+  if (lrCurrentPatch == p && lrCurrentElement >= 0 &&
+    lrTryCurved(p, lrCurrentElement, x, lrCurrentS))
+  {
+    return true;
+  }
+  ivec4 starts = ivec4(lrPatchStarts[4 * p], lrPatchStarts[4 * p + 1], lrPatchStarts[4 * p + 2],
+    lrPatchStarts[4 * p + 3]);
+  ivec3 blocks = ivec3(lrPatchBlocks[3 * p], lrPatchBlocks[3 * p + 1], lrPatchBlocks[3 * p + 2]);
+  vec3 lo = lrPatchLo[p];
+  vec3 hi = lrPatchHi[p];
+  ivec3 b;
+  for (int d = 0; d < 3; ++d)
+  {
+    int i = int(floor((x[d] - lo[d]) / (hi[d] - lo[d]) * float(blocks[d])));
+    b[d] = clamp(i, 0, blocks[d] - 1);
+  }
+  uint w = lrHead(starts.x + (b.z * blocks.y + b.y) * blocks.x + b.x);
+  int index = -1;
+  for (int steps = 0; steps < 64 && (w & LR_LEAF) == 0u; ++steps)
+  {
+    index = int(w);
+    uint node = lrNodeWord(starts.y + index);
+    if ((node & LR_LEAF) != 0u || ((node >> 29u) & 3u) == 3u)
+    {
+      w = node;
+      break;
+    }
+    int dir = int((node >> 29u) & 3u);
+    w = x[dir] < lrNodeSplit(starts.y + index) ? (node & LR_CHILD_MASK) : uint(index + 1);
+  }
+  if ((w & LR_LEAF) != 0u)
+  {
+    return w != LR_NO_ELEMENT && lrTryCurved(p, int(w & LR_ELEMENT_MASK) + starts.w, x, vec3(0.5));
+  }
+  if (((w >> 29u) & 3u) != 3u)
+  {
+    return false;
+  }
+  int count = int(w & LR_CHILD_MASK);
+  for (int k = 1; k <= count; ++k)
+  {
+    int e = int(lrNodeWord(starts.y + index + k) & LR_ELEMENT_MASK);
+    if (lrTryCurved(p, e + starts.w, x, vec3(0.5)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+#endif
+
 // The field's value (component LR_COMPONENT, or the magnitude) and its
 // derivatives with respect to the local coordinates.
 float lrValue(int offset, vec3 s, out vec3 grad)
@@ -156,6 +254,21 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
   vec3 u = vec3(0.0);
   for (int q = 0; q < LR_PATCHES; ++q)
   {
+#if LR_CURVED
+    if (lrPatchCurved[q] != 0)
+    {
+      if (lrFindCurved(q, x))
+      {
+        // The field at the inverted point; d/dx = (d/ds) (dx/ds)^-1.
+        vec3 gs;
+        value = lrValue(lrCurrentOffset, lrCurrentS, gs);
+        gradient = gs * lrCurrentJinv;
+        minSide = lrCurrentSide;
+        return true;
+      }
+      continue;
+    }
+#endif
     // Points within a rounding tolerance of the domain count as inside and
     // are moved onto it (ray ends computed on the box faces).
     vec3 uq = lrPatchInverse[q] * (x - lrPatchOffset[q]);
@@ -185,6 +298,9 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
     }
     e += starts.w;
     lrCurrentPatch = p;
+#if LR_CURVED
+    lrCurrentElement = -1;
+#endif
     vec4 lo = texelFetch(lrBoxes, 2 * e);
     lrCurrentLo = lo.xyz;
     lrCurrentSkip = lo.w > 0.5;
@@ -518,6 +634,14 @@ void main()
     else
     {
       t = valid ? t + max(lrStep(minSide), eps) : lrNextEntry(origin, dir, t, 10.0 * eps);
+#if LR_CURVED
+      // A curved patch does not fill its box: outside points inside the
+      // boxes advance by the finest step.
+      if (!valid)
+      {
+        t = max(t, prevT + max(lrStep(lrMinimumSide), eps));
+      }
+#endif
     }
     if (t > 1e29)
     {

@@ -2,7 +2,7 @@
 // naming the problem, nothing drawn (the window keeps its background), no
 // crash; and a mapper given good input again renders again.
 //  - no input; a polygonal data set; a surface (2D) spline (Bezier
-//    quadrilaterals); a patch read in geometry mode;
+//    quadrilaterals) (geometry mode is rendered: TestLRSplineVolumeCurved);
 //  - rational data (rational weights); no point-data array; a field name that
 //    does not exist; NaN coefficients; a degree above 3; 17 patches; a vector
 //    component that does not exist;
@@ -222,15 +222,6 @@ int TestLRSplineVolumeBadInput(int, char*[])
     mb->SetBlock(0, grid);
     vtkNew<vtkLRSplineVolumeMapper> mapper;
     Expect(status, "surface spline", Render(mapper, mb, property), "surface (2D) spline");
-  }
-  {
-    vtkNew<vtkLRSplineReader> geometry;
-    geometry->SetFileName(SPLINEVIZ_EXTERNAL_DATA_DIR "/cube-3patch-refined.lr");
-    geometry->GeometryModeOn();
-    geometry->Update();
-    vtkNew<vtkLRSplineVolumeMapper> mapper;
-    Expect(
-      status, "geometry mode", Render(mapper, geometry->GetOutput(), property), "geometry mode");
   }
   {
     auto data = Copy(good);
