@@ -7,11 +7,15 @@
  * visualization of locally refined spline volumes for scalar and vector
  * fields" (Computers & Graphics 2018), §3.2 and §4. A VTK volume mapper:
  * use it with a vtkVolume and a vtkVolumeProperty like any VTK volume mapper.
- * Its input is the output of vtkLRSplineReader (a vtkMultiBlockDataSet of
- * one VTK_BEZIER_HEXAHEDRON grid per patch, field mode; several patches per
- * file; the first patch containing a point wins, as in
+ * Its input is the output of vtkLRSplineReader or vtkIFEMReader (a
+ * vtkMultiBlockDataSet of one VTK_BEZIER_HEXAHEDRON grid per patch; several
+ * patches per file; the first patch containing a point wins, as in
  * vtkLRSplineProbeFilter), or one such grid, or anything
  * vtkLRSplineField::Build accepts (e.g. vtkLRSplineImageFitter's output).
+ * Curved (non-affine) geometry maps are rendered in physical space: each
+ * sample finds its element with a k-d forest over the elements' physical
+ * boxes and inverts the map by Newton's method in the shader (the GLSL of
+ * vtkLRSplineGeometryMap's inversion); affine ones use the field-mode path.
  *
  * - **On the GPU once per data change** (§3.2): the Bernstein coefficients of
  *   every element (float), the element boxes, and the element search
@@ -59,9 +63,9 @@
  *   along each ray (a depth pre-pass of both; exact for surfaces that a ray
  *   enters and leaves once).
  *
- * Bad input (no scalars, a surface spline, rational data or patches read in
- * geometry mode, NaN coefficients, degrees above 3, an empty transfer
- * function) is an error naming the problem; nothing is drawn.
+ * Bad input (no scalars, a surface spline, rational data, NaN coefficients,
+ * degrees above 3, an empty transfer function) is an error naming the
+ * problem; nothing is drawn.
  *
  * Limits: degrees up to 3 per direction; at most 16 patches; the whole
  * spline on each rank in parallel (no ordered compositing of pieces).

@@ -7,6 +7,7 @@
 // the outward normal are outside, pushed inward inside. Negative control: the
 // unbent (affine) map puts a bent point elsewhere. Rational: random positive
 // weights on the control points ("RationalWeights", VTK's rational Bezier).
+#include "vtkLRSplineField.h"
 #include "vtkLRSplineGeometryMap.h"
 #include "vtkLRSplineReader.h"
 
@@ -287,6 +288,47 @@ int CheckInversion(
           ++outsideWrong;
         }
       }
+    }
+  }
+  // The field evaluation on the same geometry: the geometry-mode array
+  // "Field" holds the coefficients themselves (x, y, z, and the weight when
+  // rational: a field on the rational basis), so f(x) = x.
+  {
+    vtkNew<vtkMultiBlockDataSet> mb;
+    for (std::size_t p = 0; p < curved.size(); ++p)
+    {
+      mb->SetBlock(static_cast<unsigned>(p), curved[p]);
+    }
+    vtkLRSplineField field;
+    std::string error;
+    if (!field.Build(mb, "Field", vtkLRSplineElementLocator::KD_FOREST, nullptr, false, &error))
+    {
+      std::cerr << "field: " << error << "\n";
+      return failures + 1;
+    }
+    double worstField = 0.0;
+    for (int k = 0; k < 200; ++k)
+    {
+      const std::size_t p = k % 2;
+      const vtkIdType c = static_cast<vtkIdType>(unit(rng) * (curved[p]->GetNumberOfCells() - 1));
+      const double s[3] = { unit(rng), unit(rng), unit(rng) };
+      double x[3], v[8];
+      Forward(curved[p], c, s, x);
+      if (field.Evaluate(x, v, nullptr) < 0)
+      {
+        ++failures;
+        continue;
+      }
+      for (int d = 0; d < 3; ++d)
+      {
+        worstField = std::max(worstField, std::abs(v[d] - x[d]));
+      }
+    }
+    std::cout << (rational ? "rational" : "polynomial") << " field f(x) = x: largest error "
+              << worstField << "\n";
+    if (!(worstField <= 1e-10))
+    {
+      ++failures;
     }
   }
   // Points far away and outside both patches' boxes.
