@@ -77,6 +77,11 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
   for (std::size_t g = 0; g < grids.size(); ++g)
   {
     vtkUnstructuredGrid* grid = grids[g];
+    if (!name.empty() && !grid->GetPointData()->GetArray(name.c_str()))
+    {
+      // Another basis of a mixed method (its own fields): not this field's.
+      continue;
+    }
     vtkLRSplineBezierVolume volume;
     std::string msg, used;
     if (!volume.FromUnstructuredGrid(grid, name.c_str(), &msg, nullptr, &used))
@@ -186,6 +191,10 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
         "patch " + std::to_string(g) + " has a singular or non-finite LRPhysicalTransform matrix");
     }
     this->Patches.push_back(std::move(evaluator));
+  }
+  if (this->Patches.empty())
+  {
+    return fail("no patch of the spline input has a point-data array named \"" + name + "\"");
   }
   this->ArrayName = name;
   // Do the patches' boxes overlap (then the hint must not skip the order rule)?

@@ -5,9 +5,10 @@
  * Plain C++ (not a vtkObject). Collects the VTK_BEZIER_HEXAHEDRON grids of a
  * vtkLRSplineReader output (a vtkUnstructuredGrid patch, or a
  * vtkMultiBlockDataSet / any composite of them), builds one
- * vtkLRSplineEvaluator per patch, and evaluates at physical points with the
- * rule of vtkLRSplineProbeFilter: the first patch (in block order) that
- * contains the point wins.
+ * vtkLRSplineEvaluator per patch that has the field's array (the blocks of
+ * other bases of a mixed IFEM result are left out), and evaluates at
+ * physical points with the rule of vtkLRSplineProbeFilter: the first patch
+ * (in block order) that contains the point wins.
  *
  * The physical placement comes from the field data the reader writes
  * ("LRPhysicalTransform": scale xyz then offset xyz, or a row-major 3x3
