@@ -44,6 +44,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include "vtkLRSplineVolumeCompositeFS.h"
 #include "vtkLRSplineVolumeFS.h"
 #include "vtkLRSplineVolumeShared.h"
 #include "vtkLRSplineVolumeTrimFS.h"
@@ -181,6 +182,14 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   vtkIdType TrimVertices = 0;
   std::string TrimKey;
   double CubeBox[6] = { 0, 0, 0, 0, 0, 0 };
+  // Continuation passes: final color and depth, two sets of ray state
+  // (accumulated color, ray, extra), their framebuffers, the final draw.
+  vtkSmartPointer<vtkTextureObject> PassFinal[2];
+  vtkSmartPointer<vtkTextureObject> PassState[2][3];
+  vtkSmartPointer<vtkOpenGLFramebufferObject> PassFramebuffers[2];
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> CompositeArray;
+  vtkShaderProgram* CompositeArrayProgram = nullptr;
+  int Passes = 1;
 
   bool Fail(const std::string& message)
   {
@@ -198,7 +207,10 @@ struct vtkLRSplineVolumeMapper::vtkInternals
       b->ReleaseGraphicsResources(window);
     }
     for (vtkTextureObject* t : { this->TransferTexture.Get(), this->DepthTexture.Get(),
-           this->DepthColor.Get(), this->TrimTextures[0].Get(), this->TrimTextures[1].Get() })
+           this->DepthColor.Get(), this->TrimTextures[0].Get(), this->TrimTextures[1].Get(),
+           this->PassFinal[0].Get(), this->PassFinal[1].Get(), this->PassState[0][0].Get(),
+           this->PassState[0][1].Get(), this->PassState[0][2].Get(), this->PassState[1][0].Get(),
+           this->PassState[1][1].Get(), this->PassState[1][2].Get() })
     {
       if (t)
       {
@@ -206,7 +218,8 @@ struct vtkLRSplineVolumeMapper::vtkInternals
       }
     }
     for (vtkOpenGLFramebufferObject* f : { this->DepthFramebuffer.Get(),
-           this->TrimFramebuffers[0].Get(), this->TrimFramebuffers[1].Get() })
+           this->TrimFramebuffers[0].Get(), this->TrimFramebuffers[1].Get(),
+           this->PassFramebuffers[0].Get(), this->PassFramebuffers[1].Get() })
     {
       if (f)
       {
@@ -220,7 +233,8 @@ struct vtkLRSplineVolumeMapper::vtkInternals
         b->ReleaseGraphicsResources();
       }
     }
-    for (vtkOpenGLVertexArrayObject* a : { this->CubeArray.Get(), this->TrimArray.Get() })
+    for (vtkOpenGLVertexArrayObject* a :
+      { this->CubeArray.Get(), this->TrimArray.Get(), this->CompositeArray.Get() })
     {
       if (a)
       {
@@ -239,6 +253,17 @@ struct vtkLRSplineVolumeMapper::vtkInternals
     this->TrimBuffer = nullptr;
     this->TrimArray = nullptr;
     this->TrimArrayProgram = nullptr;
+    for (int k = 0; k < 2; ++k)
+    {
+      this->PassFinal[k] = nullptr;
+      this->PassFramebuffers[k] = nullptr;
+      for (auto& t : this->PassState[k])
+      {
+        t = nullptr;
+      }
+    }
+    this->CompositeArray = nullptr;
+    this->CompositeArrayProgram = nullptr;
     this->TransferKey.clear();
     this->TrimKey.clear();
     this->UploadTime = vtkTimeStamp();
@@ -956,6 +981,17 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
   }
 
+  // Continuation in passes when the rays may need more samples than a pass
+  // runs (see MaximumStepsPerPass).
+  int stepsPerPass = this->MaximumStepsPerPass;
+  if (stepsPerPass <= 0)
+  {
+    stepsPerPass = in.Curved ? 400 : 2000;
+  }
+  double unusedDistance = 0.0;
+  const bool multiPass =
+    !this->CountSamples && this->ComputeStepCount(vol, unusedDistance) > stepsPerPass;
+
   // The program.
   const bool shade = property->GetShade(0) != 0 && !this->CountSamples;
   std::string fs = this->GetFragmentShaderSource();
@@ -974,7 +1010,8 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
             << (this->GetNumberOfInputConnections(1) > 0 || this->GetInputDataObject(1, 0) ? 1 : 0)
             << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0)
             << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_CURVED "
-            << (in.Curved ? 1 : 0) << "\n#define LR_SUPERSAMPLING "
+            << (in.Curved ? 1 : 0) << "\n#define LR_MULTIPASS " << (multiPass ? 1 : 0)
+            << "\n#define LR_SUPERSAMPLING "
             << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
             << "\n#define LR_LIGHTS " << lightList.size() << "\n#define LR_MAX_PATCHES "
             << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
@@ -1364,46 +1401,16 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // Sampling.
-  double diagonal = 0.0;
-  for (int d = 0; d < 3; ++d)
-  {
-    double e[3] = { 0, 0, 0 };
-    e[d] = box[d + 3] - box[d];
-    double w[3];
-    for (int r = 0; r < 3; ++r)
-    {
-      w[r] = dataToWorld->GetElement(r, 0) * e[0] + dataToWorld->GetElement(r, 1) * e[1] +
-        dataToWorld->GetElement(r, 2) * e[2];
-    }
-    diagonal += vtkMath::Dot(w, w);
-  }
-  diagonal = std::sqrt(diagonal);
-  const double sampleDistance = this->SampleDistance > 0 ? this->SampleDistance : diagonal / 100.0;
+  double sampleDistance = 0.0;
+  const int maxSteps = this->ComputeStepCount(vol, sampleDistance);
   program->SetUniformi("lrAdaptive", this->AdaptiveSteps ? 1 : 0);
   program->SetUniformf("lrStepScale", static_cast<float>(this->StepScale));
   program->SetUniformf("lrSampleDistance", static_cast<float>(sampleDistance));
-  int maxSteps = this->MaximumNumberOfSteps;
-  if (maxSteps <= 0)
-  {
-    // Automatic: the box's diagonal at the finest step, plus the gaps.
-    double dataDiagonal = 0.0;
-    for (int d = 0; d < 3; ++d)
-    {
-      dataDiagonal += (box[d + 3] - box[d]) * (box[d + 3] - box[d]);
-    }
-    dataDiagonal = std::sqrt(dataDiagonal);
-    const int maxDegree = std::max(in.Degree[0], std::max(in.Degree[1], in.Degree[2]));
-    const double steps = this->AdaptiveSteps
-      ? dataDiagonal / (this->StepScale * in.MinimumSide / (1 << maxDegree))
-      : diagonal / sampleDistance;
-    maxSteps = static_cast<int>(std::min(
-      1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
-  }
   // Mesa's llvmpipe ends a fragment's loops after 65,535 iterations in all
   // (about 4,000 samples with the element look-up): say so, once per
   // setting, when fixed steps need more (adaptive estimates are the worst
   // case, finest everywhere, and rarely reached).
-  if (!this->AdaptiveSteps && maxSteps > 4000 && maxSteps != this->WarnedSteps)
+  if (!multiPass && !this->AdaptiveSteps && maxSteps > 4000 && maxSteps != this->WarnedSteps)
   {
     // checked once per setting, not every frame
     this->WarnedSteps = maxSteps;
@@ -1417,7 +1424,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                          "larger SampleDistance or adaptive steps");
     }
   }
-  program->SetUniformi("lrMaxSteps", maxSteps);
+  program->SetUniformi("lrMaxSteps", multiPass ? stepsPerPass : maxSteps);
   program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
 
   // Transfer function and lighting.
@@ -1484,6 +1491,12 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       program, in.CubeBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
     in.CubeArrayProgram = program;
   }
+  in.Passes = 1;
+  if (multiPass && !this->DrawPasses(ren, program, dataToClip, viewport, stepsPerPass, maxSteps))
+  {
+    report();
+  }
+  else if (!multiPass)
   {
     vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
     vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
@@ -1531,6 +1544,248 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // A good frame: a problem that comes back is reported again.
   in.Error.clear();
   in.ReportedError.clear();
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineVolumeMapper::GetNumberOfPasses()
+{
+  return this->Internals->Passes;
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineVolumeMapper::ComputeStepCount(vtkVolume* vol, double& sampleDistance)
+{
+  vtkInternals& in = *this->Internals;
+  const double box[6] = { in.Bounds[0], in.Bounds[2], in.Bounds[4], in.Bounds[1], in.Bounds[3],
+    in.Bounds[5] };
+  vtkMatrix4x4* dataToWorld = vol->GetMatrix();
+  // The box's diagonal in world units.
+  double diagonal = 0.0;
+  for (int d = 0; d < 3; ++d)
+  {
+    double e[3] = { 0, 0, 0 };
+    e[d] = box[d + 3] - box[d];
+    double w[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      w[r] = dataToWorld->GetElement(r, 0) * e[0] + dataToWorld->GetElement(r, 1) * e[1] +
+        dataToWorld->GetElement(r, 2) * e[2];
+    }
+    diagonal += vtkMath::Dot(w, w);
+  }
+  diagonal = std::sqrt(diagonal);
+  sampleDistance = this->SampleDistance > 0 ? this->SampleDistance : diagonal / 100.0;
+  if (this->MaximumNumberOfSteps > 0)
+  {
+    return this->MaximumNumberOfSteps;
+  }
+  // Automatic: the box's diagonal at the finest step, plus the gaps.
+  double dataDiagonal = 0.0;
+  for (int d = 0; d < 3; ++d)
+  {
+    dataDiagonal += (box[d + 3] - box[d]) * (box[d + 3] - box[d]);
+  }
+  dataDiagonal = std::sqrt(dataDiagonal);
+  const int maxDegree = std::max(in.Degree[0], std::max(in.Degree[1], in.Degree[2]));
+  const double steps = this->AdaptiveSteps
+    ? dataDiagonal / (this->StepScale * in.MinimumSide / (1 << maxDegree))
+    : diagonal / sampleDistance;
+  return static_cast<int>(
+    std::min(1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::DrawPasses(vtkRenderer* ren, vtkShaderProgram* program,
+  vtkMatrix4x4* dataToClip, const int viewport[4], int stepsPerPass, int totalSteps)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderWindow* window = in.Window;
+  vtkOpenGLState* state = window->GetState();
+  const int w = viewport[2], h = viewport[3];
+  // Viewport-sized float targets (re-made when the viewport changes).
+  bool resized = false;
+  auto target = [&](vtkSmartPointer<vtkTextureObject>& t, int components)
+  {
+    if (!t)
+    {
+      t = vtkSmartPointer<vtkTextureObject>::New();
+      t->SetContext(window);
+      t->SetMinificationFilter(vtkTextureObject::Nearest);
+      t->SetMagnificationFilter(vtkTextureObject::Nearest);
+      t->SetWrapS(vtkTextureObject::ClampToEdge);
+      t->SetWrapT(vtkTextureObject::ClampToEdge);
+    }
+    if (!t->GetHandle() || static_cast<int>(t->GetWidth()) != w ||
+      static_cast<int>(t->GetHeight()) != h)
+    {
+      t->ReleaseGraphicsResources(window);
+      resized = true;
+      return t->Allocate2D(w, h, components, VTK_FLOAT);
+    }
+    return true;
+  };
+  bool ok = target(in.PassFinal[0], 4) && target(in.PassFinal[1], 1);
+  for (auto& set : in.PassState)
+  {
+    for (auto& t : set)
+    {
+      ok = ok && target(t, 4);
+    }
+  }
+  if (!ok)
+  {
+    in.Error = "the textures of the multi-pass continuation (" + std::to_string(w) + " x " +
+      std::to_string(h) + " pixels, 112 bytes each) could not be allocated";
+    return false;
+  }
+  if (resized || !in.PassFramebuffers[0])
+  {
+    state->PushDrawFramebufferBinding();
+    for (int k = 0; k < 2; ++k)
+    {
+      in.PassFramebuffers[k] = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      in.PassFramebuffers[k]->SetContext(window);
+      in.PassFramebuffers[k]->Bind(GL_DRAW_FRAMEBUFFER);
+      in.PassFramebuffers[k]->AddColorAttachment(0, in.PassFinal[0]);
+      in.PassFramebuffers[k]->AddColorAttachment(1, in.PassFinal[1]);
+      for (int j = 0; j < 3; ++j)
+      {
+        in.PassFramebuffers[k]->AddColorAttachment(2 + j, in.PassState[k][j]);
+      }
+    }
+    state->PopDrawFramebufferBinding();
+  }
+
+  // The passes: each resumes the rays the previous one left unfinished,
+  // until a pass draws nothing (every ray ended).
+  const float passViewport[4] = { 0.0f, 0.0f, static_cast<float>(w), static_cast<float>(h) };
+  program->SetUniform4f("lrViewport", passViewport);
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  {
+    vtkOpenGLState::ScopedglViewport savedViewport(state);
+    vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+    state->PushDrawFramebufferBinding();
+    state->vtkglViewport(0, 0, w, h);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglEnable(GL_CULL_FACE);
+    state->vtkglCullFace(GL_FRONT);
+    const GLfloat zero[4] = { 0, 0, 0, 0 };
+    const GLfloat one[4] = { 1, 1, 1, 1 };
+    // At most the passes the step count needs (plus the one that finds
+    // nothing left).
+    const int maxPasses = (totalSteps + stepsPerPass - 1) / stepsPerPass;
+    int pass = 0;
+    for (; pass < maxPasses; ++pass)
+    {
+      vtkOpenGLFramebufferObject* fbo = in.PassFramebuffers[pass % 2];
+      fbo->Bind(GL_DRAW_FRAMEBUFFER);
+      fbo->ActivateDrawBuffers(5);
+      // (also directly: the state cache may skip a second framebuffer's)
+      const GLenum buffers[5] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+        GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4 };
+      glDrawBuffers(5, buffers);
+      // The state this pass writes starts inactive; the final targets are
+      // cleared once.
+      for (int b = pass == 0 ? 0 : 2; b < 5; ++b)
+      {
+        glClearBufferfv(GL_COLOR, b, b == 1 ? one : zero);
+      }
+      const vtkSmartPointer<vtkTextureObject>* read = in.PassState[(pass + 1) % 2];
+      for (int j = 0; j < 3; ++j)
+      {
+        read[j]->Activate();
+      }
+      program->SetUniformi("lrPass", pass);
+      // The last pass runs what is left of the samples per ray.
+      program->SetUniformi("lrMaxSteps", std::min(stepsPerPass, totalSteps - pass * stepsPerPass));
+      program->SetUniformi("lrLastPass", pass + 1 == maxPasses ? 1 : 0);
+      program->SetUniformi("lrStateColor", read[0]->GetTextureUnit());
+      program->SetUniformi("lrStateRay", read[1]->GetTextureUnit());
+      program->SetUniformi("lrStateExtra", read[2]->GetTextureUnit());
+      glBeginQuery(GL_ANY_SAMPLES_PASSED, query);
+      in.CubeArray->Bind();
+      glDrawArrays(GL_TRIANGLES, 0, 36);
+      in.CubeArray->Release();
+      glEndQuery(GL_ANY_SAMPLES_PASSED);
+      for (int j = 0; j < 3; ++j)
+      {
+        read[j]->Deactivate();
+      }
+      GLuint drawn = 0;
+      glGetQueryObjectuiv(query, GL_QUERY_RESULT, &drawn);
+      if (!drawn)
+      {
+        break;
+      }
+    }
+    in.Passes = std::min(pass + 1, maxPasses);
+    state->PopDrawFramebufferBinding();
+    state->vtkglCullFace(GL_BACK);
+  }
+  glDeleteQueries(1, &query);
+
+  // The final colors (and isosurface depths) into the render target.
+  const std::string vs = this->GetVertexShaderSource();
+  const std::string fs = vtkLRSplineVolumeCompositeFS;
+  vtkShaderProgram* composite =
+    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  if (!composite)
+  {
+    in.Error = "the final shader of the multi-pass continuation did not compile";
+    return false;
+  }
+  if (!in.CompositeArray)
+  {
+    in.CompositeArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+  }
+  if (in.CompositeArrayProgram != composite)
+  {
+    in.CompositeArray->ShaderProgramChanged();
+    in.CompositeArray->Bind();
+    in.CompositeArray->AddAttributeArray(
+      composite, in.CubeBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    in.CompositeArrayProgram = composite;
+  }
+  SetMatrix(composite, "lrMCDCMatrix", dataToClip);
+  const float viewportF[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
+    static_cast<float>(w), static_cast<float>(h) };
+  composite->SetUniform4f("lrViewport", viewportF);
+  composite->SetUniformi("lrWriteDepth", this->BlendMode == ISOSURFACE_BLEND ? 1 : 0);
+  in.PassFinal[0]->Activate();
+  in.PassFinal[1]->Activate();
+  composite->SetUniformi("lrFinalColor", in.PassFinal[0]->GetTextureUnit());
+  composite->SetUniformi("lrFinalDepth", in.PassFinal[1]->GetTextureUnit());
+  {
+    vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+    vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
+    state->vtkglEnable(GL_CULL_FACE);
+    state->vtkglCullFace(GL_FRONT);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_ALWAYS);
+    state->vtkglDepthMask(this->BlendMode == ISOSURFACE_BLEND ? GL_TRUE : GL_FALSE);
+    in.CompositeArray->Bind();
+    glDrawArrays(GL_TRIANGLES, 0, 36);
+    in.CompositeArray->Release();
+    state->vtkglCullFace(GL_BACK);
+  }
+  in.PassFinal[0]->Deactivate();
+  in.PassFinal[1]->Deactivate();
+  (void)ren;
+  // The main program is used again by the next frame: its uniforms are set
+  // every frame.
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -93,7 +93,9 @@
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
+class vtkMatrix4x4;
 class vtkPolyData;
+class vtkShaderProgram;
 class vtkRenderer;
 class vtkVolume;
 class vtkWindow;
@@ -281,6 +283,25 @@ public:
 
   ///@{
   /**
+   * Samples per ray and rendering pass. Rays that need more (the number of
+   * samples of MaximumNumberOfSteps, or its automatic estimate) are
+   * continued in further passes: the ray state (position, previous sample,
+   * accumulated color and opacity) is kept in viewport-sized float textures
+   * (7 x 16 bytes per pixel while passes are needed) and each pass resumes
+   * the unfinished rays, until none is left; then the final colors are drawn.
+   * So every step setting renders completely, also where a shader's loops
+   * are capped (Mesa's llvmpipe: 65,535 iterations per invocation). 0
+   * (default): automatic, 2000 samples (400 on curved geometry, whose
+   * samples run Newton's method). Not used with CountSamples.
+   */
+  vtkSetClampMacro(MaximumStepsPerPass, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumStepsPerPass, int);
+  /// Rendering passes of the last frame (1 without continuation).
+  int GetNumberOfPasses();
+  ///@}
+
+  ///@{
+  /**
    * The trimming surface (input port 1, optional): a closed vtkPolyData of
    * polygons in the volume's data coordinates.
    */
@@ -349,6 +370,7 @@ protected:
   int ShadingModel = PHONG;
   int IsosurfaceBisections = 16;
   int MaximumNumberOfSteps = 0;
+  int MaximumStepsPerPass = 0;
   bool CountSamples = false;
   int WarnedSteps = 0; // the step count last checked against llvmpipe's loop limit
 
@@ -358,6 +380,16 @@ private:
 
   // vtkErrorMacro for the current error unless it was reported already.
   void ReportError();
+
+  // Samples per ray (MaximumNumberOfSteps or the automatic estimate) and the
+  // fixed step (world units) for the volume's placement.
+  int ComputeStepCount(vtkVolume* vol, double& sampleDistance);
+
+  // The rays in passes (continuation, see MaximumStepsPerPass; at most
+  // totalSteps samples per ray) into the current draw framebuffer; false
+  // (error set) when a GPU resource failed.
+  bool DrawPasses(vtkRenderer* ren, vtkShaderProgram* program, vtkMatrix4x4* dataToClip,
+    const int viewport[4], int stepsPerPass, int totalSteps);
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

@@ -100,6 +100,21 @@ uniform float lrIsoValues[8];
 uniform int lrNumberOfIsoValues;
 uniform int lrBisections;
 
+#if LR_MULTIPASS
+// Continuation (rays longer than one pass's loop budget, lrMaxSteps samples):
+// each pass resumes every unfinished ray from the state the previous pass
+// wrote (viewport-sized textures, ping-pong) and writes the new state; a ray
+// that ends writes its final color (premultiplied) and depth once.
+// Outputs: 0 final color, 1 final depth, 2 accumulated color, 3 ray state
+// (t, previous t, previous value, flags: 1 active, 2 previous valid, 4
+// found), 4 (previous gradient, extreme or first isosurface depth).
+uniform int lrPass;
+uniform int lrLastPass; // 1: the samples per ray are used up after this pass
+uniform sampler2D lrStateColor;
+uniform sampler2D lrStateRay;
+uniform sampler2D lrStateExtra;
+#endif
+
 uint lrHead(int i)
 {
   return texelFetch(lrHeads, i).x;
@@ -500,8 +515,33 @@ void main()
   float value;
   vec3 gradient;
   float minSide;
+  float hitDepth = 1.0; // window depth of the first isosurface
+  bool done = false;    // the ray has ended (not cut by the step budget)
+  bool resume = false;
+#if LR_MULTIPASS
+  if (lrPass > 0)
+  {
+    vec4 ray = texelFetch(lrStateRay, pixel, 0);
+    int flags = int(ray.w + 0.5);
+    if ((flags & 1) == 0)
+    {
+      discard; // ended in an earlier pass (or never started)
+    }
+    vec4 extra = texelFetch(lrStateExtra, pixel, 0);
+    result = texelFetch(lrStateColor, pixel, 0);
+    t = ray.x;
+    prevT = ray.y;
+    prevValue = ray.z;
+    prevValid = (flags & 2) != 0;
+    found = (flags & 4) != 0;
+    prevGradient = extra.xyz;
+    extreme = extra.w;
+    hitDepth = extra.w;
+    resume = true;
+  }
+#endif
   // A random start within the first step (VTK's jittering).
-  if (lrJitter > 0.0)
+  if (lrJitter > 0.0 && !resume)
   {
     float r = fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
     if (lrSample(origin + t * dir, value, gradient, minSide))
@@ -531,6 +571,7 @@ void main()
       }
       if (result.a > 0.99)
       {
+        done = true;
         break;
       }
 #elif LR_BLEND == 5
@@ -593,12 +634,16 @@ void main()
         {
           found = true;
           vec4 clip = lrMCDCMatrix * vec4(origin + roots[k] * dir, 1.0);
-          gl_FragDepth = 0.5 * (gl_DepthRange.diff * (clip.z / clip.w) + gl_DepthRange.near +
+          hitDepth = 0.5 * (gl_DepthRange.diff * (clip.z / clip.w) + gl_DepthRange.near +
             gl_DepthRange.far);
+#if !LR_MULTIPASS
+          gl_FragDepth = hitDepth;
+#endif
         }
       }
       if (result.a > 0.99)
       {
+        done = true;
         break;
       }
 #endif
@@ -619,6 +664,7 @@ void main()
     prevT = t;
     if (last)
     {
+      done = true;
       break;
     }
     float eps = 1e-6 * (t1 - t0);
@@ -645,9 +691,23 @@ void main()
     }
     if (t > 1e29)
     {
+      done = true;
       break;
     }
   }
+#if LR_MULTIPASS
+  if (!done && lrLastPass == 0)
+  {
+    // Cut by this pass's budget: the state for the next pass.
+    gl_FragData[0] = vec4(0.0);
+    gl_FragData[1] = vec4(1.0);
+    gl_FragData[2] = result;
+    gl_FragData[3] = vec4(t, prevT, prevValue,
+      float(1 + (prevValid ? 2 : 0) + (found ? 4 : 0)));
+    gl_FragData[4] = vec4(prevGradient, LR_BLEND == 5 ? hitDepth : extreme);
+    return;
+  }
+#endif
 #if LR_SAMPLE_COUNT
   // The number of spline evaluations, as a 24-bit integer in RGB.
   gl_FragData[0] = vec4(float(lrSamples % 256) / 255.0, float((lrSamples / 256) % 256) / 255.0,
@@ -672,5 +732,14 @@ void main()
   {
     discard;
   }
+#if LR_MULTIPASS
+  // Ended in this pass: its final color and depth; the state says inactive.
+  gl_FragData[0] = result;
+  gl_FragData[1] = vec4(hitDepth);
+  gl_FragData[2] = vec4(0.0);
+  gl_FragData[3] = vec4(0.0);
+  gl_FragData[4] = vec4(0.0);
+#else
   gl_FragData[0] = result; // premultiplied: blended as src + (1 - src.a) dst
+#endif
 }

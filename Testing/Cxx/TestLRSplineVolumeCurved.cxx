@@ -7,7 +7,8 @@
 // uniform steps a tenth of the finest, evaluation by vtkLRSplineField, i.e.
 // the C++ inversion, not the shader's). RMS at most 3/255. Negative control:
 // the same data with the geometry ignored (LRMode 0: the field over the
-// parameter box) must fail the comparison.
+// parameter box) must fail the comparison. The fixed steps also in passes
+// of 64 samples (the multi-pass continuation on curved geometry).
 #include "LRSplineVolumeTestUtilities.h"
 
 #include "vtkLRSplineReader.h"
@@ -157,16 +158,18 @@ struct Result
 {
   double RMS = -1;
   double Seconds = 0;
+  int Passes = 0;
 };
 
 Result Compare(vtkMultiBlockDataSet* data, vtkMultiBlockDataSet* physical, const std::string& tag,
-  std::vector<double>& cpu, double sampleDistance)
+  std::vector<double>& cpu, double sampleDistance, int stepsPerPass = 0)
 {
   const int width = 120, height = 90;
   const double background[3] = { 0.1, 0.1, 0.12 };
   vtkNew<vtkLRSplineVolumeMapper> mapper;
   mapper->SetInputDataObject(data);
   mapper->SetFieldArrayName("f");
+  mapper->SetMaximumStepsPerPass(stepsPerPass);
   if (sampleDistance > 0)
   {
     mapper->AdaptiveStepsOff();
@@ -240,8 +243,9 @@ Result Compare(vtkMultiBlockDataSet* data, vtkMultiBlockDataSet* physical, const
   }
   result.RMS = lrvolume::RMS(gpu, cpu);
   lrvolume::WritePNG(gpu, width, height, out + tag + "-diff.png", &cpu);
-  std::cout << tag << ": RMS " << result.RMS << " / 255, frame " << result.Seconds << " s"
-            << std::endl;
+  result.Passes = mapper->GetNumberOfPasses();
+  std::cout << tag << ": RMS " << result.RMS << " / 255, frame " << result.Seconds << " s, "
+            << result.Passes << " passes" << std::endl;
   return result;
 }
 }
@@ -270,6 +274,14 @@ int TestLRSplineVolumeCurved(int, char*[])
   if (!(fixed.RMS >= 0 && fixed.RMS <= 3.0))
   {
     std::cerr << "ERROR: curved geometry, fixed steps: RMS " << fixed.RMS << std::endl;
+    ++failures;
+  }
+  // The same fixed steps continued over several passes (64 samples each).
+  const Result passes = Compare(curved, curved, "passes", cpu, 0.01, 64);
+  if (!(passes.RMS >= 0 && passes.RMS <= 3.0) || passes.Passes < 3)
+  {
+    std::cerr << "ERROR: curved geometry in passes: RMS " << passes.RMS << ", " << passes.Passes
+              << " passes" << std::endl;
     ++failures;
   }
   const Result wrong = Compare(ignored, curved, "geometry-ignored", cpu, 0.0);
