@@ -709,27 +709,9 @@ void vtkLRSplineVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
-void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+bool vtkLRSplineVolumeMapper::UploadSpline(vtkOpenGLRenderWindow* window)
 {
   vtkInternals& in = *this->Internals;
-  auto report = [this]() { this->ReportError(); };
-  if (!this->UpdateSpline())
-  {
-    return;
-  }
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  vtkVolumeProperty* property = vol->GetProperty();
-  if (!window || !property)
-  {
-    return;
-  }
-  if (in.Window && in.Window != window)
-  {
-    in.ReleaseGPU(in.Window);
-  }
-  in.Window = window;
-  vtkOpenGLClearErrorMacro();
-
   // The spline's data on the GPU, once per change.
   if (in.UploadTime < in.BuildTime)
   {
@@ -742,8 +724,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       in.Fail("the spline needs a buffer texture of " + std::to_string(largest) +
         " texels; this OpenGL allows " + std::to_string(maxTexels));
       in.BuildKey.clear();
-      report();
-      return;
+      return false;
     }
     bool ok = in.HeadsBuffer.Upload(
                 window, in.Heads.data(), in.Heads.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
@@ -763,12 +744,19 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       in.Fail("the spline's data could not be uploaded to the GPU");
       in.BuildKey.clear();
-      report();
-      return;
+      return false;
     }
     in.UploadTime.Modified();
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::UpdateTransferFunction(
+  vtkOpenGLRenderWindow* window, vtkVolumeProperty* property)
+{
+  vtkInternals& in = *this->Internals;
   // The transfer function as a texture over the union of its ranges. (The
   // property's getters create default functions and switch the channels:
   // only the one in use is asked for.)
@@ -781,8 +769,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     in.Error = "the volume property's transfer function is empty (no scalar opacity or color "
                "points): nothing to render";
-    report();
-    return;
+    return false;
   }
   {
     std::ostringstream key;
@@ -844,8 +831,16 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::CollectIsoValues(
+  vtkVolumeProperty* property, std::vector<float>& isoValues)
+{
+  vtkInternals& in = *this->Internals;
   // Iso values.
-  std::vector<float> isoValues;
+  isoValues.clear();
   if (this->BlendMode == ISOSURFACE_BLEND)
   {
     vtkContourValues* contours = property->GetIsoSurfaceValues();
@@ -854,8 +849,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       in.Error = "isosurface blend mode without iso values (vtkVolumeProperty::"
                  "GetIsoSurfaceValues()->SetValue(0, value)): nothing to render";
-      report();
-      return;
+      return false;
     }
     if (n > MaximumIsoValues)
     {
@@ -868,6 +862,15 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::UpdateEmptySpaceSkipping(
+  vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, const std::vector<float>& isoValues)
+{
+  vtkInternals& in = *this->Internals;
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   // Empty-space skipping: flag the elements whose coefficient range (which
   // bounds their values) maps to zero opacity (composite) or holds no iso
   // value (isosurfaces); the rays jump over them. Recomputed when the
@@ -936,11 +939,333 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
           window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F))
       {
         in.Error = "the spline's element boxes could not be uploaded to the GPU";
-        report();
-        return;
+        return false;
       }
       in.SkipKey = key.str();
     }
+  }
+
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::RenderTrimmingDepths(
+  vtkShaderProgram* program, vtkMatrix4x4* dataToClip, const int viewport[4])
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderWindow* window = in.Window;
+  vtkOpenGLState* state = window->GetState();
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
+  }
+  vtkPolyData* surface = vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
+  std::ostringstream key;
+  key << surface << ' ' << (surface ? surface->GetMTime() : 0);
+  if (key.str() != in.TrimKey)
+  {
+    std::vector<float> tri;
+    if (surface && surface->GetPolys())
+    {
+      vtkPoints* points = surface->GetPoints();
+      vtkCellArray* polys = surface->GetPolys();
+      const vtkIdType* ids;
+      vtkIdType n;
+      for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+      {
+        for (vtkIdType k = 1; k + 1 < n; ++k) // a fan (convex polygons)
+        {
+          for (vtkIdType v : { ids[0], ids[k], ids[k + 1] })
+          {
+            double x[3];
+            points->GetPoint(v, x);
+            tri.insert(tri.end(),
+              { static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2]) });
+          }
+        }
+      }
+    }
+    if (tri.empty())
+    {
+      in.Error = "the trimming surface has no polygons: nothing to render (remove it to "
+                 "render the whole volume)";
+      return false;
+    }
+    if (!in.TrimBuffer)
+    {
+      in.TrimBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    }
+    in.TrimBuffer->Upload(tri, vtkOpenGLBufferObject::ArrayBuffer);
+    in.TrimVertices = static_cast<vtkIdType>(tri.size() / 3);
+    in.TrimArrayProgram = nullptr;
+    in.TrimKey = key.str();
+  }
+  vtkShaderProgram* trimProgram =
+    window->GetShaderCache()->ReadyShaderProgram(vtkLRSplineVolumeVS, vtkLRSplineVolumeTrimFS, "");
+  if (!trimProgram)
+  {
+    in.Error = "the trimming shader did not compile or link";
+    return false;
+  }
+  if (!in.TrimArray)
+  {
+    in.TrimArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+  }
+  if (in.TrimArrayProgram != trimProgram)
+  {
+    in.TrimArray->ShaderProgramChanged();
+    in.TrimArray->Bind();
+    in.TrimArray->AddAttributeArray(
+      trimProgram, in.TrimBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    in.TrimArrayProgram = trimProgram;
+  }
+  SetMatrix(trimProgram, "lrMCDCMatrix", dataToClip);
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    vtkSmartPointer<vtkTextureObject>& texture = in.TrimTextures[pass];
+    vtkSmartPointer<vtkOpenGLFramebufferObject>& fbo = in.TrimFramebuffers[pass];
+    if (!texture || static_cast<int>(texture->GetWidth()) != viewport[2] ||
+      static_cast<int>(texture->GetHeight()) != viewport[3])
+    {
+      if (texture)
+      {
+        texture->ReleaseGraphicsResources(window);
+      }
+      texture = vtkSmartPointer<vtkTextureObject>::New();
+      texture->SetContext(window);
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      texture->AllocateDepth(viewport[2], viewport[3], vtkTextureObject::Float32);
+      fbo = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      fbo->SetContext(window);
+      fbo->SaveCurrentBindingsAndBuffers();
+      fbo->Bind();
+      fbo->AddDepthAttachment(texture);
+      fbo->RestorePreviousBindingsAndBuffers();
+    }
+    fbo->SaveCurrentBindingsAndBuffers();
+    fbo->Bind();
+    fbo->DeactivateDrawBuffers();
+    fbo->DeactivateReadBuffer();
+    {
+      vtkOpenGLState::ScopedglViewport savedViewport(state);
+      vtkOpenGLState::ScopedglScissor savedScissor(state);
+      vtkOpenGLState::ScopedglColorMask savedColorMask(state);
+      vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+      vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+      vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+      vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+      vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+      state->vtkglViewport(0, 0, viewport[2], viewport[3]);
+      state->vtkglScissor(0, 0, viewport[2], viewport[3]);
+      state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      state->vtkglDepthMask(GL_TRUE);
+      state->vtkglEnable(GL_DEPTH_TEST);
+      state->vtkglDisable(GL_BLEND);
+      // Front faces and back faces both: the orientation of the surface's
+      // polygons is not trusted; the nearest and farthest hits are kept.
+      state->vtkglDisable(GL_CULL_FACE);
+      state->vtkglClearDepth(pass == 0 ? 1.0 : 0.0);
+      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+      state->vtkglDepthFunc(pass == 0 ? GL_LESS : GL_GREATER);
+      in.TrimArray->Bind();
+      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(in.TrimVertices));
+      in.TrimArray->Release();
+      state->vtkglClearDepth(1.0);
+    }
+    fbo->RestorePreviousBindingsAndBuffers();
+  }
+  // The ray caster's program again.
+  window->GetShaderCache()->ReadyShaderProgram(program, nullptr);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::CopyOpaqueDepth(const int viewport[4])
+{
+  // Copied as VTK's GPU ray caster does.
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderWindow* window = in.Window;
+  vtkOpenGLState* state = window->GetState();
+  if (!in.DepthTexture)
+  {
+    in.DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
+    in.DepthTexture->SetContext(window);
+    in.DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    in.DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    in.DepthTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    in.DepthTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    in.DepthColor = vtkSmartPointer<vtkTextureObject>::New();
+    in.DepthColor->SetContext(window);
+  }
+  if (!in.DepthTexture->GetHandle() ||
+    static_cast<int>(in.DepthTexture->GetWidth()) != viewport[2] ||
+    static_cast<int>(in.DepthTexture->GetHeight()) != viewport[3])
+  {
+    in.DepthTexture->ReleaseGraphicsResources(window);
+    in.DepthColor->ReleaseGraphicsResources(window);
+    if (window->GetStencilCapable())
+    {
+      in.DepthTexture->AllocateDepthStencil(viewport[2], viewport[3]);
+    }
+    else
+    {
+      in.DepthTexture->AllocateDepth(viewport[2], viewport[3], vtkTextureObject::Fixed32);
+    }
+    in.DepthColor->Allocate2D(viewport[2], viewport[3], 4, VTK_UNSIGNED_CHAR);
+    in.DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    in.DepthFramebuffer->SetContext(window);
+    state->PushDrawFramebufferBinding();
+    in.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    in.DepthFramebuffer->AddDepthAttachment(in.DepthTexture);
+    in.DepthFramebuffer->AddColorAttachment(0, in.DepthColor);
+    state->PopDrawFramebufferBinding();
+  }
+  {
+    state->PushDrawFramebufferBinding();
+    in.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    vtkOpenGLClearErrorMacro();
+    state->vtkglBlitFramebuffer(viewport[0], viewport[1], viewport[0] + viewport[2],
+      viewport[1] + viewport[3], 0, 0, viewport[2], viewport[3], GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    if (glGetError() != GL_NO_ERROR)
+    {
+      // Incompatible depth formats: no opaque geometry is known.
+      if (!in.DepthCopyWarned)
+      {
+        vtkWarningMacro(<< "Could not copy the depth buffer: the volume ignores the opaque "
+                           "geometry of this render pass.");
+        in.DepthCopyWarned = true;
+      }
+      vtkOpenGLState::ScopedglDepthMask mask(state);
+      state->vtkglDepthMask(GL_TRUE);
+      state->vtkglClearDepth(1.0);
+      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    }
+    state->PopDrawFramebufferBinding();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::SetPatchUniforms(vtkShaderProgram* program)
+{
+  // Per patch: its parameter domain (curved: physical), the map to it, its
+  // box, and where its search structure and elements start.
+  vtkInternals& in = *this->Internals;
+  const int np = static_cast<int>(in.Patches.size());
+  std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
+  std::vector<int> blocks, starts, locators, curved;
+  for (const PatchInfo& p : in.Patches)
+  {
+    lo.insert(lo.end(), p.Lo, p.Lo + 3);
+    hi.insert(hi.end(), p.Hi, p.Hi + 3);
+    edge.insert(edge.end(), p.Edge, p.Edge + 3);
+    offset.insert(offset.end(), p.Offset, p.Offset + 3);
+    boxLoP.insert(boxLoP.end(), p.BoxLo, p.BoxLo + 3);
+    boxHiP.insert(boxHiP.end(), p.BoxHi, p.BoxHi + 3);
+    blocks.insert(blocks.end(), p.Blocks, p.Blocks + 3);
+    starts.insert(starts.end(), p.Starts, p.Starts + 4);
+    locators.push_back(p.Locator);
+    curved.push_back(p.Curved);
+  }
+  auto set3f = [&](const char* name, std::vector<float>& v)
+  { program->SetUniform3fv(name, np, reinterpret_cast<const float(*)[3]>(v.data())); };
+  set3f("lrPatchLo", lo);
+  set3f("lrPatchHi", hi);
+  set3f("lrPatchEdge", edge);
+  for (int p = 0; p < np; ++p)
+  {
+    // GLSL matrices are column-major: the transpose of the row-major array.
+    float columns[9];
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        columns[3 * c + r] = in.Patches[p].Inverse[3 * r + c];
+      }
+    }
+    program->SetUniformMatrix3x3(("lrPatchInverse[" + std::to_string(p) + "]").c_str(), columns);
+  }
+  set3f("lrPatchOffset", offset);
+  set3f("lrPatchBoxLo", boxLoP);
+  set3f("lrPatchBoxHi", boxHiP);
+  program->SetUniform1iv("lrPatchBlocks", 3 * np, blocks.data());
+  program->SetUniform1iv("lrPatchStarts", 4 * np, starts.data());
+  program->SetUniform1iv("lrPatchLocator", np, locators.data());
+  if (in.Curved)
+  {
+    program->SetUniform1iv("lrPatchCurved", np, curved.data());
+    program->SetUniformf("lrMinimumSide", static_cast<float>(in.MinimumSide));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::DrawSinglePass()
+{
+  // The back faces of the proxy box: every pixel the volume may cover runs
+  // its ray once, also with the camera inside the box.
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLState* state = in.Window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(GL_FRONT);
+  if (this->CountSamples)
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  else
+  {
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  // The depth test is done by the rays (the opaque depth texture); the
+  // isosurfaces write their depth.
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglDepthMask(this->BlendMode == ISOSURFACE_BLEND ? GL_TRUE : GL_FALSE);
+  in.CubeArray->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 36);
+  in.CubeArray->Release();
+  state->vtkglCullFace(GL_BACK);
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  vtkInternals& in = *this->Internals;
+  auto report = [this]() { this->ReportError(); };
+  if (!this->UpdateSpline())
+  {
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkVolumeProperty* property = vol->GetProperty();
+  if (!window || !property)
+  {
+    return;
+  }
+  if (in.Window && in.Window != window)
+  {
+    in.ReleaseGPU(in.Window);
+  }
+  in.Window = window;
+  vtkOpenGLClearErrorMacro();
+
+  if (!this->UploadSpline(window) || !this->UpdateTransferFunction(window, property))
+  {
+    report();
+    return;
+  }
+  std::vector<float> isoValues;
+  if (!this->CollectIsoValues(property, isoValues) ||
+    !this->UpdateEmptySpaceSkipping(window, property, isoValues))
+  {
+    report();
+    return;
   }
 
   // The lights (VTK's volume mappers sum them): every switched-on light,
@@ -1076,64 +1401,8 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   vtkOpenGLState* state = window->GetState();
 
-  // The opaque geometry's depth (rays end there), copied as VTK's GPU ray
-  // caster does.
-  if (!in.DepthTexture)
-  {
-    in.DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
-    in.DepthTexture->SetContext(window);
-    in.DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    in.DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    in.DepthTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    in.DepthTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    in.DepthColor = vtkSmartPointer<vtkTextureObject>::New();
-    in.DepthColor->SetContext(window);
-  }
-  if (!in.DepthTexture->GetHandle() ||
-    static_cast<int>(in.DepthTexture->GetWidth()) != viewport[2] ||
-    static_cast<int>(in.DepthTexture->GetHeight()) != viewport[3])
-  {
-    in.DepthTexture->ReleaseGraphicsResources(window);
-    in.DepthColor->ReleaseGraphicsResources(window);
-    if (window->GetStencilCapable())
-    {
-      in.DepthTexture->AllocateDepthStencil(viewport[2], viewport[3]);
-    }
-    else
-    {
-      in.DepthTexture->AllocateDepth(viewport[2], viewport[3], vtkTextureObject::Fixed32);
-    }
-    in.DepthColor->Allocate2D(viewport[2], viewport[3], 4, VTK_UNSIGNED_CHAR);
-    in.DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    in.DepthFramebuffer->SetContext(window);
-    state->PushDrawFramebufferBinding();
-    in.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-    in.DepthFramebuffer->AddDepthAttachment(in.DepthTexture);
-    in.DepthFramebuffer->AddColorAttachment(0, in.DepthColor);
-    state->PopDrawFramebufferBinding();
-  }
-  {
-    state->PushDrawFramebufferBinding();
-    in.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-    vtkOpenGLClearErrorMacro();
-    state->vtkglBlitFramebuffer(viewport[0], viewport[1], viewport[0] + viewport[2],
-      viewport[1] + viewport[3], 0, 0, viewport[2], viewport[3], GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    if (glGetError() != GL_NO_ERROR)
-    {
-      // Incompatible depth formats: no opaque geometry is known.
-      if (!in.DepthCopyWarned)
-      {
-        vtkWarningMacro(<< "Could not copy the depth buffer: the volume ignores the opaque "
-                           "geometry of this render pass.");
-        in.DepthCopyWarned = true;
-      }
-      vtkOpenGLState::ScopedglDepthMask mask(state);
-      state->vtkglDepthMask(GL_TRUE);
-      state->vtkglClearDepth(1.0);
-      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-    }
-    state->PopDrawFramebufferBinding();
-  }
+  // The opaque geometry's depth (rays end there).
+  this->CopyOpaqueDepth(viewport);
 
   // The proxy box (the union of the patches' boxes).
   double box[6] = { in.Bounds[0], in.Bounds[2], in.Bounds[4], in.Bounds[1], in.Bounds[3],
@@ -1174,132 +1443,10 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // Trimming: the nearest front faces and the farthest back faces.
-  if (trim)
+  if (trim && !this->RenderTrimmingDepths(program, dataToClip, viewport))
   {
-    if (this->GetNumberOfInputConnections(1) > 0)
-    {
-      this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
-    }
-    vtkPolyData* surface = vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
-    std::ostringstream key;
-    key << surface << ' ' << (surface ? surface->GetMTime() : 0);
-    if (key.str() != in.TrimKey)
-    {
-      std::vector<float> tri;
-      if (surface && surface->GetPolys())
-      {
-        vtkPoints* points = surface->GetPoints();
-        vtkCellArray* polys = surface->GetPolys();
-        const vtkIdType* ids;
-        vtkIdType n;
-        for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-        {
-          for (vtkIdType k = 1; k + 1 < n; ++k) // a fan (convex polygons)
-          {
-            for (vtkIdType v : { ids[0], ids[k], ids[k + 1] })
-            {
-              double x[3];
-              points->GetPoint(v, x);
-              tri.insert(tri.end(),
-                { static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2]) });
-            }
-          }
-        }
-      }
-      if (tri.empty())
-      {
-        in.Error = "the trimming surface has no polygons: nothing to render (remove it to "
-                   "render the whole volume)";
-        report();
-        return;
-      }
-      if (!in.TrimBuffer)
-      {
-        in.TrimBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-      }
-      in.TrimBuffer->Upload(tri, vtkOpenGLBufferObject::ArrayBuffer);
-      in.TrimVertices = static_cast<vtkIdType>(tri.size() / 3);
-      in.TrimArrayProgram = nullptr;
-      in.TrimKey = key.str();
-    }
-    vtkShaderProgram* trimProgram = window->GetShaderCache()->ReadyShaderProgram(
-      vtkLRSplineVolumeVS, vtkLRSplineVolumeTrimFS, "");
-    if (!trimProgram)
-    {
-      in.Error = "the trimming shader did not compile or link";
-      report();
-      return;
-    }
-    if (!in.TrimArray)
-    {
-      in.TrimArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-    }
-    if (in.TrimArrayProgram != trimProgram)
-    {
-      in.TrimArray->ShaderProgramChanged();
-      in.TrimArray->Bind();
-      in.TrimArray->AddAttributeArray(
-        trimProgram, in.TrimBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-      in.TrimArrayProgram = trimProgram;
-    }
-    SetMatrix(trimProgram, "lrMCDCMatrix", dataToClip);
-    for (int pass = 0; pass < 2; ++pass)
-    {
-      vtkSmartPointer<vtkTextureObject>& texture = in.TrimTextures[pass];
-      vtkSmartPointer<vtkOpenGLFramebufferObject>& fbo = in.TrimFramebuffers[pass];
-      if (!texture || static_cast<int>(texture->GetWidth()) != viewport[2] ||
-        static_cast<int>(texture->GetHeight()) != viewport[3])
-      {
-        if (texture)
-        {
-          texture->ReleaseGraphicsResources(window);
-        }
-        texture = vtkSmartPointer<vtkTextureObject>::New();
-        texture->SetContext(window);
-        texture->SetMinificationFilter(vtkTextureObject::Nearest);
-        texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-        texture->AllocateDepth(viewport[2], viewport[3], vtkTextureObject::Float32);
-        fbo = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-        fbo->SetContext(window);
-        fbo->SaveCurrentBindingsAndBuffers();
-        fbo->Bind();
-        fbo->AddDepthAttachment(texture);
-        fbo->RestorePreviousBindingsAndBuffers();
-      }
-      fbo->SaveCurrentBindingsAndBuffers();
-      fbo->Bind();
-      fbo->DeactivateDrawBuffers();
-      fbo->DeactivateReadBuffer();
-      {
-        vtkOpenGLState::ScopedglViewport savedViewport(state);
-        vtkOpenGLState::ScopedglScissor savedScissor(state);
-        vtkOpenGLState::ScopedglColorMask savedColorMask(state);
-        vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-        vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
-        vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
-        vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
-        vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-        state->vtkglViewport(0, 0, viewport[2], viewport[3]);
-        state->vtkglScissor(0, 0, viewport[2], viewport[3]);
-        state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        state->vtkglDepthMask(GL_TRUE);
-        state->vtkglEnable(GL_DEPTH_TEST);
-        state->vtkglDisable(GL_BLEND);
-        // Front faces and back faces both: the orientation of the surface's
-        // polygons is not trusted; the nearest and farthest hits are kept.
-        state->vtkglDisable(GL_CULL_FACE);
-        state->vtkglClearDepth(pass == 0 ? 1.0 : 0.0);
-        state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-        state->vtkglDepthFunc(pass == 0 ? GL_LESS : GL_GREATER);
-        in.TrimArray->Bind();
-        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(in.TrimVertices));
-        in.TrimArray->Release();
-        state->vtkglClearDepth(1.0);
-      }
-      fbo->RestorePreviousBindingsAndBuffers();
-    }
-    // The ray caster's program again.
-    window->GetShaderCache()->ReadyShaderProgram(program, nullptr);
+    report();
+    return;
   }
 
   // Uniforms.
@@ -1316,53 +1463,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     static_cast<float>(box[5]) };
   program->SetUniform3f("lrBoxLo", boxLo);
   program->SetUniform3f("lrBoxHi", boxHi);
-  {
-    const int np = static_cast<int>(in.Patches.size());
-    std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
-    std::vector<int> blocks, starts, locators, curved;
-    for (const PatchInfo& p : in.Patches)
-    {
-      lo.insert(lo.end(), p.Lo, p.Lo + 3);
-      hi.insert(hi.end(), p.Hi, p.Hi + 3);
-      edge.insert(edge.end(), p.Edge, p.Edge + 3);
-      offset.insert(offset.end(), p.Offset, p.Offset + 3);
-      boxLoP.insert(boxLoP.end(), p.BoxLo, p.BoxLo + 3);
-      boxHiP.insert(boxHiP.end(), p.BoxHi, p.BoxHi + 3);
-      blocks.insert(blocks.end(), p.Blocks, p.Blocks + 3);
-      starts.insert(starts.end(), p.Starts, p.Starts + 4);
-      locators.push_back(p.Locator);
-      curved.push_back(p.Curved);
-    }
-    auto set3f = [&](const char* name, std::vector<float>& v)
-    { program->SetUniform3fv(name, np, reinterpret_cast<const float(*)[3]>(v.data())); };
-    set3f("lrPatchLo", lo);
-    set3f("lrPatchHi", hi);
-    set3f("lrPatchEdge", edge);
-    for (int p = 0; p < np; ++p)
-    {
-      // GLSL matrices are column-major: the transpose of the row-major array.
-      float columns[9];
-      for (int r = 0; r < 3; ++r)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          columns[3 * c + r] = in.Patches[p].Inverse[3 * r + c];
-        }
-      }
-      program->SetUniformMatrix3x3(("lrPatchInverse[" + std::to_string(p) + "]").c_str(), columns);
-    }
-    set3f("lrPatchOffset", offset);
-    set3f("lrPatchBoxLo", boxLoP);
-    set3f("lrPatchBoxHi", boxHiP);
-    program->SetUniform1iv("lrPatchBlocks", 3 * np, blocks.data());
-    program->SetUniform1iv("lrPatchStarts", 4 * np, starts.data());
-    program->SetUniform1iv("lrPatchLocator", np, locators.data());
-    if (in.Curved)
-    {
-      program->SetUniform1iv("lrPatchCurved", np, curved.data());
-      program->SetUniformf("lrMinimumSide", static_cast<float>(in.MinimumSide));
-    }
-  }
+  this->SetPatchUniforms(program);
 
   // Clipping planes, in data coordinates.
   {
@@ -1498,32 +1599,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
   else if (!multiPass)
   {
-    vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-    vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
-    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
-    state->vtkglEnable(GL_CULL_FACE);
-    state->vtkglCullFace(GL_FRONT);
-    if (this->CountSamples)
-    {
-      state->vtkglDisable(GL_BLEND);
-    }
-    else
-    {
-      state->vtkglEnable(GL_BLEND);
-      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    }
-    // The depth test is done by the rays (the opaque depth texture); the
-    // isosurfaces write their depth.
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_ALWAYS);
-    state->vtkglDepthMask(this->BlendMode == ISOSURFACE_BLEND ? GL_TRUE : GL_FALSE);
-    in.CubeArray->Bind();
-    glDrawArrays(GL_TRIANGLES, 0, 36);
-    in.CubeArray->Release();
-    state->vtkglCullFace(GL_BACK);
+    this->DrawSinglePass();
   }
 
   in.HeadsBuffer.Deactivate();

@@ -92,12 +92,15 @@
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
+#include <vector> // for std::vector
 
 class vtkMatrix4x4;
+class vtkOpenGLRenderWindow;
 class vtkPolyData;
 class vtkShaderProgram;
 class vtkRenderer;
 class vtkVolume;
+class vtkVolumeProperty;
 class vtkWindow;
 
 class SPLINEVIZ_EXPORT vtkLRSplineVolumeMapper : public vtkAbstractVolumeMapper
@@ -381,10 +384,30 @@ private:
   // vtkErrorMacro for the current error unless it was reported already.
   void ReportError();
 
+  // The steps of Render(), each false with the error set when it fails:
+  // the spline's arrays to the GPU (once per change); the transfer function
+  // as a texture; the iso values (isosurface blending); the empty-space
+  // skipping flags of the elements (per transfer function and blend mode).
+  bool UploadSpline(vtkOpenGLRenderWindow* window);
+  bool UpdateTransferFunction(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property);
+  bool CollectIsoValues(vtkVolumeProperty* property, std::vector<float>& isoValues);
+  bool UpdateEmptySpaceSkipping(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property,
+    const std::vector<float>& isoValues);
+  // The depth of the opaque geometry drawn so far into a texture.
+  void CopyOpaqueDepth(const int viewport[4]);
+  // The uniforms of the patches.
+  void SetPatchUniforms(vtkShaderProgram* program);
+  // The trimming surface's nearest front and farthest back depths (§4.1);
+  // `program` is made current again.
+  bool RenderTrimmingDepths(
+    vtkShaderProgram* program, vtkMatrix4x4* dataToClip, const int viewport[4]);
+
   // Samples per ray (MaximumNumberOfSteps or the automatic estimate) and the
   // fixed step (world units) for the volume's placement.
   int ComputeStepCount(vtkVolume* vol, double& sampleDistance);
 
+  // The rays in one pass into the current draw framebuffer.
+  void DrawSinglePass();
   // The rays in passes (continuation, see MaximumStepsPerPass; at most
   // totalSteps samples per ray) into the current draw framebuffer; false
   // (error set) when a GPU resource failed.
