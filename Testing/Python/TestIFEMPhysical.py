@@ -24,106 +24,25 @@ geometry map). Checks:
 import os
 import sys
 
-import h5py
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ifem_poisson as poisson  # noqa: E402
 import ifem_reference as R  # noqa: E402
+from ifem_poisson import PI, analytic, bend, flux  # noqa: E402
 
 from splineviz import vtkIFEMReader, vtkLRSplineProbeFilter, vtkLRSplineStreamTracer  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkPoints  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkPolyData  # noqa: E402
 
-SOURCE = os.environ.get("SPLINEVIZ_SOURCE_DIR",
-                        os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
-DATA = os.path.join(SOURCE, "Testing", "Data", "External")
 OUT = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
 RNG = np.random.default_rng(27)
-PI = np.pi
 failures = []
 
 
 def fail(msg):
     print("ERROR: " + msg)
     failures.append(msg)
-
-
-def analytic(x):
-    return np.sin(PI * x[..., 0]) * np.sin(PI * x[..., 1]) * np.sin(PI * x[..., 2])
-
-
-def flux(x):
-    s = np.sin(PI * x)
-    c = np.cos(PI * x)
-    return -PI * np.stack([c[..., 0] * s[..., 1] * s[..., 2], s[..., 0] * c[..., 1] * s[..., 2],
-                           s[..., 0] * s[..., 1] * c[..., 2]], axis=-1)
-
-
-def bend(x):
-    """A smooth, injective, non-affine map of the two cubes."""
-    y = x.copy()
-    y[..., 0] = x[..., 0] + 0.08 * np.sin(PI * x[..., 1]) * np.sin(PI * x[..., 2])
-    y[..., 1] = x[..., 1] + 0.06 * np.sin(PI * x[..., 0]) + 0.04 * x[..., 2] ** 2
-    y[..., 2] = x[..., 2] + 0.05 * np.sin(PI * x[..., 0]) * x[..., 1]
-    return y
-
-
-def lr_text_with(text, coefs):
-    """The LRSplines text of one patch with new coefficients."""
-    out, k = [], 0
-    for line in text.splitlines():
-        if ":" in line and "[" in line and line.rstrip().endswith(")") and "x" in line:
-            head = line[:line.rindex("]") + 1]
-            gamma = line[line.rindex("("):]
-            line = head + " " + " ".join(repr(float(c)) for c in coefs[k]) + " " + gamma
-            k += 1
-        out.append(line)
-    assert k == len(coefs)
-    return "\n".join(out) + "\n"
-
-
-def split_patches(text):
-    parts = text.split("# LRSPLINE VOLUME")
-    return ["# LRSPLINE VOLUME" + p for p in parts[1:]]
-
-
-def sample_points(patch, per=3):
-    """Gauss-like points (per^3 per element) in parameter space."""
-    g = (np.arange(per) + 0.5) / per
-    pts = []
-    for lo, hi in zip(patch.lo, patch.hi):
-        for a in g:
-            for b in g:
-                for c in g:
-                    pts.append(lo + (hi - lo) * np.array([a, b, c]))
-    return np.array(pts)
-
-
-BASIS = {}
-
-
-def project(patch, index):
-    """Least-squares coefficients of u and q on the patch's basis (8 points
-    per element; the basis matrix is the same for both geometries)."""
-    if index not in BASIS:
-        U = sample_points(patch, 2)
-        BASIS[index] = np.array([R.basis(patch, u) for u in U])
-    B = BASIS[index]
-    X = B @ patch.coefs
-    rhs = np.column_stack([analytic(X), flux(X)])
-    coef, *_ = np.linalg.lstsq(B, rhs, rcond=None)
-    return coef
-
-
-def write_result(path, texts, patches):
-    with h5py.File(path, "w") as f:
-        g = f.create_group("0/Poisson-1")
-        for i, (text, patch) in enumerate(zip(texts, patches), start=1):
-            g.create_dataset("basis/%d" % i, data=np.frombuffer(text.encode(), dtype=np.int8))
-            c = project(patch, i)
-            g.create_dataset("fields/u/%d" % i, data=c[:, 0].copy())
-            g.create_dataset("fields/q/%d" % i, data=c[:, 1:4].reshape(-1).copy())
-            patch.values = c
 
 
 def probe(reader, X, name):
@@ -167,15 +86,8 @@ def rk4_streamline(x0, h, steps):
 
 def check(curved):
     label = "bent" if curved else "affine"
-    text = open(os.path.join(DATA, "cube-2patch.lr")).read()
-    texts = split_patches(text)
-    patches = [R.parse_lr(t)[0] for t in texts]
-    if curved:
-        for i, p in enumerate(patches):
-            p.coefs = bend(p.coefs)
-            texts[i] = lr_text_with(texts[i], p.coefs)
     path = os.path.join(OUT, "TestIFEMPhysical-%s.hdf5" % label)
-    write_result(path, texts, patches)
+    patches = poisson.write(path, curved)
     reader = vtkIFEMReader()
     reader.SetFileName(path)
     reader.Update()
@@ -210,7 +122,7 @@ def check(curved):
 
     # Outside points: pushed off the domain's faces (not the interface, whose
     # unbent x is 0) along the outward direction.
-    flat = [R.parse_lr(t)[0] for t in split_patches(text)]
+    flat = [R.parse_lr(t)[0] for t in poisson.patch_texts()]
     outside = []
     for p, pf in zip(patches, flat):
         while len(outside) < 20 * (1 + (p is patches[1])):
@@ -275,8 +187,7 @@ result = check(True)
 # Negative control: the bent file probed at the unbent points x(u).
 if result:
     reader, U, ref = result
-    text = open(os.path.join(DATA, "cube-2patch.lr")).read()
-    flat = [R.parse_lr(t)[0] for t in split_patches(text)]
+    flat = [R.parse_lr(t)[0] for t in poisson.patch_texts()]
     Xflat = np.array([R.geometry(flat[i // 150], u, False) for i, u in enumerate(U)])
     w, m = probe(reader, Xflat, "u")
     err = np.abs(np.where(m == 1, w[:, 0], 1e3) - ref).max() if w is not None else 0
