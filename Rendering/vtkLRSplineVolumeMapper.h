@@ -276,9 +276,9 @@ public:
    * ray across the whole box at the finest step (adaptive: the smallest
    * element's step times StepScale; fixed: SampleDistance), so that the step
    * count cuts no ray short; a positive value caps the work per pixel (rays
-   * stop there). On Mesa's llvmpipe a fragment's loops end after 65,535
-   * iterations in all, about 4,000 samples: longer rays are cut short
-   * whatever this says (a warning says so for fixed steps).
+   * stop there). Rays longer than MaximumStepsPerPass samples continue in
+   * further passes (Mesa's llvmpipe ends a fragment's loops after 65,535
+   * iterations in all, about 4,000 samples per pass).
    */
   vtkSetClampMacro(MaximumNumberOfSteps, int, 0, VTK_INT_MAX);
   vtkGetMacro(MaximumNumberOfSteps, int);
