@@ -8,9 +8,9 @@
  * mapper's CPU side. Built from a geometry-mode grid of vtkLRSplineReader or
  * vtkIFEMReader (VTK_BEZIER_HEXAHEDRON cells whose points are the geometry's
  * Bezier control points, "RationalWeights" where rational, "LRParameterBox"),
- * it keeps per element the homogeneous Bezier coefficients (w x, w y, w z, w)
- * and the box of the control points, which contains the element (convex hull
- * property; the weights are positive).
+ * it keeps per element the Bezier coefficients (x, y, z), or, rational, the
+ * homogeneous (w x, w y, w z, w), and the box of the control points, which
+ * contains the element (convex hull property; the weights are positive).
  *
  * Inversion of x (Invert): the k-d forest of vtkLRSplineElementLocator over
  * the physical boxes (SetAllowOverlap: curved elements' boxes overlap; list
@@ -61,7 +61,7 @@ public:
 
   vtkIdType GetNumberOfElements() const { return this->Volume.GetNumberOfElements(); }
   bool IsRational() const { return this->Rational; }
-  /// Homogeneous Bezier coefficients (w x, w y, w z, w): 4 components.
+  /// Bezier coefficients: (x, y, z), or (w x, w y, w z, w) when rational.
   const vtkLRSplineBezierVolume& GetVolume() const { return this->Volume; }
   /// The locator over the physical boxes.
   const vtkLRSplineElementLocator& GetLocator() const { return this->Locator; }

@@ -433,8 +433,14 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     vtkPointData* pd = grids[g]->GetPointData();
     vtkFieldData* fd = grids[g]->GetFieldData();
     vtkDataArray* rational = fd ? fd->GetArray("LRRational") : nullptr;
-    if (pd->GetRationalWeights() || pd->GetArray("RationalWeights") ||
-      (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0))
+    vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
+    const bool geometryMode =
+      mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1;
+    // (Rational geometry maps are rendered by inversion, their fields as
+    // rational splines; a rational field over a parameter box is not.)
+    if (!geometryMode &&
+      (pd->GetRationalWeights() || pd->GetArray("RationalWeights") ||
+        (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0)))
     {
       return done(in.Fail("patch " + std::to_string(g) +
         " is rational (it has rational weights): the volume mapper renders polynomial "
@@ -542,6 +548,19 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
       }
       geometryRaised = geometryMap->GetVolume();
       geometryRaised.CoefficientsFloat.clear();
+      if (geometryRaised.NumberOfComponents == 3)
+      {
+        // The shader reads homogeneous coefficients (w x, w y, w z, w).
+        std::vector<double> h(geometryRaised.Coefficients.size() / 3 * 4);
+        for (std::size_t k = 0; k < h.size() / 4; ++k)
+        {
+          std::copy(&geometryRaised.Coefficients[3 * k], &geometryRaised.Coefficients[3 * k] + 3,
+            &h[4 * k]);
+          h[4 * k + 3] = 1.0;
+        }
+        geometryRaised.Coefficients.swap(h);
+        geometryRaised.NumberOfComponents = 4;
+      }
       if (!geometryRaised.ElevateDegree(degree))
       {
         return done(in.Fail("patch " + std::to_string(p) + ": the geometry's degree is too high"));
@@ -625,21 +644,24 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
       if (geometryMap)
       {
         const double* gc = geometryRaised.GetElementCoefficients(e);
-        const int gper = 3 * per / nc;
+        const int gper = 4 * per / nc;
         for (int i = 0; i < gper; ++i)
         {
           in.Coefficients.push_back(static_cast<float>(gc[i]));
         }
       }
-      // Coefficient ranges (the element's values lie within them).
+      // Coefficient ranges (the element's values lie within them). On a
+      // rational map the coefficients are w f: the ranges are of f.
+      const double* gw = geometryMap ? geometryRaised.GetElementCoefficients(e) + 3 : nullptr;
+      auto coefficient = [&](int i) { return gw ? c[i] / gw[4 * (i / nc)] : c[i]; };
       double magnitudeLow = 0.0, magnitudeHigh = 0.0;
       for (int comp = 0; comp < nc; ++comp)
       {
         double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
         for (int i = comp; i < per; i += nc)
         {
-          lo = std::min(lo, c[i]);
-          hi = std::max(hi, c[i]);
+          lo = std::min(lo, coefficient(i));
+          hi = std::max(hi, coefficient(i));
         }
         in.ComponentRanges.push_back(static_cast<float>(lo));
         in.ComponentRanges.push_back(static_cast<float>(hi));
@@ -650,7 +672,7 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
         double m2 = 0.0;
         for (int comp = 0; comp < nc; ++comp)
         {
-          m2 += c[i + comp] * c[i + comp];
+          m2 += coefficient(i + comp) * coefficient(i + comp);
         }
         magnitudeHigh = std::max(magnitudeHigh, std::sqrt(m2));
       }

@@ -16,6 +16,8 @@
  * sample finds its element with a k-d forest over the elements' physical
  * boxes and inverts the map by Newton's method in the shader (the GLSL of
  * vtkLRSplineGeometryMap's inversion); affine ones use the field-mode path.
+ * Rational (NURBS) maps too: the shader divides by the weight, and fields on
+ * the rational basis are evaluated as sum B w f / sum B w.
  *
  * - **On the GPU once per data change** (§3.2): the Bernstein coefficients of
  *   every element (float), the element boxes, and the element search
@@ -63,7 +65,8 @@
  *   along each ray (a depth pre-pass of both; exact for surfaces that a ray
  *   enters and leaves once).
  *
- * Bad input (no scalars, a surface spline, rational data, NaN coefficients,
+ * Bad input (no scalars, a surface spline, rational data over a parameter box
+ * (field mode), NaN coefficients,
  * degrees above 3, an empty transfer function) is an error naming the
  * problem; nothing is drawn.
  *

@@ -151,6 +151,8 @@ float lrWorldPerData = 1.0; // world length of a data unit along the ray
 int lrCurrentElement = -1;    // curved patches: the element (global index)
 vec3 lrCurrentS = vec3(0.5);  // and the local coordinates of the previous sample
 mat3 lrCurrentJinv = mat3(1.0);
+float lrCurrentW = 1.0;        // the weight and its derivatives (rational maps)
+vec3 lrCurrentDW = vec3(0.0);
 float lrCurrentSide = 0.0;
 
 // Is x in curved element e (global index) of patch p? Newton from `seed`;
@@ -168,10 +170,14 @@ bool lrTryCurved(int p, int e, vec3 x, vec3 seed)
   int geometry = offset + (LR_DU + 1) * (LR_DV + 1) * (LR_DW + 1) * LR_NC;
   vec3 s = seed;
   mat3 jinv;
-  if (!lrInvert(geometry, LR_DU, LR_DV, LR_DW, x, 1e-4, s, jinv))
+  float w;
+  vec3 dw;
+  if (!lrInvert(geometry, LR_DU, LR_DV, LR_DW, x, 1e-4, s, jinv, w, dw))
   {
     return false;
   }
+  lrCurrentW = w;
+  lrCurrentDW = dw;
   lrCurrentPatch = p;
   lrCurrentElement = e;
   lrCurrentOffset = offset;
@@ -274,9 +280,12 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
     {
       if (lrFindCurved(q, x))
       {
-        // The field at the inverted point; d/dx = (d/ds) (dx/ds)^-1.
+        // The field at the inverted point (its coefficients are w f: f =
+        // F / W, as the weights are positive also for the magnitude);
+        // d/dx = (d/ds) (dx/ds)^-1.
         vec3 gs;
-        value = lrValue(lrCurrentOffset, lrCurrentS, gs);
+        value = lrValue(lrCurrentOffset, lrCurrentS, gs) / lrCurrentW;
+        gs = (gs - value * lrCurrentDW) / lrCurrentW;
         gradient = gs * lrCurrentJinv;
         minSide = lrCurrentSide;
         return true;

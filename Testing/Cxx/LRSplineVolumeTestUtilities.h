@@ -167,8 +167,9 @@ struct View
 
 /// The scalar the mapper renders from the field's value(s) and its gradient
 /// (data coordinates).
-inline double Scalar(const vtkLRSplineField& field, int component, const double* value,
-  const double* gradient, double grad[3])
+template <class Field>
+inline double Scalar(
+  const Field& field, int component, const double* value, const double* gradient, double grad[3])
 {
   const int nc = field.GetNumberOfComponents();
   if (nc == 1 || component >= 0)
@@ -199,9 +200,11 @@ inline double Scalar(const vtkLRSplineField& field, int component, const double*
 }
 
 /// The CPU reference rendering of `field` as `vol` (its property) is seen by
-/// `view`.
-inline Image Render(
-  const vtkLRSplineField& field, vtkVolume* vol, const View& view, const Settings& settings)
+/// `view`. Field: vtkLRSplineField, or an independent evaluator with the same
+/// GetBounds, GetNumberOfComponents and EvaluateWithHint (e.g.
+/// lrtest::PhysicalField for curved geometry).
+template <class Field>
+inline Image Render(const Field& field, vtkVolume* vol, const View& view, const Settings& settings)
 {
   Image image;
   image.Width = view.Width;
