@@ -14,7 +14,8 @@
 // of 64 samples (the multi-pass continuation on curved geometry), and a
 // rational variant (random positive weights on geometry and field, the
 // homogeneous coefficients (w x, w) and (w f, w)); a shader that leaves the
-// weight out of the field must fail.
+// weight out of the field must fail. Isosurfaces (f = +-0.3, shaded) against
+// the reference's bisection; the geometry ignored must fail there too.
 #include "LRSplinePhysicalReference.h"
 #include "LRSplineVolumeTestUtilities.h"
 
@@ -211,7 +212,7 @@ struct Result
 // TestLRSplineVolumeCurved-<cpuTag>.png).
 Result Compare(vtkMultiBlockDataSet* data, const lrtest::PhysicalField& reference,
   const std::string& cpuTag, const std::string& tag, std::vector<double>& cpu,
-  double sampleDistance, int stepsPerPass = 0, bool noWeight = false)
+  double sampleDistance, int stepsPerPass = 0, bool noWeight = false, bool iso = false)
 {
   const int width = 120, height = 90;
   const double background[3] = { 0.1, 0.1, 0.12 };
@@ -240,6 +241,17 @@ Result Compare(vtkMultiBlockDataSet* data, const lrtest::PhysicalField& referenc
   property->SetColor(ctf);
   property->SetScalarOpacity(otf);
   property->SetScalarOpacityUnitDistance(0.1);
+  // Isosurfaces: f = -0.3 and 0.3 (one in each patch), shaded.
+  const std::vector<double> isoValues = { -0.3, 0.3 };
+  if (iso)
+  {
+    mapper->SetBlendModeToIsoSurface();
+    property->ShadeOn();
+    for (std::size_t i = 0; i < isoValues.size(); ++i)
+    {
+      property->GetIsoSurfaceValues()->SetValue(static_cast<int>(i), isoValues[i]);
+    }
+  }
   vtkNew<vtkVolume> volume;
   volume->SetMapper(mapper);
   volume->SetProperty(property);
@@ -278,6 +290,12 @@ Result Compare(vtkMultiBlockDataSet* data, const lrtest::PhysicalField& referenc
     // A quarter of the mapper's finest adaptive step (side / 4): the
     // reference at a tenth differs from it by 0.2/255 RMS.
     settings.Step = reference.MinimumSide() / 4.0 / 4.0;
+    if (iso)
+    {
+      settings.BlendMode = 5;
+      settings.Shade = true;
+      settings.IsoValues = isoValues;
+    }
     const auto c0 = std::chrono::steady_clock::now();
     cpu = lrvolume::OverBackground(lrvolume::Render(reference, volume, view, settings), background);
     std::cout << cpuTag << ": "
@@ -285,7 +303,7 @@ Result Compare(vtkMultiBlockDataSet* data, const lrtest::PhysicalField& referenc
               << " s" << std::endl;
     lrvolume::WritePNG(cpu, width, height, out + cpuTag + ".png");
     const long long covered = lrvolume::CountNonBackground(cpu, background);
-    if (covered < width * height / 8)
+    if (covered < width * height / (iso ? 16 : 8))
     {
       std::cerr << "ERROR: the reference covers only " << covered << " pixels" << std::endl;
       return result;
@@ -421,6 +439,23 @@ int TestLRSplineVolumeCurved(int, char*[])
   {
     std::cerr << "ERROR: the negative control (the weight left out) passed: RMS " << noWeight.RMS
               << std::endl;
+    ++failures;
+  }
+  // Isosurfaces on the curved geometry (bisection on the mapped field).
+  std::vector<double> cpuIso;
+  const Result iso =
+    Compare(curved, polynomialReference, "cpu-iso", "iso", cpuIso, 0.0, 0, false, true);
+  if (!(iso.RMS >= 0 && iso.RMS <= 3.0))
+  {
+    std::cerr << "ERROR: isosurfaces on curved geometry: RMS " << iso.RMS << std::endl;
+    ++failures;
+  }
+  const Result wrongIso = Compare(
+    ignored, polynomialReference, "cpu-iso", "iso-geometry-ignored", cpuIso, 0.0, 0, false, true);
+  if (!(wrongIso.RMS > 3.0))
+  {
+    std::cerr << "ERROR: the negative control (isosurfaces, geometry ignored) passed: RMS "
+              << wrongIso.RMS << std::endl;
     ++failures;
   }
   const Result wrong = Compare(ignored, polynomialReference, "cpu", "geometry-ignored", cpu, 0.0);
