@@ -1,8 +1,11 @@
 // The independent reference for vtkLRSplineVolumeMapper: a CPU ray caster
 // that evaluates the LR spline exactly in double precision with
 // vtkLRSplineField (the CPU element search and Bezier evaluation, tested on
-// their own against the LR B-spline definition), at uniform steps (ten times
-// finer than the mapper's finest adaptive step), with the transfer functions
+// their own against the LR B-spline definition) or with any evaluator of the
+// same interface (Render is a template: lrtest::PhysicalField, written
+// independently for curved geometry, or an analytic field), at uniform steps
+// (ten times finer than the mapper's finest adaptive step unless a test says
+// otherwise), with the transfer functions
 // evaluated from the vtkColorTransferFunction / vtkPiecewiseFunction
 // themselves (not a table), VTK's opacity correction 1 - (1 - a)^(step /
 // unit distance) and front-to-back compositing; isosurfaces by bracketing at
