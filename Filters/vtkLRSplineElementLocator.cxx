@@ -11,11 +11,20 @@ namespace
 {
 using Word = std::uint32_t;
 
+// The first word of a list leaf (overlapping boxes): direction bits 3.
+inline bool IsListWord(Word w)
+{
+  return (w & vtkLRSplineElementLocator::LeafBit) == 0 && ((w >> 29) & 3u) == 3u;
+}
+
 // A depth-balanced k-d tree over a set of element boxes, written into flat
 // arrays with LOCAL child indices (the caller adds the global offset).
 struct SubtreeBuilder
 {
   const double* Boxes;
+  // Boxes may overlap (bounding boxes of curved elements): a set that no
+  // split separates becomes a list leaf instead of keeping its first element.
+  bool Overlap = false;
   std::vector<Word> Words;
   std::vector<double> Splits;
   // scratch
@@ -126,6 +135,19 @@ struct SubtreeBuilder
     return found;
   }
 
+  // True when both sides of the split (d, s) have fewer elements than the set.
+  bool Separates(const std::vector<vtkIdType>& elems, int d, double s) const
+  {
+    std::size_t left = 0, right = 0;
+    for (vtkIdType e : elems)
+    {
+      const double* b = this->Boxes + 6 * e;
+      left += b[d] < s ? 1 : 0;
+      right += b[d + 3] > s ? 1 : 0;
+    }
+    return left < elems.size() && right < elems.size();
+  }
+
   // Returns the depth of the subtree (0 for a leaf).
   int Build(const std::vector<vtkIdType>& elems, const double region[6], std::size_t depth = 0)
   {
@@ -139,7 +161,20 @@ struct SubtreeBuilder
     }
     int d = 0;
     double s = 0.0;
-    if (!this->ChooseSplit(elems, region, d, s))
+    const bool split = this->ChooseSplit(elems, region, d, s);
+    if (this->Overlap && (!split || !this->Separates(elems, d, s)))
+    {
+      // A list leaf: the word (3 << 29) | count, then one leaf word per element.
+      this->Words.push_back((Word(3) << 29) | static_cast<Word>(elems.size()));
+      this->Splits.push_back(0.0);
+      for (vtkIdType e : elems)
+      {
+        this->Words.push_back(vtkLRSplineElementLocator::LeafBit | static_cast<Word>(e));
+        this->Splits.push_back(0.0);
+      }
+      return 0;
+    }
+    if (!split)
     {
       // Every element covers the whole region: overlapping elements (invalid
       // input, rejected elsewhere). Keep the first.
@@ -311,6 +346,10 @@ bool vtkLRSplineElementLocator::Build(
     }
   }
 
+  if (this->AllowOverlap && type != LINEAR && type != KD_TREE && type != KD_FOREST)
+  {
+    return fail("overlapping element boxes need a linear search, a k-d tree or a k-d forest");
+  }
   switch (type)
   {
     case LINEAR:
@@ -489,6 +528,7 @@ bool vtkLRSplineElementLocator::BuildForest(const int blocks[3], std::string* er
       {
         SubtreeBuilder builder;
         builder.Boxes = this->Boxes.data();
+        builder.Overlap = this->AllowOverlap;
         for (vtkIdType b = begin; b < end; ++b)
         {
           const vtkIdType count = blockOffsets[b + 1] - blockOffsets[b];
@@ -530,7 +570,7 @@ bool vtkLRSplineElementLocator::BuildForest(const int blocks[3], std::string* er
       }
       for (Word w : words[b])
       {
-        if (!(w & LeafBit))
+        if (!(w & LeafBit) && !IsListWord(w))
         {
           w = (w & ~ChildMask) | static_cast<Word>((w & ChildMask) + base);
         }
@@ -687,6 +727,11 @@ vtkIdType vtkLRSplineElementLocator::BlockIndex(int d, double x) const
 bool vtkLRSplineElementLocator::Contains(vtkIdType e, const double p[3]) const
 {
   const double* b = this->Boxes.data() + 6 * e;
+  if (this->AllowOverlap)
+  {
+    return p[0] >= b[0] && p[0] <= b[3] && p[1] >= b[1] && p[1] <= b[4] && p[2] >= b[2] &&
+      p[2] <= b[5];
+  }
   for (int d = 0; d < 3; ++d)
   {
     if (!(p[d] >= b[d]))
@@ -715,6 +760,12 @@ vtkIdType vtkLRSplineElementLocator::FindElement(const double p[3], int* depth) 
     {
       return -1;
     }
+  }
+  if (this->AllowOverlap)
+  {
+    std::vector<vtkIdType> candidates;
+    this->FindCandidates(p, candidates);
+    return candidates.empty() ? -1 : candidates[0];
   }
   vtkIdType element = -1;
   switch (this->Type)
@@ -881,6 +932,18 @@ void vtkLRSplineElementLocator::FindElementsIntersecting(
             }
             continue;
           }
+          if (IsListWord(node))
+          {
+            for (Word k = 1; k <= (node & ChildMask); ++k)
+            {
+              const Word e = this->NodeWords[index + k] & ElementMask;
+              if (meets(e))
+              {
+                out.push_back(e);
+              }
+            }
+            continue;
+          }
           const int dir = static_cast<int>((node >> 29) & 3u);
           const double s = this->NodeSplits[index];
           if (box[dir] < s)
@@ -897,4 +960,68 @@ void vtkLRSplineElementLocator::FindElementsIntersecting(
   }
   std::sort(out.begin(), out.end());
   out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineElementLocator::FindCandidates(const double p[3], std::vector<vtkIdType>& out) const
+{
+  out.clear();
+  for (int d = 0; d < 3; ++d)
+  {
+    if (!(p[d] >= this->Domain[d] && p[d] <= this->Domain[d + 3]))
+    {
+      return; // also NaN
+    }
+  }
+  if (this->Type != KD_TREE && this->Type != KD_FOREST && this->Type != TEXTURE)
+  {
+    const vtkIdType n = this->GetNumberOfElements();
+    for (vtkIdType e = 0; e < n; ++e)
+    {
+      if (this->Contains(e, p))
+      {
+        out.push_back(e);
+      }
+    }
+    return;
+  }
+  const vtkIdType b =
+    (this->BlockIndex(2, p[2]) * this->Blocks[1] + this->BlockIndex(1, p[1])) * this->Blocks[0] +
+    this->BlockIndex(0, p[0]);
+  Word w = this->Heads[b];
+  if (w & LeafBit)
+  {
+    if (w != NoElement && this->Contains(w & ElementMask, p))
+    {
+      out.push_back(w & ElementMask);
+    }
+    return;
+  }
+  Word index = w;
+  for (;;)
+  {
+    const Word node = this->NodeWords[index];
+    if (node & LeafBit)
+    {
+      if (node != NoElement && this->Contains(node & ElementMask, p))
+      {
+        out.push_back(node & ElementMask);
+      }
+      return;
+    }
+    if (IsListWord(node))
+    {
+      for (Word k = 1; k <= (node & ChildMask); ++k)
+      {
+        const Word e = this->NodeWords[index + k] & ElementMask;
+        if (this->Contains(e, p))
+        {
+          out.push_back(e);
+        }
+      }
+      return;
+    }
+    const int dir = static_cast<int>((node >> 29) & 3u);
+    index = p[dir] < this->NodeSplits[index] ? (node & ChildMask) : index + 1;
+  }
 }

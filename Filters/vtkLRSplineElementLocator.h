@@ -74,6 +74,17 @@ public:
   static constexpr std::uint32_t ChildMask = 0x1FFFFFFFu;
 
   /**
+   * Boxes that may overlap (default off): the bounding boxes of curved
+   * elements in physical space. Then the k-d trees end in list leaves where
+   * no split separates the boxes (a node word with direction bits 3 and the
+   * count in bits 0-28, followed by that many leaf words), boxes are closed,
+   * and FindCandidates() gives every box containing a point (FindElement()
+   * the first). Only LINEAR, KD_TREE and KD_FOREST. Set before Build().
+   */
+  void SetAllowOverlap(bool overlap) { this->AllowOverlap = overlap; }
+  bool GetAllowOverlap() const { return this->AllowOverlap; }
+
+  /**
    * Build over n element boxes (6 doubles each: lo xyz, hi xyz; copied).
    * `blocks` is the forest resolution I, J, K (KD_FOREST only; null: 8^3).
    * Returns false with a message when the type is not applicable (OCTREE and
@@ -89,6 +100,9 @@ public:
   /// Element containing p, or -1. `depth` (may be null) receives the number of inner tree nodes
   /// visited.
   vtkIdType FindElement(const double p[3], int* depth = nullptr) const;
+
+  /// Every element whose box contains p (sorted within a leaf; see SetAllowOverlap).
+  void FindCandidates(const double p[3], std::vector<vtkIdType>& out) const;
 
   /// True when element e contains p (half-open, closed at the domain's upper faces).
   bool Contains(vtkIdType e, const double p[3]) const;
@@ -139,6 +153,7 @@ private:
   vtkIdType BlockIndex(int d, double x) const;
 
   int Type = LINEAR;
+  bool AllowOverlap = false;
   std::vector<double> Boxes;
   double Domain[6] = { 0, 0, 0, 0, 0, 0 };
   int Blocks[3] = { 0, 0, 0 };

@@ -1,10 +1,13 @@
 #include "vtkLRSplineEvaluator.h"
 
+#include "vtkLRSplineGeometryMap.h"
+
 #include "vtkSMPTools.h"
 #include "vtkType.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 //------------------------------------------------------------------------------
 bool vtkLRSplineEvaluator::Initialize(
@@ -73,8 +76,48 @@ int vtkLRSplineEvaluator::GetMaximumDegree() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkLRSplineEvaluator::SetGeometry(std::shared_ptr<const vtkLRSplineGeometryMap> geometry)
+{
+  if (geometry && geometry->IsRational())
+  {
+    // A field on a rational basis is sum B w f / sum B w: keep w f.
+    const vtkLRSplineBezierVolume& g = geometry->GetVolume();
+    const int nc = this->Volume.NumberOfComponents;
+    const std::size_t n = this->Volume.Coefficients.size() / nc;
+    if (g.GetNumberOfElements() != this->Volume.GetNumberOfElements() ||
+      g.Degree[0] != this->Volume.Degree[0] || g.Degree[1] != this->Volume.Degree[1] ||
+      g.Degree[2] != this->Volume.Degree[2] || g.Coefficients.size() != 4 * n)
+    {
+      return false;
+    }
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      for (int c = 0; c < nc; ++c)
+      {
+        this->Volume.Coefficients[k * nc + c] *= g.Coefficients[4 * k + 3];
+      }
+    }
+    if (!this->Volume.CoefficientsFloat.empty())
+    {
+      this->Volume.MakeFloatCoefficients();
+    }
+  }
+  else if (geometry && geometry->GetNumberOfElements() != this->Volume.GetNumberOfElements())
+  {
+    return false;
+  }
+  this->Geometry = std::move(geometry);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkLRSplineEvaluator::GetBounds(double bounds[6]) const
 {
+  if (this->Geometry)
+  {
+    this->Geometry->GetBounds(bounds);
+    return;
+  }
   const double* dom = this->Locator.GetDomain();
   for (int d = 0; d < 3; ++d)
   {
@@ -97,6 +140,10 @@ void vtkLRSplineEvaluator::GetBounds(double bounds[6]) const
 //------------------------------------------------------------------------------
 double vtkLRSplineEvaluator::GetElementMinimumSide(vtkIdType e) const
 {
+  if (this->Geometry)
+  {
+    return this->Geometry->GetElementMinimumSide(e);
+  }
   const double* b = this->Volume.GetBox(e);
   double m = VTK_DOUBLE_MAX;
   for (int d = 0; d < 3; ++d)
@@ -112,6 +159,18 @@ double vtkLRSplineEvaluator::GetElementMinimumSide(vtkIdType e) const
 //------------------------------------------------------------------------------
 void vtkLRSplineEvaluator::PhysicalToParameter(const double x[3], double u[3]) const
 {
+  if (this->Geometry)
+  {
+    double s[3];
+    const vtkIdType e = this->Geometry->Invert(x, s);
+    if (e < 0)
+    {
+      u[0] = u[1] = u[2] = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    this->Geometry->LocalToParameter(e, s, u);
+    return;
+  }
   const double y[3] = { x[0] - this->Offset[0], x[1] - this->Offset[1], x[2] - this->Offset[2] };
   const double* M = this->Inverse;
   if (this->AxisAligned)
@@ -170,8 +229,64 @@ void vtkLRSplineEvaluator::GradientToPhysical(Real* gradient, const double* b) c
 }
 
 //------------------------------------------------------------------------------
+template <typename Real>
+void vtkLRSplineEvaluator::AtLocal(
+  vtkIdType e, const double s[3], Real* value, Real* gradient) const
+{
+  const Real sr[3] = { static_cast<Real>(s[0]), static_cast<Real>(s[1]), static_cast<Real>(s[2]) };
+  this->Volume.EvaluateLocal(e, sr, value, gradient);
+  double W = 1.0, dW[3] = { 0, 0, 0 };
+  if (this->Geometry->IsRational())
+  {
+    // The field's coefficients are homogeneous (w f): f = F / W and
+    // d f / d s = (d F / d s - f d W / d s) / W.
+    this->Geometry->Weight(e, s, W, dW);
+    const int nc = this->Volume.NumberOfComponents;
+    for (int c = 0; c < nc; ++c)
+    {
+      value[c] = static_cast<Real>(value[c] / W);
+      if (gradient)
+      {
+        for (int j = 0; j < 3; ++j)
+        {
+          gradient[3 * c + j] = static_cast<Real>((gradient[3 * c + j] - value[c] * dW[j]) / W);
+        }
+      }
+    }
+  }
+  if (!gradient)
+  {
+    return;
+  }
+  // d f / d x = (d f / d s) (d x / d s)^-1.
+  double x[3], J[9];
+  this->Geometry->Map(e, s, x, J);
+  const double c0 = J[4] * J[8] - J[5] * J[7], c1 = J[5] * J[6] - J[3] * J[8],
+               c2 = J[3] * J[7] - J[4] * J[6];
+  const double det = J[0] * c0 + J[1] * c1 + J[2] * c2;
+  const double inv[9] = { c0 / det, (J[2] * J[7] - J[1] * J[8]) / det,
+    (J[1] * J[5] - J[2] * J[4]) / det, c1 / det, (J[0] * J[8] - J[2] * J[6]) / det,
+    (J[2] * J[3] - J[0] * J[5]) / det, c2 / det, (J[1] * J[6] - J[0] * J[7]) / det,
+    (J[0] * J[4] - J[1] * J[3]) / det };
+  for (int c = 0; c < this->Volume.NumberOfComponents; ++c)
+  {
+    Real* g = gradient + 3 * c;
+    const double gs[3] = { g[0], g[1], g[2] };
+    for (int j = 0; j < 3; ++j)
+    {
+      g[j] = static_cast<Real>(gs[0] * inv[j] + gs[1] * inv[3 + j] + gs[2] * inv[6 + j]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 vtkIdType vtkLRSplineEvaluator::FindElement(const double x[3]) const
 {
+  if (this->Geometry)
+  {
+    double s[3];
+    return this->Geometry->Invert(x, s);
+  }
   double u[3];
   this->PhysicalToParameter(x, u);
   return this->Locator.FindElement(u);
@@ -179,6 +294,11 @@ vtkIdType vtkLRSplineEvaluator::FindElement(const double x[3]) const
 
 bool vtkLRSplineEvaluator::ElementContains(vtkIdType e, const double x[3]) const
 {
+  if (this->Geometry)
+  {
+    double s[3];
+    return this->Geometry->GetLocator().Contains(e, x) && this->Geometry->InvertInElement(e, x, s);
+  }
   double u[3];
   this->PhysicalToParameter(x, u);
   return this->Locator.Contains(e, u);
@@ -188,6 +308,13 @@ bool vtkLRSplineEvaluator::ElementContains(vtkIdType e, const double x[3]) const
 void vtkLRSplineEvaluator::EvaluateInElement(
   vtkIdType e, const double x[3], double* value, double* gradient) const
 {
+  if (this->Geometry)
+  {
+    double s[3];
+    this->Geometry->InvertInElement(e, x, s); // known inside: s is clamped
+    this->AtLocal(e, s, value, gradient);
+    return;
+  }
   const double* b = this->Volume.GetBox(e);
   double u[3], s[3];
   this->PhysicalToParameter(x, u);
@@ -205,6 +332,14 @@ void vtkLRSplineEvaluator::EvaluateInElement(
 void vtkLRSplineEvaluator::EvaluateInElement(
   vtkIdType e, const float x[3], float* value, float* gradient) const
 {
+  if (this->Geometry)
+  {
+    const double xd[3] = { x[0], x[1], x[2] };
+    double s[3];
+    this->Geometry->InvertInElement(e, xd, s);
+    this->AtLocal(e, s, value, gradient);
+    return;
+  }
   const double* b = this->Volume.GetBox(e);
   float u[3], s[3];
   const float y[3] = { x[0] - static_cast<float>(this->Offset[0]),
@@ -237,6 +372,16 @@ void vtkLRSplineEvaluator::EvaluateInElement(
 
 vtkIdType vtkLRSplineEvaluator::Evaluate(const double x[3], double* value, double* gradient) const
 {
+  if (this->Geometry)
+  {
+    double s[3];
+    const vtkIdType e = this->Geometry->Invert(x, s);
+    if (e >= 0)
+    {
+      this->AtLocal(e, s, value, gradient);
+    }
+    return e;
+  }
   double u[3];
   this->PhysicalToParameter(x, u);
   const vtkIdType e = this->Locator.FindElement(u);
@@ -250,6 +395,16 @@ vtkIdType vtkLRSplineEvaluator::Evaluate(const double x[3], double* value, doubl
 bool vtkLRSplineEvaluator::EvaluateIfInElement(
   vtkIdType e, const double x[3], double* value, double* gradient) const
 {
+  if (this->Geometry)
+  {
+    double s[3];
+    if (!this->Geometry->GetLocator().Contains(e, x) || !this->Geometry->InvertInElement(e, x, s))
+    {
+      return false;
+    }
+    this->AtLocal(e, s, value, gradient);
+    return true;
+  }
   double u[3];
   this->PhysicalToParameter(x, u);
   if (!this->Locator.Contains(e, u))

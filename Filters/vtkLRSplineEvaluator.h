@@ -16,8 +16,11 @@
  * field mode places the spline in a physical box this way), or any
  * invertible affine map (a patch whose geometry is an affine image of its
  * parameter domain, e.g. rotated, placed where its geometry says).
- * Gradients are with respect to x. The single-precision overloads do the whole evaluation in float
- * (the GPU arithmetic, used by the tracer's mixed and single precision modes).
+ * With a geometry map (SetGeometry: an isoparametric patch whose geometry is
+ * curved), x is the geometry map of the parameter instead: points are found
+ * and converted by vtkLRSplineGeometryMap's inversion, and gradients use the
+ * map's Jacobian. Gradients are with respect to x. The single-precision overloads do the whole
+ * evaluation in float (the GPU arithmetic, used by the tracer's mixed and single precision modes).
  *
  * All evaluation methods are const and thread-safe; EvaluateBatch() runs in
  * parallel with vtkSMPTools.
@@ -30,7 +33,10 @@
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineElementLocator.h"
 
+#include <memory>
 #include <string>
+
+class vtkLRSplineGeometryMap;
 
 class SPLINEVIZ_EXPORT vtkLRSplineEvaluator
 {
@@ -56,6 +62,16 @@ public:
   /// True when A is diagonal (per-axis scale).
   bool IsAxisAligned() const { return this->AxisAligned; }
 
+  /**
+   * A curved geometry map (same elements, same order as the field): then
+   * physical points are mapped by it and the affine map is not used. A
+   * rational map makes the field's coefficients homogeneous (w f, the
+   * rational basis of the field). Call once, after Initialize(); false when
+   * the map does not match the field's elements.
+   */
+  bool SetGeometry(std::shared_ptr<const vtkLRSplineGeometryMap> geometry);
+  const vtkLRSplineGeometryMap* GetGeometry() const { return this->Geometry.get(); }
+
   const vtkLRSplineBezierVolume& GetVolume() const { return this->Volume; }
   const vtkLRSplineElementLocator& GetLocator() const { return this->Locator; }
   int GetNumberOfComponents() const { return this->Volume.NumberOfComponents; }
@@ -67,6 +83,7 @@ public:
   /// Shortest side of element e in physical units.
   double GetElementMinimumSide(vtkIdType e) const;
 
+  /// Physical to parameter point (with a geometry map: NaN outside the geometry).
   void PhysicalToParameter(const double x[3], double u[3]) const;
   void ParameterToPhysical(const double u[3], double x[3]) const;
 
@@ -112,6 +129,10 @@ private:
   // Value and physical gradient at parameter point u inside element e.
   void AtParameter(vtkIdType e, const double u[3], double* value, double* gradient) const;
 
+  // With the geometry map: value and physical gradient at local s of element e.
+  template <typename Real>
+  void AtLocal(vtkIdType e, const double s[3], Real* value, Real* gradient) const;
+
   // Local gradients of element `box` (3 per component, in place) to physical ones.
   template <typename Real>
   void GradientToPhysical(Real* gradient, const double* box) const;
@@ -122,6 +143,7 @@ private:
   double Inverse[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
   double Offset[3] = { 0, 0, 0 };
   bool AxisAligned = true;
+  std::shared_ptr<const vtkLRSplineGeometryMap> Geometry;
 };
 
 #endif

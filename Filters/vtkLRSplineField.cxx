@@ -6,6 +6,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkLRSplineGeometryMap.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkSMPThreadLocal.h"
@@ -76,6 +77,11 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
   for (std::size_t g = 0; g < grids.size(); ++g)
   {
     vtkUnstructuredGrid* grid = grids[g];
+    if (!name.empty() && !grid->GetPointData()->GetArray(name.c_str()))
+    {
+      // Another basis of a mixed method (its own fields): not this field's.
+      continue;
+    }
     vtkLRSplineBezierVolume volume;
     std::string msg, used;
     if (!volume.FromUnstructuredGrid(grid, name.c_str(), &msg, nullptr, &used))
@@ -100,11 +106,23 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     bool axisAligned = true;
     vtkFieldData* fd = grid->GetFieldData();
     vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
+    std::shared_ptr<vtkLRSplineGeometryMap> geometry;
     if (mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1 && !parameterSpace)
     {
-      return fail("patch " + std::to_string(g) +
-        " was read in geometry mode: its physical points are not an affine image of the "
-        "parameter domain, so it can only be evaluated in parameter space");
+      // Isoparametric: the points are the geometry's control points.
+      geometry = std::make_shared<vtkLRSplineGeometryMap>();
+      if (!geometry->Build(grid, blocks, &msg))
+      {
+        return fail("patch " + std::to_string(g) + " (geometry): " + msg);
+      }
+      if (geometry->IsAffine())
+      {
+        // The fast path: an affine image of the parameter domain.
+        geometry->GetAffineMap(matrix, offset);
+        axisAligned = matrix[1] == 0 && matrix[2] == 0 && matrix[3] == 0 && matrix[5] == 0 &&
+          matrix[6] == 0 && matrix[7] == 0 && matrix[0] > 0 && matrix[4] > 0 && matrix[8] > 0;
+        geometry.reset();
+      }
     }
     vtkDataArray* transform = fd ? fd->GetArray("LRPhysicalTransform") : nullptr;
     if (transform && !parameterSpace && transform->GetNumberOfTuples() > 0)
@@ -154,7 +172,15 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     {
       return fail("patch " + std::to_string(g) + ": " + msg);
     }
-    if (axisAligned)
+    if (geometry)
+    {
+      if (!evaluator->SetGeometry(std::move(geometry)))
+      {
+        return fail("patch " + std::to_string(g) + ": the geometry and the field \"" + name +
+          "\" have different elements");
+      }
+    }
+    else if (axisAligned)
     {
       const double scale[3] = { matrix[0], matrix[4], matrix[8] };
       evaluator->SetPhysicalTransform(scale, offset);
@@ -165,6 +191,10 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
         "patch " + std::to_string(g) + " has a singular or non-finite LRPhysicalTransform matrix");
     }
     this->Patches.push_back(std::move(evaluator));
+  }
+  if (this->Patches.empty())
+  {
+    return fail("no patch of the spline input has a point-data array named \"" + name + "\"");
   }
   this->ArrayName = name;
   // Do the patches' boxes overlap (then the hint must not skip the order rule)?

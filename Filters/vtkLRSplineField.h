@@ -5,15 +5,19 @@
  * Plain C++ (not a vtkObject). Collects the VTK_BEZIER_HEXAHEDRON grids of a
  * vtkLRSplineReader output (a vtkUnstructuredGrid patch, or a
  * vtkMultiBlockDataSet / any composite of them), builds one
- * vtkLRSplineEvaluator per patch, and evaluates at physical points with the
- * rule of vtkLRSplineProbeFilter: the first patch (in block order) that
- * contains the point wins.
+ * vtkLRSplineEvaluator per patch that has the field's array (the blocks of
+ * other bases of a mixed IFEM result are left out), and evaluates at
+ * physical points with the rule of vtkLRSplineProbeFilter: the first patch
+ * (in block order) that contains the point wins.
  *
  * The physical placement comes from the field data the reader writes
  * ("LRPhysicalTransform": scale xyz then offset xyz, or a row-major 3x3
  * matrix A then offset xyz for x = A u + offset; identity if absent).
- * Patches read in geometry mode ("LRMode" = 1) can only be evaluated in
- * parameter space (ParameterSpace = true).
+ * Patches read in geometry mode ("LRMode" = 1: the points are the control
+ * points of the geometry map, isoparametric fields) are evaluated in
+ * physical space by inverting that map (vtkLRSplineGeometryMap); when the
+ * map is affine it is used as an affine placement (the fast path). With
+ * parameterSpace every patch is evaluated at parameter points instead.
  */
 
 #ifndef vtkLRSplineField_h

@@ -19,8 +19,10 @@
  * Evaluation uses vtkLRSplineField (a k-d forest per patch, Fuchs et al.
  * §3.2, and the Bezier blocks of §3.2.3), in parallel over the points with
  * vtkSMPTools; the search structure is built once per source and reused while
- * the source does not change. UseParameterCoordinates evaluates at parameter
- * coordinates (needed for splines read in geometry mode). Progress is
+ * the source does not change. Geometry-mode splines and IFEM results are
+ * evaluated at physical points by inverting their geometry map
+ * (vtkLRSplineGeometryMap); UseParameterCoordinates evaluates at parameter
+ * coordinates instead. Progress is
  * reported and abort honoured between batches of points (an aborted run
  * gives an empty output); an input whose probed arrays could not fit in this
  * machine's memory is refused before anything is allocated.

@@ -337,6 +337,14 @@ public:
     const double xd[3] = { static_cast<double>(xlo[0]), static_cast<double>(xlo[1]),
       static_cast<double>(xlo[2]) };
     const int patch = this->Field.FindPatch(xd);
+    line.Reason = vtkLRSplineStreamTracer::OUT_OF_DOMAIN;
+    if (patch >= 0 && this->Field.GetPatch(patch).GetGeometry() && lo > S(0))
+    {
+      // A curved patch: its box is not its boundary; the bisection's last
+      // inside point is the boundary point (to 1e-12 of the step).
+      this->Append(line, xlo, vlo, t + static_cast<double>(sign) * static_cast<double>(lo));
+      return;
+    }
     double bounds[6];
     if (patch >= 0)
     {

@@ -70,4 +70,5 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkLRSplineVolumeShared.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkLRSplineVolumeVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkLRSplineVolumeFS.glsl"
-  "${SPLINEVIZ_FOLDER}/glsl/vtkLRSplineVolumeTrimFS.glsl")
+  "${SPLINEVIZ_FOLDER}/glsl/vtkLRSplineVolumeTrimFS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkLRSplineVolumeCompositeFS.glsl")

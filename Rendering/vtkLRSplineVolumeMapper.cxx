@@ -1,6 +1,7 @@
 #include "vtkLRSplineVolumeMapper.h"
 
 #include "vtkLRSplineField.h"
+#include "vtkLRSplineGeometryMap.h"
 #include "vtkSplineVizGPUBuffer.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -43,6 +44,7 @@
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
 
+#include "vtkLRSplineVolumeCompositeFS.h"
 #include "vtkLRSplineVolumeFS.h"
 #include "vtkLRSplineVolumeShared.h"
 #include "vtkLRSplineVolumeTrimFS.h"
@@ -78,6 +80,7 @@ struct PatchInfo
   int Blocks[3] = { 1, 1, 1 };    // forest resolution
   int Starts[4] = { 0, 0, 0, 0 }; // heads, nodes, octree, first element
   int Locator = 0;                // 0: forest-like, 1: octree
+  int Curved = 0;                 // 1: a curved geometry map (Lo/Hi: its physical domain)
 };
 
 // Set a GLSL mat4 from a row-major vtkMatrix4x4 (vtkShaderProgram uploads
@@ -144,6 +147,7 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   int NumberOfComponents = 1;
   double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
   double MinimumSide = 0.0; // data units
+  bool Curved = false;      // some patch has a curved geometry map
   std::vector<PatchInfo> Patches;
   std::vector<std::uint32_t> Heads, NodeWords, Octree, Offsets;
   std::vector<float> NodeSplits, Boxes, Coefficients;
@@ -178,6 +182,14 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   vtkIdType TrimVertices = 0;
   std::string TrimKey;
   double CubeBox[6] = { 0, 0, 0, 0, 0, 0 };
+  // Continuation passes: final color and depth, two sets of ray state
+  // (accumulated color, ray, extra), their framebuffers, the final draw.
+  vtkSmartPointer<vtkTextureObject> PassFinal[2];
+  vtkSmartPointer<vtkTextureObject> PassState[2][3];
+  vtkSmartPointer<vtkOpenGLFramebufferObject> PassFramebuffers[2];
+  vtkSmartPointer<vtkOpenGLVertexArrayObject> CompositeArray;
+  vtkShaderProgram* CompositeArrayProgram = nullptr;
+  int Passes = 1;
 
   bool Fail(const std::string& message)
   {
@@ -195,7 +207,10 @@ struct vtkLRSplineVolumeMapper::vtkInternals
       b->ReleaseGraphicsResources(window);
     }
     for (vtkTextureObject* t : { this->TransferTexture.Get(), this->DepthTexture.Get(),
-           this->DepthColor.Get(), this->TrimTextures[0].Get(), this->TrimTextures[1].Get() })
+           this->DepthColor.Get(), this->TrimTextures[0].Get(), this->TrimTextures[1].Get(),
+           this->PassFinal[0].Get(), this->PassFinal[1].Get(), this->PassState[0][0].Get(),
+           this->PassState[0][1].Get(), this->PassState[0][2].Get(), this->PassState[1][0].Get(),
+           this->PassState[1][1].Get(), this->PassState[1][2].Get() })
     {
       if (t)
       {
@@ -203,7 +218,8 @@ struct vtkLRSplineVolumeMapper::vtkInternals
       }
     }
     for (vtkOpenGLFramebufferObject* f : { this->DepthFramebuffer.Get(),
-           this->TrimFramebuffers[0].Get(), this->TrimFramebuffers[1].Get() })
+           this->TrimFramebuffers[0].Get(), this->TrimFramebuffers[1].Get(),
+           this->PassFramebuffers[0].Get(), this->PassFramebuffers[1].Get() })
     {
       if (f)
       {
@@ -217,7 +233,8 @@ struct vtkLRSplineVolumeMapper::vtkInternals
         b->ReleaseGraphicsResources();
       }
     }
-    for (vtkOpenGLVertexArrayObject* a : { this->CubeArray.Get(), this->TrimArray.Get() })
+    for (vtkOpenGLVertexArrayObject* a :
+      { this->CubeArray.Get(), this->TrimArray.Get(), this->CompositeArray.Get() })
     {
       if (a)
       {
@@ -236,6 +253,17 @@ struct vtkLRSplineVolumeMapper::vtkInternals
     this->TrimBuffer = nullptr;
     this->TrimArray = nullptr;
     this->TrimArrayProgram = nullptr;
+    for (int k = 0; k < 2; ++k)
+    {
+      this->PassFinal[k] = nullptr;
+      this->PassFramebuffers[k] = nullptr;
+      for (auto& t : this->PassState[k])
+      {
+        t = nullptr;
+      }
+    }
+    this->CompositeArray = nullptr;
+    this->CompositeArrayProgram = nullptr;
     this->TransferKey.clear();
     this->TrimKey.clear();
     this->UploadTime = vtkTimeStamp();
@@ -405,20 +433,18 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     vtkPointData* pd = grids[g]->GetPointData();
     vtkFieldData* fd = grids[g]->GetFieldData();
     vtkDataArray* rational = fd ? fd->GetArray("LRRational") : nullptr;
-    if (pd->GetRationalWeights() || pd->GetArray("RationalWeights") ||
-      (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0))
+    vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
+    const bool geometryMode =
+      mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1;
+    // (Rational geometry maps are rendered by inversion, their fields as
+    // rational splines; a rational field over a parameter box is not.)
+    if (!geometryMode &&
+      (pd->GetRationalWeights() || pd->GetArray("RationalWeights") ||
+        (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0)))
     {
       return done(in.Fail("patch " + std::to_string(g) +
         " is rational (it has rational weights): the volume mapper renders polynomial "
         "LR splines only"));
-    }
-    vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
-    if (mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1)
-    {
-      return done(in.Fail("patch " + std::to_string(g) +
-        " is in geometry mode (its points are a spline geometry map, e.g. an IFEM result or "
-        "vtkLRSplineReader's GeometryMode): the volume mapper renders field-mode volumes over "
-        "their parameter box only"));
     }
     if (pd->GetNumberOfArrays() == 0)
     {
@@ -468,6 +494,7 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   in.NumberOfComponents = nc;
   in.Field.GetBounds(in.Bounds);
   in.MinimumSide = VTK_DOUBLE_MAX;
+  in.Curved = false;
 
   // Flatten every patch into the GPU arrays.
   const int per = (degree[0] + 1) * (degree[1] + 1) * (degree[2] + 1) * nc;
@@ -507,8 +534,43 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
           " has NaN or infinite coefficients in \"" + in.Field.GetArrayName() + "\""));
       }
     }
+    // A curved patch: its geometry's Bezier coefficients follow the
+    // field's per element, its search structure is the geometry map's.
+    const vtkLRSplineGeometryMap* geometryMap = patch.GetGeometry();
+    vtkLRSplineBezierVolume geometryRaised;
+    if (geometryMap)
+    {
+      if (this->ElementLocator == OCTREE || this->ElementLocator == TEXTURE)
+      {
+        return done(in.Fail("patch " + std::to_string(p) +
+          " has a curved geometry: its elements are found with a k-d forest or tree, not the " +
+          "octree or the look-up texture"));
+      }
+      geometryRaised = geometryMap->GetVolume();
+      geometryRaised.CoefficientsFloat.clear();
+      if (geometryRaised.NumberOfComponents == 3)
+      {
+        // The shader reads homogeneous coefficients (w x, w y, w z, w).
+        std::vector<double> h(geometryRaised.Coefficients.size() / 3 * 4);
+        for (std::size_t k = 0; k < h.size() / 4; ++k)
+        {
+          std::copy(&geometryRaised.Coefficients[3 * k], &geometryRaised.Coefficients[3 * k] + 3,
+            &h[4 * k]);
+          h[4 * k + 3] = 1.0;
+        }
+        geometryRaised.Coefficients.swap(h);
+        geometryRaised.NumberOfComponents = 4;
+      }
+      if (!geometryRaised.ElevateDegree(degree))
+      {
+        return done(in.Fail("patch " + std::to_string(p) + ": the geometry's degree is too high"));
+      }
+      in.Curved = true;
+    }
+    const vtkLRSplineElementLocator& search = geometryMap ? geometryMap->GetLocator() : locator;
     PatchInfo info;
-    const double* domain = locator.GetDomain();
+    info.Curved = geometryMap ? 1 : 0;
+    const double* domain = search.GetDomain();
     const double* A = patch.GetMatrix();
     const double* inverse = patch.GetInverseMatrix();
     const double* offset = patch.GetOffset();
@@ -533,20 +595,20 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     info.Starts[1] = static_cast<int>(in.NodeWords.size());
     info.Starts[2] = static_cast<int>(in.Octree.size());
     info.Starts[3] = static_cast<int>(firstElement);
-    if (locator.GetType() == vtkLRSplineElementLocator::OCTREE)
+    if (search.GetType() == vtkLRSplineElementLocator::OCTREE)
     {
       info.Locator = 1;
-      const auto& oct = locator.GetOctreeNodes();
+      const auto& oct = search.GetOctreeNodes();
       in.Octree.insert(in.Octree.end(), oct.begin(), oct.end());
     }
     else
     {
       info.Locator = 0;
-      const int* nb = locator.GetNumberOfBlocks();
+      const int* nb = search.GetNumberOfBlocks();
       std::copy(nb, nb + 3, info.Blocks);
-      const auto& heads = locator.GetHeads();
-      const auto& words = locator.GetNodeWords();
-      const std::vector<float> splits = locator.GetNodeSplitsFloat();
+      const auto& heads = search.GetHeads();
+      const auto& words = search.GetNodeWords();
+      const std::vector<float> splits = search.GetNodeSplitsFloat();
       in.Heads.insert(in.Heads.end(), heads.begin(), heads.end());
       in.NodeWords.insert(in.NodeWords.end(), words.begin(), words.end());
       in.NodeSplits.insert(in.NodeSplits.end(), splits.begin(), splits.end());
@@ -555,24 +617,51 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     for (vtkIdType e = 0; e < ne; ++e)
     {
       const double* b = volume->GetBox(e);
-      in.Boxes.insert(in.Boxes.end(),
-        { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]), 0.0f,
-          static_cast<float>(b[3]), static_cast<float>(b[4]), static_cast<float>(b[5]), 0.0f });
+      if (geometryMap)
+      {
+        // The physical box; its fourth value the element's shortest side
+        // (data units, > 0: marks a curved element).
+        const double* pb = geometryMap->GetPhysicalBox(e);
+        const double side = geometryMap->GetElementMinimumSide(e);
+        in.Boxes.insert(in.Boxes.end(),
+          { static_cast<float>(pb[0]), static_cast<float>(pb[1]), static_cast<float>(pb[2]), 0.0f,
+            static_cast<float>(pb[3]), static_cast<float>(pb[4]), static_cast<float>(pb[5]),
+            static_cast<float>(side) });
+        in.MinimumSide = std::min(in.MinimumSide, side);
+      }
+      else
+      {
+        in.Boxes.insert(in.Boxes.end(),
+          { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]), 0.0f,
+            static_cast<float>(b[3]), static_cast<float>(b[4]), static_cast<float>(b[5]), 0.0f });
+      }
       in.Offsets.push_back(static_cast<std::uint32_t>(in.Coefficients.size()));
       const double* c = volume->GetElementCoefficients(e);
       for (int i = 0; i < per; ++i)
       {
         in.Coefficients.push_back(static_cast<float>(c[i]));
       }
-      // Coefficient ranges (the element's values lie within them).
+      if (geometryMap)
+      {
+        const double* gc = geometryRaised.GetElementCoefficients(e);
+        const int gper = 4 * per / nc;
+        for (int i = 0; i < gper; ++i)
+        {
+          in.Coefficients.push_back(static_cast<float>(gc[i]));
+        }
+      }
+      // Coefficient ranges (the element's values lie within them). On a
+      // rational map the coefficients are w f: the ranges are of f.
+      const double* gw = geometryMap ? geometryRaised.GetElementCoefficients(e) + 3 : nullptr;
+      auto coefficient = [&](int i) { return gw ? c[i] / gw[4 * (i / nc)] : c[i]; };
       double magnitudeLow = 0.0, magnitudeHigh = 0.0;
       for (int comp = 0; comp < nc; ++comp)
       {
         double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
         for (int i = comp; i < per; i += nc)
         {
-          lo = std::min(lo, c[i]);
-          hi = std::max(hi, c[i]);
+          lo = std::min(lo, coefficient(i));
+          hi = std::max(hi, coefficient(i));
         }
         in.ComponentRanges.push_back(static_cast<float>(lo));
         in.ComponentRanges.push_back(static_cast<float>(hi));
@@ -583,13 +672,13 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
         double m2 = 0.0;
         for (int comp = 0; comp < nc; ++comp)
         {
-          m2 += c[i + comp] * c[i + comp];
+          m2 += coefficient(i + comp) * coefficient(i + comp);
         }
         magnitudeHigh = std::max(magnitudeHigh, std::sqrt(m2));
       }
       in.MagnitudeRanges.push_back(static_cast<float>(magnitudeLow));
       in.MagnitudeRanges.push_back(static_cast<float>(magnitudeHigh));
-      for (int k = 0; k < 3; ++k)
+      for (int k = 0; k < 3 && !geometryMap; ++k)
       {
         in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * edge[k]);
       }
@@ -642,27 +731,9 @@ void vtkLRSplineVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
-void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+bool vtkLRSplineVolumeMapper::UploadSpline(vtkOpenGLRenderWindow* window)
 {
   vtkInternals& in = *this->Internals;
-  auto report = [this]() { this->ReportError(); };
-  if (!this->UpdateSpline())
-  {
-    return;
-  }
-  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  vtkVolumeProperty* property = vol->GetProperty();
-  if (!window || !property)
-  {
-    return;
-  }
-  if (in.Window && in.Window != window)
-  {
-    in.ReleaseGPU(in.Window);
-  }
-  in.Window = window;
-  vtkOpenGLClearErrorMacro();
-
   // The spline's data on the GPU, once per change.
   if (in.UploadTime < in.BuildTime)
   {
@@ -675,8 +746,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       in.Fail("the spline needs a buffer texture of " + std::to_string(largest) +
         " texels; this OpenGL allows " + std::to_string(maxTexels));
       in.BuildKey.clear();
-      report();
-      return;
+      return false;
     }
     bool ok = in.HeadsBuffer.Upload(
                 window, in.Heads.data(), in.Heads.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
@@ -696,12 +766,19 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       in.Fail("the spline's data could not be uploaded to the GPU");
       in.BuildKey.clear();
-      report();
-      return;
+      return false;
     }
     in.UploadTime.Modified();
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::UpdateTransferFunction(
+  vtkOpenGLRenderWindow* window, vtkVolumeProperty* property)
+{
+  vtkInternals& in = *this->Internals;
   // The transfer function as a texture over the union of its ranges. (The
   // property's getters create default functions and switch the channels:
   // only the one in use is asked for.)
@@ -714,8 +791,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   {
     in.Error = "the volume property's transfer function is empty (no scalar opacity or color "
                "points): nothing to render";
-    report();
-    return;
+    return false;
   }
   {
     std::ostringstream key;
@@ -777,8 +853,16 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::CollectIsoValues(
+  vtkVolumeProperty* property, std::vector<float>& isoValues)
+{
+  vtkInternals& in = *this->Internals;
   // Iso values.
-  std::vector<float> isoValues;
+  isoValues.clear();
   if (this->BlendMode == ISOSURFACE_BLEND)
   {
     vtkContourValues* contours = property->GetIsoSurfaceValues();
@@ -787,8 +871,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     {
       in.Error = "isosurface blend mode without iso values (vtkVolumeProperty::"
                  "GetIsoSurfaceValues()->SetValue(0, value)): nothing to render";
-      report();
-      return;
+      return false;
     }
     if (n > MaximumIsoValues)
     {
@@ -801,6 +884,15 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::UpdateEmptySpaceSkipping(
+  vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, const std::vector<float>& isoValues)
+{
+  vtkInternals& in = *this->Internals;
+  vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   // Empty-space skipping: flag the elements whose coefficient range (which
   // bounds their values) maps to zero opacity (composite) or holds no iso
   // value (isosurfaces); the rays jump over them. Recomputed when the
@@ -857,6 +949,9 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
             skip = skip && !(v >= r[0] && v <= r[1]);
           }
         }
+        // (Curved elements are never skipped: the jump to an element's
+        // exit is computed for parameter boxes.)
+        skip = skip && in.Boxes[8 * e + 7] == 0.0f;
         in.Boxes[8 * e + 3] = skip ? 1.0f : 0.0f;
         skipped += skip ? 1 : 0;
       }
@@ -866,11 +961,333 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
           window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F))
       {
         in.Error = "the spline's element boxes could not be uploaded to the GPU";
-        report();
-        return;
+        return false;
       }
       in.SkipKey = key.str();
     }
+  }
+
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::RenderTrimmingDepths(
+  vtkShaderProgram* program, vtkMatrix4x4* dataToClip, const int viewport[4])
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderWindow* window = in.Window;
+  vtkOpenGLState* state = window->GetState();
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
+  }
+  vtkPolyData* surface = vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
+  std::ostringstream key;
+  key << surface << ' ' << (surface ? surface->GetMTime() : 0);
+  if (key.str() != in.TrimKey)
+  {
+    std::vector<float> tri;
+    if (surface && surface->GetPolys())
+    {
+      vtkPoints* points = surface->GetPoints();
+      vtkCellArray* polys = surface->GetPolys();
+      const vtkIdType* ids;
+      vtkIdType n;
+      for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+      {
+        for (vtkIdType k = 1; k + 1 < n; ++k) // a fan (convex polygons)
+        {
+          for (vtkIdType v : { ids[0], ids[k], ids[k + 1] })
+          {
+            double x[3];
+            points->GetPoint(v, x);
+            tri.insert(tri.end(),
+              { static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2]) });
+          }
+        }
+      }
+    }
+    if (tri.empty())
+    {
+      in.Error = "the trimming surface has no polygons: nothing to render (remove it to "
+                 "render the whole volume)";
+      return false;
+    }
+    if (!in.TrimBuffer)
+    {
+      in.TrimBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+    }
+    in.TrimBuffer->Upload(tri, vtkOpenGLBufferObject::ArrayBuffer);
+    in.TrimVertices = static_cast<vtkIdType>(tri.size() / 3);
+    in.TrimArrayProgram = nullptr;
+    in.TrimKey = key.str();
+  }
+  vtkShaderProgram* trimProgram =
+    window->GetShaderCache()->ReadyShaderProgram(vtkLRSplineVolumeVS, vtkLRSplineVolumeTrimFS, "");
+  if (!trimProgram)
+  {
+    in.Error = "the trimming shader did not compile or link";
+    return false;
+  }
+  if (!in.TrimArray)
+  {
+    in.TrimArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+  }
+  if (in.TrimArrayProgram != trimProgram)
+  {
+    in.TrimArray->ShaderProgramChanged();
+    in.TrimArray->Bind();
+    in.TrimArray->AddAttributeArray(
+      trimProgram, in.TrimBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    in.TrimArrayProgram = trimProgram;
+  }
+  SetMatrix(trimProgram, "lrMCDCMatrix", dataToClip);
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    vtkSmartPointer<vtkTextureObject>& texture = in.TrimTextures[pass];
+    vtkSmartPointer<vtkOpenGLFramebufferObject>& fbo = in.TrimFramebuffers[pass];
+    if (!texture || static_cast<int>(texture->GetWidth()) != viewport[2] ||
+      static_cast<int>(texture->GetHeight()) != viewport[3])
+    {
+      if (texture)
+      {
+        texture->ReleaseGraphicsResources(window);
+      }
+      texture = vtkSmartPointer<vtkTextureObject>::New();
+      texture->SetContext(window);
+      texture->SetMinificationFilter(vtkTextureObject::Nearest);
+      texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+      texture->AllocateDepth(viewport[2], viewport[3], vtkTextureObject::Float32);
+      fbo = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      fbo->SetContext(window);
+      fbo->SaveCurrentBindingsAndBuffers();
+      fbo->Bind();
+      fbo->AddDepthAttachment(texture);
+      fbo->RestorePreviousBindingsAndBuffers();
+    }
+    fbo->SaveCurrentBindingsAndBuffers();
+    fbo->Bind();
+    fbo->DeactivateDrawBuffers();
+    fbo->DeactivateReadBuffer();
+    {
+      vtkOpenGLState::ScopedglViewport savedViewport(state);
+      vtkOpenGLState::ScopedglScissor savedScissor(state);
+      vtkOpenGLState::ScopedglColorMask savedColorMask(state);
+      vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+      vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+      vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+      vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+      vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+      state->vtkglViewport(0, 0, viewport[2], viewport[3]);
+      state->vtkglScissor(0, 0, viewport[2], viewport[3]);
+      state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      state->vtkglDepthMask(GL_TRUE);
+      state->vtkglEnable(GL_DEPTH_TEST);
+      state->vtkglDisable(GL_BLEND);
+      // Front faces and back faces both: the orientation of the surface's
+      // polygons is not trusted; the nearest and farthest hits are kept.
+      state->vtkglDisable(GL_CULL_FACE);
+      state->vtkglClearDepth(pass == 0 ? 1.0 : 0.0);
+      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+      state->vtkglDepthFunc(pass == 0 ? GL_LESS : GL_GREATER);
+      in.TrimArray->Bind();
+      glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(in.TrimVertices));
+      in.TrimArray->Release();
+      state->vtkglClearDepth(1.0);
+    }
+    fbo->RestorePreviousBindingsAndBuffers();
+  }
+  // The ray caster's program again.
+  window->GetShaderCache()->ReadyShaderProgram(program, nullptr);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::CopyOpaqueDepth(const int viewport[4])
+{
+  // Copied as VTK's GPU ray caster does.
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderWindow* window = in.Window;
+  vtkOpenGLState* state = window->GetState();
+  if (!in.DepthTexture)
+  {
+    in.DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
+    in.DepthTexture->SetContext(window);
+    in.DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
+    in.DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
+    in.DepthTexture->SetWrapS(vtkTextureObject::ClampToEdge);
+    in.DepthTexture->SetWrapT(vtkTextureObject::ClampToEdge);
+    in.DepthColor = vtkSmartPointer<vtkTextureObject>::New();
+    in.DepthColor->SetContext(window);
+  }
+  if (!in.DepthTexture->GetHandle() ||
+    static_cast<int>(in.DepthTexture->GetWidth()) != viewport[2] ||
+    static_cast<int>(in.DepthTexture->GetHeight()) != viewport[3])
+  {
+    in.DepthTexture->ReleaseGraphicsResources(window);
+    in.DepthColor->ReleaseGraphicsResources(window);
+    if (window->GetStencilCapable())
+    {
+      in.DepthTexture->AllocateDepthStencil(viewport[2], viewport[3]);
+    }
+    else
+    {
+      in.DepthTexture->AllocateDepth(viewport[2], viewport[3], vtkTextureObject::Fixed32);
+    }
+    in.DepthColor->Allocate2D(viewport[2], viewport[3], 4, VTK_UNSIGNED_CHAR);
+    in.DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+    in.DepthFramebuffer->SetContext(window);
+    state->PushDrawFramebufferBinding();
+    in.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    in.DepthFramebuffer->AddDepthAttachment(in.DepthTexture);
+    in.DepthFramebuffer->AddColorAttachment(0, in.DepthColor);
+    state->PopDrawFramebufferBinding();
+  }
+  {
+    state->PushDrawFramebufferBinding();
+    in.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
+    vtkOpenGLClearErrorMacro();
+    state->vtkglBlitFramebuffer(viewport[0], viewport[1], viewport[0] + viewport[2],
+      viewport[1] + viewport[3], 0, 0, viewport[2], viewport[3], GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    if (glGetError() != GL_NO_ERROR)
+    {
+      // Incompatible depth formats: no opaque geometry is known.
+      if (!in.DepthCopyWarned)
+      {
+        vtkWarningMacro(<< "Could not copy the depth buffer: the volume ignores the opaque "
+                           "geometry of this render pass.");
+        in.DepthCopyWarned = true;
+      }
+      vtkOpenGLState::ScopedglDepthMask mask(state);
+      state->vtkglDepthMask(GL_TRUE);
+      state->vtkglClearDepth(1.0);
+      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
+    }
+    state->PopDrawFramebufferBinding();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::SetPatchUniforms(vtkShaderProgram* program)
+{
+  // Per patch: its parameter domain (curved: physical), the map to it, its
+  // box, and where its search structure and elements start.
+  vtkInternals& in = *this->Internals;
+  const int np = static_cast<int>(in.Patches.size());
+  std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
+  std::vector<int> blocks, starts, locators, curved;
+  for (const PatchInfo& p : in.Patches)
+  {
+    lo.insert(lo.end(), p.Lo, p.Lo + 3);
+    hi.insert(hi.end(), p.Hi, p.Hi + 3);
+    edge.insert(edge.end(), p.Edge, p.Edge + 3);
+    offset.insert(offset.end(), p.Offset, p.Offset + 3);
+    boxLoP.insert(boxLoP.end(), p.BoxLo, p.BoxLo + 3);
+    boxHiP.insert(boxHiP.end(), p.BoxHi, p.BoxHi + 3);
+    blocks.insert(blocks.end(), p.Blocks, p.Blocks + 3);
+    starts.insert(starts.end(), p.Starts, p.Starts + 4);
+    locators.push_back(p.Locator);
+    curved.push_back(p.Curved);
+  }
+  auto set3f = [&](const char* name, std::vector<float>& v)
+  { program->SetUniform3fv(name, np, reinterpret_cast<const float(*)[3]>(v.data())); };
+  set3f("lrPatchLo", lo);
+  set3f("lrPatchHi", hi);
+  set3f("lrPatchEdge", edge);
+  for (int p = 0; p < np; ++p)
+  {
+    // GLSL matrices are column-major: the transpose of the row-major array.
+    float columns[9];
+    for (int r = 0; r < 3; ++r)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        columns[3 * c + r] = in.Patches[p].Inverse[3 * r + c];
+      }
+    }
+    program->SetUniformMatrix3x3(("lrPatchInverse[" + std::to_string(p) + "]").c_str(), columns);
+  }
+  set3f("lrPatchOffset", offset);
+  set3f("lrPatchBoxLo", boxLoP);
+  set3f("lrPatchBoxHi", boxHiP);
+  program->SetUniform1iv("lrPatchBlocks", 3 * np, blocks.data());
+  program->SetUniform1iv("lrPatchStarts", 4 * np, starts.data());
+  program->SetUniform1iv("lrPatchLocator", np, locators.data());
+  if (in.Curved)
+  {
+    program->SetUniform1iv("lrPatchCurved", np, curved.data());
+    program->SetUniformf("lrMinimumSide", static_cast<float>(in.MinimumSide));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::DrawSinglePass()
+{
+  // The back faces of the proxy box: every pixel the volume may cover runs
+  // its ray once, also with the camera inside the box.
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLState* state = in.Window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(GL_FRONT);
+  if (this->CountSamples)
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  else
+  {
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  // The depth test is done by the rays (the opaque depth texture); the
+  // isosurfaces write their depth.
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglDepthMask(this->BlendMode == ISOSURFACE_BLEND ? GL_TRUE : GL_FALSE);
+  in.CubeArray->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 36);
+  in.CubeArray->Release();
+  state->vtkglCullFace(GL_BACK);
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
+{
+  vtkInternals& in = *this->Internals;
+  auto report = [this]() { this->ReportError(); };
+  if (!this->UpdateSpline())
+  {
+    return;
+  }
+  vtkOpenGLRenderWindow* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  vtkVolumeProperty* property = vol->GetProperty();
+  if (!window || !property)
+  {
+    return;
+  }
+  if (in.Window && in.Window != window)
+  {
+    in.ReleaseGPU(in.Window);
+  }
+  in.Window = window;
+  vtkOpenGLClearErrorMacro();
+
+  if (!this->UploadSpline(window) || !this->UpdateTransferFunction(window, property))
+  {
+    report();
+    return;
+  }
+  std::vector<float> isoValues;
+  if (!this->CollectIsoValues(property, isoValues) ||
+    !this->UpdateEmptySpaceSkipping(window, property, isoValues))
+  {
+    report();
+    return;
   }
 
   // The lights (VTK's volume mappers sum them): every switched-on light,
@@ -911,6 +1328,17 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     }
   }
 
+  // Continuation in passes when the rays may need more samples than a pass
+  // runs (see MaximumStepsPerPass).
+  int stepsPerPass = this->MaximumStepsPerPass;
+  if (stepsPerPass <= 0)
+  {
+    stepsPerPass = in.Curved ? 400 : 2000;
+  }
+  double unusedDistance = 0.0;
+  const bool multiPass =
+    !this->CountSamples && this->ComputeStepCount(vol, unusedDistance) > stepsPerPass;
+
   // The program.
   const bool shade = property->GetShade(0) != 0 && !this->CountSamples;
   std::string fs = this->GetFragmentShaderSource();
@@ -928,7 +1356,9 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
             << "\n#define LR_TRIM "
             << (this->GetNumberOfInputConnections(1) > 0 || this->GetInputDataObject(1, 0) ? 1 : 0)
             << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0)
-            << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_SUPERSAMPLING "
+            << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_CURVED "
+            << (in.Curved ? 1 : 0) << "\n#define LR_MULTIPASS " << (multiPass ? 1 : 0)
+            << "\n#define LR_SUPERSAMPLING "
             << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
             << "\n#define LR_LIGHTS " << lightList.size() << "\n#define LR_MAX_PATCHES "
             << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
@@ -993,64 +1423,8 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   vtkOpenGLState* state = window->GetState();
 
-  // The opaque geometry's depth (rays end there), copied as VTK's GPU ray
-  // caster does.
-  if (!in.DepthTexture)
-  {
-    in.DepthTexture = vtkSmartPointer<vtkTextureObject>::New();
-    in.DepthTexture->SetContext(window);
-    in.DepthTexture->SetMinificationFilter(vtkTextureObject::Nearest);
-    in.DepthTexture->SetMagnificationFilter(vtkTextureObject::Nearest);
-    in.DepthTexture->SetWrapS(vtkTextureObject::ClampToEdge);
-    in.DepthTexture->SetWrapT(vtkTextureObject::ClampToEdge);
-    in.DepthColor = vtkSmartPointer<vtkTextureObject>::New();
-    in.DepthColor->SetContext(window);
-  }
-  if (!in.DepthTexture->GetHandle() ||
-    static_cast<int>(in.DepthTexture->GetWidth()) != viewport[2] ||
-    static_cast<int>(in.DepthTexture->GetHeight()) != viewport[3])
-  {
-    in.DepthTexture->ReleaseGraphicsResources(window);
-    in.DepthColor->ReleaseGraphicsResources(window);
-    if (window->GetStencilCapable())
-    {
-      in.DepthTexture->AllocateDepthStencil(viewport[2], viewport[3]);
-    }
-    else
-    {
-      in.DepthTexture->AllocateDepth(viewport[2], viewport[3], vtkTextureObject::Fixed32);
-    }
-    in.DepthColor->Allocate2D(viewport[2], viewport[3], 4, VTK_UNSIGNED_CHAR);
-    in.DepthFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-    in.DepthFramebuffer->SetContext(window);
-    state->PushDrawFramebufferBinding();
-    in.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-    in.DepthFramebuffer->AddDepthAttachment(in.DepthTexture);
-    in.DepthFramebuffer->AddColorAttachment(0, in.DepthColor);
-    state->PopDrawFramebufferBinding();
-  }
-  {
-    state->PushDrawFramebufferBinding();
-    in.DepthFramebuffer->Bind(GL_DRAW_FRAMEBUFFER);
-    vtkOpenGLClearErrorMacro();
-    state->vtkglBlitFramebuffer(viewport[0], viewport[1], viewport[0] + viewport[2],
-      viewport[1] + viewport[3], 0, 0, viewport[2], viewport[3], GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-    if (glGetError() != GL_NO_ERROR)
-    {
-      // Incompatible depth formats: no opaque geometry is known.
-      if (!in.DepthCopyWarned)
-      {
-        vtkWarningMacro(<< "Could not copy the depth buffer: the volume ignores the opaque "
-                           "geometry of this render pass.");
-        in.DepthCopyWarned = true;
-      }
-      vtkOpenGLState::ScopedglDepthMask mask(state);
-      state->vtkglDepthMask(GL_TRUE);
-      state->vtkglClearDepth(1.0);
-      state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-    }
-    state->PopDrawFramebufferBinding();
-  }
+  // The opaque geometry's depth (rays end there).
+  this->CopyOpaqueDepth(viewport);
 
   // The proxy box (the union of the patches' boxes).
   double box[6] = { in.Bounds[0], in.Bounds[2], in.Bounds[4], in.Bounds[1], in.Bounds[3],
@@ -1091,132 +1465,10 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // Trimming: the nearest front faces and the farthest back faces.
-  if (trim)
+  if (trim && !this->RenderTrimmingDepths(program, dataToClip, viewport))
   {
-    if (this->GetNumberOfInputConnections(1) > 0)
-    {
-      this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
-    }
-    vtkPolyData* surface = vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
-    std::ostringstream key;
-    key << surface << ' ' << (surface ? surface->GetMTime() : 0);
-    if (key.str() != in.TrimKey)
-    {
-      std::vector<float> tri;
-      if (surface && surface->GetPolys())
-      {
-        vtkPoints* points = surface->GetPoints();
-        vtkCellArray* polys = surface->GetPolys();
-        const vtkIdType* ids;
-        vtkIdType n;
-        for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-        {
-          for (vtkIdType k = 1; k + 1 < n; ++k) // a fan (convex polygons)
-          {
-            for (vtkIdType v : { ids[0], ids[k], ids[k + 1] })
-            {
-              double x[3];
-              points->GetPoint(v, x);
-              tri.insert(tri.end(),
-                { static_cast<float>(x[0]), static_cast<float>(x[1]), static_cast<float>(x[2]) });
-            }
-          }
-        }
-      }
-      if (tri.empty())
-      {
-        in.Error = "the trimming surface has no polygons: nothing to render (remove it to "
-                   "render the whole volume)";
-        report();
-        return;
-      }
-      if (!in.TrimBuffer)
-      {
-        in.TrimBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-      }
-      in.TrimBuffer->Upload(tri, vtkOpenGLBufferObject::ArrayBuffer);
-      in.TrimVertices = static_cast<vtkIdType>(tri.size() / 3);
-      in.TrimArrayProgram = nullptr;
-      in.TrimKey = key.str();
-    }
-    vtkShaderProgram* trimProgram = window->GetShaderCache()->ReadyShaderProgram(
-      vtkLRSplineVolumeVS, vtkLRSplineVolumeTrimFS, "");
-    if (!trimProgram)
-    {
-      in.Error = "the trimming shader did not compile or link";
-      report();
-      return;
-    }
-    if (!in.TrimArray)
-    {
-      in.TrimArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-    }
-    if (in.TrimArrayProgram != trimProgram)
-    {
-      in.TrimArray->ShaderProgramChanged();
-      in.TrimArray->Bind();
-      in.TrimArray->AddAttributeArray(
-        trimProgram, in.TrimBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-      in.TrimArrayProgram = trimProgram;
-    }
-    SetMatrix(trimProgram, "lrMCDCMatrix", dataToClip);
-    for (int pass = 0; pass < 2; ++pass)
-    {
-      vtkSmartPointer<vtkTextureObject>& texture = in.TrimTextures[pass];
-      vtkSmartPointer<vtkOpenGLFramebufferObject>& fbo = in.TrimFramebuffers[pass];
-      if (!texture || static_cast<int>(texture->GetWidth()) != viewport[2] ||
-        static_cast<int>(texture->GetHeight()) != viewport[3])
-      {
-        if (texture)
-        {
-          texture->ReleaseGraphicsResources(window);
-        }
-        texture = vtkSmartPointer<vtkTextureObject>::New();
-        texture->SetContext(window);
-        texture->SetMinificationFilter(vtkTextureObject::Nearest);
-        texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-        texture->AllocateDepth(viewport[2], viewport[3], vtkTextureObject::Float32);
-        fbo = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
-        fbo->SetContext(window);
-        fbo->SaveCurrentBindingsAndBuffers();
-        fbo->Bind();
-        fbo->AddDepthAttachment(texture);
-        fbo->RestorePreviousBindingsAndBuffers();
-      }
-      fbo->SaveCurrentBindingsAndBuffers();
-      fbo->Bind();
-      fbo->DeactivateDrawBuffers();
-      fbo->DeactivateReadBuffer();
-      {
-        vtkOpenGLState::ScopedglViewport savedViewport(state);
-        vtkOpenGLState::ScopedglScissor savedScissor(state);
-        vtkOpenGLState::ScopedglColorMask savedColorMask(state);
-        vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-        vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
-        vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
-        vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
-        vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-        state->vtkglViewport(0, 0, viewport[2], viewport[3]);
-        state->vtkglScissor(0, 0, viewport[2], viewport[3]);
-        state->vtkglColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        state->vtkglDepthMask(GL_TRUE);
-        state->vtkglEnable(GL_DEPTH_TEST);
-        state->vtkglDisable(GL_BLEND);
-        // Front faces and back faces both: the orientation of the surface's
-        // polygons is not trusted; the nearest and farthest hits are kept.
-        state->vtkglDisable(GL_CULL_FACE);
-        state->vtkglClearDepth(pass == 0 ? 1.0 : 0.0);
-        state->vtkglClear(GL_DEPTH_BUFFER_BIT);
-        state->vtkglDepthFunc(pass == 0 ? GL_LESS : GL_GREATER);
-        in.TrimArray->Bind();
-        glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(in.TrimVertices));
-        in.TrimArray->Release();
-        state->vtkglClearDepth(1.0);
-      }
-      fbo->RestorePreviousBindingsAndBuffers();
-    }
-    // The ray caster's program again.
-    window->GetShaderCache()->ReadyShaderProgram(program, nullptr);
+    report();
+    return;
   }
 
   // Uniforms.
@@ -1233,47 +1485,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     static_cast<float>(box[5]) };
   program->SetUniform3f("lrBoxLo", boxLo);
   program->SetUniform3f("lrBoxHi", boxHi);
-  {
-    const int np = static_cast<int>(in.Patches.size());
-    std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
-    std::vector<int> blocks, starts, locators;
-    for (const PatchInfo& p : in.Patches)
-    {
-      lo.insert(lo.end(), p.Lo, p.Lo + 3);
-      hi.insert(hi.end(), p.Hi, p.Hi + 3);
-      edge.insert(edge.end(), p.Edge, p.Edge + 3);
-      offset.insert(offset.end(), p.Offset, p.Offset + 3);
-      boxLoP.insert(boxLoP.end(), p.BoxLo, p.BoxLo + 3);
-      boxHiP.insert(boxHiP.end(), p.BoxHi, p.BoxHi + 3);
-      blocks.insert(blocks.end(), p.Blocks, p.Blocks + 3);
-      starts.insert(starts.end(), p.Starts, p.Starts + 4);
-      locators.push_back(p.Locator);
-    }
-    auto set3f = [&](const char* name, std::vector<float>& v)
-    { program->SetUniform3fv(name, np, reinterpret_cast<const float(*)[3]>(v.data())); };
-    set3f("lrPatchLo", lo);
-    set3f("lrPatchHi", hi);
-    set3f("lrPatchEdge", edge);
-    for (int p = 0; p < np; ++p)
-    {
-      // GLSL matrices are column-major: the transpose of the row-major array.
-      float columns[9];
-      for (int r = 0; r < 3; ++r)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          columns[3 * c + r] = in.Patches[p].Inverse[3 * r + c];
-        }
-      }
-      program->SetUniformMatrix3x3(("lrPatchInverse[" + std::to_string(p) + "]").c_str(), columns);
-    }
-    set3f("lrPatchOffset", offset);
-    set3f("lrPatchBoxLo", boxLoP);
-    set3f("lrPatchBoxHi", boxHiP);
-    program->SetUniform1iv("lrPatchBlocks", 3 * np, blocks.data());
-    program->SetUniform1iv("lrPatchStarts", 4 * np, starts.data());
-    program->SetUniform1iv("lrPatchLocator", np, locators.data());
-  }
+  this->SetPatchUniforms(program);
 
   // Clipping planes, in data coordinates.
   {
@@ -1312,46 +1524,16 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // Sampling.
-  double diagonal = 0.0;
-  for (int d = 0; d < 3; ++d)
-  {
-    double e[3] = { 0, 0, 0 };
-    e[d] = box[d + 3] - box[d];
-    double w[3];
-    for (int r = 0; r < 3; ++r)
-    {
-      w[r] = dataToWorld->GetElement(r, 0) * e[0] + dataToWorld->GetElement(r, 1) * e[1] +
-        dataToWorld->GetElement(r, 2) * e[2];
-    }
-    diagonal += vtkMath::Dot(w, w);
-  }
-  diagonal = std::sqrt(diagonal);
-  const double sampleDistance = this->SampleDistance > 0 ? this->SampleDistance : diagonal / 100.0;
+  double sampleDistance = 0.0;
+  const int maxSteps = this->ComputeStepCount(vol, sampleDistance);
   program->SetUniformi("lrAdaptive", this->AdaptiveSteps ? 1 : 0);
   program->SetUniformf("lrStepScale", static_cast<float>(this->StepScale));
   program->SetUniformf("lrSampleDistance", static_cast<float>(sampleDistance));
-  int maxSteps = this->MaximumNumberOfSteps;
-  if (maxSteps <= 0)
-  {
-    // Automatic: the box's diagonal at the finest step, plus the gaps.
-    double dataDiagonal = 0.0;
-    for (int d = 0; d < 3; ++d)
-    {
-      dataDiagonal += (box[d + 3] - box[d]) * (box[d + 3] - box[d]);
-    }
-    dataDiagonal = std::sqrt(dataDiagonal);
-    const int maxDegree = std::max(in.Degree[0], std::max(in.Degree[1], in.Degree[2]));
-    const double steps = this->AdaptiveSteps
-      ? dataDiagonal / (this->StepScale * in.MinimumSide / (1 << maxDegree))
-      : diagonal / sampleDistance;
-    maxSteps = static_cast<int>(std::min(
-      1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
-  }
   // Mesa's llvmpipe ends a fragment's loops after 65,535 iterations in all
   // (about 4,000 samples with the element look-up): say so, once per
   // setting, when fixed steps need more (adaptive estimates are the worst
   // case, finest everywhere, and rarely reached).
-  if (!this->AdaptiveSteps && maxSteps > 4000 && maxSteps != this->WarnedSteps)
+  if (!multiPass && !this->AdaptiveSteps && maxSteps > 4000 && maxSteps != this->WarnedSteps)
   {
     // checked once per setting, not every frame
     this->WarnedSteps = maxSteps;
@@ -1365,7 +1547,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
                          "larger SampleDistance or adaptive steps");
     }
   }
-  program->SetUniformi("lrMaxSteps", maxSteps);
+  program->SetUniformi("lrMaxSteps", multiPass ? stepsPerPass : maxSteps);
   program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
 
   // Transfer function and lighting.
@@ -1432,33 +1614,14 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
       program, in.CubeBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
     in.CubeArrayProgram = program;
   }
+  in.Passes = 1;
+  if (multiPass && !this->DrawPasses(ren, program, dataToClip, viewport, stepsPerPass, maxSteps))
   {
-    vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-    vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
-    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
-    state->vtkglEnable(GL_CULL_FACE);
-    state->vtkglCullFace(GL_FRONT);
-    if (this->CountSamples)
-    {
-      state->vtkglDisable(GL_BLEND);
-    }
-    else
-    {
-      state->vtkglEnable(GL_BLEND);
-      state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    }
-    // The depth test is done by the rays (the opaque depth texture); the
-    // isosurfaces write their depth.
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_ALWAYS);
-    state->vtkglDepthMask(this->BlendMode == ISOSURFACE_BLEND ? GL_TRUE : GL_FALSE);
-    in.CubeArray->Bind();
-    glDrawArrays(GL_TRIANGLES, 0, 36);
-    in.CubeArray->Release();
-    state->vtkglCullFace(GL_BACK);
+    report();
+  }
+  else if (!multiPass)
+  {
+    this->DrawSinglePass();
   }
 
   in.HeadsBuffer.Deactivate();
@@ -1479,6 +1642,248 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // A good frame: a problem that comes back is reported again.
   in.Error.clear();
   in.ReportedError.clear();
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineVolumeMapper::GetNumberOfPasses()
+{
+  return this->Internals->Passes;
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineVolumeMapper::ComputeStepCount(vtkVolume* vol, double& sampleDistance)
+{
+  vtkInternals& in = *this->Internals;
+  const double box[6] = { in.Bounds[0], in.Bounds[2], in.Bounds[4], in.Bounds[1], in.Bounds[3],
+    in.Bounds[5] };
+  vtkMatrix4x4* dataToWorld = vol->GetMatrix();
+  // The box's diagonal in world units.
+  double diagonal = 0.0;
+  for (int d = 0; d < 3; ++d)
+  {
+    double e[3] = { 0, 0, 0 };
+    e[d] = box[d + 3] - box[d];
+    double w[3];
+    for (int r = 0; r < 3; ++r)
+    {
+      w[r] = dataToWorld->GetElement(r, 0) * e[0] + dataToWorld->GetElement(r, 1) * e[1] +
+        dataToWorld->GetElement(r, 2) * e[2];
+    }
+    diagonal += vtkMath::Dot(w, w);
+  }
+  diagonal = std::sqrt(diagonal);
+  sampleDistance = this->SampleDistance > 0 ? this->SampleDistance : diagonal / 100.0;
+  if (this->MaximumNumberOfSteps > 0)
+  {
+    return this->MaximumNumberOfSteps;
+  }
+  // Automatic: the box's diagonal at the finest step, plus the gaps.
+  double dataDiagonal = 0.0;
+  for (int d = 0; d < 3; ++d)
+  {
+    dataDiagonal += (box[d + 3] - box[d]) * (box[d + 3] - box[d]);
+  }
+  dataDiagonal = std::sqrt(dataDiagonal);
+  const int maxDegree = std::max(in.Degree[0], std::max(in.Degree[1], in.Degree[2]));
+  const double steps = this->AdaptiveSteps
+    ? dataDiagonal / (this->StepScale * in.MinimumSide / (1 << maxDegree))
+    : diagonal / sampleDistance;
+  return static_cast<int>(
+    std::min(1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineVolumeMapper::DrawPasses(vtkRenderer* ren, vtkShaderProgram* program,
+  vtkMatrix4x4* dataToClip, const int viewport[4], int stepsPerPass, int totalSteps)
+{
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderWindow* window = in.Window;
+  vtkOpenGLState* state = window->GetState();
+  const int w = viewport[2], h = viewport[3];
+  // Viewport-sized float targets (re-made when the viewport changes).
+  bool resized = false;
+  auto target = [&](vtkSmartPointer<vtkTextureObject>& t, int components)
+  {
+    if (!t)
+    {
+      t = vtkSmartPointer<vtkTextureObject>::New();
+      t->SetContext(window);
+      t->SetMinificationFilter(vtkTextureObject::Nearest);
+      t->SetMagnificationFilter(vtkTextureObject::Nearest);
+      t->SetWrapS(vtkTextureObject::ClampToEdge);
+      t->SetWrapT(vtkTextureObject::ClampToEdge);
+    }
+    if (!t->GetHandle() || static_cast<int>(t->GetWidth()) != w ||
+      static_cast<int>(t->GetHeight()) != h)
+    {
+      t->ReleaseGraphicsResources(window);
+      resized = true;
+      return t->Allocate2D(w, h, components, VTK_FLOAT);
+    }
+    return true;
+  };
+  bool ok = target(in.PassFinal[0], 4) && target(in.PassFinal[1], 1);
+  for (auto& set : in.PassState)
+  {
+    for (auto& t : set)
+    {
+      ok = ok && target(t, 4);
+    }
+  }
+  if (!ok)
+  {
+    in.Error = "the textures of the multi-pass continuation (" + std::to_string(w) + " x " +
+      std::to_string(h) + " pixels, 112 bytes each) could not be allocated";
+    return false;
+  }
+  if (resized || !in.PassFramebuffers[0])
+  {
+    state->PushDrawFramebufferBinding();
+    for (int k = 0; k < 2; ++k)
+    {
+      in.PassFramebuffers[k] = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      in.PassFramebuffers[k]->SetContext(window);
+      in.PassFramebuffers[k]->Bind(GL_DRAW_FRAMEBUFFER);
+      in.PassFramebuffers[k]->AddColorAttachment(0, in.PassFinal[0]);
+      in.PassFramebuffers[k]->AddColorAttachment(1, in.PassFinal[1]);
+      for (int j = 0; j < 3; ++j)
+      {
+        in.PassFramebuffers[k]->AddColorAttachment(2 + j, in.PassState[k][j]);
+      }
+    }
+    state->PopDrawFramebufferBinding();
+  }
+
+  // The passes: each resumes the rays the previous one left unfinished,
+  // until a pass draws nothing (every ray ended).
+  const float passViewport[4] = { 0.0f, 0.0f, static_cast<float>(w), static_cast<float>(h) };
+  program->SetUniform4f("lrViewport", passViewport);
+  GLuint query = 0;
+  glGenQueries(1, &query);
+  {
+    vtkOpenGLState::ScopedglViewport savedViewport(state);
+    vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedScissor(state, GL_SCISSOR_TEST);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+    state->PushDrawFramebufferBinding();
+    state->vtkglViewport(0, 0, w, h);
+    state->vtkglDisable(GL_BLEND);
+    state->vtkglDisable(GL_SCISSOR_TEST);
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglEnable(GL_CULL_FACE);
+    state->vtkglCullFace(GL_FRONT);
+    const GLfloat zero[4] = { 0, 0, 0, 0 };
+    const GLfloat one[4] = { 1, 1, 1, 1 };
+    // At most the passes the step count needs (plus the one that finds
+    // nothing left).
+    const int maxPasses = (totalSteps + stepsPerPass - 1) / stepsPerPass;
+    int pass = 0;
+    for (; pass < maxPasses; ++pass)
+    {
+      vtkOpenGLFramebufferObject* fbo = in.PassFramebuffers[pass % 2];
+      fbo->Bind(GL_DRAW_FRAMEBUFFER);
+      fbo->ActivateDrawBuffers(5);
+      // (also directly: the state cache may skip a second framebuffer's)
+      const GLenum buffers[5] = { GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+        GL_COLOR_ATTACHMENT3, GL_COLOR_ATTACHMENT4 };
+      glDrawBuffers(5, buffers);
+      // The state this pass writes starts inactive; the final targets are
+      // cleared once.
+      for (int b = pass == 0 ? 0 : 2; b < 5; ++b)
+      {
+        glClearBufferfv(GL_COLOR, b, b == 1 ? one : zero);
+      }
+      const vtkSmartPointer<vtkTextureObject>* read = in.PassState[(pass + 1) % 2];
+      for (int j = 0; j < 3; ++j)
+      {
+        read[j]->Activate();
+      }
+      program->SetUniformi("lrPass", pass);
+      // The last pass runs what is left of the samples per ray.
+      program->SetUniformi("lrMaxSteps", std::min(stepsPerPass, totalSteps - pass * stepsPerPass));
+      program->SetUniformi("lrLastPass", pass + 1 == maxPasses ? 1 : 0);
+      program->SetUniformi("lrStateColor", read[0]->GetTextureUnit());
+      program->SetUniformi("lrStateRay", read[1]->GetTextureUnit());
+      program->SetUniformi("lrStateExtra", read[2]->GetTextureUnit());
+      glBeginQuery(GL_ANY_SAMPLES_PASSED, query);
+      in.CubeArray->Bind();
+      glDrawArrays(GL_TRIANGLES, 0, 36);
+      in.CubeArray->Release();
+      glEndQuery(GL_ANY_SAMPLES_PASSED);
+      for (int j = 0; j < 3; ++j)
+      {
+        read[j]->Deactivate();
+      }
+      GLuint drawn = 0;
+      glGetQueryObjectuiv(query, GL_QUERY_RESULT, &drawn);
+      if (!drawn)
+      {
+        break;
+      }
+    }
+    in.Passes = std::min(pass + 1, maxPasses);
+    state->PopDrawFramebufferBinding();
+    state->vtkglCullFace(GL_BACK);
+  }
+  glDeleteQueries(1, &query);
+
+  // The final colors (and isosurface depths) into the render target.
+  const std::string vs = this->GetVertexShaderSource();
+  const std::string fs = vtkLRSplineVolumeCompositeFS;
+  vtkShaderProgram* composite =
+    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  if (!composite)
+  {
+    in.Error = "the final shader of the multi-pass continuation did not compile";
+    return false;
+  }
+  if (!in.CompositeArray)
+  {
+    in.CompositeArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+  }
+  if (in.CompositeArrayProgram != composite)
+  {
+    in.CompositeArray->ShaderProgramChanged();
+    in.CompositeArray->Bind();
+    in.CompositeArray->AddAttributeArray(
+      composite, in.CubeBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    in.CompositeArrayProgram = composite;
+  }
+  SetMatrix(composite, "lrMCDCMatrix", dataToClip);
+  const float viewportF[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
+    static_cast<float>(w), static_cast<float>(h) };
+  composite->SetUniform4f("lrViewport", viewportF);
+  composite->SetUniformi("lrWriteDepth", this->BlendMode == ISOSURFACE_BLEND ? 1 : 0);
+  in.PassFinal[0]->Activate();
+  in.PassFinal[1]->Activate();
+  composite->SetUniformi("lrFinalColor", in.PassFinal[0]->GetTextureUnit());
+  composite->SetUniformi("lrFinalDepth", in.PassFinal[1]->GetTextureUnit());
+  {
+    vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+    vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+    vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
+    state->vtkglEnable(GL_CULL_FACE);
+    state->vtkglCullFace(GL_FRONT);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    state->vtkglEnable(GL_DEPTH_TEST);
+    state->vtkglDepthFunc(GL_ALWAYS);
+    state->vtkglDepthMask(this->BlendMode == ISOSURFACE_BLEND ? GL_TRUE : GL_FALSE);
+    in.CompositeArray->Bind();
+    glDrawArrays(GL_TRIANGLES, 0, 36);
+    in.CompositeArray->Release();
+    state->vtkglCullFace(GL_BACK);
+  }
+  in.PassFinal[0]->Deactivate();
+  in.PassFinal[1]->Deactivate();
+  (void)ren;
+  // The main program is used again by the next frame: its uniforms are set
+  // every frame.
+  return true;
 }
 
 //------------------------------------------------------------------------------

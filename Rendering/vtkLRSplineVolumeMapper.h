@@ -7,11 +7,17 @@
  * visualization of locally refined spline volumes for scalar and vector
  * fields" (Computers & Graphics 2018), §3.2 and §4. A VTK volume mapper:
  * use it with a vtkVolume and a vtkVolumeProperty like any VTK volume mapper.
- * Its input is the output of vtkLRSplineReader (a vtkMultiBlockDataSet of
- * one VTK_BEZIER_HEXAHEDRON grid per patch, field mode; several patches per
- * file; the first patch containing a point wins, as in
+ * Its input is the output of vtkLRSplineReader or vtkIFEMReader (a
+ * vtkMultiBlockDataSet of one VTK_BEZIER_HEXAHEDRON grid per patch; several
+ * patches per file; the first patch containing a point wins, as in
  * vtkLRSplineProbeFilter), or one such grid, or anything
  * vtkLRSplineField::Build accepts (e.g. vtkLRSplineImageFitter's output).
+ * Curved (non-affine) geometry maps are rendered in physical space: each
+ * sample finds its element with a k-d forest over the elements' physical
+ * boxes and inverts the map by Newton's method in the shader (the GLSL of
+ * vtkLRSplineGeometryMap's inversion); affine ones use the field-mode path.
+ * Rational (NURBS) maps too: the shader divides by the weight, and fields on
+ * the rational basis are evaluated as sum B w f / sum B w.
  *
  * - **On the GPU once per data change** (§3.2): the Bernstein coefficients of
  *   every element (float), the element boxes, and the element search
@@ -59,9 +65,10 @@
  *   along each ray (a depth pre-pass of both; exact for surfaces that a ray
  *   enters and leaves once).
  *
- * Bad input (no scalars, a surface spline, rational data or patches read in
- * geometry mode, NaN coefficients, degrees above 3, an empty transfer
- * function) is an error naming the problem; nothing is drawn.
+ * Bad input (no scalars, a surface spline, rational data over a parameter box
+ * (field mode), NaN coefficients,
+ * degrees above 3, an empty transfer function) is an error naming the
+ * problem; nothing is drawn.
  *
  * Limits: degrees up to 3 per direction; at most 16 patches; the whole
  * spline on each rank in parallel (no ordered compositing of pieces).
@@ -88,10 +95,15 @@
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
+#include <vector> // for std::vector
 
+class vtkMatrix4x4;
+class vtkOpenGLRenderWindow;
 class vtkPolyData;
+class vtkShaderProgram;
 class vtkRenderer;
 class vtkVolume;
+class vtkVolumeProperty;
 class vtkWindow;
 
 class SPLINEVIZ_EXPORT vtkLRSplineVolumeMapper : public vtkAbstractVolumeMapper
@@ -267,12 +279,31 @@ public:
    * ray across the whole box at the finest step (adaptive: the smallest
    * element's step times StepScale; fixed: SampleDistance), so that the step
    * count cuts no ray short; a positive value caps the work per pixel (rays
-   * stop there). On Mesa's llvmpipe a fragment's loops end after 65,535
-   * iterations in all, about 4,000 samples: longer rays are cut short
-   * whatever this says (a warning says so for fixed steps).
+   * stop there). Rays longer than MaximumStepsPerPass samples continue in
+   * further passes (Mesa's llvmpipe ends a fragment's loops after 65,535
+   * iterations in all, about 4,000 samples per pass).
    */
   vtkSetClampMacro(MaximumNumberOfSteps, int, 0, VTK_INT_MAX);
   vtkGetMacro(MaximumNumberOfSteps, int);
+  ///@}
+
+  ///@{
+  /**
+   * Samples per ray and rendering pass. Rays that need more (the number of
+   * samples of MaximumNumberOfSteps, or its automatic estimate) are
+   * continued in further passes: the ray state (position, previous sample,
+   * accumulated color and opacity) is kept in viewport-sized float textures
+   * (7 x 16 bytes per pixel while passes are needed) and each pass resumes
+   * the unfinished rays, until none is left; then the final colors are drawn.
+   * So every step setting renders completely, also where a shader's loops
+   * are capped (Mesa's llvmpipe: 65,535 iterations per invocation). 0
+   * (default): automatic, 2000 samples (400 on curved geometry, whose
+   * samples run Newton's method). Not used with CountSamples.
+   */
+  vtkSetClampMacro(MaximumStepsPerPass, int, 0, VTK_INT_MAX);
+  vtkGetMacro(MaximumStepsPerPass, int);
+  /// Rendering passes of the last frame (1 without continuation).
+  int GetNumberOfPasses();
   ///@}
 
   ///@{
@@ -345,6 +376,7 @@ protected:
   int ShadingModel = PHONG;
   int IsosurfaceBisections = 16;
   int MaximumNumberOfSteps = 0;
+  int MaximumStepsPerPass = 0;
   bool CountSamples = false;
   int WarnedSteps = 0; // the step count last checked against llvmpipe's loop limit
 
@@ -354,6 +386,36 @@ private:
 
   // vtkErrorMacro for the current error unless it was reported already.
   void ReportError();
+
+  // The steps of Render(), each false with the error set when it fails:
+  // the spline's arrays to the GPU (once per change); the transfer function
+  // as a texture; the iso values (isosurface blending); the empty-space
+  // skipping flags of the elements (per transfer function and blend mode).
+  bool UploadSpline(vtkOpenGLRenderWindow* window);
+  bool UpdateTransferFunction(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property);
+  bool CollectIsoValues(vtkVolumeProperty* property, std::vector<float>& isoValues);
+  bool UpdateEmptySpaceSkipping(vtkOpenGLRenderWindow* window, vtkVolumeProperty* property,
+    const std::vector<float>& isoValues);
+  // The depth of the opaque geometry drawn so far into a texture.
+  void CopyOpaqueDepth(const int viewport[4]);
+  // The uniforms of the patches.
+  void SetPatchUniforms(vtkShaderProgram* program);
+  // The trimming surface's nearest front and farthest back depths (§4.1);
+  // `program` is made current again.
+  bool RenderTrimmingDepths(
+    vtkShaderProgram* program, vtkMatrix4x4* dataToClip, const int viewport[4]);
+
+  // Samples per ray (MaximumNumberOfSteps or the automatic estimate) and the
+  // fixed step (world units) for the volume's placement.
+  int ComputeStepCount(vtkVolume* vol, double& sampleDistance);
+
+  // The rays in one pass into the current draw framebuffer.
+  void DrawSinglePass();
+  // The rays in passes (continuation, see MaximumStepsPerPass; at most
+  // totalSteps samples per ray) into the current draw framebuffer; false
+  // (error set) when a GPU resource failed.
+  bool DrawPasses(vtkRenderer* ren, vtkShaderProgram* program, vtkMatrix4x4* dataToClip,
+    const int viewport[4], int stepsPerPass, int totalSteps);
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

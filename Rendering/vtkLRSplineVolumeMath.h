@@ -57,6 +57,11 @@ namespace
 using real = float;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
+using mat3 = glm::mat3;
+using glm::clamp;
+using glm::inverse;
+using std::abs;
+using std::max;
 using ivec3 = glm::ivec3;
 using uint = std::uint32_t;
 using std::floor;

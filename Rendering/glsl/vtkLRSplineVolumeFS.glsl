@@ -47,6 +47,13 @@ uniform vec3 lrPatchBoxHi[LR_MAX_PATCHES];
 uniform int lrPatchBlocks[3 * LR_MAX_PATCHES]; // forest resolution (3 per patch)
 uniform int lrPatchStarts[4 * LR_MAX_PATCHES]; // heads, nodes, octree, first element
 uniform int lrPatchLocator[LR_MAX_PATCHES];  // 0: forest (k-d tree, texture), 1: octree
+#if LR_CURVED
+// 1: a curved geometry map (lrPatchLo/Hi: the physical domain of its forest;
+// the element boxes are physical, their fourth hi value the shortest side;
+// the geometry's coefficients follow the field's per element).
+uniform int lrPatchCurved[LR_MAX_PATCHES];
+uniform float lrMinimumSide; // the smallest element's shortest side (data units)
+#endif
 
 uniform usamplerBuffer lrHeads;
 uniform usamplerBuffer lrNodeWords;
@@ -93,6 +100,21 @@ uniform float lrIsoValues[8];
 uniform int lrNumberOfIsoValues;
 uniform int lrBisections;
 
+#if LR_MULTIPASS
+// Continuation (rays longer than one pass's loop budget, lrMaxSteps samples):
+// each pass resumes every unfinished ray from the state the previous pass
+// wrote (viewport-sized textures, ping-pong) and writes the new state; a ray
+// that ends writes its final color (premultiplied) and depth once.
+// Outputs: 0 final color, 1 final depth, 2 accumulated color, 3 ray state
+// (t, previous t, previous value, flags: 1 active, 2 previous valid, 4
+// found), 4 (previous gradient, extreme or first isosurface depth).
+uniform int lrPass;
+uniform int lrLastPass; // 1: the samples per ray are used up after this pass
+uniform sampler2D lrStateColor;
+uniform sampler2D lrStateRay;
+uniform sampler2D lrStateExtra;
+#endif
+
 uint lrHead(int i)
 {
   return texelFetch(lrHeads, i).x;
@@ -125,6 +147,103 @@ bool lrCurrentSkip = false; // the element adds nothing (empty-space skipping)
 int lrSamples = 0;
 float lrWorldPerData = 1.0; // world length of a data unit along the ray
 
+#if LR_CURVED
+int lrCurrentElement = -1;    // curved patches: the element (global index)
+vec3 lrCurrentS = vec3(0.5);  // and the local coordinates of the previous sample
+mat3 lrCurrentJinv = mat3(1.0);
+float lrCurrentW = 1.0;        // the weight and its derivatives (rational maps)
+vec3 lrCurrentDW = vec3(0.0);
+float lrCurrentSide = 0.0;
+
+// Is x in curved element e (global index) of patch p? Newton from `seed`;
+// on success the element becomes the current one.
+bool lrTryCurved(int p, int e, vec3 x, vec3 seed)
+{
+  vec4 lo = texelFetch(lrBoxes, 2 * e);
+  vec4 hi = texelFetch(lrBoxes, 2 * e + 1);
+  vec3 tol = 1e-5 * (hi.xyz - lo.xyz);
+  if (any(lessThan(x, lo.xyz - tol)) || any(greaterThan(x, hi.xyz + tol)))
+  {
+    return false;
+  }
+  int offset = int(texelFetch(lrOffsets, e).x);
+  int geometry = offset + (LR_DU + 1) * (LR_DV + 1) * (LR_DW + 1) * LR_NC;
+  vec3 s = seed;
+  mat3 jinv;
+  float w;
+  vec3 dw;
+  if (!lrInvert(geometry, LR_DU, LR_DV, LR_DW, x, 1e-4, s, jinv, w, dw))
+  {
+    return false;
+  }
+  lrCurrentW = w;
+  lrCurrentDW = dw;
+  lrCurrentPatch = p;
+  lrCurrentElement = e;
+  lrCurrentOffset = offset;
+  lrCurrentS = s;
+  lrCurrentJinv = jinv;
+  lrCurrentSide = hi.w;
+  lrCurrentSkip = false;
+  return true;
+}
+
+// The element of curved patch p containing physical point x: the previous
+// sample's, else the candidates of the k-d forest over the physical boxes
+// (a leaf or a list leaf: word (3 << 29) | count, then the elements).
+bool lrFindCurved(int p, vec3 x)
+{
+  if (lrCurrentPatch == p && lrCurrentElement >= 0 &&
+    lrTryCurved(p, lrCurrentElement, x, lrCurrentS))
+  {
+    return true;
+  }
+  ivec4 starts = ivec4(lrPatchStarts[4 * p], lrPatchStarts[4 * p + 1], lrPatchStarts[4 * p + 2],
+    lrPatchStarts[4 * p + 3]);
+  ivec3 blocks = ivec3(lrPatchBlocks[3 * p], lrPatchBlocks[3 * p + 1], lrPatchBlocks[3 * p + 2]);
+  vec3 lo = lrPatchLo[p];
+  vec3 hi = lrPatchHi[p];
+  ivec3 b;
+  for (int d = 0; d < 3; ++d)
+  {
+    int i = int(floor((x[d] - lo[d]) / (hi[d] - lo[d]) * float(blocks[d])));
+    b[d] = clamp(i, 0, blocks[d] - 1);
+  }
+  uint w = lrHead(starts.x + (b.z * blocks.y + b.y) * blocks.x + b.x);
+  int index = -1;
+  for (int steps = 0; steps < 64 && (w & LR_LEAF) == 0u; ++steps)
+  {
+    index = int(w);
+    uint node = lrNodeWord(starts.y + index);
+    if ((node & LR_LEAF) != 0u || ((node >> 29u) & 3u) == 3u)
+    {
+      w = node;
+      break;
+    }
+    int dir = int((node >> 29u) & 3u);
+    w = x[dir] < lrNodeSplit(starts.y + index) ? (node & LR_CHILD_MASK) : uint(index + 1);
+  }
+  if ((w & LR_LEAF) != 0u)
+  {
+    return w != LR_NO_ELEMENT && lrTryCurved(p, int(w & LR_ELEMENT_MASK) + starts.w, x, vec3(0.5));
+  }
+  if (((w >> 29u) & 3u) != 3u)
+  {
+    return false;
+  }
+  int count = int(w & LR_CHILD_MASK);
+  for (int k = 1; k <= count; ++k)
+  {
+    int e = int(lrNodeWord(starts.y + index + k) & LR_ELEMENT_MASK);
+    if (lrTryCurved(p, e + starts.w, x, vec3(0.5)))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+#endif
+
 // The field's value (component LR_COMPONENT, or the magnitude) and its
 // derivatives with respect to the local coordinates.
 float lrValue(int offset, vec3 s, out vec3 grad)
@@ -156,6 +275,24 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
   vec3 u = vec3(0.0);
   for (int q = 0; q < LR_PATCHES; ++q)
   {
+#if LR_CURVED
+    if (lrPatchCurved[q] != 0)
+    {
+      if (lrFindCurved(q, x))
+      {
+        // The field at the inverted point (its coefficients are w f: f =
+        // F / W, as the weights are positive also for the magnitude);
+        // d/dx = (d/ds) (dx/ds)^-1.
+        vec3 gs;
+        value = lrValue(lrCurrentOffset, lrCurrentS, gs) / lrCurrentW;
+        gs = (gs - value * lrCurrentDW) / lrCurrentW;
+        gradient = gs * lrCurrentJinv;
+        minSide = lrCurrentSide;
+        return true;
+      }
+      continue;
+    }
+#endif
     // Points within a rounding tolerance of the domain count as inside and
     // are moved onto it (ray ends computed on the box faces).
     vec3 uq = lrPatchInverse[q] * (x - lrPatchOffset[q]);
@@ -185,6 +322,9 @@ bool lrSample(vec3 x, out float value, out vec3 gradient, out float minSide)
     }
     e += starts.w;
     lrCurrentPatch = p;
+#if LR_CURVED
+    lrCurrentElement = -1;
+#endif
     vec4 lo = texelFetch(lrBoxes, 2 * e);
     lrCurrentLo = lo.xyz;
     lrCurrentSkip = lo.w > 0.5;
@@ -384,8 +524,33 @@ void main()
   float value;
   vec3 gradient;
   float minSide;
+  float hitDepth = 1.0; // window depth of the first isosurface
+  bool done = false;    // the ray has ended (not cut by the step budget)
+  bool resume = false;
+#if LR_MULTIPASS
+  if (lrPass > 0)
+  {
+    vec4 ray = texelFetch(lrStateRay, pixel, 0);
+    int flags = int(ray.w + 0.5);
+    if ((flags & 1) == 0)
+    {
+      discard; // ended in an earlier pass (or never started)
+    }
+    vec4 extra = texelFetch(lrStateExtra, pixel, 0);
+    result = texelFetch(lrStateColor, pixel, 0);
+    t = ray.x;
+    prevT = ray.y;
+    prevValue = ray.z;
+    prevValid = (flags & 2) != 0;
+    found = (flags & 4) != 0;
+    prevGradient = extra.xyz;
+    extreme = extra.w;
+    hitDepth = extra.w;
+    resume = true;
+  }
+#endif
   // A random start within the first step (VTK's jittering).
-  if (lrJitter > 0.0)
+  if (lrJitter > 0.0 && !resume)
   {
     float r = fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
     if (lrSample(origin + t * dir, value, gradient, minSide))
@@ -415,6 +580,7 @@ void main()
       }
       if (result.a > 0.99)
       {
+        done = true;
         break;
       }
 #elif LR_BLEND == 5
@@ -477,12 +643,16 @@ void main()
         {
           found = true;
           vec4 clip = lrMCDCMatrix * vec4(origin + roots[k] * dir, 1.0);
-          gl_FragDepth = 0.5 * (gl_DepthRange.diff * (clip.z / clip.w) + gl_DepthRange.near +
+          hitDepth = 0.5 * (gl_DepthRange.diff * (clip.z / clip.w) + gl_DepthRange.near +
             gl_DepthRange.far);
+#if !LR_MULTIPASS
+          gl_FragDepth = hitDepth;
+#endif
         }
       }
       if (result.a > 0.99)
       {
+        done = true;
         break;
       }
 #endif
@@ -503,6 +673,7 @@ void main()
     prevT = t;
     if (last)
     {
+      done = true;
       break;
     }
     float eps = 1e-6 * (t1 - t0);
@@ -518,12 +689,34 @@ void main()
     else
     {
       t = valid ? t + max(lrStep(minSide), eps) : lrNextEntry(origin, dir, t, 10.0 * eps);
+#if LR_CURVED
+      // A curved patch does not fill its box: outside points inside the
+      // boxes advance by the finest step.
+      if (!valid)
+      {
+        t = max(t, prevT + max(lrStep(lrMinimumSide), eps));
+      }
+#endif
     }
     if (t > 1e29)
     {
+      done = true;
       break;
     }
   }
+#if LR_MULTIPASS
+  if (!done && lrLastPass == 0)
+  {
+    // Cut by this pass's budget: the state for the next pass.
+    gl_FragData[0] = vec4(0.0);
+    gl_FragData[1] = vec4(1.0);
+    gl_FragData[2] = result;
+    gl_FragData[3] = vec4(t, prevT, prevValue,
+      float(1 + (prevValid ? 2 : 0) + (found ? 4 : 0)));
+    gl_FragData[4] = vec4(prevGradient, LR_BLEND == 5 ? hitDepth : extreme);
+    return;
+  }
+#endif
 #if LR_SAMPLE_COUNT
   // The number of spline evaluations, as a 24-bit integer in RGB.
   gl_FragData[0] = vec4(float(lrSamples % 256) / 255.0, float((lrSamples / 256) % 256) / 255.0,
@@ -548,5 +741,14 @@ void main()
   {
     discard;
   }
+#if LR_MULTIPASS
+  // Ended in this pass: its final color and depth; the state says inactive.
+  gl_FragData[0] = result;
+  gl_FragData[1] = vec4(hitDepth);
+  gl_FragData[2] = vec4(0.0);
+  gl_FragData[3] = vec4(0.0);
+  gl_FragData[4] = vec4(0.0);
+#else
   gl_FragData[0] = result; // premultiplied: blended as src + (1 - src.a) dst
+#endif
 }

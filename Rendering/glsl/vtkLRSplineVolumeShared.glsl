@@ -201,3 +201,57 @@ real lrEvaluate(int offset, int du, int dv, int dw, int nc, int comp, vec3 s, SV
   grad = vec3(acc[1], acc[2], acc[3]);
   return acc[0];
 }
+
+// The geometry map of a curved element (homogeneous coefficients, 4
+// components (w x, w y, w z, w) at `offset`, degrees du, dv, dw): x(s) =
+// X(s) / W(s) and its Jacobian J (column j: d x / d s_j); W and dW the
+// weight and its derivatives (1 and 0 for a polynomial map).
+vec3 lrMap(int offset, int du, int dv, int dw, vec3 s, SV_OUT(mat3) J, SV_OUT(real) W,
+  SV_OUT(vec3) dW)
+{
+  vec3 g0;
+  vec3 g1;
+  vec3 g2;
+  real x0 = lrEvaluate(offset, du, dv, dw, 4, 0, s, g0);
+  real x1 = lrEvaluate(offset, du, dv, dw, 4, 1, s, g1);
+  real x2 = lrEvaluate(offset, du, dv, dw, 4, 2, s, g2);
+  W = lrEvaluate(offset, du, dv, dw, 4, 3, s, dW);
+  vec3 x = vec3(x0, x1, x2) / W;
+  g0 = (g0 - x[0] * dW) / W;
+  g1 = (g1 - x[1] * dW) / W;
+  g2 = (g2 - x[2] * dW) / W;
+  J = mat3(vec3(g0[0], g1[0], g2[0]), vec3(g0[1], g1[1], g2[1]), vec3(g0[2], g1[2], g2[2]));
+  return x;
+}
+
+// The local coordinates s of physical point x in a curved element (the
+// inversion of vtkLRSplineGeometryMap in single precision): Newton from s
+// (the previous sample's, or the centre, whose first step is the element's
+// linear approximation), steps kept within [-0.5, 1.5]^3. True when it
+// converged inside [0, 1]^3 (up to `tol`); s is then clamped, and Jinv,
+// W and dW are the inverse Jacobian and the weight at the last iterate.
+bool lrInvert(int offset, int du, int dv, int dw, vec3 x, real tol, SV_INOUT(vec3) s,
+  SV_OUT(mat3) Jinv, SV_OUT(real) W, SV_OUT(vec3) dW)
+{
+  mat3 J;
+  bool converged = false;
+  for (int it = 0; it < 10; ++it)
+  {
+    vec3 r = lrMap(offset, du, dv, dw, s, J, W, dW) - x;
+    Jinv = inverse(J);
+    vec3 d = Jinv * r;
+    s = clamp(s - d, vec3(-0.5, -0.5, -0.5), vec3(1.5, 1.5, 1.5));
+    if (max(abs(d[0]), max(abs(d[1]), abs(d[2]))) < 1e-5)
+    {
+      converged = true;
+      break;
+    }
+  }
+  if (!converged || s[0] < -tol || s[1] < -tol || s[2] < -tol || s[0] > 1.0 + tol ||
+    s[1] > 1.0 + tol || s[2] > 1.0 + tol)
+  {
+    return false;
+  }
+  s = clamp(s, vec3(0.0, 0.0, 0.0), vec3(1.0, 1.0, 1.0));
+  return true;
+}

@@ -1,8 +1,11 @@
 // The independent reference for vtkLRSplineVolumeMapper: a CPU ray caster
 // that evaluates the LR spline exactly in double precision with
 // vtkLRSplineField (the CPU element search and Bezier evaluation, tested on
-// their own against the LR B-spline definition), at uniform steps (ten times
-// finer than the mapper's finest adaptive step), with the transfer functions
+// their own against the LR B-spline definition) or with any evaluator of the
+// same interface (Render is a template: lrtest::PhysicalField, written
+// independently for curved geometry, or an analytic field), at uniform steps
+// (ten times finer than the mapper's finest adaptive step unless a test says
+// otherwise), with the transfer functions
 // evaluated from the vtkColorTransferFunction / vtkPiecewiseFunction
 // themselves (not a table), VTK's opacity correction 1 - (1 - a)^(step /
 // unit distance) and front-to-back compositing; isosurfaces by bracketing at
@@ -167,8 +170,9 @@ struct View
 
 /// The scalar the mapper renders from the field's value(s) and its gradient
 /// (data coordinates).
-inline double Scalar(const vtkLRSplineField& field, int component, const double* value,
-  const double* gradient, double grad[3])
+template <class Field>
+inline double Scalar(
+  const Field& field, int component, const double* value, const double* gradient, double grad[3])
 {
   const int nc = field.GetNumberOfComponents();
   if (nc == 1 || component >= 0)
@@ -199,9 +203,11 @@ inline double Scalar(const vtkLRSplineField& field, int component, const double*
 }
 
 /// The CPU reference rendering of `field` as `vol` (its property) is seen by
-/// `view`.
-inline Image Render(
-  const vtkLRSplineField& field, vtkVolume* vol, const View& view, const Settings& settings)
+/// `view`. Field: vtkLRSplineField, or an independent evaluator with the same
+/// GetBounds, GetNumberOfComponents and EvaluateWithHint (e.g.
+/// lrtest::PhysicalField for curved geometry).
+template <class Field>
+inline Image Render(const Field& field, vtkVolume* vol, const View& view, const Settings& settings)
 {
   Image image;
   image.Width = view.Width;

@@ -1,0 +1,123 @@
+/**
+ * @class   vtkLRSplineGeometryMap
+ * @brief   The geometry map x(u) of an isoparametric LR-spline patch and its inverse: the element
+ * and the parameter of a physical point.
+ *
+ * Plain C++ (not a vtkObject), the one inversion used by vtkLRSplineEvaluator
+ * (probing, resampling and tracing on curved geometry) and by the volume
+ * mapper's CPU side. Built from a geometry-mode grid of vtkLRSplineReader or
+ * vtkIFEMReader (VTK_BEZIER_HEXAHEDRON cells whose points are the geometry's
+ * Bezier control points, "RationalWeights" where rational, "LRParameterBox"),
+ * it keeps per element the Bezier coefficients (x, y, z), or, rational, the
+ * homogeneous (w x, w y, w z, w), and the box of the control points, which
+ * contains the element (convex hull property; the weights are positive).
+ *
+ * Inversion of x (Invert): the k-d forest of vtkLRSplineElementLocator over
+ * the physical boxes (SetAllowOverlap: curved elements' boxes overlap; list
+ * leaves) gives the candidate elements; in each, Newton's method on the
+ * element's Bezier map s -> x(s), s in local coordinates [0, 1]^3, started
+ * from the element's linear approximation (the tangent map at its centre)
+ * and, failing that, from its centre and corners, with a backtracking line
+ * search on |x(s) - x|. Converged when the Newton step is below
+ * ConvergenceTolerance (local coordinates; the parameter error is at most
+ * that times the element's side) with a residual below 1e-9 of the element's
+ * size. A point is inside an element when its solution lies in [0, 1]^3 up
+ * to InsideTolerance; inside no candidate means outside the geometry.
+ *
+ * IsAffine(): every element's map is the same affine map of the parameter
+ * (equal weights, control points at the affine images of the Bezier points
+ * of the identity), within 1e-12 of the patch size; then x = A u + b is
+ * exact and the callers keep their fast affine paths.
+ *
+ * Limits: volumes (hexahedra) only; degrees up to vtkLRSplineBezierVolume's.
+ * Thread-safe (const) after Build().
+ */
+
+#ifndef vtkLRSplineGeometryMap_h
+#define vtkLRSplineGeometryMap_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkLRSplineBezierVolume.h"
+#include "vtkLRSplineElementLocator.h"
+
+#include <string>
+#include <vector>
+
+class vtkUnstructuredGrid;
+
+class SPLINEVIZ_EXPORT vtkLRSplineGeometryMap
+{
+public:
+  /// Newton's convergence in local coordinates.
+  static constexpr double ConvergenceTolerance = 1e-13;
+  /// How far outside [0, 1]^3 (local) a solution still counts as inside.
+  static constexpr double InsideTolerance = 1e-9;
+
+  /**
+   * Build from a geometry-mode grid (see the class comment); `blocks` the k-d
+   * forest resolution (null: automatic). False with a message otherwise.
+   */
+  bool Build(vtkUnstructuredGrid* grid, const int blocks[3], std::string* error);
+
+  vtkIdType GetNumberOfElements() const { return this->Volume.GetNumberOfElements(); }
+  bool IsRational() const { return this->Rational; }
+  /// Bezier coefficients: (x, y, z), or (w x, w y, w z, w) when rational.
+  const vtkLRSplineBezierVolume& GetVolume() const { return this->Volume; }
+  /// The locator over the physical boxes.
+  const vtkLRSplineElementLocator& GetLocator() const { return this->Locator; }
+  /// Physical box of element e (lo xyz, hi xyz).
+  const double* GetPhysicalBox(vtkIdType e) const { return this->Locator.GetBox(e); }
+  /// Parameter box of element e (lo uvw, hi uvw).
+  const double* GetParameterBox(vtkIdType e) const { return this->Volume.GetBox(e); }
+  /// Bounds of all control points (VTK order).
+  void GetBounds(double bounds[6]) const;
+
+  /// True when the map is one affine map x = A u + b (A row-major).
+  bool IsAffine() const { return this->Affine; }
+  void GetAffineMap(double A[9], double b[3]) const;
+
+  /**
+   * x(s) at local coordinates s of element e and (J may be null) the
+   * Jacobian J[3 i + j] = d x_i / d s_j.
+   */
+  void Map(vtkIdType e, const double s[3], double x[3], double J[9]) const;
+
+  /// The rational weight W(s) and d W / d s (1 and 0 when polynomial).
+  void Weight(vtkIdType e, const double s[3], double& W, double dW[3]) const;
+
+  /**
+   * The local coordinates s of x in element e (Newton, see the class
+   * comment; `seed` may be null). True when x lies in the element (s is then
+   * clamped to [0, 1]^3); false when it does not or Newton did not converge
+   * (s is then the last iterate).
+   */
+  bool InvertInElement(vtkIdType e, const double x[3], double s[3], const double* seed = nullptr,
+    int* iterations = nullptr) const;
+
+  /**
+   * The element containing x and its local coordinates s, or -1 when x is
+   * outside the geometry. `hint` (may be -1) is tried first.
+   */
+  vtkIdType Invert(const double x[3], double s[3], vtkIdType hint = -1) const;
+
+  /// The parameter point of local coordinates s in element e.
+  void LocalToParameter(vtkIdType e, const double s[3], double u[3]) const;
+
+  /// Shortest edge of element e in physical units (the chords of its edges).
+  double GetElementMinimumSide(vtkIdType e) const;
+
+private:
+  bool Newton(vtkIdType e, const double x[3], double s[3], int* iterations) const;
+  void DetectAffine();
+
+  vtkLRSplineBezierVolume Volume;
+  vtkLRSplineElementLocator Locator;
+  std::vector<double> Size; // per element: diagonal of its physical box
+  bool Rational = false;
+  bool Affine = false;
+  double AffineA[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };
+  double AffineB[3] = { 0, 0, 0 };
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkLRSplineGeometryMap.h
