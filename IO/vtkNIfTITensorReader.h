@@ -6,8 +6,9 @@
  * What DIPY (`TensorModel`, `save_nifti`), FSL (`dtifit --save_tensor`) and
  * other diffusion MRI tools write, read for the superquadric glyphs
  * (vtkSuperquadricGlyphMapper), vtkTensorAnalysisFilter and
- * vtkTensorLineTracer. The voxels are read by VTK's own vtkNIFTIImageReader
- * (byte order, gzip, NIfTI-1 and -2); this class interprets them.
+ * vtkTensorLineTracer. The file is read by SplineViz's own NIfTI layer
+ * (vtkNIfTIFile: NIfTI-1 and -2, either byte order, .nii, .nii.gz and
+ * .hdr/.img pairs, every header field validated before it is used).
  *
  * **Components** (TensorLayout, the vtkSplineVizTensorMath layouts): 6
  * components of a symmetric tensor or 9 of a full one (row-major,
@@ -73,12 +74,13 @@
  *
  * Piece requests: the reader produces the requested sub-extent
  * (CAN_PRODUCE_SUB_EXTENT), so ParaView's parallel pipeline splits the
- * volume; each piece reads the whole file and keeps its part (VTK 9.2's
- * vtkNIFTIImageReader returns the mirrored slab for sub-extents of files it
- * stores in reverse slice order, and a .nii.gz is decompressed whole anyway). Bad input (no file,
- * not NIfTI, a truncated file, a volume without 6 or 9 components, more than 2^31 voxels, a missing
- * qform/sform asked for, a singular affine, unreadable companions) is an error (vtkErrorMacro,
- * RequestInformation/RequestData return 0) with an empty output.
+ * volume; each piece reads only its slices (a .nii.gz is decompressed to its
+ * end, to check its integrity). Bad input (no file, not NIfTI, a header
+ * field out of range, a truncated or damaged file, complex or RGB voxels, a
+ * volume without 6 or 9 components, a missing qform/sform asked for, a
+ * singular affine, sizes beyond this machine's memory, unreadable
+ * companions) is an error (vtkErrorMacro, RequestInformation/RequestData
+ * return 0) with an empty output; vtkNIfTIFile lists every check.
  */
 
 #ifndef vtkNIfTITensorReader_h
@@ -98,7 +100,7 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The NIfTI file (.nii, .nii.gz; .hdr/.img pairs through VTK's reader too).
+  /// The NIfTI file (.nii, .nii.gz, or either file of a .hdr/.img pair).
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
   ///@}
@@ -173,7 +175,7 @@ public:
   /// The point array a companion file becomes: its name without .nii / .nii.gz / .img / .hdr.
   static std::string CompanionArrayName(const std::string& fileName);
 
-  /// Is this a NIfTI-1/2 (or Analyze) file VTK can read?
+  /// Is this a valid NIfTI-1/2 file with 6 or 9 tensor components in its 4th or 5th dimension?
   static int CanReadFile(const char* fileName);
 
   /// The message of the last error (empty when the last read succeeded).
