@@ -836,7 +836,16 @@ int vtkTractogramReader::RequestData(
           float* dst = pf + 3 * (o + j);
           for (int r = 0; r < 3; ++r)
           {
-            dst[r] = static_cast<float>(a[r][0] * x[0] + a[r][1] * x[1] + a[r][2] * x[2] + a[r][3]);
+            const double y = a[r][0] * x[0] + a[r][1] * x[1] + a[r][2] * x[2] + a[r][3];
+            if (!(std::abs(y) <= std::numeric_limits<float>::max()))
+            {
+              // beyond float32 after the voxel-mm to RAS+ map (a voxel size
+              // near 0, a huge vox_to_ras): as unusable as a NaN
+              vtkIdType expected = -1;
+              badLine.compare_exchange_strong(expected, static_cast<vtkIdType>(s));
+              return;
+            }
+            dst[r] = static_cast<float>(y);
           }
           for (std::size_t k = 0; k < pointTargets.size(); ++k)
           {
@@ -886,7 +895,8 @@ int vtkTractogramReader::RequestData(
   if (badLine.load() >= 0)
   {
     return fail(where + "streamline " + std::to_string(badLine.load()) +
-      " has NaN or infinite coordinates (a damaged file)");
+      " has NaN or infinite coordinates, in the file or after the voxel-mm to RAS+ map (a damaged "
+      "file or header)");
   }
   lines.Data.clear();
 

@@ -124,6 +124,10 @@ int TestTractogramBadInput(int, char*[])
     n.AddStreamline(2, { 1, 2, 3, 0.5f, nan, 5, 6, 0.6f }, { 9 });
     n.AddStreamline(1, { 7, 8, 9, 0.7f }, { 10 });
     cases.push_back({ "trk NaN coordinates", n.Bytes(), ".trk", "NaN or infinite coordinates" });
+    TrkFile tiny = t; // finite points, but beyond float32 once divided by the voxel size
+    tiny.VoxelSize[0] = 1e-38f;
+    cases.push_back(
+      { "trk voxel size 1e-38", tiny.Bytes(), ".trk", "after the voxel-mm to RAS+ map" });
     n.VoxelSize[1] = 0;
     cases.push_back({ "trk zero voxel size", n.Bytes(), ".trk", "voxel size" });
   }
