@@ -386,7 +386,9 @@ int vtkNIfTITensorReader::RequestData(
   vtkSmartPointer<vtkDataArray> tensors = in.ComputeTensors(raw, ext, this->TensorArrayName);
   if (!tensors)
   {
-    return fail("the output tensors would not fit in this machine's memory");
+    return fail("\"" + std::string(this->FileName) +
+      "\": the tensors would not fit in this "
+      "machine's memory");
   }
   raw = vtkNIfTIFile::Voxels();
   output->GetPointData()->SetTensors(tensors);

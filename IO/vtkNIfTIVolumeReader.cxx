@@ -303,7 +303,7 @@ int vtkNIfTIVolumeReader::RequestData(
   if (!vtkSplineVizProgress::CheckOutputSize(static_cast<double>(n) * in.Components,
         vtkDataArray::GetDataTypeSize(in.OutputType), "the volume", &error))
   {
-    return fail(error);
+    return fail("\"" + std::string(this->FileName) + "\": " + error);
   }
   in.File.Progress = [this](double f)
   {
