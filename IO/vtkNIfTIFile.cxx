@@ -14,6 +14,8 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtk_zlib.h"
 
+#include <vtksys/SystemTools.hxx>
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -681,6 +683,7 @@ std::string vtkNIfTIFile::BaseName(const std::string& fileName)
 bool vtkNIfTIFile::Open(const std::string& fileName, std::string& error)
 {
   this->Hdr = Header();
+  this->Verified = false;
   this->HeaderFile = HeaderFileOf(fileName);
   this->ImageFile.clear();
   if (this->HeaderFile.empty())
@@ -743,6 +746,51 @@ bool vtkNIfTIFile::Open(const std::string& fileName, std::string& error)
       " (a truncated file or a damaged header)";
     return false;
   }
+  return true;
+}
+
+bool vtkNIfTIFile::VerifyData(std::string& error)
+{
+  if (!this->ImageCompressed)
+  {
+    this->Verified = true; // Open() compared the file's size with the header
+    return true;
+  }
+  const std::string identity = this->ImageFile + "\n" + std::to_string(this->ImageFileSize) + "\n" +
+    std::to_string(vtksys::SystemTools::ModifiedTime(this->ImageFile));
+  if (identity == this->VerifiedIdentity)
+  {
+    this->Verified = true;
+    return true;
+  }
+  const std::uint64_t needed = static_cast<std::uint64_t>(this->Hdr.VoxOffset) +
+    static_cast<std::uint64_t>(this->GetNumberOfVoxels()) *
+      static_cast<std::uint64_t>(this->GetNumberOfVolumes()) *
+      static_cast<std::uint64_t>(GetValueSize(this->Hdr.DataType));
+  GzipReader gz;
+  if (!gz.Open(this->ImageFile, error))
+  {
+    error = "\"" + this->ImageFile + "\": " + error;
+    return false;
+  }
+  while (!gz.AtEnd())
+  {
+    std::uint64_t produced = 0;
+    if (!gz.Read(nullptr, ChunkBytes, produced, error))
+    {
+      error = "\"" + this->ImageFile + "\": " + error;
+      return false;
+    }
+  }
+  if (gz.GetPosition() < needed)
+  {
+    error = "\"" + this->ImageFile + "\" is truncated: it decompresses to " +
+      std::to_string(gz.GetPosition()) + " bytes, its header announces voxels up to byte " +
+      std::to_string(needed);
+    return false;
+  }
+  this->VerifiedIdentity = identity;
+  this->Verified = true;
   return true;
 }
 
@@ -920,6 +968,16 @@ void vtkNIfTIFile::SetOutputInformation(
   outInfo->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
 }
 
+void vtkNIfTIFile::SetEmptyOutputInformation(vtkInformation* outInfo)
+{
+  if (vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT()))
+  {
+    output->Initialize();
+  }
+  const int empty[6] = { 0, -1, 0, -1, 0, -1 };
+  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), empty, 6);
+}
+
 bool vtkNIfTIFile::ClampExtent(int e[6], const int size[3])
 {
   for (int i = 0; i < 3; ++i)
@@ -1049,7 +1107,7 @@ bool vtkNIfTIFile::ReadSlices(
     ranges[m].Length = slabBytes;
     ranges[m].Target = v.Bytes.data() + m * slabBytes;
   }
-  if (!this->ReadRanges(this->ImageFile, this->ImageCompressed, ranges, true, error))
+  if (!this->ReadRanges(this->ImageFile, this->ImageCompressed, ranges, !this->Verified, error))
   {
     v = Voxels();
     if (error != "aborted")

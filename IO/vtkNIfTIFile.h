@@ -180,13 +180,15 @@ public:
   ///@{
   /**
    * VTK glue shared by the readers: the output information of a whole image
-   * (extent, origin, spacing, direction, sub-extents allowed), the update
+   * (extent, origin, spacing, direction, sub-extents allowed) or, after an
+   * error, of an empty one (no stale data of an earlier read), the update
    * extent clamped to the image (false when empty), the geometry of an
    * output piece and the field data "NIfTIAffine" (16, row-major) and
    * "NIfTISlicesReversed" (0 or 1).
    */
   static void SetOutputInformation(
     vtkInformation* outInfo, const int size[3], const Placement& placement);
+  static void SetEmptyOutputInformation(vtkInformation* outInfo);
   static bool ClampExtent(int extent[6], const int size[3]);
   static void SetOutputGeometry(
     vtkImageData* output, const int extent[6], const Placement& placement);
@@ -221,11 +223,25 @@ public:
    * flattened dimensions 4 to 7) into `voxels`: for each volume in the given
    * order, its slices, x fastest. Refuses reads that would not fit in this
    * machine's memory before allocating. A gzip part is decompressed to its
-   * end (integrity). Progress (if set) is called with the share done and may
-   * return false to abort: ReadSlices then returns false with the error "aborted".
+   * end (integrity) unless VerifyData() did that already. Progress (if set) is called with the
+   * share done and may return false to abort: ReadSlices then returns false with the error
+   * "aborted".
    */
   bool ReadSlices(
     const std::vector<std::int64_t>& volumes, int k0, int k1, Voxels& voxels, std::string& error);
+
+  /**
+   * Checks that every voxel the header announces can be read: a gzip part
+   * is decompressed to its end (damage, a wrong checksum, a stream shorter
+   * than the voxels), once per version of the file (its name, size and
+   * modification time; later calls return at once, and ReadSlices() then
+   * stops decompressing after the last voxel it needs). An uncompressed file
+   * was checked by Open(). Lets a reader find every problem of a file in
+   * RequestInformation (where ParaView copes with a failure: an image reader
+   * failing in RequestData leaves a ParaView 5.11 client waiting for the
+   * server's data forever).
+   */
+  bool VerifyData(std::string& error);
 
   /// Called while reading voxels (0..1); return false to abort.
   std::function<bool(double)> Progress;
@@ -246,6 +262,8 @@ private:
   std::string HeaderFile, ImageFile;
   bool ImageCompressed = false;
   std::uint64_t ImageFileSize = 0;
+  bool Verified = false;        // VerifyData() passed for the open file
+  std::string VerifiedIdentity; // the file version it passed for
 };
 
 #endif

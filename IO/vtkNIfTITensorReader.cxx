@@ -24,6 +24,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <vector>
 
 vtkStandardNewMacro(vtkNIfTITensorReader);
@@ -67,16 +68,21 @@ bool HoldsTensors(int dataType)
 // A companion volume: its file, affine and the volumes that become its components.
 struct Companion
 {
+  std::string Name; // as given
   vtkNIfTIFile File;
   double A[4][4];
   double InvA[4][4];
   std::vector<std::int64_t> Volumes;
 };
 
-// Opens a companion: the first volume with all its vector components (the
-// 5th dimension, else a 4th dimension of 2 to 9).
-bool OpenCompanion(const std::string& name, int source, Companion& c, std::string& error)
+// Opens a companion and checks everything that could stop it from being read
+// onto `points` output points (its header, affine, the memory, its voxels):
+// its first volume with all its vector components (the 5th dimension, else a
+// 4th dimension of 2 to 9).
+bool OpenCompanion(
+  const std::string& name, int source, double points, Companion& c, std::string& error)
 {
+  c.Name = name;
   if (!c.File.Open(name, error))
   {
     return false;
@@ -87,7 +93,15 @@ bool OpenCompanion(const std::string& name, int source, Companion& c, std::strin
     return false;
   }
   vtkMatrix4x4::Invert(&c.A[0][0], &c.InvA[0][0]);
-  const auto& d = c.File.GetHeader().Dim;
+  const vtkNIfTIFile::Header& h = c.File.GetHeader();
+  const auto& d = h.Dim;
+  const int elements = vtkNIfTIFile::GetElementsPerVoxel(h.DataType);
+  if (d[5] * elements > 65536)
+  {
+    error = "\"" + name + "\" has " + std::to_string(d[5] * elements) +
+      " components per voxel (more than 65536)";
+    return false;
+  }
   c.Volumes.clear();
   if (d[5] > 1)
   {
@@ -107,7 +121,18 @@ bool OpenCompanion(const std::string& name, int source, Companion& c, std::strin
   {
     c.Volumes.push_back(0);
   }
-  return true;
+  const bool doubles =
+    h.DataType == vtkNIfTIFile::FLOAT64 || h.DataType == vtkNIfTIFile::COMPLEX128;
+  const double volumes = static_cast<double>(c.Volumes.size());
+  const double bytes = static_cast<double>(c.File.GetNumberOfVoxels()) * volumes *
+      vtkNIfTIFile::GetValueSize(h.DataType) +
+    points * volumes * elements * (doubles ? 8.0 : 4.0);
+  if (!vtkSplineVizProgress::CheckOutputSize(bytes, 1.0, "the companion volume", &error))
+  {
+    error = "\"" + name + "\": " + error;
+    return false;
+  }
+  return c.File.VerifyData(error);
 }
 }
 
@@ -115,6 +140,7 @@ bool OpenCompanion(const std::string& name, int source, Companion& c, std::strin
 struct vtkNIfTITensorReader::Internals
 {
   vtkSplineVizNameList Companions;
+  std::vector<std::unique_ptr<Companion>> CompanionFiles; // opened by RequestInformation
   vtkNIfTIFile File;
   std::vector<std::int64_t> Volumes; // the volumes of the tensor components
   int Size[3] = { 0, 0, 0 };
@@ -128,8 +154,8 @@ struct vtkNIfTITensorReader::Internals
   void ComputeTensorRotation(int frame);
   vtkSmartPointer<vtkDataArray> ComputeTensors(
     const vtkNIfTIFile::Voxels& raw, const int ext[6], const char* name);
-  vtkSmartPointer<vtkDataArray> ReadCompanion(const std::string& name, int affineSource,
-    const int ext[6], vtkAlgorithm* algorithm, std::string& error);
+  vtkSmartPointer<vtkDataArray> ReadCompanion(
+    Companion& cv, const int ext[6], vtkAlgorithm* algorithm, std::string& error);
 };
 
 //------------------------------------------------------------------------------
@@ -201,10 +227,7 @@ int vtkNIfTITensorReader::RequestInformation(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   auto fail = [this, outInfo](const std::string& msg)
   {
-    if (vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT()))
-    {
-      output->Initialize(); // no stale data from an earlier read
-    }
+    vtkNIfTIFile::SetEmptyOutputInformation(outInfo);
     this->LastError = msg;
     vtkErrorMacro(<< msg);
     return 0;
@@ -256,6 +279,35 @@ int vtkNIfTITensorReader::RequestInformation(
   if (!in.File.ComputeAffine(this->AffineSource, in.A, error))
   {
     return fail("\"" + file + "\": " + error);
+  }
+  // Everything that can go wrong is found here, not in RequestData (see
+  // vtkNIfTIFile::VerifyData): the memory of the whole image (the voxels
+  // read and the tensors), the voxels being there, the companions.
+  const bool doubles = h.DataType == vtkNIfTIFile::FLOAT64;
+  const double points = static_cast<double>(in.File.GetNumberOfVoxels());
+  if (!vtkSplineVizProgress::CheckOutputSize(points,
+        nc * vtkNIfTIFile::GetValueSize(h.DataType) + (doubles ? 48.0 : 24.0), "the tensors",
+        &error))
+  {
+    return fail("\"" + file + "\": " + error);
+  }
+  if (!in.File.VerifyData(error))
+  {
+    return fail(error);
+  }
+  const std::size_t nCompanions = in.Companions.Names.size();
+  in.CompanionFiles.resize(nCompanions);
+  for (std::size_t f = 0; f < nCompanions; ++f)
+  {
+    if (!in.CompanionFiles[f])
+    {
+      in.CompanionFiles[f].reset(new Companion);
+    }
+    if (!OpenCompanion(
+          in.Companions.Names[f], this->AffineSource, points, *in.CompanionFiles[f], error))
+    {
+      return fail("companion volume: " + error);
+    }
   }
   for (int i = 0; i < 3; ++i)
   {
@@ -347,9 +399,9 @@ int vtkNIfTITensorReader::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkImageData* output = vtkImageData::GetData(outInfo);
   output->Initialize();
-  auto fail = [this, output](const std::string& msg)
+  auto fail = [this, outInfo](const std::string& msg)
   {
-    output->Initialize();
+    vtkNIfTIFile::SetEmptyOutputInformation(outInfo);
     this->LastError = msg;
     vtkErrorMacro(<< msg);
     return 0;
@@ -400,11 +452,10 @@ int vtkNIfTITensorReader::RequestData(
   }
 
   // Companion volumes, on this grid or resampled onto it.
-  const std::size_t nCompanions = in.Companions.Names.size();
+  const std::size_t nCompanions = in.CompanionFiles.size();
   for (std::size_t f = 0; f < nCompanions; ++f)
   {
-    vtkSmartPointer<vtkDataArray> array =
-      in.ReadCompanion(in.Companions.Names[f], this->AffineSource, ext, this, error);
+    vtkSmartPointer<vtkDataArray> array = in.ReadCompanion(*in.CompanionFiles[f], ext, this, error);
     if (!array)
     {
       return error == "aborted" ? (output->Initialize(), 1) : fail("companion volume: " + error);
@@ -500,15 +551,10 @@ vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ComputeTensors(
 
 //------------------------------------------------------------------------------
 vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ReadCompanion(
-  const std::string& name, int affineSource, const int ext[6], vtkAlgorithm* algorithm,
-  std::string& error)
+  Companion& cv, const int ext[6], vtkAlgorithm* algorithm, std::string& error)
 {
   Internals& in = *this;
-  Companion cv;
-  if (!OpenCompanion(name, affineSource, cv, error))
-  {
-    return nullptr;
-  }
+  const std::string& name = cv.Name;
   const vtkNIfTIFile::Header& ch = cv.File.GetHeader();
   int size[3];
   for (int p = 0; p < 3; ++p)

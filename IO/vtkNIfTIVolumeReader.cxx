@@ -170,10 +170,7 @@ int vtkNIfTIVolumeReader::RequestInformation(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   auto fail = [this, outInfo](const std::string& msg)
   {
-    if (vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT()))
-    {
-      output->Initialize(); // no stale data from an earlier read
-    }
+    vtkNIfTIFile::SetEmptyOutputInformation(outInfo);
     this->LastError = msg;
     vtkErrorMacro(<< msg);
     return 0;
@@ -244,6 +241,21 @@ int vtkNIfTIVolumeReader::RequestInformation(
     in.Name = "NIfTI";
   }
 
+  // Everything that can go wrong is found here, not in RequestData (see
+  // vtkNIfTIFile::VerifyData): the memory the whole image needs (the voxels
+  // read and the output), the voxels being there.
+  const double perVoxel =
+    static_cast<double>(in.Volumes.size()) * vtkNIfTIFile::GetValueSize(h.DataType) +
+    static_cast<double>(in.Components) * vtkDataArray::GetDataTypeSize(in.OutputType);
+  if (!vtkSplineVizProgress::CheckOutputSize(
+        static_cast<double>(in.File.GetNumberOfVoxels()), perVoxel, "the volume", &error))
+  {
+    return fail("\"" + file + "\": " + error);
+  }
+  if (!in.File.VerifyData(error))
+  {
+    return fail(error);
+  }
   for (int i = 0; i < 3; ++i)
   {
     in.Size[i] = in.File.GetSize(i);
