@@ -341,6 +341,183 @@ std::string HeaderFileOf(const std::string& name)
   return name;
 }
 
+// Decodes the fields of a NIfTI-1 header (sizeof_hdr 348).
+bool DecodeNIfTI1(
+  const unsigned char* bytes, const FieldReader& f, vtkNIfTIFile::Header& h, std::string& error)
+{
+  const unsigned char* m = bytes + 344;
+  if (!(m[0] == 'n' && (m[1] == '+' || m[1] == 'i') && m[2] == '1' && m[3] == '\0'))
+  {
+    error = "no NIfTI-1 magic (\"n+1\" or \"ni1\"): an Analyze 7.5 header or a damaged "
+            "NIfTI-1 header, not read";
+    return false;
+  }
+  h.Version = 1;
+  h.SingleFile = m[1] == '+';
+  for (int i = 0; i < 8; ++i)
+  {
+    h.Dim[i] = f.Get<std::int16_t>(40 + 2 * i);
+    h.PixDim[i] = f.Get<float>(76 + 4 * i);
+  }
+  h.IntentCode = f.Get<std::int16_t>(68);
+  h.DataType = f.Get<std::int16_t>(70);
+  h.BitPix = f.Get<std::int16_t>(72);
+  const double offset = f.Get<float>(108);
+  if (!(offset >= 0.0 && offset <= 9007199254740992.0 && std::floor(offset) == offset))
+  {
+    error = "vox_offset (" + Number(offset) + ") is not a whole number of bytes >= 0";
+    return false;
+  }
+  h.VoxOffset = static_cast<std::int64_t>(offset);
+  h.SclSlope = f.Get<float>(112);
+  h.SclInter = f.Get<float>(116);
+  h.XYZTUnits = bytes[123];
+  h.QFormCode = f.Get<std::int16_t>(252);
+  h.SFormCode = f.Get<std::int16_t>(254);
+  for (int i = 0; i < 3; ++i)
+  {
+    h.Quatern[i] = f.Get<float>(256 + 4 * i);
+    h.QOffset[i] = f.Get<float>(268 + 4 * i);
+    for (int j = 0; j < 4; ++j)
+    {
+      h.SRow[i][j] = f.Get<float>(280 + 16 * i + 4 * j);
+    }
+  }
+  return true;
+}
+
+// Decodes the fields of a NIfTI-2 header (sizeof_hdr 540).
+bool DecodeNIfTI2(const unsigned char* bytes, std::size_t size, const FieldReader& f,
+  vtkNIfTIFile::Header& h, std::string& error)
+{
+  if (size < NIfTI2HeaderSize)
+  {
+    error = "a NIfTI-2 header cut short (" + std::to_string(size) + " of 540 bytes)";
+    return false;
+  }
+  const unsigned char* m = bytes + 4;
+  if (!(m[0] == 'n' && (m[1] == '+' || m[1] == 'i') && m[2] == '2' && m[3] == '\0'))
+  {
+    error = "no NIfTI-2 magic (\"n+2\" or \"ni2\")";
+    return false;
+  }
+  if (!(m[4] == '\r' && m[5] == '\n' && m[6] == '\032' && m[7] == '\n'))
+  {
+    error = "the NIfTI-2 magic is damaged (the file went through a text-mode "
+            "newline conversion)";
+    return false;
+  }
+  h.Version = 2;
+  h.SingleFile = m[1] == '+';
+  h.DataType = f.Get<std::int16_t>(12);
+  h.BitPix = f.Get<std::int16_t>(14);
+  for (int i = 0; i < 8; ++i)
+  {
+    h.Dim[i] = f.Get<std::int64_t>(16 + 8 * i);
+    h.PixDim[i] = f.Get<double>(104 + 8 * i);
+  }
+  h.VoxOffset = f.Get<std::int64_t>(168);
+  if (h.VoxOffset < 0)
+  {
+    error = "vox_offset (" + std::to_string(h.VoxOffset) + ") is negative";
+    return false;
+  }
+  h.SclSlope = f.Get<double>(176);
+  h.SclInter = f.Get<double>(184);
+  h.QFormCode = f.Get<std::int32_t>(344);
+  h.SFormCode = f.Get<std::int32_t>(348);
+  for (int i = 0; i < 3; ++i)
+  {
+    h.Quatern[i] = f.Get<double>(352 + 8 * i);
+    h.QOffset[i] = f.Get<double>(376 + 8 * i);
+    for (int j = 0; j < 4; ++j)
+    {
+      h.SRow[i][j] = f.Get<double>(400 + 32 * i + 8 * j);
+    }
+  }
+  h.XYZTUnits = f.Get<std::int32_t>(500);
+  h.IntentCode = f.Get<std::int32_t>(504);
+  return true;
+}
+
+// Checks the decoded fields every reader relies on (see the class comment).
+bool CheckFields(vtkNIfTIFile::Header& h, std::string& error)
+{
+  // Dimensions: dim[0] of them, each at least 1; x, y, z within int extents.
+  if (h.Dim[0] < 1 || h.Dim[0] > 7)
+  {
+    error = "dim[0] (the number of dimensions) is " + std::to_string(h.Dim[0]) + ", not 1 to 7";
+    return false;
+  }
+  for (int i = 1; i < 8; ++i)
+  {
+    if (i > h.Dim[0])
+    {
+      h.Dim[i] = 1;
+    }
+    else if (h.Dim[i] < 1)
+    {
+      error = "dim[" + std::to_string(i) + "] is " + std::to_string(h.Dim[i]) +
+        (h.Dim[i] == 0 ? " (an empty image)" : "");
+      return false;
+    }
+    else if (i <= 3 && h.Dim[i] > std::numeric_limits<std::int32_t>::max())
+    {
+      error = "dim[" + std::to_string(i) + "] is " + std::to_string(h.Dim[i]) +
+        ", more than VTK's image extents can hold";
+      return false;
+    }
+  }
+
+  // The datatype, its size, and the product of the dimensions in bytes.
+  const int valueSize = vtkNIfTIFile::GetValueSize(h.DataType);
+  if (valueSize == 0)
+  {
+    const char* name = vtkNIfTIFile::GetDataTypeName(h.DataType);
+    error = name ? std::string("voxels of datatype ") + name + " (" + std::to_string(h.DataType) +
+        ") are not read"
+                 : "unknown datatype code " + std::to_string(h.DataType);
+    return false;
+  }
+  if (h.BitPix != 8 * valueSize)
+  {
+    error = "bitpix (" + std::to_string(h.BitPix) + ") does not match datatype " +
+      vtkNIfTIFile::GetDataTypeName(h.DataType) + " (" + std::to_string(8 * valueSize) +
+      " bits per voxel)";
+    return false;
+  }
+  const std::uint64_t limit = (std::uint64_t(1) << 62) / static_cast<std::uint64_t>(valueSize);
+  std::uint64_t count = 1;
+  for (int i = 1; i < 8; ++i)
+  {
+    const std::uint64_t d = static_cast<std::uint64_t>(h.Dim[i]);
+    if (count > limit / d)
+    {
+      error = "the dimensions announce more than 2^62 bytes of voxels";
+      return false;
+    }
+    count *= d;
+  }
+  const std::int64_t headerSize = h.Version == 1 ? 348 : 540;
+  if (h.SingleFile && h.VoxOffset < headerSize)
+  {
+    error = "vox_offset (" + std::to_string(h.VoxOffset) + ") lies inside the " +
+      std::to_string(headerSize) + "-byte header";
+    return false;
+  }
+  if (h.VoxOffset > (std::int64_t(1) << 62))
+  {
+    error = "vox_offset (" + std::to_string(h.VoxOffset) + ") is beyond any file";
+    return false;
+  }
+  if (std::isfinite(h.SclSlope) && h.SclSlope != 0.0 && !std::isfinite(h.SclInter))
+  {
+    error = "scl_slope is " + Number(h.SclSlope) + " but scl_inter is not finite";
+    return false;
+  }
+  return true;
+}
+
 template <typename T>
 double Element(const unsigned char* bytes, std::int64_t index)
 {
@@ -473,170 +650,12 @@ bool vtkNIfTIFile::ParseHeader(
     return false;
   }
   const FieldReader f{ bytes, h.Swapped };
-  if (sizeofHdr == 348)
+  if (!(sizeofHdr == 348 ? DecodeNIfTI1(bytes, f, h, error)
+                         : DecodeNIfTI2(bytes, size, f, h, error)))
   {
-    const unsigned char* m = bytes + 344;
-    if (!(m[0] == 'n' && (m[1] == '+' || m[1] == 'i') && m[2] == '1' && m[3] == '\0'))
-    {
-      error = "no NIfTI-1 magic (\"n+1\" or \"ni1\"): an Analyze 7.5 header or a damaged "
-              "NIfTI-1 header, not read";
-      return false;
-    }
-    h.Version = 1;
-    h.SingleFile = m[1] == '+';
-    for (int i = 0; i < 8; ++i)
-    {
-      h.Dim[i] = f.Get<std::int16_t>(40 + 2 * i);
-      h.PixDim[i] = f.Get<float>(76 + 4 * i);
-    }
-    h.IntentCode = f.Get<std::int16_t>(68);
-    h.DataType = f.Get<std::int16_t>(70);
-    h.BitPix = f.Get<std::int16_t>(72);
-    const double offset = f.Get<float>(108);
-    if (!(offset >= 0.0 && offset <= 9007199254740992.0 && std::floor(offset) == offset))
-    {
-      error = "vox_offset (" + Number(offset) + ") is not a whole number of bytes >= 0";
-      return false;
-    }
-    h.VoxOffset = static_cast<std::int64_t>(offset);
-    h.SclSlope = f.Get<float>(112);
-    h.SclInter = f.Get<float>(116);
-    h.XYZTUnits = bytes[123];
-    h.QFormCode = f.Get<std::int16_t>(252);
-    h.SFormCode = f.Get<std::int16_t>(254);
-    for (int i = 0; i < 3; ++i)
-    {
-      h.Quatern[i] = f.Get<float>(256 + 4 * i);
-      h.QOffset[i] = f.Get<float>(268 + 4 * i);
-      for (int j = 0; j < 4; ++j)
-      {
-        h.SRow[i][j] = f.Get<float>(280 + 16 * i + 4 * j);
-      }
-    }
-  }
-  else
-  {
-    if (size < NIfTI2HeaderSize)
-    {
-      error = "a NIfTI-2 header cut short (" + std::to_string(size) + " of 540 bytes)";
-      return false;
-    }
-    const unsigned char* m = bytes + 4;
-    if (!(m[0] == 'n' && (m[1] == '+' || m[1] == 'i') && m[2] == '2' && m[3] == '\0'))
-    {
-      error = "no NIfTI-2 magic (\"n+2\" or \"ni2\")";
-      return false;
-    }
-    if (!(m[4] == '\r' && m[5] == '\n' && m[6] == '\032' && m[7] == '\n'))
-    {
-      error = "the NIfTI-2 magic is damaged (the file went through a text-mode "
-              "newline conversion)";
-      return false;
-    }
-    h.Version = 2;
-    h.SingleFile = m[1] == '+';
-    h.DataType = f.Get<std::int16_t>(12);
-    h.BitPix = f.Get<std::int16_t>(14);
-    for (int i = 0; i < 8; ++i)
-    {
-      h.Dim[i] = f.Get<std::int64_t>(16 + 8 * i);
-      h.PixDim[i] = f.Get<double>(104 + 8 * i);
-    }
-    h.VoxOffset = f.Get<std::int64_t>(168);
-    if (h.VoxOffset < 0)
-    {
-      error = "vox_offset (" + std::to_string(h.VoxOffset) + ") is negative";
-      return false;
-    }
-    h.SclSlope = f.Get<double>(176);
-    h.SclInter = f.Get<double>(184);
-    h.QFormCode = f.Get<std::int32_t>(344);
-    h.SFormCode = f.Get<std::int32_t>(348);
-    for (int i = 0; i < 3; ++i)
-    {
-      h.Quatern[i] = f.Get<double>(352 + 8 * i);
-      h.QOffset[i] = f.Get<double>(376 + 8 * i);
-      for (int j = 0; j < 4; ++j)
-      {
-        h.SRow[i][j] = f.Get<double>(400 + 32 * i + 8 * j);
-      }
-    }
-    h.XYZTUnits = f.Get<std::int32_t>(500);
-    h.IntentCode = f.Get<std::int32_t>(504);
-  }
-
-  // Dimensions: dim[0] of them, each at least 1; x, y, z within int extents.
-  if (h.Dim[0] < 1 || h.Dim[0] > 7)
-  {
-    error = "dim[0] (the number of dimensions) is " + std::to_string(h.Dim[0]) + ", not 1 to 7";
     return false;
   }
-  for (int i = 1; i < 8; ++i)
-  {
-    if (i > h.Dim[0])
-    {
-      h.Dim[i] = 1;
-    }
-    else if (h.Dim[i] < 1)
-    {
-      error = "dim[" + std::to_string(i) + "] is " + std::to_string(h.Dim[i]) +
-        (h.Dim[i] == 0 ? " (an empty image)" : "");
-      return false;
-    }
-    else if (i <= 3 && h.Dim[i] > std::numeric_limits<std::int32_t>::max())
-    {
-      error = "dim[" + std::to_string(i) + "] is " + std::to_string(h.Dim[i]) +
-        ", more than VTK's image extents can hold";
-      return false;
-    }
-  }
-
-  // The datatype, its size, and the product of the dimensions in bytes.
-  const int valueSize = GetValueSize(h.DataType);
-  if (valueSize == 0)
-  {
-    const char* name = GetDataTypeName(h.DataType);
-    error = name ? std::string("voxels of datatype ") + name + " (" + std::to_string(h.DataType) +
-        ") are not read"
-                 : "unknown datatype code " + std::to_string(h.DataType);
-    return false;
-  }
-  if (h.BitPix != 8 * valueSize)
-  {
-    error = "bitpix (" + std::to_string(h.BitPix) + ") does not match datatype " +
-      GetDataTypeName(h.DataType) + " (" + std::to_string(8 * valueSize) + " bits per voxel)";
-    return false;
-  }
-  const std::uint64_t limit = (std::uint64_t(1) << 62) / static_cast<std::uint64_t>(valueSize);
-  std::uint64_t count = 1;
-  for (int i = 1; i < 8; ++i)
-  {
-    const std::uint64_t d = static_cast<std::uint64_t>(h.Dim[i]);
-    if (count > limit / d)
-    {
-      error = "the dimensions announce more than 2^62 bytes of voxels";
-      return false;
-    }
-    count *= d;
-  }
-  const std::int64_t headerSize = h.Version == 1 ? 348 : 540;
-  if (h.SingleFile && h.VoxOffset < headerSize)
-  {
-    error = "vox_offset (" + std::to_string(h.VoxOffset) + ") lies inside the " +
-      std::to_string(headerSize) + "-byte header";
-    return false;
-  }
-  if (h.VoxOffset > (std::int64_t(1) << 62))
-  {
-    error = "vox_offset (" + std::to_string(h.VoxOffset) + ") is beyond any file";
-    return false;
-  }
-  if (std::isfinite(h.SclSlope) && h.SclSlope != 0.0 && !std::isfinite(h.SclInter))
-  {
-    error = "scl_slope is " + Number(h.SclSlope) + " but scl_inter is not finite";
-    return false;
-  }
-  return true;
+  return CheckFields(h, error);
 }
 
 //------------------------------------------------------------------------------

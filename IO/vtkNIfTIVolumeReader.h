@@ -14,9 +14,10 @@
  * Field data: "NIfTIAffine", "NIfTISlicesReversed".
  *
  * **Values**: the voxels' own type (uint8 ... uint64, float32, float64) when
- * the file has no scaling, so label volumes stay integers; with scl_slope /
- * scl_inter (slope neither 0, 1-with-intercept-0 nor NaN) value = slope x +
- * inter as float, or double for float64 and 32/64-bit integer voxels.
+ * the file has no scaling, so label volumes stay integers; when it scales
+ * (scl_slope finite, not 0, and not slope 1 with intercept 0) value =
+ * scl_slope x + scl_inter as float, or double for float64 and 32/64-bit
+ * integer voxels (float would round them).
  * complex64/128 voxels become 2 components (real, imaginary), RGB24 and
  * RGBA32 3 and 4 unsigned char components (never scaled).
  *
