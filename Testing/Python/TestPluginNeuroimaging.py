@@ -108,6 +108,18 @@ check(same_points and np.array_equal(
     fa_values, vtk_to_numpy(image.GetPointData().GetArray("TestPluginNeuroimaging-FA"))),
       "NIfTI Volume: the tensors' points, the companion's values")
 
+# NIfTI Volume's Volume Index on a 4D series: the range offered, the volume read
+series = np.stack([fa_dipy * np.float32(t + 1) for t in range(5)], -1)
+series_file = os.path.join(out, "TestPluginNeuroimaging-series.nii.gz")
+nib.save(nib.Nifti1Image(series, scan.affine), series_file)
+series_reader = NIfTIVolume(FileName=series_file)  # noqa: F405
+series_reader.UpdatePipelineInformation()
+series_reader.VolumeIndex = 3
+series_reader.UpdatePipeline()
+volume3 = vtk_to_numpy(servermanager.Fetch(series_reader).GetPointData().GetArray(0))
+check(list(series_reader.GetPropertyValue("VolumeRangeInfo")) == [0, 4] and np.array_equal(volume3, fa_values * 4),
+      "NIfTI Volume on 5 volumes: Volume Index 0..4 offered, volume 3 read")
+
 analysis = TensorAnalysis(Input=dti)  # noqa: F405
 analysis.Tensors = ["POINTS", "Tensors"]
 analysis.UpdatePipeline()
