@@ -6,6 +6,7 @@ list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineResampleToImage"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineStreamTracer"
   "${SPLINEVIZ_FOLDER}/vtkSyntheticFibersSource"
+  "${SPLINEVIZ_FOLDER}/vtkSyntheticTractogramSource"
   "${SPLINEVIZ_FOLDER}/vtkTensorAnalysisFilter"
   "${SPLINEVIZ_FOLDER}/vtkTensorLineTracer")
 # LR-spline volumes (Fuchs et al.): plain C++ shared by the filters, the
@@ -27,4 +28,5 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkTensorMathShared.glsl")
 # Progress, abort and output-size checks shared by the filters and readers.
 list(APPEND splineviz_private_headers
-  "${SPLINEVIZ_FOLDER}/vtkSplineVizProgress.h")
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizProgress.h"
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizRandom.h")

@@ -1,37 +1,46 @@
 /**
  * @class   vtkLRSplineBezierGrid
  * @brief   The VTK form of one LR-spline patch: a vtkUnstructuredGrid of VTK_BEZIER_HEXAHEDRON
- * cells with the patch's cell and field data (the output format of vtkLRSplineReader).
+ * (volumes) or VTK_BEZIER_QUADRILATERAL (surfaces) cells with the patch's cell and field data
+ * (the output format of vtkLRSplineReader and vtkIFEMReader).
  *
  * Plain C++ (not a vtkObject), the one place that writes this format; used by
- * vtkLRSplineReader (patches read from files) and vtkLRSplineImageFitter
- * (patches fitted to images), so that everything downstream (probe,
- * resampling, stream tracer, the volume mapper, ParaView) sees one format.
+ * vtkLRSplineReader (patches read from files), vtkIFEMReader (simulation
+ * results) and vtkLRSplineImageFitter (patches fitted to images), so that
+ * everything downstream (probe, resampling, stream tracer, the volume mapper,
+ * ParaView) sees one format.
  *
  * Every LR element (or those of a piece [FirstElement, LastElement)) becomes
- * one Bezier hexahedron whose control points carry the element's exact
- * Bernstein coefficients (vtkLRSplinePatch::ExtractBezier, Fuchs et al.
- * §3.2.3). The grid has
+ * one Bezier cell whose control points carry the element's exact Bernstein
+ * coefficients (vtkLRSplinePatch::ExtractBezier, Fuchs et al. §3.2.3). The
+ * grid has
  * - cells: degrees (p, q, r), at least 1 (a piecewise constant direction is
- *   written as linear);
+ *   written as linear; a surface's third degree is 0);
  * - cell data: "HigherOrderDegrees" (set as the degrees array),
- *   "LRParameterBox", "LRElementId" (index of the element in its patch),
- *   "LRElementMinSide" (shortest side, in the units of the points);
- * - point data: the coefficients in an array named FieldName (the active
- *   vectors with 3 components, the active scalars with 1); in geometry mode
- *   also "LRParameterCoordinates";
- * - field data: "LRPatchIndex", "LRDegrees", "LRNumberOfBasisFunctions",
- *   "LRNumberOfElements", "LRNumberOfMeshRectangles", "LRRefinementLevels"
- *   (per direction, log2 of largest over smallest element side),
- *   "LRParameterDomain", "LRMode" (0 field, 1 geometry),
- *   "LRPhysicalTransform" (field mode: scale xyz, offset xyz with
- *   x = offset + scale * u) and "LRSourceFormat".
+ *   "LRParameterBox" (6 values; w in [0, 1] for a surface), "LRElementId"
+ *   (index of the element in its patch), "LRElementMinSide" (shortest side
+ *   of the parameter box, times the field-mode scale);
+ * - point data: by default the coefficients in an array named FieldName (the
+ *   active vectors with 3 components, the active scalars with 1), or the
+ *   arrays listed in PointArrays (chosen components, zero-padded); in
+ *   geometry mode also "LRParameterCoordinates" (the Bezier coefficients of
+ *   the parameter map, so that interpolating them gives the parameter) and,
+ *   for rational patches, "RationalWeights" (VTK's rational Bezier weights);
+ * - field data: "LRPatchIndex", "LRParametricDimension", "LRDegrees",
+ *   "LRNumberOfBasisFunctions", "LRNumberOfElements",
+ *   "LRNumberOfMeshRectangles", "LRRefinementLevels" (per direction, log2 of
+ *   largest over smallest element side), "LRParameterDomain", "LRMode" (0
+ *   field, 1 geometry), "LRRational" (0 or 1), "LRPhysicalTransform" (field
+ *   mode: scale xyz, offset xyz with x = offset + scale * u) and
+ *   "LRSourceFormat".
  *
  * Field mode places the control points at the equally spaced points of each
  * element's parameter box mapped by x = Offset + Scale * u (the Bezier form
- * of that affine map). Geometry mode uses the coefficients as control points
- * (2 or 3 components). MergePoints merges coincident control points with
- * equal coefficients.
+ * of that affine map). Geometry mode takes the control points from the
+ * coefficients (PointComponents, or the first 2 or 3 components); rational
+ * coefficients must have been made rational Bezier ones first
+ * (vtkLRSplineBezierVolume::Dehomogenize), WeightComponent naming the weight.
+ * MergePoints merges coincident control points with equal coefficients.
  */
 
 #ifndef vtkLRSplineBezierGrid_h
@@ -42,6 +51,7 @@
 #include "vtkType.h"
 
 #include <string>
+#include <vector>
 
 class vtkLRSplineBezierVolume;
 class vtkLRSplinePatch;
@@ -67,6 +77,25 @@ public:
     std::string FieldName = "Field";
     /// Written as "LRSourceFormat" (e.g. "LRSplines text").
     std::string SourceFormat;
+
+    /// A point-data array made of chosen coefficient components.
+    struct PointArray
+    {
+      std::string Name;
+      /// The coefficient components, in order.
+      std::vector<int> Components;
+      /// Components of the array (more than Components: zeros); 0: as many.
+      int NumberOfComponents = 0;
+      /// Make it the active scalars (1) or vectors (3); 0: neither.
+      int Active = 0;
+    };
+    /// The point arrays; empty: one array FieldName with every component.
+    std::vector<PointArray> PointArrays;
+    /// Geometry mode: the component of x, y and z (-1: 0). All -1: the first
+    /// 2 or 3 components (then the patch must have 2 or 3).
+    int PointComponents[3] = { -1, -1, -1 };
+    /// Geometry mode, rational: the component holding the Bezier weight.
+    int WeightComponent = -1;
   };
 
   /**

@@ -285,9 +285,15 @@ void vtkLRSplineBezierVolume::MakeFloatCoefficients()
 }
 
 //------------------------------------------------------------------------------
-void vtkLRSplineBezierVolume::ElevateToAtLeastLinear()
+void vtkLRSplineBezierVolume::ElevateToAtLeastLinear(int parametricDimension)
 {
-  if (this->Degree[0] >= 1 && this->Degree[1] >= 1 && this->Degree[2] >= 1)
+  const int pd = std::max(1, std::min(3, parametricDimension));
+  bool linear = true;
+  for (int d = 0; d < pd; ++d)
+  {
+    linear = linear && this->Degree[d] >= 1;
+  }
+  if (linear)
   {
     return;
   }
@@ -296,7 +302,7 @@ void vtkLRSplineBezierVolume::ElevateToAtLeastLinear()
   int neu[3];
   for (int d = 0; d < 3; ++d)
   {
-    neu[d] = std::max(old[d], 2);
+    neu[d] = d < pd ? std::max(old[d], 2) : old[d];
   }
   const vtkIdType ne = this->GetNumberOfElements();
   const std::size_t oldPer = static_cast<std::size_t>(old[0] * old[1] * old[2] * nc);
@@ -331,6 +337,53 @@ void vtkLRSplineBezierVolume::ElevateToAtLeastLinear()
   {
     this->MakeFloatCoefficients();
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineBezierVolume::Dehomogenize(int weightComponent, std::string* error)
+{
+  const int nc = this->NumberOfComponents;
+  if (weightComponent < 0 || weightComponent >= nc)
+  {
+    if (error)
+    {
+      *error = "the weight component " + std::to_string(weightComponent) + " does not exist";
+    }
+    return false;
+  }
+  const std::size_t n = this->Coefficients.size() / static_cast<std::size_t>(nc);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const double w = this->Coefficients[k * nc + weightComponent];
+    if (!(w > 0) || !std::isfinite(w))
+    {
+      if (error)
+      {
+        std::ostringstream msg;
+        msg << "element " << k / this->GetCoefficientsPerElement()
+            << " has a Bezier weight that is not positive (" << w << ")";
+        *error = msg.str();
+      }
+      return false;
+    }
+  }
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    double* c = this->Coefficients.data() + k * nc;
+    const double w = c[weightComponent];
+    for (int comp = 0; comp < nc; ++comp)
+    {
+      if (comp != weightComponent)
+      {
+        c[comp] /= w;
+      }
+    }
+  }
+  if (!this->CoefficientsFloat.empty())
+  {
+    this->MakeFloatCoefficients();
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

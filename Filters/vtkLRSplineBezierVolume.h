@@ -64,10 +64,21 @@ public:
   void MakeFloatCoefficients();
 
   /**
-   * Raise the degree to at least 1 in every direction (exact: a constant is a
-   * linear polynomial with equal coefficients). VTK's Bezier cells need it.
+   * Raise the degree to at least 1 in the first `parametricDimension`
+   * directions (exact: a constant is a linear polynomial with equal
+   * coefficients). VTK's Bezier cells need it. A surface (2) keeps degree 0 in
+   * w, so that each element's coefficients are those of a Bezier quadrilateral.
    */
-  void ElevateToAtLeastLinear();
+  void ElevateToAtLeastLinear(int parametricDimension = 3);
+
+  /**
+   * Turn homogeneous coefficients into VTK's rational Bezier form: every
+   * component except `weightComponent` is divided by that component's value
+   * (the Bezier weight), which is kept. Then sum_k B_k w_k P_k / sum_k B_k w_k
+   * is the rational spline again (VTK's "RationalWeights" interpolation).
+   * False (nothing changed) when a weight is not positive and finite.
+   */
+  bool Dehomogenize(int weightComponent, std::string* error);
 
   /**
    * Raise the degrees to `degree` (each at least the current one) by exact

@@ -52,6 +52,45 @@ void vtkLRSplinePatch::GetDomain(double domain[6]) const
 }
 
 //------------------------------------------------------------------------------
+bool vtkLRSplinePatch::ApplyRationalMode(
+  int mode, bool controlPoints, bool* inferred, std::string* error)
+{
+  if (inferred)
+  {
+    *inferred = false;
+  }
+  if (this->ExplicitRational)
+  {
+    return true;
+  }
+  bool rational = false;
+  if (mode == RATIONAL_ALWAYS)
+  {
+    rational = true;
+  }
+  else if (mode == RATIONAL_AUTOMATIC && controlPoints)
+  {
+    rational = this->Rational == 1 || this->Dimension > this->ParametricDimension;
+    if (inferred)
+    {
+      *inferred = this->Rational != 1 && rational;
+    }
+  }
+  if (rational && this->Dimension < 2)
+  {
+    if (error)
+    {
+      *error = "a rational patch needs at least 2 coefficient components (the last is the weight), "
+               "this one has " +
+        std::to_string(this->Dimension);
+    }
+    return false;
+  }
+  this->RationalCoefficients = rational;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkLRSplinePatch::Validate(std::string* error) const
 {
   auto fail = [error](const std::string& msg)
@@ -71,10 +110,24 @@ bool vtkLRSplinePatch::Validate(std::string* error) const
         ")");
     }
   }
+  if (this->ParametricDimension != 2 && this->ParametricDimension != 3)
+  {
+    return fail("the parametric dimension must be 2 (surface) or 3 (volume), not " +
+      std::to_string(this->ParametricDimension));
+  }
+  if (this->ParametricDimension == 2 && this->Order[2] != 1)
+  {
+    return fail("a surface patch must have order 1 in its third (w) direction");
+  }
   if (this->Dimension < 1 || this->Dimension > 64)
   {
     return fail("the number of coefficient components must be 1 to 64, not " +
       std::to_string(this->Dimension));
+  }
+  if (this->RationalCoefficients && this->Dimension < 2)
+  {
+    return fail("a rational patch needs at least 2 coefficient components (the last is the "
+                "weight)");
   }
   const vtkIdType nb = this->GetNumberOfBasisFunctions();
   const vtkIdType ne = this->GetNumberOfElements();
@@ -118,6 +171,16 @@ bool vtkLRSplinePatch::Validate(std::string* error) const
       {
         return fail(Where(this->BasisLines, i) + "basis function " + std::to_string(i) +
           ": coefficient " + std::to_string(c) + " is not a finite number");
+      }
+    }
+    if (this->RationalCoefficients)
+    {
+      const double w = this->Coefficients[(i + 1) * this->Dimension - 1];
+      if (!(w > 0))
+      {
+        return fail(Where(this->BasisLines, i) + "basis function " + std::to_string(i) +
+          ": the rational weight (the last coefficient component) must be positive, it is " +
+          std::to_string(w));
       }
     }
     const double g = this->Gamma[i];
@@ -474,7 +537,8 @@ bool vtkLRSplinePatch::BSplineToBernstein(
 
 //------------------------------------------------------------------------------
 bool vtkLRSplinePatch::ExtractBezier(vtkLRSplineBezierVolume& out, std::string* error,
-  std::string* warning, vtkIdType first, vtkIdType last) const
+  std::string* warning, vtkIdType first, vtkIdType last, const double* coefficients,
+  int numberOfComponents) const
 {
   auto fail = [error](const std::string& msg)
   {
@@ -501,7 +565,12 @@ bool vtkLRSplinePatch::ExtractBezier(vtkLRSplineBezierVolume& out, std::string* 
   first = std::max<vtkIdType>(0, std::min(first, last));
   const vtkIdType count = last - first;
 
-  const int nc = this->Dimension;
+  if (coefficients && numberOfComponents < 1)
+  {
+    return fail("the coefficients to extract have no components");
+  }
+  const int nc = coefficients ? numberOfComponents : this->Dimension;
+  const double* source = coefficients ? coefficients : this->Coefficients.data();
   for (int d = 0; d < 3; ++d)
   {
     out.Degree[d] = this->Order[d] - 1;
@@ -546,7 +615,7 @@ bool vtkLRSplinePatch::ExtractBezier(vtkLRSplineBezierVolume& out, std::string* 
             return;
           }
           const double g = this->Gamma[f];
-          const double* c = this->Coefficients.data() + f * nc;
+          const double* c = source + static_cast<std::size_t>(f) * nc;
           for (int k = 0; k < nw; ++k)
           {
             for (int j = 0; j < nv; ++j)
@@ -619,15 +688,28 @@ void vtkLRSplinePatch::Write(std::ostream& os) const
   const vtkIdType nb = this->GetNumberOfBasisFunctions();
   const vtkIdType ne = this->GetNumberOfElements();
   const vtkIdType nr = static_cast<vtkIdType>(this->MeshMultiplicities.size());
-  os << "# LRSPLINE VOLUME\n";
-  os << "#\tp1\tp2\tp3\tNbasis\tNline\tNel\tdim\trat\n";
-  os << "\t" << this->Order[0] << "\t" << this->Order[1] << "\t" << this->Order[2] << "\t" << nb
-     << "\t" << nr << "\t" << ne << "\t" << this->Dimension << "\t" << this->Rational << "\n";
+  const int pd = this->ParametricDimension == 2 ? 2 : 3;
+  if (pd == 3)
+  {
+    os << "# LRSPLINE VOLUME\n";
+    os << "#\tp1\tp2\tp3\tNbasis\tNline\tNel\tdim\trat\n";
+  }
+  else
+  {
+    os << "# LRSPLINE SURFACE\n";
+    os << "#\tp1\tp2\tNbasis\tNline\tNel\tdim\trat\n";
+  }
+  os << "\t";
+  for (int d = 0; d < pd; ++d)
+  {
+    os << this->Order[d] << "\t";
+  }
+  os << nb << "\t" << nr << "\t" << ne << "\t" << this->Dimension << "\t" << this->Rational << "\n";
   os << "# Basis functions:\n";
   for (vtkIdType i = 0; i < nb; ++i)
   {
     os << i << ":";
-    for (int d = 0; d < 3; ++d)
+    for (int d = 0; d < pd; ++d)
     {
       os << (d ? " x [" : " [");
       const double* t = this->GetKnots(i, d);
@@ -643,19 +725,40 @@ void vtkLRSplinePatch::Write(std::ostream& os) const
     }
     os << " (" << this->Gamma[i] << ")\n";
   }
-  os << "# Mesh rectangles:\n";
+  os << (pd == 3 ? "# Mesh rectangles:\n" : "# Mesh lines:\n");
   for (vtkIdType r = 0; r < nr; ++r)
   {
     const double* m = this->MeshRectangles.data() + 6 * r;
-    os << "[" << m[0] << ", " << m[3] << "] x [" << m[1] << ", " << m[4] << "] x [" << m[2] << ", "
-       << m[5] << "] (" << this->MeshMultiplicities[r] << ")\n";
+    if (pd == 3)
+    {
+      os << "[" << m[0] << ", " << m[3] << "] x [" << m[1] << ", " << m[4] << "] x [" << m[2]
+         << ", " << m[5] << "]";
+    }
+    else if (m[0] == m[3]) // u constant
+    {
+      os << m[0] << " x [" << m[1] << ", " << m[4] << "]";
+    }
+    else
+    {
+      os << "[" << m[0] << ", " << m[3] << "] x " << m[1];
+    }
+    os << " (" << this->MeshMultiplicities[r] << ")\n";
   }
   os << "# Elements:\n";
   for (vtkIdType e = 0; e < ne; ++e)
   {
     const double* b = this->ElementBoxes.data() + 6 * e;
-    os << e << " [3] : (" << b[0] << ", " << b[1] << ", " << b[2] << ") x (" << b[3] << ", " << b[4]
-       << ", " << b[5] << ")    {";
+    os << e << " [" << pd << "] : (";
+    for (int d = 0; d < pd; ++d)
+    {
+      os << (d ? ", " : "") << b[d];
+    }
+    os << ") x (";
+    for (int d = 0; d < pd; ++d)
+    {
+      os << (d ? ", " : "") << b[d + 3];
+    }
+    os << ")    {";
     if (haveSupports)
     {
       for (vtkIdType k = offsets[e]; k < offsets[e + 1]; ++k)

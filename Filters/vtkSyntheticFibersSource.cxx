@@ -1,6 +1,7 @@
 #include "vtkSyntheticFibersSource.h"
 
 #include "vtkSplineVizProgress.h"
+#include "vtkSplineVizRandom.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -24,37 +25,7 @@ vtkStandardNewMacro(vtkSyntheticFibersSource);
 
 namespace
 {
-// A small counter-based generator (splitmix64): every tube gets its own
-// stream from (seed, tube id), so the output does not depend on threading
-// or on how the tubes are split into pieces.
-struct TubeRandom
-{
-  uint64_t State;
-  TubeRandom(unsigned int seed, vtkIdType tube)
-    : State(0x9E3779B97F4A7C15ull * (static_cast<uint64_t>(seed) + 1) ^
-        (static_cast<uint64_t>(tube) * 0xD1B54A32D192ED03ull))
-  {
-  }
-  uint64_t Next()
-  {
-    uint64_t z = (this->State += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  /// Uniform in [0, 1).
-  double Uniform() { return static_cast<double>(this->Next() >> 11) * (1.0 / 9007199254740992.0); }
-  double Uniform(double a, double b) { return a + (b - a) * this->Uniform(); }
-  void UnitVector(double v[3])
-  {
-    const double z = this->Uniform(-1.0, 1.0);
-    const double phi = this->Uniform(0.0, 2.0 * 3.14159265358979323846);
-    const double s = std::sqrt(std::max(0.0, 1.0 - z * z));
-    v[0] = s * std::cos(phi);
-    v[1] = s * std::sin(phi);
-    v[2] = z;
-  }
-};
+using TubeRandom = vtkSplineVizRandom;
 
 double Dot(const double a[3], const double b[3])
 {

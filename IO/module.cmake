@@ -1,9 +1,16 @@
 # IO/: readers and writers of the SplineViz module (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkIFEMReader"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineReader")
 # Plain C++ parser of the LRSplines text and GoTools g2 formats.
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineParser")
+# IFEM's HDF5 results: the HDF5 layer (the only user of the HDF5 C library)
+# and the VTK blocks of its spline and Lagrange patches.
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkIFEMBlockBuilder"
+  "${SPLINEVIZ_FOLDER}/vtkIFEMFile"
+  "${SPLINEVIZ_FOLDER}/vtkIFEMLagrangePatch")
 # Neuroimaging: NIfTI diffusion tensor volumes and scalar / vector volumes,
 # MRtrix .tck / TrackVis .trk tractograms, read and written.
 list(APPEND splineviz_classes

@@ -1,17 +1,25 @@
 /**
  * @class   vtkLRSplineParser
- * @brief   Parses LRSplines text volumes (.lr, several patches) and GoTools g2 class 700 volumes
- * into vtkLRSplinePatch.
+ * @brief   Parses LRSplines text patches (.lr, volumes and surfaces, several patches) and GoTools
+ * g2 spline patches (classes 200, 700, 293, 793) into vtkLRSplinePatch.
  *
- * Plain C++ (not a vtkObject), used by vtkLRSplineReader. The formats are
- * described in docs/spline-formats.md. The parser is strict and never trusts a
- * count: it reads token by token, tracks line numbers, and every error
- * message starts with "line N: " (N the line of the offending token; the
- * last line for a truncated file). Knot vectors must have exactly order + 1
- * values; counts in headers must match what follows; unknown headers and
- * LR-spline surfaces are rejected with a message that says what was found.
- * Values are checked by vtkLRSplinePatch::Validate() (called by Parse), so NaN
- * or infinite numbers are reported with their line too.
+ * Plain C++ (not a vtkObject), used by vtkLRSplineReader and vtkIFEMReader.
+ * The formats are described in docs/spline-formats.md: LRSplines'
+ * "# LRSPLINE VOLUME" / "# LRSPLINE SURFACE" text; GoTools' tensor-product
+ * SplineSurface (200) and SplineVolume (700), rational ones with homogeneous
+ * coefficients; GoTools' own LRSplineSurface (293) and LRSplineVolume (793),
+ * whose elements are rebuilt from the mesh rectangles stored over the
+ * distinct knots. Surfaces become patches of ParametricDimension 2 and
+ * rational g2 patches set RationalCoefficients (see vtkLRSplinePatch).
+ *
+ * The parser is strict and never trusts a count: it reads token by token,
+ * tracks line numbers, and every error message starts with "line N: " (N the
+ * line of the offending token; the last line for a truncated file). Knot
+ * vectors must have exactly order + 1 values; counts in headers must match
+ * what follows; unknown headers, curves and pre-2013 LR surfaces are rejected
+ * with a message that says what was found. Values are checked by
+ * vtkLRSplinePatch::Validate() (called by Parse), so NaN or infinite numbers
+ * are reported with their line too.
  */
 
 #ifndef vtkLRSplineParser_h

@@ -100,14 +100,17 @@ int vtkLRSplineReader::CanReadFile(const char* fileName)
   const int format = vtkLRSplineParser::DetectFormat(head);
   if (format == vtkLRSplineParser::LRSPLINES)
   {
-    return head.find("LRSPLINE VOLUME") != std::string::npos ? 1 : 0;
+    return head.find("LRSPLINE VOLUME") != std::string::npos ||
+        head.find("LRSPLINE SURFACE") != std::string::npos
+      ? 1
+      : 0;
   }
   if (format == vtkLRSplineParser::G2)
   {
     std::istringstream s(head);
     int cls = 0;
     s >> cls;
-    return cls == 700 ? 1 : 0;
+    return (cls == 200 || cls == 700 || cls == 293 || cls == 793) ? 1 : 0;
   }
   return 0;
 }
@@ -160,6 +163,26 @@ int vtkLRSplineReader::RequestData(
     return fail(where + error);
   }
   std::string().swap(text);
+  for (std::size_t p = 0; p < patches.size(); ++p)
+  {
+    bool inferred = false;
+    if (!patches[p].ApplyRationalMode(
+          this->RationalMode, this->GeometryMode != 0, &inferred, &error))
+    {
+      return fail(where + "patch " + std::to_string(p) + ": " + error);
+    }
+    if (inferred)
+    {
+      vtkWarningMacro(<< "\"" << inputName << "\": patch " << p << " has " << patches[p].Dimension
+                      << " components for " << patches[p].ParametricDimension
+                      << " parametric directions: read as rational (the last component is the "
+                         "weight); set RationalMode to Polynomial if it is not");
+    }
+    if (!patches[p].Validate(&error))
+    {
+      return fail(where + "patch " + std::to_string(p) + ": " + error);
+    }
+  }
 
   int piece = 0, numPieces = 1;
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
@@ -201,8 +224,7 @@ int vtkLRSplineReader::RequestData(
     }
   }
 
-  const std::string formatName =
-    format == vtkLRSplineParser::G2 ? "GoTools g2 class 700" : "LRSplines text";
+  const std::string formatName = format == vtkLRSplineParser::G2 ? "GoTools g2" : "LRSplines text";
   vtkLRSplineBezierGrid::Options options;
   options.GeometryMode = this->GeometryMode != 0;
   options.MergePoints = this->MergePoints != 0;
@@ -263,4 +285,5 @@ void vtkLRSplineReader::PrintSelf(ostream& os, vtkIndent indent)
      << this->PhysicalBounds[4] << " " << this->PhysicalBounds[5] << "\n";
   os << indent << "FieldName: " << (this->FieldName ? this->FieldName : "(none)") << "\n";
   os << indent << "MergePoints: " << this->MergePoints << "\n";
+  os << indent << "RationalMode: " << this->RationalMode << "\n";
 }

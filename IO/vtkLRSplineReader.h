@@ -1,35 +1,30 @@
 /**
  * @class   vtkLRSplineReader
- * @brief   Reads LR-spline volumes (.lr, LRSplines text format, several patches) and GoTools g2
- * tensor-product volumes (.g2) as exact Bezier hexahedra.
+ * @brief   Reads LR-spline volumes and surfaces (.lr, LRSplines text format, several patches) and
+ * GoTools g2 spline patches (.g2: classes 200, 700, 293, 793) as exact Bezier cells.
  *
  * The data side of Fuchs et al., "Direct interactive visualization of locally
  * refined spline volumes" (§3): every LR element becomes one
- * VTK_BEZIER_HEXAHEDRON whose control points carry the element's Bernstein
- * coefficients (the exact change of basis of §3.2.3, computed once, in
- * parallel). VTK interpolates point data of Bezier cells with the same
- * Bernstein basis, so the grid IS the spline: ParaView shows it natively and
- * every VTK filter can use it; vtkLRSplineProbeFilter,
- * vtkLRSplineResampleToImage and vtkLRSplineStreamTracer evaluate it fast and
- * exactly with a k-d forest.
+ * VTK_BEZIER_HEXAHEDRON (volumes) or VTK_BEZIER_QUADRILATERAL (surfaces) whose
+ * control points carry the element's Bernstein coefficients (the exact change
+ * of basis of §3.2.3, computed once, in parallel). VTK interpolates point data
+ * of Bezier cells with the same Bernstein basis, so the grid IS the spline:
+ * ParaView shows it natively and every VTK filter can use it;
+ * vtkLRSplineProbeFilter, vtkLRSplineResampleToImage and
+ * vtkLRSplineStreamTracer evaluate volumes fast and exactly with a k-d forest.
  *
  * Output: a vtkMultiBlockDataSet, one block per patch ("Patch 0", ...), each a
- * vtkUnstructuredGrid with
- * - cells: one VTK_BEZIER_HEXAHEDRON per element, degrees (p, q, r) (at least
- *   1: a piecewise constant direction is written as linear);
- * - cell data: "HigherOrderDegrees" (3 ints, set as the degrees array),
- *   "LRParameterBox" (umin, vmin, wmin, umax, vmax, wmax), "LRElementId" (the
- *   element's index in its patch), "LRElementMinSide" (shortest side, in the
- *   units of the points);
- * - point data: the field's Bezier coefficients in an array named FieldName
- *   (the active vectors with 3 components, the active scalars with 1);
- *   in geometry mode also "LRParameterCoordinates";
- * - field data: "LRPatchIndex", "LRDegrees", "LRNumberOfBasisFunctions",
- *   "LRNumberOfElements", "LRNumberOfMeshRectangles", "LRRefinementLevels"
- *   (per direction, log2 of largest over smallest element side),
- *   "LRParameterDomain", "LRMode" (0 field, 1 geometry),
- *   "LRPhysicalTransform" (field mode: scale xyz, offset xyz with
- *   x = offset + scale * u), "LRSourceFormat".
+ * vtkUnstructuredGrid written by vtkLRSplineBezierGrid (see there for the
+ * cell, point and field data: "HigherOrderDegrees", "LRParameterBox",
+ * "LRElementId", "LRElementMinSide"; the coefficients in an array named
+ * FieldName; "LRPatchIndex", "LRParametricDimension", "LRDegrees", ...,
+ * "LRMode", "LRRational", "LRPhysicalTransform", "LRSourceFormat").
+ *
+ * Rational patches (g2 patches flagged rational; LRSplines text by
+ * RationalMode) hold homogeneous coefficients; in geometry mode they become
+ * rational Bezier cells (VTK's "RationalWeights"), in field mode they are an
+ * error (a rational map of the parameter box is not the field mode's affine
+ * placement).
  *
  * Field mode (default): control points are placed at the equally spaced
  * points of each element's parameter box (that is the Bezier form of the
@@ -38,20 +33,13 @@
  * the control points (an IFEM-style geometry shows its real shape; it needs 2
  * or 3 components).
  *
- * Control points shared by neighbouring elements with equal coefficients are
- * merged (MergePoints), so the grid's boundary is the spline's boundary.
- *
- * Piece requests are honoured: piece p of n gets the elements
- * [p N / n, (p + 1) N / n) of every patch (the Bezier form of an element does
- * not depend on the others, so the pieces are exact too).
- *
- * Progress is reported per patch and abort honoured between patches (an
- * aborted read gives an empty output). ReadFromInputString reads the text
- * from memory (used by the fuzz target Testing/Fuzz/FuzzLRSplineReader).
- *
- * Bad input gives an error naming the file and the line (truncated files,
- * wrong counts, unknown headers, non-finite numbers, knot vectors of the
- * wrong length, inconsistent meshes) and an empty output; RequestData returns 0.
+ * Shared control points with equal coefficients are merged (MergePoints).
+ * Piece p of n gets the elements [p N / n, (p + 1) N / n) of every patch
+ * (exact too). Progress is reported per patch, abort honoured between patches
+ * (empty output). ReadFromInputString reads the text from memory (the fuzz
+ * target). Bad input (truncated files, wrong counts, unknown headers,
+ * non-finite numbers, inconsistent meshes) gives an error naming the file and
+ * the line and an empty output; RequestData returns 0.
  */
 
 #ifndef vtkLRSplineReader_h
@@ -122,6 +110,20 @@ public:
   ///@}
 
   ///@{
+  /**
+   * How LRSplines text patches are told rational (see
+   * vtkLRSplinePatch::RationalModes): Automatic (default; in geometry mode,
+   * rat = 1 or more components than parametric directions), Polynomial or
+   * Rational. g2 patches follow their own flag.
+   */
+  vtkSetClampMacro(RationalMode, int, 0, 2);
+  vtkGetMacro(RationalMode, int);
+  void SetRationalModeToAutomatic() { this->SetRationalMode(0); }
+  void SetRationalModeToPolynomial() { this->SetRationalMode(1); }
+  void SetRationalModeToRational() { this->SetRationalMode(2); }
+  ///@}
+
+  ///@{
   /// Name of the point-data array of coefficients. Default "Field".
   vtkSetStringMacro(FieldName);
   vtkGetStringMacro(FieldName);
@@ -155,6 +157,7 @@ protected:
   double PhysicalBounds[6] = { 0, -1, 0, -1, 0, -1 };
   char* FieldName = nullptr;
   vtkTypeBool MergePoints = 1;
+  int RationalMode = 0;
   std::string LastError;
 
 private:

@@ -7,7 +7,9 @@ list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkRayCastTubeMapper"
   "${SPLINEVIZ_FOLDER}/vtkTessellatedTubeMapper")
 list(APPEND splineviz_private_classes
-  "${SPLINEVIZ_FOLDER}/vtkSplineVizGPUBuffer")
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizGPUBuffer"
+  "${SPLINEVIZ_FOLDER}/vtkSplineTubeVisibility"
+  "${SPLINEVIZ_FOLDER}/vtkTessellatedTubeLevels")
 # Stylized lines (Stoll et al.): the mapper, its CPU fix-up and the math
 # shared by both and the shaders (vtkStylizedLineMath.h compiles
 # glsl/vtkStylizedLineMathShared.glsl as C++).
@@ -30,8 +32,6 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeGS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeFS.glsl"
-  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeCullVS.glsl"
-  "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeCullFS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeCommon.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkTessellatedTubeTCS.glsl"

@@ -404,8 +404,9 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   {
     vtkPointData* pd = grids[g]->GetPointData();
     vtkFieldData* fd = grids[g]->GetFieldData();
+    vtkDataArray* rational = fd ? fd->GetArray("LRRational") : nullptr;
     if (pd->GetRationalWeights() || pd->GetArray("RationalWeights") ||
-      (fd && fd->GetArray("LRRational")))
+      (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0))
     {
       return done(in.Fail("patch " + std::to_string(g) +
         " is rational (it has rational weights): the volume mapper renders polynomial "
@@ -415,8 +416,9 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     if (mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1)
     {
       return done(in.Fail("patch " + std::to_string(g) +
-        " was read in geometry mode (its coefficients are the geometry, there is no field "
-        "to render): read it with the reader's GeometryMode off"));
+        " is in geometry mode (its points are a spline geometry map, e.g. an IFEM result or "
+        "vtkLRSplineReader's GeometryMode): the volume mapper renders field-mode volumes over "
+        "their parameter box only"));
     }
     if (pd->GetNumberOfArrays() == 0)
     {

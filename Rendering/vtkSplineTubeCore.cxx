@@ -1,6 +1,7 @@
 #include "vtkSplineTubeCore.h"
 
 #include "vtkSplineTubeMath.h"
+#include "vtkSplineTubeVisibility.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -121,6 +122,13 @@ vtkSplineTubeCore::vtkSplineTubeCore()
   this->SegmentBlockIds->SetName("SegmentBlockIds");
   this->TubeFirstNodes->SetName("TubeFirstNodes");
   this->TubeNumberOfNodes->SetName("TubeNumberOfNodes");
+  this->TubeFirstChunks->SetName("TubeFirstChunks");
+  this->ChunkFirstSegments->SetName("ChunkFirstSegments");
+  this->ChunkTubes->SetName("ChunkTubes");
+  this->ChunkSpheres->SetNumberOfComponents(4);
+  this->ChunkSpheres->SetName("ChunkSpheres");
+  this->ChunkSizes->SetNumberOfComponents(3);
+  this->ChunkSizes->SetName("ChunkSizes");
 }
 
 //------------------------------------------------------------------------------
@@ -148,6 +156,13 @@ void vtkSplineTubeCore::Initialize()
   this->SegmentBlockIds->SetNumberOfTuples(0);
   this->TubeFirstNodes->SetNumberOfTuples(0);
   this->TubeNumberOfNodes->SetNumberOfTuples(0);
+  this->TubeFirstChunks->SetNumberOfTuples(0);
+  this->ChunkFirstSegments->SetNumberOfTuples(0);
+  this->ChunkTubes->SetNumberOfTuples(0);
+  this->ChunkSpheres->SetNumberOfTuples(0);
+  this->ChunkSizes->SetNumberOfTuples(0);
+  this->SegmentSpheres->SetNumberOfTuples(0);
+  vtkMath::UninitializeBounds(this->Bounds);
   this->ColorsGiven = false;
   this->ColorsMissing = false;
   this->MaximumRadius = 0.0;
@@ -170,6 +185,11 @@ vtkIdType vtkSplineTubeCore::GetNumberOfNodes() const
 vtkIdType vtkSplineTubeCore::GetNumberOfSegments() const
 {
   return this->SegmentFirstNodes->GetNumberOfTuples();
+}
+
+vtkIdType vtkSplineTubeCore::GetNumberOfChunks() const
+{
+  return this->ChunkTubes->GetNumberOfTuples();
 }
 
 //------------------------------------------------------------------------------
@@ -567,7 +587,197 @@ void vtkSplineTubeCore::Build()
         }
       }
     });
+  this->BuildChunks();
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::BuildChunks()
+{
+  const vtkIdType numTubes = this->TubeFirstNodes->GetNumberOfTuples();
+  const vtkIdType numSegments = this->SegmentFirstNodes->GetNumberOfTuples();
+  const vtkIdType* tubeNodes = this->TubeNumberOfNodes->GetPointer(0);
+  this->TubeFirstChunks->SetNumberOfTuples(numTubes + 1);
+  vtkIdType* tubeFirstChunk = this->TubeFirstChunks->GetPointer(0);
+  tubeFirstChunk[0] = 0;
+  for (vtkIdType t = 0; t < numTubes; ++t)
+  {
+    tubeFirstChunk[t + 1] =
+      tubeFirstChunk[t] + (tubeNodes[t] - 1 + ChunkSegments - 1) / ChunkSegments;
+  }
+  const vtkIdType numChunks = tubeFirstChunk[numTubes];
+  this->ChunkFirstSegments->SetNumberOfTuples(numChunks + 1);
+  this->ChunkTubes->SetNumberOfTuples(numChunks);
+  this->ChunkSpheres->SetNumberOfTuples(numChunks);
+  this->ChunkSizes->SetNumberOfTuples(numChunks);
+  this->SegmentSpheres->SetNumberOfTuples(numSegments);
+  vtkMath::UninitializeBounds(this->Bounds);
+  if (numChunks == 0)
+  {
+    this->ChunkFirstSegments->SetValue(0, 0);
+    return;
+  }
+  vtkTypeUInt32* chunkFirst = this->ChunkFirstSegments->GetPointer(0);
+  vtkTypeUInt32* chunkTube = this->ChunkTubes->GetPointer(0);
+  float* spheres = this->ChunkSpheres->GetPointer(0);
+  float* sizes = this->ChunkSizes->GetPointer(0);
+  vtkTypeUInt32* segmentSpheres = this->SegmentSpheres->GetPointer(0);
+  const float* P = this->NodePositions->GetPointer(0);
+  const float* M = this->NodeTangents->GetPointer(0);
+  const float* R = this->NodeRadii->GetPointer(0);
+  const vtkTypeUInt32* first = this->SegmentFirstNodes->GetPointer(0);
+  const vtkIdType* tubeFirstNode = this->TubeFirstNodes->GetPointer(0);
+
+  // The box of a segment: its cubic Bezier control points (the curve lies in
+  // their convex hull) padded by the largest of the radius spline's (the
+  // radius lies below their maximum).
+  auto segmentBox = [&](vtkIdType segment, double box[6], double control[4][3], double& r)
+  {
+    const vtkIdType i = first[segment];
+    const vtkIdType j = i + 1;
+    r = std::max({ static_cast<double>(R[2 * i]), static_cast<double>(R[2 * j]),
+      R[2 * i] + R[2 * i + 1] / 3.0, R[2 * j] - R[2 * j + 1] / 3.0 });
+    for (int k = 0; k < 3; ++k)
+    {
+      control[0][k] = P[3 * i + k];
+      control[1][k] = P[3 * i + k] + M[3 * i + k] / 3.0;
+      control[2][k] = P[3 * j + k] - M[3 * j + k] / 3.0;
+      control[3][k] = P[3 * j + k];
+      box[2 * k] = std::min({ control[0][k], control[1][k], control[2][k], control[3][k] }) - r;
+      box[2 * k + 1] = std::max({ control[0][k], control[1][k], control[2][k], control[3][k] }) + r;
+    }
+  };
+
+  // Pass 1: per chunk its box (kept in `boxes` until the centre is known),
+  // sizes, first segment and tube; the bounds by thread.
+  std::vector<double> boxes(static_cast<size_t>(6 * numChunks));
+  struct Local
+  {
+    double B[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
+      VTK_DOUBLE_MIN };
+  };
+  vtkSMPThreadLocal<Local> locals;
+  vtkSMPTools::For(0, numTubes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double* B = locals.Local().B;
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        // Segments of the tubes before this one: one fewer than their nodes.
+        vtkIdType segment = tubeFirstNode[t] - t;
+        const vtkIdType last = segment + tubeNodes[t] - 1;
+        for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
+        {
+          chunkFirst[c] = static_cast<vtkTypeUInt32>(segment);
+          chunkTube[c] = static_cast<vtkTypeUInt32>(t);
+          double* box = &boxes[6 * c];
+          for (int k = 0; k < 3; ++k)
+          {
+            box[2 * k] = VTK_DOUBLE_MAX;
+            box[2 * k + 1] = VTK_DOUBLE_MIN;
+          }
+          double length = 0.0;
+          double maxLength = 0.0;
+          double maxRadius = 0.0;
+          const vtkIdType stop = std::min<vtkIdType>(last, segment + ChunkSegments);
+          for (; segment < stop; ++segment)
+          {
+            double segmentBounds[6];
+            double control[4][3];
+            double r = 0.0;
+            segmentBox(segment, segmentBounds, control, r);
+            for (int k = 0; k < 6; k += 2)
+            {
+              box[k] = std::min(box[k], segmentBounds[k]);
+              box[k + 1] = std::max(box[k + 1], segmentBounds[k + 1]);
+            }
+            double polygon = 0.0;
+            for (int q = 0; q < 3; ++q)
+            {
+              polygon += std::sqrt(vtkMath::Distance2BetweenPoints(control[q], control[q + 1]));
+            }
+            length += polygon;
+            maxLength = std::max(maxLength, polygon);
+            maxRadius = std::max(maxRadius, r);
+          }
+          for (int k = 0; k < 6; k += 2)
+          {
+            B[k] = std::min(B[k], box[k]);
+            B[k + 1] = std::max(B[k + 1], box[k + 1]);
+          }
+          sizes[3 * c] = static_cast<float>(length);
+          sizes[3 * c + 1] = static_cast<float>(maxLength);
+          sizes[3 * c + 2] = static_cast<float>(maxRadius);
+        }
+      }
+    });
+  chunkFirst[numChunks] = static_cast<vtkTypeUInt32>(numSegments);
+  for (int k = 0; k < 6; k += 2)
+  {
+    this->Bounds[k] = VTK_DOUBLE_MAX;
+    this->Bounds[k + 1] = VTK_DOUBLE_MIN;
+  }
+  for (auto& local : locals)
+  {
+    for (int k = 0; k < 6; k += 2)
+    {
+      this->Bounds[k] = std::min(this->Bounds[k], local.B[k]);
+      this->Bounds[k + 1] = std::max(this->Bounds[k + 1], local.B[k + 1]);
+    }
+  }
+
+  // Pass 2: the spheres around the boxes, relative to the centre. Rounding
+  // to float is covered by a relative margin.
+  double center[3];
+  this->GetCenter(center);
+  vtkSMPTools::For(0, numChunks,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType c = begin; c < end; ++c)
+      {
+        const double* box = &boxes[6 * c];
+        double radius2 = 0.0;
+        double extent = 0.0;
+        for (int k = 0; k < 3; ++k)
+        {
+          const double mid = 0.5 * (box[2 * k] + box[2 * k + 1]);
+          spheres[4 * c + k] = static_cast<float>(mid - center[k]);
+          radius2 += 0.25 * (box[2 * k + 1] - box[2 * k]) * (box[2 * k + 1] - box[2 * k]);
+          extent = std::max(extent, std::abs(mid - center[k]));
+        }
+        const double radius = std::sqrt(radius2);
+        spheres[4 * c + 3] = static_cast<float>(radius + 1e-6 * (radius + extent));
+        // The segments' spheres, relative to the chunk's.
+        for (vtkIdType segment = chunkFirst[c]; segment < chunkFirst[c + 1]; ++segment)
+        {
+          double segmentBounds[6];
+          double control[4][3];
+          double r = 0.0;
+          segmentBox(segment, segmentBounds, control, r);
+          double part[4];
+          double partRadius2 = 0.0;
+          for (int k = 0; k < 3; ++k)
+          {
+            part[k] = 0.5 * (segmentBounds[2 * k] + segmentBounds[2 * k + 1]) - center[k];
+            partRadius2 += 0.25 * (segmentBounds[2 * k + 1] - segmentBounds[2 * k]) *
+              (segmentBounds[2 * k + 1] - segmentBounds[2 * k]);
+          }
+          part[3] = std::sqrt(partRadius2) * (1.0 + 1e-6) + 1e-6 * extent;
+          segmentSpheres[segment] = vtkSplineTubeVisibility::EncodePart(spheres + 4 * c, part);
+        }
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::GetCenter(double center[3]) const
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    center[k] = vtkMath::AreBoundsInitialized(this->Bounds)
+      ? 0.5 * (this->Bounds[2 * k] + this->Bounds[2 * k + 1])
+      : 0.0;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -671,61 +881,9 @@ void vtkSplineTubeCore::EvaluateSegment(vtkIdType segment, double t, double posi
 }
 
 //------------------------------------------------------------------------------
-void vtkSplineTubeCore::GetBounds(double bounds[6])
+void vtkSplineTubeCore::GetBounds(double bounds[6]) const
 {
-  vtkMath::UninitializeBounds(bounds);
-  const vtkIdType numSegments = this->SegmentFirstNodes->GetNumberOfTuples();
-  if (numSegments == 0)
-  {
-    return;
-  }
-  const float* P = this->NodePositions->GetPointer(0);
-  const float* M = this->NodeTangents->GetPointer(0);
-  const float* R = this->NodeRadii->GetPointer(0);
-  const vtkTypeUInt32* first = this->SegmentFirstNodes->GetPointer(0);
-
-  struct Local
-  {
-    double B[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
-      VTK_DOUBLE_MIN };
-  };
-  vtkSMPThreadLocal<Local> locals;
-  vtkSMPTools::For(0, numSegments,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double* B = locals.Local().B;
-      for (vtkIdType s = begin; s < end; ++s)
-      {
-        const vtkIdType i = first[s];
-        const vtkIdType j = i + 1;
-        // The cubic Bezier control points of the position and radius splines:
-        // the curve lies in their convex hull and the radius below their maximum.
-        const double r = std::max({ static_cast<double>(R[2 * i]), static_cast<double>(R[2 * j]),
-          R[2 * i] + R[2 * i + 1] / 3.0, R[2 * j] - R[2 * j + 1] / 3.0 });
-        for (int c = 0; c < 3; ++c)
-        {
-          const double c0 = P[3 * i + c];
-          const double c1 = P[3 * i + c] + M[3 * i + c] / 3.0;
-          const double c2 = P[3 * j + c] - M[3 * j + c] / 3.0;
-          const double c3 = P[3 * j + c];
-          B[2 * c] = std::min({ B[2 * c], c0 - r, c1 - r, c2 - r, c3 - r });
-          B[2 * c + 1] = std::max({ B[2 * c + 1], c0 + r, c1 + r, c2 + r, c3 + r });
-        }
-      }
-    });
-  for (int c = 0; c < 3; ++c)
-  {
-    bounds[2 * c] = VTK_DOUBLE_MAX;
-    bounds[2 * c + 1] = VTK_DOUBLE_MIN;
-  }
-  for (auto& local : locals)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      bounds[2 * c] = std::min(bounds[2 * c], local.B[2 * c]);
-      bounds[2 * c + 1] = std::max(bounds[2 * c + 1], local.B[2 * c + 1]);
-    }
-  }
+  std::copy(this->Bounds, this->Bounds + 6, bounds);
 }
 
 //------------------------------------------------------------------------------
@@ -740,6 +898,7 @@ void vtkSplineTubeCore::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfTubes: " << this->GetNumberOfTubes() << "\n";
   os << indent << "NumberOfNodes: " << this->GetNumberOfNodes() << "\n";
   os << indent << "NumberOfSegments: " << this->GetNumberOfSegments() << "\n";
+  os << indent << "NumberOfChunks: " << this->GetNumberOfChunks() << "\n";
   os << indent << "NumberOfSkippedLines: " << this->NumberOfSkippedLines << "\n";
   os << indent << "NumberOfMergedPoints: " << this->NumberOfMergedPoints << "\n";
 }

@@ -31,6 +31,12 @@
  * inserts sub-steps where successive tangents turn by nearly 90 degrees; the
  * double reflection needs them to stay rotation-minimizing at any curvature).
  *
+ * Per data change Build() also cuts every tube into **chunks**, runs of at
+ * most ChunkSegments consecutive segments, each with a bounding sphere of
+ * everything drawn for it (the segments' Bezier control points padded by
+ * their radii): the units of the renderers' per-view work (frustum and
+ * occlusion culling, vtkSplineTubeVisibility; level of detail).
+ *
  * The split of each cubic segment into C1-continuous quadratic sub-segments
  * and their oriented bounding boxes (Salm §3.2 'Rendering') are in
  * vtkSplineTubeMath.h, shared with the shaders; see SplitSegment().
@@ -151,6 +157,9 @@ public:
   vtkBooleanMacro(ComputeFrames, bool);
   ///@}
 
+  /// The longest chunk, in segments.
+  static constexpr int ChunkSegments = 8;
+
   /**
    * Forget all tubes (the settings are kept).
    */
@@ -224,6 +233,31 @@ public:
   vtkIdTypeArray* GetTubeNumberOfNodes() { return this->TubeNumberOfNodes; }
   ///@}
 
+  ///@{
+  /**
+   * Chunk table (made by Build()): per chunk its first segment (one more
+   * tuple than chunks: the last is the number of segments), its tube, its
+   * bounding sphere (x, y, z relative to GetCenter(), radius) and its sizes
+   * (the length of its segments' Bezier control polygons, the longest such
+   * polygon of one of its segments, its largest radius). Chunks of a tube
+   * are consecutive.
+   */
+  vtkIdType GetNumberOfChunks() const;
+  vtkTypeUInt32Array* GetChunkFirstSegments() { return this->ChunkFirstSegments; }
+  vtkTypeUInt32Array* GetChunkTubes() { return this->ChunkTubes; }
+  vtkFloatArray* GetChunkSpheres() { return this->ChunkSpheres; }
+  vtkFloatArray* GetChunkSizes() { return this->ChunkSizes; }
+  /// Per segment its bounding sphere relative to its chunk's (vtkSplineTubeVisibility::EncodePart).
+  vtkTypeUInt32Array* GetSegmentSpheres() { return this->SegmentSpheres; }
+  vtkIdTypeArray* GetTubeFirstChunks() { return this->TubeFirstChunks; }
+  ///@}
+
+  /**
+   * The centre of the tubes' bounds (made by Build(); the origin of the chunk
+   * spheres, and of the positions the mappers upload).
+   */
+  void GetCenter(double center[3]) const;
+
   /**
    * True when colors were given for every piece added.
    */
@@ -231,10 +265,10 @@ public:
 
   /**
    * Bounds of the tubes' surfaces (the convex hulls of the cubic segments'
-   * Bezier control points, padded by the largest radius of each segment).
-   * Uninitialized bounds when there are no tubes.
+   * Bezier control points, padded by the largest radius of each segment),
+   * made by Build(). Uninitialized bounds when there are no tubes.
    */
-  void GetBounds(double bounds[6]);
+  void GetBounds(double bounds[6]) const;
 
   /**
    * Largest radius over all nodes (0 without tubes).
@@ -283,6 +317,13 @@ protected:
   vtkNew<vtkTypeUInt32Array> SegmentBlockIds;
   vtkNew<vtkIdTypeArray> TubeFirstNodes;
   vtkNew<vtkIdTypeArray> TubeNumberOfNodes;
+  vtkNew<vtkIdTypeArray> TubeFirstChunks;
+  vtkNew<vtkTypeUInt32Array> ChunkFirstSegments;
+  vtkNew<vtkTypeUInt32Array> ChunkTubes;
+  vtkNew<vtkFloatArray> ChunkSpheres;
+  vtkNew<vtkFloatArray> ChunkSizes;
+  vtkNew<vtkTypeUInt32Array> SegmentSpheres;
+  double Bounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
 
   bool ColorsGiven = false;
   bool ColorsMissing = false;
@@ -295,6 +336,8 @@ private:
   void operator=(const vtkSplineTubeCore&) = delete;
 
   void PropagateFrames(vtkIdType tube);
+  /// The chunk table, the bounds and the centre (after the tangents).
+  void BuildChunks();
 };
 
 #endif

@@ -2,6 +2,7 @@
 
 #include "vtkSplineTubeColor.h"
 #include "vtkSplineTubeCore.h"
+#include "vtkSplineTubeVisibility.h"
 #include "vtkSplineVizGPUBuffer.h"
 
 #include "vtkActor.h"
@@ -20,6 +21,7 @@
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexBufferObject.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
@@ -35,9 +37,15 @@
 #include <vtk_glew.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <vector>
+
+struct vtkSplineTubeMapper::PyramidHolder
+{
+  vtkSplineTubeVisibility::DepthPyramid Pyramid;
+};
 
 //------------------------------------------------------------------------------
 vtkSplineTubeMapper::vtkSplineTubeMapper()
@@ -45,6 +53,8 @@ vtkSplineTubeMapper::vtkSplineTubeMapper()
   , SegmentsBuffer(new vtkSplineVizGPUBuffer)
   , TubesBuffer(new vtkSplineVizGPUBuffer)
   , ColorsBuffer(new vtkSplineVizGPUBuffer)
+  , Visibility(new vtkSplineTubeVisibility)
+  , Pyramid(new PyramidHolder)
 {
   // The tube data is built per data change; the VBO shift/scale machinery of
   // the superclass does not apply (we shift positions ourselves).
@@ -271,8 +281,14 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   {
     this->UploadFailed = false;
     this->UploadTubes(window);
+    this->SetVisibilityChunks();
     this->UploadTime.Modified();
   }
+  // Interaction: the render window's desired rate (VTK's interactors raise
+  // it while the camera moves), or the representation's LOD mapper.
+  this->InteractiveRender = this->InteractiveSubset &&
+    (this->ForceInteractive ||
+      window->GetDesiredUpdateRate() >= std::max(this->InteractiveUpdateRate, 1e-300));
   if (this->Core->GetNumberOfSegments() == 0 || this->UploadFailed)
   {
     return;
@@ -288,6 +304,158 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   }
   this->RenderPieceDraw(ren, actor);
   this->RenderPieceFinish(ren, actor);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::SetVisibilityChunks()
+{
+  this->Visibility->SetChunks(this->Core->GetChunkSpheres()->GetPointer(0),
+    this->Core->GetChunkTubes()->GetPointer(0), this->Core->GetNumberOfChunks(),
+    this->Core->GetSegmentSpheres()->GetPointer(0),
+    this->Core->GetChunkFirstSegments()->GetPointer(0));
+}
+
+//------------------------------------------------------------------------------
+vtkIdType vtkSplineTubeMapper::GetLastNumberOfChunksInFrustum() const
+{
+  return this->Visibility->GetNumberOfChunksInFrustum();
+}
+
+vtkIdType vtkSplineTubeMapper::GetLastNumberOfChunksDrawn() const
+{
+  return this->Visibility->GetNumberOfChunksDrawn();
+}
+
+vtkIdType vtkSplineTubeMapper::GetLastNumberOfChunksHidden() const
+{
+  return this->Visibility->GetNumberOfChunksHidden();
+}
+
+void vtkSplineTubeMapper::SetOcclusionCullingDepthBias(double bias)
+{
+  this->Visibility->SetDepthBias(bias);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+bool vtkSplineTubeMapper::ReadDepthPyramid(vtkRenderer* ren)
+{
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkOpenGLState* state = window->GetState();
+  int width = 0;
+  int height = 0;
+  int x0 = 0;
+  int y0 = 0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+  if (width <= 0 || height <= 0)
+  {
+    return false;
+  }
+  this->DepthImage.resize(static_cast<size_t>(width) * height);
+  unsigned int drawBinding = 0;
+  unsigned int drawBuffer = 0;
+  state->GetCurrentDrawFramebufferState(drawBinding, drawBuffer);
+  state->PushReadFramebufferBinding();
+  state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, drawBinding);
+  GLint packBuffer = 0;
+  glGetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &packBuffer);
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(x0, y0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, this->DepthImage.data());
+  glBindBuffer(GL_PIXEL_PACK_BUFFER, static_cast<GLuint>(packBuffer));
+  state->PopReadFramebufferBinding();
+  if (glGetError() != GL_NO_ERROR)
+  {
+    return false;
+  }
+  this->Pyramid->Pyramid.Build(this->DepthImage.data(), width, height);
+  ++this->LastNumberOfDepthPyramids;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::DrawVisibleChunks(vtkRenderer* ren, vtkActor* act,
+  const std::function<void(const std::vector<std::uint32_t>& chunks)>& draw)
+{
+  const auto start = std::chrono::steady_clock::now();
+  this->LastNumberOfDepthPyramids = 0;
+
+  // The view, as the shaders see it: uploaded (shifted) positions to view
+  // coordinates, and the projection.
+  vtkSplineTubeVisibility::View view;
+  float modelView[16];
+  float radiusScale = 1.0f;
+  this->ComputeTubeMatrices(ren, act, modelView, nullptr, radiusScale);
+  vtkMatrix4x4* vcdc = GetViewToDisplayMatrix(ren); // the projection, transposed
+  for (int i = 0; i < 16; ++i)
+  {
+    view.ModelView[i] = modelView[i];
+    view.Projection[i] = vcdc->GetElement(i / 4, i % 4);
+  }
+  int x0 = 0;
+  int y0 = 0;
+  ren->GetTiledSizeAndOrigin(&view.Width, &view.Height, &x0, &y0);
+
+  // Occlusion culling needs an opaque draw and a depth buffer that can be
+  // read back (not multisampled).
+  GLint sampleBuffers = 0;
+  glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
+  const bool occlusion = this->OcclusionCulling && sampleBuffers == 0 &&
+    !act->IsRenderingTranslucentPolygonalGeometry() && view.Width > 0 && view.Height > 0;
+
+  // The interaction subset: the fraction that met the budget last time; the
+  // first interactive frame after a still one scales the still frame's time.
+  const double budget = std::max(act->GetAllocatedRenderTime(), 1e-3);
+  double fraction = 1.0;
+  if (this->InteractiveRender)
+  {
+    fraction = this->LastRenderInteractive || this->LastStillDrawTime <= 0.0
+      ? this->InteractiveFraction
+      : std::max(1e-3, std::min(1.0, budget / this->LastStillDrawTime));
+  }
+  this->Visibility->BeginFrame(view, fraction, occlusion, true);
+  std::vector<std::uint32_t> chunks;
+  const int groups = this->Visibility->GetNumberOfGroups();
+  bool pyramid = false;
+  for (int g = 0; g < groups; ++g)
+  {
+    if (g > 0 && occlusion)
+    {
+      pyramid = this->ReadDepthPyramid(ren);
+    }
+    this->Visibility->CullGroup(g, pyramid ? &this->Pyramid->Pyramid : nullptr, chunks);
+    if (!chunks.empty())
+    {
+      draw(chunks);
+    }
+  }
+  // Remember what is visible in the finished picture for the next frame.
+  const bool finalPyramid = occlusion && groups > 0 && this->ReadDepthPyramid(ren);
+  this->Visibility->EndFrame(finalPyramid ? &this->Pyramid->Pyramid : nullptr);
+
+  // The time to the end of the GPU's work adapts the interaction subset.
+  if (this->InteractiveSubset)
+  {
+    glFinish();
+  }
+  this->LastDrawTime =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  this->LastLineFraction = fraction;
+  this->LastRenderInteractive = this->InteractiveRender;
+  if (!this->InteractiveSubset)
+  {
+    return;
+  }
+  if (!this->InteractiveRender)
+  {
+    this->LastStillDrawTime = this->LastDrawTime;
+  }
+  else
+  {
+    // Damped multiplicative update toward the budget.
+    const double ratio = budget / std::max(this->LastDrawTime, 1e-6);
+    this->InteractiveFraction = std::max(1e-3, std::min(1.0, fraction * std::pow(ratio, 0.7)));
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -747,4 +915,8 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CellIdArrayName: " << (this->CellIdArrayName ? this->CellIdArrayName : "(none)")
      << "\n";
   os << indent << "Segments: " << this->Core->GetNumberOfSegments() << "\n";
+  os << indent << "OcclusionCulling: " << this->OcclusionCulling << "\n";
+  os << indent << "InteractiveSubset: " << this->InteractiveSubset << "\n";
+  os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
+  os << indent << "ForceInteractive: " << this->ForceInteractive << "\n";
 }

@@ -41,16 +41,19 @@
 #include "vtkNew.h"          // for vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 
-#include <iosfwd>  // for std::ostream
-#include <memory>  // for std::unique_ptr
-#include <string>  // for std::string
-#include <utility> // for std::pair
-#include <vector>  // for std::vector
+#include <cstdint>    // for std::uint32_t
+#include <functional> // for std::function
+#include <iosfwd>     // for std::ostream
+#include <memory>     // for std::unique_ptr
+#include <string>     // for std::string
+#include <utility>    // for std::pair
+#include <vector>     // for std::vector
 
 class vtkMatrix4x4;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkSplineTubeCore;
+class vtkSplineTubeVisibility;
 class vtkSplineVizGPUBuffer;
 
 class SPLINEVIZ_EXPORT vtkSplineTubeMapper : public vtkOpenGLPolyDataMapper
@@ -100,6 +103,66 @@ public:
   vtkGetStringMacro(CellIdArrayName);
   ///@}
 
+  ///@{
+  /**
+   * Occlusion culling (default on): per frame the chunks of the lines
+   * (vtkSplineTubeCore) are drawn front to back in groups, and a chunk whose
+   * bounding sphere lies behind what is already drawn over its whole screen
+   * rectangle (a depth pyramid read back between the groups) is not drawn at
+   * all (vtkSplineTubeVisibility). Exact: the picture is the one drawn
+   * without it. Used for opaque lines in single-sampled framebuffers (a
+   * multisampled depth buffer cannot be read back); frustum culling of
+   * chunks is always on.
+   */
+  vtkSetMacro(OcclusionCulling, bool);
+  vtkGetMacro(OcclusionCulling, bool);
+  vtkBooleanMacro(OcclusionCulling, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Interaction budget (default on): while the camera moves (the render
+   * window's desired update rate at least InteractiveUpdateRate, as VTK's
+   * interactors set it during interaction), draw a stable, spatially even
+   * subset of the lines sized so that the mapper's frame fits the actor's
+   * allocated render time (1 / desired update rate for a single actor); all
+   * lines when the camera stops. The subset is a fraction of the lines by a
+   * fixed hash of their index (nested: a larger fraction adds lines), so
+   * nothing is uploaded again. ForceInteractive draws the subset always (the
+   * ParaView representations' level-of-detail mapper).
+   */
+  vtkSetMacro(InteractiveSubset, bool);
+  vtkGetMacro(InteractiveSubset, bool);
+  vtkBooleanMacro(InteractiveSubset, bool);
+  vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(InteractiveUpdateRate, double);
+  vtkSetMacro(ForceInteractive, bool);
+  vtkGetMacro(ForceInteractive, bool);
+  vtkBooleanMacro(ForceInteractive, bool);
+  ///@}
+
+  ///@{
+  /**
+   * What the last render drew: the fraction of the lines (1 at rest), the
+   * chunks in the view frustum, the chunks drawn and those dropped as hidden,
+   * the depth pyramids read back, and the time the draw took (seconds, to
+   * the end of the GPU's work).
+   */
+  double GetLastLineFraction() const { return this->LastLineFraction; }
+  vtkIdType GetLastNumberOfChunksInFrustum() const;
+  vtkIdType GetLastNumberOfChunksDrawn() const;
+  vtkIdType GetLastNumberOfChunksHidden() const;
+  int GetLastNumberOfDepthPyramids() const { return this->LastNumberOfDepthPyramids; }
+  double GetLastDrawTime() const { return this->LastDrawTime; }
+  ///@}
+
+  /**
+   * For tests only: a window depth added to the chunks' nearest depths in the
+   * occlusion test. 0 (default) is exact; a positive value hides visible
+   * chunks (the negative control of the tests that compare culling on and off).
+   */
+  void SetOcclusionCullingDepthBias(double bias);
+
   /**
    * The tube data built from the last rendered input (nodes, frames, segments).
    */
@@ -144,6 +207,26 @@ protected:
 
   /// Upload the tube data to the GPU (called after the core was rebuilt).
   virtual void UploadTubes(vtkOpenGLRenderWindow* window) = 0;
+
+  /**
+   * Give the visibility its chunks (called after UploadTubes()): the core's
+   * chunks by default; a subclass with chunks of its own sets those.
+   */
+  virtual void SetVisibilityChunks();
+
+  /**
+   * Draw the chunks visible in this view (see OcclusionCulling and
+   * InteractiveSubset): `draw` is called for each group of chunks (ids of the
+   * visibility's chunks, front to back, never empty), with the depth pyramid
+   * of what the earlier groups drew read back in between. The subclass' GL
+   * state (program, buffers) must survive the read-backs (they only bind the
+   * read framebuffer).
+   */
+  void DrawVisibleChunks(vtkRenderer* ren, vtkActor* act,
+    const std::function<void(const std::vector<std::uint32_t>& chunks)>& draw);
+
+  /// Whether this render draws the interaction subset (set by RenderPiece()).
+  bool IsInteractiveRender() const { return this->InteractiveRender; }
 
   ///@{
   /**
@@ -283,6 +366,12 @@ protected:
   char* RadiusArray = nullptr;
   double RadiusScale = 1.0;
   char* CellIdArrayName = nullptr;
+  bool OcclusionCulling = true;
+  bool InteractiveSubset = true;
+  double InteractiveUpdateRate = 1.0;
+  bool ForceInteractive = false;
+
+  std::unique_ptr<vtkSplineTubeVisibility> Visibility;
 
   vtkNew<vtkSplineTubeCore> Core;
   vtkNew<vtkPolyData> EmptyInput; ///< stands in for CurrentInput in superclass code
@@ -307,6 +396,19 @@ private:
 
   /// Everything the tube data depends on besides the input's contents.
   std::string BuildSignature();
+  /// Read the renderer's part of the depth buffer into DepthImage and build the pyramid.
+  bool ReadDepthPyramid(vtkRenderer* ren);
+
+  bool InteractiveRender = false;
+  bool LastRenderInteractive = false;
+  double InteractiveFraction = 1.0; ///< the subset's fraction for the next interactive frame
+  double LastStillDrawTime = 0.0;   ///< seconds, all lines
+  double LastLineFraction = 1.0;
+  double LastDrawTime = 0.0;
+  int LastNumberOfDepthPyramids = 0;
+  std::vector<float> DepthImage;
+  struct PyramidHolder;
+  std::unique_ptr<PyramidHolder> Pyramid;
   std::string LastSignature;
   vtkMTimeType LastInputMTime = 0;
   vtkDataObject* LastInput = nullptr;

@@ -210,9 +210,8 @@ std::vector<unsigned char> vtkStylizedLineFixUp::ClassifyAllVertices(const View&
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizedLineFixUp::Classify(const View& view, bool enabled, std::vector<int>& stripFirsts,
-  std::vector<int>& stripCounts, std::vector<std::uint32_t>& segments,
-  std::vector<std::uint32_t>& joints)
+void vtkStylizedLineFixUp::Classify(const View& view, bool enabled,
+  std::vector<std::uint32_t>& segments, std::vector<std::uint32_t>& joints)
 {
   const vtkIdType numBatches = static_cast<vtkIdType>(this->Batches.size());
   this->Flags.assign(this->Batches.size(), 0);
@@ -283,9 +282,7 @@ void vtkStylizedLineFixUp::Classify(const View& view, bool enabled, std::vector<
     }
   }
 
-  // Draw lists, tube by tube.
-  stripFirsts.clear();
-  stripCounts.clear();
+  // The fix-up's lists, tube by tube.
   segments.clear();
   joints.clear();
   if (!this->Core)
@@ -312,19 +309,8 @@ void vtkStylizedLineFixUp::Classify(const View& view, bool enabled, std::vector<
     return p.z < 0.0 ? r / std::max(-p.z, 1e-30) : 0.0;
   };
   this->MaximumScreenRadius = 0.0;
-  stripFirsts.reserve(static_cast<size_t>(numTubes));
-  stripCounts.reserve(static_cast<size_t>(numTubes));
-  auto strip = [&](vtkIdType first, vtkIdType last)
-  {
-    if (last > first)
-    {
-      stripFirsts.push_back(static_cast<int>(2 * first));
-      stripCounts.push_back(static_cast<int>(2 * (last - first + 1)));
-    }
-  };
   for (vtkIdType t = 0; t < numTubes; ++t)
   {
-    vtkIdType start = tubeFirst[t];
     const vtkIdType last = tubeFirst[t] + tubeNodes[t] - 1;
     this->MaximumScreenRadius =
       std::max({ this->MaximumScreenRadius, screenRadius(tubeFirst[t]), screenRadius(last) });
@@ -335,7 +321,6 @@ void vtkStylizedLineFixUp::Classify(const View& view, bool enabled, std::vector<
         continue;
       }
       const Batch& batch = this->Batches[b];
-      strip(start, batch.FirstNode);
       for (int s = 0; s < batch.Segments; ++s)
       {
         segments.push_back(batch.FirstNode + static_cast<std::uint32_t>(s));
@@ -357,8 +342,62 @@ void vtkStylizedLineFixUp::Classify(const View& view, bool enabled, std::vector<
           joints.push_back(static_cast<std::uint32_t>(i));
         }
       }
-      start = batch.FirstNode + batch.Segments;
     }
-    strip(start, last);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizedLineFixUp::BuildStrips(const std::vector<std::uint32_t>& batches,
+  std::vector<int>& stripFirsts, std::vector<int>& stripCounts, std::vector<std::uint32_t>& caps)
+{
+  stripFirsts.clear();
+  stripCounts.clear();
+  caps.clear();
+  for (std::uint32_t b : batches)
+  {
+    const Batch& batch = this->Batches[b];
+    if (b == this->TubeFirstBatch[batch.Tube])
+    {
+      caps.push_back(2 * batch.Tube);
+    }
+    if (b + 1 == this->TubeFirstBatch[batch.Tube + 1])
+    {
+      caps.push_back(2 * batch.Tube + 1);
+    }
+    if (b < this->Flags.size() && this->Flags[b])
+    {
+      continue; // drawn by the fix-up
+    }
+    // Two strip vertices per point; a batch continuing the last strip (its
+    // first point the strip's last) extends it.
+    const int first = static_cast<int>(2 * batch.FirstNode);
+    const int count = 2 * (batch.Segments + 1);
+    if (!stripFirsts.empty() && stripFirsts.back() + stripCounts.back() - 2 == first)
+    {
+      stripCounts.back() += count - 2;
+    }
+    else
+    {
+      stripFirsts.push_back(first);
+      stripCounts.push_back(count);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizedLineFixUp::GetCullingChunks(
+  double widen, std::vector<float>& spheres, std::vector<std::uint32_t>& tubes) const
+{
+  const size_t n = this->Batches.size();
+  spheres.resize(4 * n);
+  tubes.resize(n);
+  for (size_t b = 0; b < n; ++b)
+  {
+    const Batch& batch = this->Batches[b];
+    std::copy(batch.Center, batch.Center + 3, &spheres[4 * b]);
+    spheres[4 * b + 3] = static_cast<float>(
+      (batch.Radius + widen * batch.MaxRadius) * (1.0 + 1e-6) + 1e-6 * std::abs(batch.Center[0]) +
+      1e-6 * std::abs(batch.Center[1]) + 1e-6 * std::abs(batch.Center[2]));
+    tubes[b] = batch.Tube;
   }
 }

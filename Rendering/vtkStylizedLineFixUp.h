@@ -65,15 +65,31 @@ public:
 
   /**
    * Classify the batches for `view` (when `enabled`; otherwise none is fixed
-   * up) and write the draw lists: per strip its first vertex (2 x first
-   * point) and its vertex count (2 x points), the first point of every
-   * fixed-up segment, and the joints: the points of the fixed-up segments
-   * (each once) whose sphere of JointRadius line radii stays behind the
-   * polyline's end caps (further than that from both ends).
+   * up) and write the fix-up's lists: the first point of every fixed-up
+   * segment, and the joints: the points of the fixed-up segments (each once)
+   * whose sphere of JointRadius line radii stays behind the polyline's end
+   * caps (further than that from both ends).
    */
-  void Classify(const View& view, bool enabled, std::vector<int>& stripFirsts,
-    std::vector<int>& stripCounts, std::vector<std::uint32_t>& segments,
+  void Classify(const View& view, bool enabled, std::vector<std::uint32_t>& segments,
     std::vector<std::uint32_t>& joints);
+
+  /**
+   * The draw lists of `batches` (after Classify(); ids ordered as the mapper
+   * draws them): per strip its first vertex (2 x first point) and its vertex
+   * count (2 x points) for the batches not fixed up, consecutive batches of a
+   * polyline in one strip; and the caps (2 x polyline + end) of the polylines
+   * whose first or last batch is among them.
+   */
+  void BuildStrips(const std::vector<std::uint32_t>& batches, std::vector<int>& stripFirsts,
+    std::vector<int>& stripCounts, std::vector<std::uint32_t>& caps);
+
+  /**
+   * The batches as chunks of vtkSplineTubeVisibility: spheres (shifted model
+   * coordinates) that also hold `widen` times the largest line radius around
+   * the vertices, and the polyline of each.
+   */
+  void GetCullingChunks(
+    double widen, std::vector<float>& spheres, std::vector<std::uint32_t>& tubes) const;
 
   /// Unit tangent per line vertex (3 floats each), made by Build().
   const std::vector<float>& GetTangents() const { return this->Tangents; }

@@ -1,6 +1,7 @@
 #include "vtkStylizedLineMapper.h"
 
 #include "vtkSplineTubeCore.h"
+#include "vtkSplineTubeVisibility.h"
 #include "vtkSplineTubeMath.h"
 #include "vtkSplineVizGPUBuffer.h"
 #include "vtkStylizedLineFixUp.h"
@@ -71,6 +72,7 @@ struct vtkStylizedLineMapper::vtkInternals
   vtkSplineVizGPUBuffer TubeStarts;              // first vertex per polyline (+ the end)
   vtkSplineVizGPUBuffer Segments;                // fix-up: first vertex of each fixed segment
   vtkSplineVizGPUBuffer JointsBuffer;            // fix-up: vertices with a joint sphere
+  vtkSplineVizGPUBuffer CapsBuffer;              // the caps of a group: 2 x polyline + end
   vtkSmartPointer<vtkOpenGLBufferObject> Meshes; // cylinder, then cap index patterns
   size_t MeshBytes = 0;
   int MeshSides = 0;
@@ -79,6 +81,10 @@ struct vtkStylizedLineMapper::vtkInternals
   vtkStylizedLineFixUp FixUp;
   std::vector<int> StripFirsts;
   std::vector<int> StripCounts;
+  std::vector<std::uint32_t> Caps;
+  std::vector<float> CullingSpheres; // the batches as chunks of the visibility
+  std::vector<std::uint32_t> CullingTubes;
+  double CullingWiden = -1.0; // the halo the spheres were made for
   std::vector<std::uint32_t> FixedSegments;
   std::vector<std::uint32_t> Joints;
   std::vector<std::uint32_t> UploadedSegments; // what the buffers hold
@@ -176,7 +182,7 @@ void vtkStylizedLineMapper::ReleaseGraphicsResources(vtkWindow* window)
 {
   vtkInternals& in = *this->Internals;
   for (vtkSplineVizGPUBuffer* buffer : { &in.Nodes, &in.Tangents, &in.Colors, &in.TexCoords,
-         &in.Frames, &in.TubeStarts, &in.Segments, &in.JointsBuffer })
+         &in.Frames, &in.TubeStarts, &in.Segments, &in.JointsBuffer, &in.CapsBuffer })
   {
     buffer->ReleaseGraphicsResources(window);
   }
@@ -431,6 +437,18 @@ bool vtkStylizedLineMapper::BuildMeshes()
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizedLineMapper::SetVisibilityChunks()
+{
+  // The fix-up's batches, their spheres widened by the halo (and the caps
+  // and fix-up geometry, within a radius).
+  vtkInternals& in = *this->Internals;
+  in.CullingWiden = 1.0 + std::max(0.0, this->HaloWidth);
+  in.FixUp.GetCullingChunks(in.CullingWiden, in.CullingSpheres, in.CullingTubes);
+  this->Visibility->SetChunks(in.CullingSpheres.data(), in.CullingTubes.data(),
+    static_cast<vtkIdType>(in.CullingTubes.size()));
+}
+
+//------------------------------------------------------------------------------
 void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
 {
   vtkInternals& in = *this->Internals;
@@ -462,7 +480,7 @@ void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   v.Epsilon = this->FixUpEpsilon;
   v.JointRadius = 1.0 + this->HaloWidth;
   v.PixelsPerUnit = pixelsPerUnit;
-  in.FixUp.Classify(v, this->FixUp, in.StripFirsts, in.StripCounts, in.FixedSegments, in.Joints);
+  in.FixUp.Classify(v, this->FixUp, in.FixedSegments, in.Joints);
   // Sides of about 3 pixels for the largest cap or cylinder on screen.
   const double sides = std::ceil(2.0 * vtkMath::Pi() * in.FixUp.GetMaximumScreenRadius() / 3.0);
   in.Sides = static_cast<int>(std::max(8.0, std::min<double>(this->FixUpSides, sides)));
@@ -691,6 +709,7 @@ bool vtkStylizedLineMapper::UpdateShadowMap(
     {
       in.Meshes->Bind();
       program->SetUniformi("lineMode", CAPS);
+      program->SetUniformi("lineCapList", 0);
       glDrawElementsInstanced(GL_TRIANGLES, 3 * in.MeshSides, GL_UNSIGNED_SHORT,
         reinterpret_cast<const void*>(6 * sizeof(unsigned short) * in.MeshSides),
         static_cast<GLsizei>(2 * this->Core->GetNumberOfTubes()));
@@ -906,6 +925,10 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   {
     return;
   }
+  if (in.CullingWiden != 1.0 + std::max(0.0, this->HaloWidth))
+  {
+    this->SetVisibilityChunks();
+  }
 
   vtkOpenGLHelper& helper = this->Primitives[PrimitiveTris];
   this->UpdateShaders(helper, ren, act);
@@ -969,44 +992,64 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
   state->vtkglDisable(GL_CULL_FACE);
 
-  // 1. The silhouette quads of every polyline piece, one multi-draw.
-  program->SetUniformi("lineMode", STRIPS);
-  program->SetUniformi("lineHaloPass", 0);
-  if (!in.StripFirsts.empty())
-  {
-    glMultiDrawArrays(GL_TRIANGLE_STRIP, in.StripFirsts.data(), in.StripCounts.data(),
-      static_cast<GLsizei>(in.StripFirsts.size()));
-  }
-  // 2. Caps, 3. the fix-up's cylinders and joints; then the caps' halos.
-  in.Meshes->Bind();
+  // Group by group (vtkSplineVisibility): 1. the silhouette quads of the
+  // visible batches, one multi-draw; 2. their polylines' caps, 3. the
+  // fix-up's cylinders and joints (with the first group: few, and found per
+  // view); then the caps' halos.
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   const GLsizei sides = static_cast<GLsizei>(in.MeshSides);
   const void* capOffset = reinterpret_cast<const void*>(6 * sizeof(unsigned short) * in.MeshSides);
   const size_t jointOffset = 9 * sizeof(unsigned short) * in.MeshSides;
   const GLsizei fixed = static_cast<GLsizei>(in.FixedSegments.size());
-  for (int halo = 0; halo < (this->HaloWidth > 0.0 ? 2 : 1); ++halo)
-  {
-    program->SetUniformi("lineHaloPass", halo);
-    if (this->Capping)
+  bool firstGroup = true;
+  this->DrawVisibleChunks(ren, act,
+    [&](const std::vector<std::uint32_t>& batches)
     {
-      program->SetUniformi("lineMode", CAPS);
-      glDrawElementsInstanced(
-        GL_TRIANGLES, 3 * sides, GL_UNSIGNED_SHORT, capOffset, static_cast<GLsizei>(2 * numTubes));
-    }
-    // The fix-up's geometry has no halo: around a line seen down its length
-    // a halo ring would cut the line's own parts further back wherever they
-    // curve out of its profile (Stoll's halo is the quads' band).
-    if (fixed > 0 && halo == 0)
-    {
-      program->SetUniformi("lineMode", FIXUP_CYLINDERS);
-      glDrawElementsInstanced(GL_TRIANGLES, 6 * sides, GL_UNSIGNED_SHORT, nullptr, fixed);
-    }
-    if (!in.Joints.empty() && halo == 0)
-    {
-      program->SetUniformi("lineMode", FIXUP_JOINTS);
-      glDrawElementsInstanced(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT,
-        reinterpret_cast<const void*>(jointOffset), static_cast<GLsizei>(in.Joints.size()));
-    }
-  }
+      in.FixUp.BuildStrips(batches, in.StripFirsts, in.StripCounts, in.Caps);
+      program->SetUniformi("lineMode", STRIPS);
+      program->SetUniformi("lineHaloPass", 0);
+      if (!in.StripFirsts.empty())
+      {
+        glMultiDrawArrays(GL_TRIANGLE_STRIP, in.StripFirsts.data(), in.StripCounts.data(),
+          static_cast<GLsizei>(in.StripFirsts.size()));
+      }
+      const bool caps = this->Capping && !in.Caps.empty() &&
+        in.CapsBuffer.Upload(window, in.Caps.data(), in.Caps.size(), 1, VTK_TYPE_UINT32, GL_R32UI);
+      if (caps)
+      {
+        in.CapsBuffer.Activate(program, "lineCaps");
+        program->SetUniformi("lineCapList", 1);
+      }
+      in.Meshes->Bind();
+      for (int halo = 0; halo < (this->HaloWidth > 0.0 ? 2 : 1); ++halo)
+      {
+        program->SetUniformi("lineHaloPass", halo);
+        if (caps)
+        {
+          program->SetUniformi("lineMode", CAPS);
+          glDrawElementsInstanced(GL_TRIANGLES, 3 * sides, GL_UNSIGNED_SHORT, capOffset,
+            static_cast<GLsizei>(in.Caps.size()));
+        }
+        // The fix-up's geometry has no halo: around a line seen down its
+        // length a halo ring would cut the line's own parts further back
+        // wherever they curve out of its profile (Stoll's halo is the
+        // quads' band).
+        if (fixed > 0 && halo == 0 && firstGroup)
+        {
+          program->SetUniformi("lineMode", FIXUP_CYLINDERS);
+          glDrawElementsInstanced(GL_TRIANGLES, 6 * sides, GL_UNSIGNED_SHORT, nullptr, fixed);
+        }
+        if (!in.Joints.empty() && halo == 0 && firstGroup)
+        {
+          program->SetUniformi("lineMode", FIXUP_JOINTS);
+          glDrawElementsInstanced(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT,
+            reinterpret_cast<const void*>(jointOffset), static_cast<GLsizei>(in.Joints.size()));
+        }
+      }
+      in.Meshes->Release();
+      firstGroup = false;
+    });
+  in.Meshes->Bind();
   in.Meshes->Release();
   if (shadows)
   {
@@ -1015,7 +1058,7 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 
   this->DeactivateTubeBuffers();
   for (vtkSplineVizGPUBuffer* buffer : { &in.Nodes, &in.Tangents, &in.Colors, &in.TexCoords,
-         &in.Frames, &in.TubeStarts, &in.Segments, &in.JointsBuffer })
+         &in.Frames, &in.TubeStarts, &in.Segments, &in.JointsBuffer, &in.CapsBuffer })
   {
     buffer->Deactivate();
   }

@@ -334,6 +334,8 @@ protected:
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
   void UploadTubes(vtkOpenGLRenderWindow* window) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
+  /// The fix-up's batches are the chunks culled (widened by the halo).
+  void SetVisibilityChunks() override;
   void ConfigureTubeCore(vtkSplineTubeCore* core) override;
   void AppendBuildSignature(std::ostream& signature) override;
 

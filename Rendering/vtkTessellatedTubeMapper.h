@@ -176,6 +176,8 @@
 class vtkOpenGLBufferObject;
 class vtkRayCastTubeMapper;
 class vtkRenderWindow;
+class vtkSplineVizGPUBuffer;
+class vtkTessellatedTubeLevels;
 
 class SPLINEVIZ_EXPORT vtkTessellatedTubeMapper : public vtkSplineTubeMapper
 {
@@ -357,14 +359,14 @@ private:
   bool LinkTessellationStages(vtkShaderProgram* program, vtkOpenGLRenderWindow* window);
   void ReleaseTessellationStages();
   /// The base meshes of every (rings, sides) level of detail, in one index buffer.
-  bool BuildBaseMeshes();
-  /// Per-data level-of-detail preparation (chunks, bounding spheres).
-  void BuildChunks();
-  /// Per-view level-of-detail bins and the instance list; false without any draw.
-  bool UpdateDraws(vtkRenderer* ren, vtkActor* act);
+  bool UploadBaseMeshes();
+  /// Classify the chunks for this view (vtkTessellatedTubeLevels::ClassifyView).
+  void ClassifyView(vtkRenderer* ren, vtkActor* act);
+  /// Draw the chunks of one visibility group: their bins, through both programs.
+  void DrawChunks(vtkRenderer* ren, vtkActor* act, const std::vector<std::uint32_t>& chunks);
 
-  struct vtkInternals;
-  std::unique_ptr<vtkInternals> Internals;
+  std::unique_ptr<vtkTessellatedTubeLevels> Levels;
+  std::unique_ptr<vtkSplineVizGPUBuffer> InstancesBuffer;
   std::unique_ptr<vtkSplineVizGPUBuffer> FramesBuffer;
   vtkSmartPointer<vtkOpenGLBufferObject> BaseMeshes;
 

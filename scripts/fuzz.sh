@@ -42,6 +42,8 @@ work="$build/fuzz"
 mkdir -p "$work"
 export ASAN_SYMBOLIZER_PATH="${ASAN_SYMBOLIZER_PATH:-$(command -v llvm-symbolizer || true)}"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}"
+# The leak suppressions of the sanitizer build (each proven outside SplineViz).
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$here/Testing/Sanitizers/lsan.supp:print_suppressions=0}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 # The targets are single-threaded (one input at a time); VTK's SMP tools
 # stay sequential so that a crash points at the input that caused it.

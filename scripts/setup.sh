@@ -14,7 +14,9 @@ build="${SPLINEVIZ_BUILD_DIR:-$here/build}"
 # package needs for the components SplineViz uses; Xvfb for headless
 # rendering (Mesa llvmpipe: OpenGL 4.5 with tessellation); GLM; DIPY for the
 # real diffusion data of the tensor examples; NiBabel, the independent
-# implementation the neuroimaging IO tests compare with; clang with its
+# implementation the neuroimaging IO tests compare with; h5py, with which the
+# IFEM reader's tests read the HDF5 files independently (libhdf5-dev is the
+# library the reader itself uses); clang with its
 # sanitizer and libFuzzer runtimes and llvm-symbolizer for the sanitizer build.
 packages=(
   build-essential cmake
@@ -26,7 +28,7 @@ packages=(
   libgl-dev libopengl-dev libglx-dev python3-dev python3-numpy
   libglm-dev
   xvfb xauth x11-utils
-  python3-dipy python3-nibabel
+  python3-dipy python3-nibabel python3-h5py
   clang libclang-rt-14-dev llvm
 )
 

@@ -311,7 +311,8 @@ void vtkLRSplineVolumeRepresentation::UpdateMapperParameters(vtkDataObject* data
   if (!name || !name[0])
   {
     // No color array (ParaView picks one for its own "Volume" only): the
-    // spline's default field, in gray with an opacity ramp over its range.
+    // spline's first field with ParaView's default color map and opacity
+    // ramp over its range, as ParaView's "Volume" shows a new data set.
     this->UseDefaultTransferFunction(data);
   }
 
@@ -392,15 +393,20 @@ void vtkLRSplineVolumeRepresentation::UseDefaultTransferFunction(vtkDataObject* 
   {
     range[1] = range[0] + 1.0;
   }
-  if (this->DefaultColor->GetSize() != 2 || this->DefaultRange[0] != range[0] ||
+  if (this->DefaultColor->GetSize() != 3 || this->DefaultRange[0] != range[0] ||
     this->DefaultRange[1] != range[1])
   {
+    // ParaView's defaults for a new color array: the "Cool to Warm" map
+    // (diverging) and a linear opacity ramp from 0 to 1, over the data range.
     this->DefaultColor->RemoveAllPoints();
-    this->DefaultColor->AddRGBPoint(range[0], 0.2, 0.2, 0.2);
-    this->DefaultColor->AddRGBPoint(range[1], 1.0, 1.0, 1.0);
+    this->DefaultColor->SetColorSpaceToDiverging();
+    this->DefaultColor->SetVectorModeToMagnitude(); // vtkScalarsToColors' default is a component
+    this->DefaultColor->AddRGBPoint(range[0], 0.231373, 0.298039, 0.752941);
+    this->DefaultColor->AddRGBPoint(0.5 * (range[0] + range[1]), 0.865003, 0.865003, 0.865003);
+    this->DefaultColor->AddRGBPoint(range[1], 0.705882, 0.0156863, 0.14902);
     this->DefaultOpacity->RemoveAllPoints();
     this->DefaultOpacity->AddPoint(range[0], 0.0);
-    this->DefaultOpacity->AddPoint(range[1], 0.5);
+    this->DefaultOpacity->AddPoint(range[1], 1.0);
     this->DefaultRange[0] = range[0];
     this->DefaultRange[1] = range[1];
   }

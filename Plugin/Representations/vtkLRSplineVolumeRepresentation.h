@@ -21,8 +21,11 @@
  *   mapper's FieldArrayName, and the lookup table's vector mode and
  *   component (Magnitude, X, Y, Z) its VectorMode / VectorComponent, as
  *   ParaView's image and unstructured volume representations do (without a
- *   color array: the mapper's default field through a gray and an opacity
- *   ramp over its range);
+ *   color array, e.g. when the representation is chosen for a new data set:
+ *   the spline's first field -- the mapper's default: active vectors, else
+ *   scalars, else the first point array -- through ParaView's default color
+ *   map, "Cool to Warm", and opacity ramp, 0 to 1, over its range, the
+ *   picture ParaView's own "Volume" shows);
  * - Shade with Ambient, Diffuse, Specular, SpecularPower; BlendMode
  *   (composite, maximum and minimum intensity, isosurface) and the iso values
  *   (IsosurfaceValues, as ParaView's image volume representation names them);
@@ -158,9 +161,10 @@ protected:
   void UpdateMapperParameters(vtkDataObject* data);
 
   /**
-   * Without a color array: the spline's default field (the mapper's) through a
-   * gray ramp and an opacity ramp (0 to 0.5) over the range of its
-   * coefficients, instead of vtkVolumeProperty's defaults for 0-1024 data.
+   * Without a color array: the spline's default field (the mapper's) through
+   * ParaView's default color map ("Cool to Warm", diverging) and opacity ramp
+   * (0 to 1) over the range of its coefficients (which bound its values), as
+   * ParaView's "Volume" representation colors a new data set.
    */
   void UseDefaultTransferFunction(vtkDataObject* data);
 

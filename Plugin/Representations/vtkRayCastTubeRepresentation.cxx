@@ -39,14 +39,6 @@ void vtkRayCastTubeRepresentation::SetStraightTolerance(double tolerance)
 }
 
 //------------------------------------------------------------------------------
-void vtkRayCastTubeRepresentation::SetOcclusionCulling(bool culling)
-{
-  static_cast<vtkRayCastTubeMapper*>(this->Mapper)->SetOcclusionCulling(culling);
-  static_cast<vtkRayCastTubeMapper*>(this->LODMapper)->SetOcclusionCulling(culling);
-  this->Modified();
-}
-
-//------------------------------------------------------------------------------
 void vtkRayCastTubeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

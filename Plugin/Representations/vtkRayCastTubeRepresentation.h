@@ -4,9 +4,8 @@
  *
  * A vtkSplineTubeRepresentation backed by vtkRayCastTubeMapper (Salm,
  * "Interactive Rendering of Spline Tubes", §3.2). Adds the ray-casting
- * settings SubSegments, RootIterations, StraightTolerance (closed-form
- * intersection of straight segments) and OcclusionCulling (the depth
- * pre-pass; exact, so IceT composites culled ranks as unculled ones).
+ * settings SubSegments, RootIterations and StraightTolerance (closed-form
+ * intersection of straight segments).
  */
 #ifndef vtkRayCastTubeRepresentation_h
 #define vtkRayCastTubeRepresentation_h
@@ -28,7 +27,6 @@ public:
   void SetSubSegments(int n);
   void SetRootIterations(int n);
   void SetStraightTolerance(double tolerance);
-  void SetOcclusionCulling(bool culling);
   ///@}
 
 protected:

@@ -1,6 +1,8 @@
 #include "vtkSplineTubeRepresentation.h"
 
+#include "vtkInformation.h"
 #include "vtkObjectFactory.h"
+#include "vtkPVRenderView.h"
 #include "vtkSplineTubeMapper.h"
 
 #include <cstring>
@@ -19,6 +21,7 @@ void vtkSplineTubeRepresentation::SetTubeMappers(
   this->LODMapper->Delete();
   this->Mapper = mapper;
   this->LODMapper = lodMapper;
+  lodMapper->ForceInteractiveOn();
   // The superclass wires its pipeline and actor to the mappers here.
   this->SetupDefaults();
 }
@@ -61,6 +64,31 @@ void vtkSplineTubeRepresentation::SetRadiusScale(double scale)
   this->GetTubeMapper()->SetRadiusScale(scale);
   this->GetLODTubeMapper()->SetRadiusScale(scale);
   this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeRepresentation::SetOcclusionCulling(bool culling)
+{
+  this->GetTubeMapper()->SetOcclusionCulling(culling);
+  this->GetLODTubeMapper()->SetOcclusionCulling(culling);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+int vtkSplineTubeRepresentation::ProcessViewRequest(
+  vtkInformationRequestKey* request_type, vtkInformation* inInfo, vtkInformation* outInfo)
+{
+  if (request_type == vtkPVView::REQUEST_UPDATE_LOD())
+  {
+    // No decimated geometry: the LOD mapper draws a subset of the full data.
+    return 1;
+  }
+  const int result = this->Superclass::ProcessViewRequest(request_type, inInfo, outInfo);
+  if (request_type == vtkPVView::REQUEST_RENDER() && this->Mapper->GetNumberOfInputConnections(0))
+  {
+    this->LODMapper->SetInputConnection(0, this->Mapper->GetInputConnection(0, 0));
+  }
+  return result;
 }
 
 //------------------------------------------------------------------------------

@@ -2,13 +2,20 @@
  * @class   vtkSplineTubeRepresentation
  * @brief   ParaView geometry representation drawing polylines with a spline-tube mapper.
  *
- * Base of the SplineViz tube representations ("Ray-Cast Tubes",
- * "Tessellated Tubes"): a geometry representation (with faces, so that it can
- * stand in for ParaView's SurfaceRepresentation) whose mappers (full and LOD)
- * are replaced by a vtkSplineTubeMapper subclass, with the radius
- * settings every tube mapper shares forwarded to both. Everything else
+ * Base of the SplineViz line representations ("Ray-Cast Tubes",
+ * "Tessellated Tubes", "Stylized Lines"): a geometry representation (with
+ * faces, so that it can stand in for ParaView's SurfaceRepresentation) whose
+ * mappers (full and LOD) are replaced by a vtkSplineTubeMapper subclass, with
+ * the settings every line mapper shares forwarded to both. Everything else
  * (coloring by arrays and lookup tables, opacity, lighting, block handling of
  * composite data, parallel rendering) is the geometry representation's.
+ *
+ * Level of detail: while the camera moves, ParaView draws the LOD mapper
+ * (for data above the view's LOD threshold). Here it draws the same, full
+ * data as a subset of the lines sized to the interaction budget
+ * (vtkSplineTubeMapper::ForceInteractive), instead of the decimated geometry
+ * ParaView makes for surfaces (a quadric clustering that would break the
+ * lines and cost seconds on large tractograms).
  */
 #ifndef vtkSplineTubeRepresentation_h
 #define vtkSplineTubeRepresentation_h
@@ -33,7 +40,12 @@ public:
   void SetRadius(double radius);
   void SetRadiusArray(const char* name);
   void SetRadiusScale(double scale);
+  void SetOcclusionCulling(bool culling);
   ///@}
+
+  /// The LOD mapper draws the full data (see the class comment).
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
 
   /**
    * Selection ids: the tube mappers report the picked polyline's original

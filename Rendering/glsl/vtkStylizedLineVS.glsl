@@ -15,8 +15,8 @@
 //     between the two profile circles, their phi = 0 directions synchronized
 //     along t_i x t_i+1 (Stoll §3); the normal is the profile's radial
 //     direction (Stoll: "the normal in the plane of the circle");
-//  2  flat end caps (instance = 2 x polyline + end), culled when turned
-//     away from the eye;
+//  2  flat end caps (instance = 2 x polyline + end, or the entry of lineCaps
+//     holding that with lineCapList), culled when turned away from the eye;
 //  3  the fix-up's joints: a sphere of the line's radius at the inner
 //     vertices of the fixed-up runs (instance = entry of lineJoints), ray cast in
 //     the fragment stage on a view-facing square that bounds it. They fill
@@ -33,6 +33,8 @@ uniform isamplerBuffer lineTangents;   // per vertex: unit tangent, octahedral, 
 uniform usamplerBuffer lineTubeStarts; // per polyline: its first vertex (one entry more: the end)
 uniform usamplerBuffer lineSegments;   // fix-up: first vertex of each segment drawn as a cylinder
 uniform usamplerBuffer lineJoints;     // fix-up: the vertices that get a joint sphere
+uniform usamplerBuffer lineCaps;       // caps drawn (lineCapList): 2 x polyline + end
+uniform int lineCapList;
 uniform int lineNumberOfTubes;
 uniform mat4 tubeMCVC;        // shifted model to view
 uniform float tubeRadiusScale; // model to view scale of radii
@@ -214,8 +216,9 @@ void main()
   }
   else
   {
-    tube = gl_InstanceID >> 1;
-    int end = gl_InstanceID & 1;
+    int cap = lineCapList != 0 ? int(texelFetch(lineCaps, gl_InstanceID).x) : gl_InstanceID;
+    tube = cap >> 1;
+    int end = cap & 1;
     node = end != 0 ? int(texelFetch(lineTubeStarts, tube + 1).x) - 1
                     : int(texelFetch(lineTubeStarts, tube).x);
     vec4 pr = texelFetch(lineNodes, node);

@@ -3,7 +3,7 @@
 // crash, a hang or silent garbage. Cases: truncated files, wrong counts,
 // unknown headers, NaN/inf numbers, knot vectors of the wrong length,
 // inconsistent meshes and support lists, a non-existent file, an empty
-// file, a surface, g2 variants; and a fuzz run of random mutations of the
+// file, broken surfaces, g2 variants; and a fuzz run of random mutations of the
 // real file (must succeed with finite output or fail with a message).
 #include "vtkLRSplineReader.h"
 
@@ -133,14 +133,32 @@ int TestLRSplineReaderBadInput(int, char*[])
   SV_CHECK(status, lines[4 + 17].compare(0, 4, "17: ") == 0);
   SV_CHECK(status, lines[1371].compare(0, 6, "0 [3] ") == 0);
 
-  // Missing, empty and non-text files; a surface.
+  // Missing, empty and non-text files.
   ExpectError(status, h.ReadFile(OutDir + "/does-not-exist.lr"), "missing file", "cannot open", 0);
   ExpectError(status, h.ReadText(""), "empty file", "empty", 1);
   ExpectError(status, h.ReadText("\n\n   \n"), "blank file", "empty", 0);
   ExpectError(
     status, h.ReadText(std::string("\x01\x02\x00\xff", 4)), "binary file", "unknown header", 1);
-  ExpectError(status, h.ReadFile(std::string(SPLINEVIZ_EXTERNAL_DATA_DIR) + "/surface-refined.lr"),
-    "surface", "SURFACE", 1);
+
+  // A surface reads (TestLRSplineReader checks its values); broken surfaces do not.
+  {
+    const std::string surface =
+      lrtest::ReadText(std::string(SPLINEVIZ_EXTERNAL_DATA_DIR) + "/surface-refined.lr");
+    const std::vector<std::string> sl = SplitLines(surface);
+    Result ok = h.ReadText(surface);
+    SV_CHECK_MSG(status, ok.Ok, ok.Message);
+    SV_CHECK(status, sl[1365].compare(0, 6, "0 [2] ") == 0 && sl[1234].compare(0, 2, "0 ") == 0);
+    ExpectError(status,
+      h.ReadText(ReplaceLine(sl, 1366, "0 [3] : (0, 0) x (0.125, 0.125)    {0, 4, 275, 277}")),
+      "surface element [3]", "parametric dimension must be 2", 1366);
+    ExpectError(status, h.ReadText(ReplaceLine(sl, 1235, "0 x [0 1] (2)")), "surface mesh line",
+      "expected ','", 1235);
+    ExpectError(status, h.ReadText(ReplaceLine(sl, 1235, "[0, 1] x [0, 1] (2)")),
+      "surface mesh line with two intervals", "expected a number", 1235);
+    ExpectError(status,
+      h.ReadText(ReplaceLine(sl, 5, "0: [0 0 0.125 ] x [0 0 0.125 ] x [0 0 1] 0 0 (1)")),
+      "surface basis function with three knot vectors", "found \"x\"", 5);
+  }
 
   // Unknown headers.
   ExpectError(status, h.ReadText(ReplaceLine(first, 1, "# LRSPLINE CURVE")),
@@ -268,9 +286,13 @@ int TestLRSplineReaderBadInput(int, char*[])
       "g2 truncated", "truncated", static_cast<int>(g.size()) - 5);
     ExpectError(status, h.ReadText(ReplaceLine(g, 1, "701 1 0 4 0 0 255 255"), ".g2"), "g2 class",
       "class 701", 1);
+    ExpectError(status, h.ReadText(ReplaceLine(g, 1, "100 1 0 4 0 0 255 255"), ".g2"), "g2 curve",
+      "curve", 1);
     ExpectError(status, h.ReadText(ReplaceLine(g, 20, "nan -1.17303638042237 0"), ".g2"), "g2 NaN",
       "not a finite number", 20);
-    ExpectError(status, h.ReadText(ReplaceLine(g, 4, "3 1"), ".g2"), "g2 rational", "rational", 4);
+    // Rational with the third coordinate as weight: zero weights on its first coefficients.
+    ExpectError(status, h.ReadText(ReplaceLine(g, 4, "2 1"), ".g2"), "g2 rational, zero weight",
+      "weight", 11);
     ExpectError(
       status, h.ReadText(ReplaceLine(g, 6, "0 0 0 1 1 1 1"), ".g2"), "g2 short knot vector", "", 0);
     ExpectError(status, h.ReadText(ReplaceLine(g, 6, "0 0 0.5 0 1 1 1 1"), ".g2"),

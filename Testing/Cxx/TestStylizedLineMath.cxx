@@ -317,7 +317,16 @@ void TestFixUp(SplineVizTestStatus& status)
     std::vector<int> counts;
     std::vector<std::uint32_t> segments;
     std::vector<std::uint32_t> joints;
-    fixUp.Classify(view, true, firsts, counts, segments, joints);
+    fixUp.Classify(view, true, segments, joints);
+    std::vector<std::uint32_t> all(static_cast<size_t>(fixUp.GetNumberOfBatches()));
+    for (size_t b = 0; b < all.size(); ++b)
+    {
+      all[b] = static_cast<std::uint32_t>(b);
+    }
+    std::vector<std::uint32_t> caps;
+    fixUp.BuildStrips(all, firsts, counts, caps);
+    SV_CHECK_MSG(status, static_cast<vtkIdType>(caps.size()) == 2 * numTubes,
+      "view " << trial << ": " << caps.size() << " caps for " << numTubes << " polylines");
     const std::vector<unsigned char>& flags = fixUp.GetBatchFlags();
     const std::vector<unsigned char> reference = fixUp.ClassifyAllVertices(view);
     long mismatches = 0;
@@ -421,7 +430,14 @@ void TestFixUp(SplineVizTestStatus& status)
   std::vector<int> counts;
   std::vector<std::uint32_t> segments;
   std::vector<std::uint32_t> joints;
-  fixUp.Classify(view, false, firsts, counts, segments, joints);
+  fixUp.Classify(view, false, segments, joints);
+  std::vector<std::uint32_t> all(static_cast<size_t>(fixUp.GetNumberOfBatches()));
+  for (size_t b = 0; b < all.size(); ++b)
+  {
+    all[b] = static_cast<std::uint32_t>(b);
+  }
+  std::vector<std::uint32_t> caps;
+  fixUp.BuildStrips(all, firsts, counts, caps);
   SV_CHECK(status, static_cast<vtkIdType>(firsts.size()) == numTubes);
   SV_CHECK(status, segments.empty() && joints.empty());
 }

@@ -1,4 +1,4 @@
-// libFuzzer target: the GoTools g2 class 700 parser (.g2) on arbitrary bytes,
+// libFuzzer target: the GoTools g2 parser (.g2: classes 200, 700, 293, 793) on arbitrary bytes,
 // and the Bezier extraction of whatever it accepts (see FuzzLRSplineParser).
 #include "SplineVizFuzzCommon.h"
 

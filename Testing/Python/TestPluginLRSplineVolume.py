@@ -433,7 +433,8 @@ def serial_checks():
         mapper.GetFieldArrayName(), drawn(cell_colored).mean()))
     if mapper.GetFieldArrayName() is not None or drawn(cell_colored).mean() < 0.15:
         fail("coloring by a cell array does not fall back to the spline's field")
-    # No color array at all: the default field, gray, an opacity ramp over its range.
+    # No color array at all: the default field through ParaView's default maps over its
+    # range (TestPluginLRSplineVolumeDefault compares that picture with ParaView's colouring).
     ColorBy(display, None)  # noqa: F405
     uncolored = paraview_image("no-color-array")
     shown = uncolored[drawn(uncolored)]
@@ -441,7 +442,7 @@ def serial_checks():
         mapper.GetFieldArrayName(), drawn(uncolored).mean(), shown.mean(axis=0).round(1),
         shown.min()))
     if drawn(uncolored).mean() < 0.15 or shown.min() < 60:
-        fail("without a color array the volume is not drawn as a translucent gray volume")
+        fail("without a color array the volume is not drawn as a translucent volume")
     ColorBy(display, ("POINTS", "Field", "Magnitude"))  # noqa: F405
     lut.Discretize = 0
     after = paraview_image("colored-again")

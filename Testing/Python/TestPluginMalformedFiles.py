@@ -91,8 +91,8 @@ def damaged_files():
     files.append((write("cut.lr", lr[: len(lr) // 2]), ""))
     g2 = open(os.path.join(source, "Testing", "Data", "External", "tensor-product-volume.g2"), "rb").read()
     files.append((write("cut.g2", g2[: len(g2) // 2]), ""))
-    rational = open(os.path.join(source, "Testing", "Fuzz", "corpus", "g2", "rational.g2"), "rb").read()
-    files.append((write("rational.g2", rational), "rational"))
+    unknown = b"999" + g2[g2.index(b" "):]  # an unknown GoTools class
+    files.append((write("class.g2", unknown), ""))
     return files, tck
 
 

@@ -47,8 +47,8 @@ forwarded = (mapper.GetSubSegments(), mapper.GetRootIterations(), mapper.GetRadi
 if forwarded != (4, 12, "Radius", 0.05, True):
     print("ERROR: properties not forwarded:", forwarded)
     sys.exit(1)
-if not mapper.GetLastRenderCulled():
-    print("ERROR: the occlusion-culling pre-pass was not used")
+if mapper.GetLastNumberOfDepthPyramids() == 0:
+    print("ERROR: occlusion culling was not used")
     sys.exit(1)
 display.OcclusionCulling = 0
 print("GPU bytes per segment: %.1f" % (mapper.GetGPUMemorySize() / 3530.0))
