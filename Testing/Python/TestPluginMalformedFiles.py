@@ -91,8 +91,8 @@ def damaged_files():
     files.append((write("cut.lr", lr[: len(lr) // 2]), ""))
     g2 = open(os.path.join(source, "Testing", "Data", "External", "tensor-product-volume.g2"), "rb").read()
     files.append((write("cut.g2", g2[: len(g2) // 2]), ""))
-    unknown = b"999" + g2[g2.index(b" "):]  # an unknown GoTools class
-    files.append((write("class.g2", unknown), ""))
+    knots = g2.replace(b"0.25 0.375", b"0.375 0.25", 1)  # a decreasing knot vector
+    files.append((write("knots.g2", knots), ""))
     return files, tck
 
 
