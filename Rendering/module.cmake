@@ -28,6 +28,7 @@ list(APPEND splineviz_private_headers
 list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathPrelude.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathShared.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeNodes.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeColor.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkRayCastTubeGS.glsl"

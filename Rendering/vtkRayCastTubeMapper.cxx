@@ -45,9 +45,8 @@ std::string TubeMathSource()
 
 //------------------------------------------------------------------------------
 vtkRayCastTubeMapper::vtkRayCastTubeMapper()
+  : ChunkList(new vtkSplineVizGPUBuffer)
 {
-  // Sphere-swept tubes need no cross-section frames.
-  this->Core->ComputeFramesOff();
 }
 
 //------------------------------------------------------------------------------
@@ -67,7 +66,14 @@ void vtkRayCastTubeMapper::SetSubSegments(int n)
 //------------------------------------------------------------------------------
 size_t vtkRayCastTubeMapper::GetGPUMemorySize()
 {
-  return this->GetTubeBuffersSize();
+  return this->GetTubeBuffersSize() + this->ChunkList->GetNumberOfBytes();
+}
+
+//------------------------------------------------------------------------------
+void vtkRayCastTubeMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->ChunkList->ReleaseGraphicsResources(window);
+  this->Superclass::ReleaseGraphicsResources(window);
 }
 
 //------------------------------------------------------------------------------
@@ -91,16 +97,32 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   std::string VSSource = shaders[vtkShader::Vertex]->GetSource();
+  std::string GSSource = shaders[vtkShader::Geometry]->GetSource();
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
   const std::string math = TubeMathSource();
 
-  vtkShaderProgram::Substitute(VSSource, "//VTK::SplineTubeMath::Dec", math);
-
+  // The vertex stage reads the tubes buffer and, with scalar coloring, makes
+  // the color spline's ends, passed flat to the fragments.
+  vtkShaderProgram::Substitute(VSSource, "//VTK::SplineTubeMath::Dec",
+    math + GetTubeNodesDeclarations() + GetTubeColorDeclarations());
   std::string declarations = vtkRayCastTubeFS;
   vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", math);
   if (this->HaveColors)
   {
-    declarations += GetTubeColorDeclarations();
+    vtkShaderProgram::Substitute(GSSource, "//VTK::TubeColor::GSDec",
+      "flat out vec4 tubeC0GSOutput;\n"
+      "flat out vec4 tubeD0GSOutput;\n"
+      "flat out vec4 tubeC1GSOutput;\n"
+      "flat out vec4 tubeD1GSOutput;\n");
+    vtkShaderProgram::Substitute(GSSource, "//VTK::TubeColor::GSImpl",
+      "tubeC0GSOutput = tubeRect[0].c0;\n"
+      "    tubeD0GSOutput = tubeRect[0].d0;\n"
+      "    tubeC1GSOutput = tubeRect[0].c1;\n"
+      "    tubeD1GSOutput = tubeRect[0].d1;\n");
+    declarations += "flat in vec4 tubeC0VSOutput;\n"
+                    "flat in vec4 tubeD0VSOutput;\n"
+                    "flat in vec4 tubeC1VSOutput;\n"
+                    "flat in vec4 tubeD1VSOutput;\n";
   }
   vtkShaderProgram::Substitute(FSSource, "//VTK::Normal::Dec", declarations);
   // The proxy rectangle lies in the plane of the sub-segment's nearest depth,
@@ -140,7 +162,8 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
     "    gl_DepthRange.near + gl_DepthRange.far);\n";
   if (this->HaveColors)
   {
-    depth += GetTubeColorImplementation("tubeInfoVSOutput.x", "tubeT");
+    depth += "  vec4 tubeColor = clamp(svHermite(tubeC0VSOutput, tubeD0VSOutput, tubeC1VSOutput,\n"
+             "    tubeD1VSOutput, tubeT), 0.0, 1.0);\n";
   }
   depth += GetFragDepthWrittenMarker();
   vtkShaderProgram::Substitute(FSSource, "//VTK::Depth::Impl", depth);
@@ -153,6 +176,7 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
   this->ReplaceShaderTubePicking(FSSource, "tubeInfoVSOutput.z");
 
   shaders[vtkShader::Vertex]->SetSource(VSSource);
+  shaders[vtkShader::Geometry]->SetSource(GSSource);
   shaders[vtkShader::Fragment]->SetSource(FSSource);
 
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
@@ -183,6 +207,8 @@ void vtkRayCastTubeMapper::SetMapperShaderParameters(
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
   vtkShaderProgram* program = cellBO.Program;
   program->SetUniformi("subSegments", this->SubSegments);
+  program->SetUniformi("tubeChunkSegments", vtkSplineTubeCore::ChunkSegments);
+  program->SetUniformi("tubeHaveColors", this->HaveColors ? 1 : 0);
   program->SetUniformi("rootIterations", this->RootIterations);
   program->SetUniformi("rootSamples", this->RootSamples);
   program->SetUniformf("tubeStraightTolerance", static_cast<float>(this->StraightTolerance));
@@ -229,34 +255,46 @@ void vtkRayCastTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
   state->vtkglDisable(GL_CULL_FACE);
 
-  // One point per sub-segment (gl_VertexID = SubSegments * segment + k):
-  // the visible chunks' segment ranges, consecutive chunks merged.
+  // One point per sub-segment of the chunks of each group: their list
+  // (first segment, count) read by the vertex stage, one draw per group.
   const vtkTypeUInt32* chunkFirst = this->Core->GetChunkFirstSegments()->GetPointer(0);
-  const GLint sub = this->SubSegments;
-  std::vector<GLint> firsts;
-  std::vector<GLsizei> counts;
+  const vtkTypeUInt32* chunkTube = this->Core->GetChunkTubes()->GetPointer(0);
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkShaderProgram* program = helper.Program;
+  std::vector<vtkTypeUInt32> list;
   this->DrawVisibleChunks(ren, act,
     [&](const std::vector<std::uint32_t>& chunks)
     {
-      firsts.clear();
-      counts.clear();
-      for (std::uint32_t c : chunks)
+      list.resize(2 * chunks.size());
+      for (size_t i = 0; i < chunks.size(); ++i)
       {
-        const GLint first = static_cast<GLint>(chunkFirst[c]) * sub;
-        const GLsizei count = static_cast<GLsizei>(chunkFirst[c + 1] - chunkFirst[c]) * sub;
-        if (!firsts.empty() && firsts.back() + counts.back() == first)
+        list[2 * i] = chunkFirst[chunks[i]] + chunkTube[chunks[i]]; // its first node
+        list[2 * i + 1] = chunkFirst[chunks[i] + 1] - chunkFirst[chunks[i]];
+      }
+      if (!this->ChunkList->Upload(
+            window, list.data(), chunks.size(), 2, VTK_TYPE_UINT32, GL_RG32UI))
+      {
+        vtkErrorMacro(<< "Could not upload the chunk list: "
+                      << vtkSplineVizGPUBuffer::GetLastUploadError());
+        return;
+      }
+      this->ChunkList->Activate(program, "tubeChunkList");
+      // In draws of at most DrawChunks chunks, each flushed: a software
+      // rasterizer (Mesa llvmpipe) bins a frame's primitives until a flush,
+      // about 2 kB per chunk; without flushes a million chunks take gigabytes.
+      const GLint perChunk = vtkSplineTubeCore::ChunkSegments * this->SubSegments;
+      for (size_t first = 0; first < chunks.size(); first += DrawChunks)
+      {
+        const size_t count = std::min<size_t>(DrawChunks, chunks.size() - first);
+        glDrawArrays(GL_POINTS, static_cast<GLint>(first) * perChunk,
+          static_cast<GLsizei>(count) * perChunk);
+        if (first + count < chunks.size())
         {
-          counts.back() += count;
-        }
-        else
-        {
-          firsts.push_back(first);
-          counts.push_back(count);
+          glFinish();
         }
       }
-      glMultiDrawArrays(
-        GL_POINTS, firsts.data(), counts.data(), static_cast<GLsizei>(firsts.size()));
     });
+  this->ChunkList->Deactivate();
   this->DeactivateTubeBuffers();
 }
 

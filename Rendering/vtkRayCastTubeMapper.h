@@ -79,6 +79,8 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkSplineTubeMapper.h"
 
+#include <memory> // for std::unique_ptr
+
 class SPLINEVIZ_EXPORT vtkRayCastTubeMapper : public vtkSplineTubeMapper
 {
 public:
@@ -127,6 +129,7 @@ public:
   ///@}
 
   size_t GetGPUMemorySize() override;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
   vtkRayCastTubeMapper();
@@ -152,6 +155,11 @@ protected:
 private:
   vtkRayCastTubeMapper(const vtkRayCastTubeMapper&) = delete;
   void operator=(const vtkRayCastTubeMapper&) = delete;
+
+  /// The chunks of the group being drawn (first node, count).
+  std::unique_ptr<vtkSplineVizGPUBuffer> ChunkList;
+  /// Chunks per draw call (bounds the memory a software rasterizer's geometry stage takes).
+  static constexpr size_t DrawChunks = 16384;
 };
 
 #endif

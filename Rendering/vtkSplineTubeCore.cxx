@@ -6,6 +6,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -17,11 +18,15 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPThreadLocalObject.h"
 #include "vtkSMPTools.h"
+#include "vtkSmartPointer.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkTypeUInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 vtkStandardNewMacro(vtkSplineTubeCore);
@@ -36,39 +41,9 @@ bool IsFinite(double v)
   return std::isfinite(v);
 }
 
-/// Central differences inside, second-order one-sided differences at the ends
-/// (first-order for two values): the derivative of `n` values with `comps`
-/// components each, in place into `out`.
-void FiniteDifferences(const float* values, float* out, vtkIdType n, int comps)
-{
-  for (int c = 0; c < comps; ++c)
-  {
-    auto v = [&](vtkIdType i) { return static_cast<double>(values[i * comps + c]); };
-    if (n == 1)
-    {
-      out[c] = 0.0f;
-      continue;
-    }
-    if (n == 2)
-    {
-      const float d = static_cast<float>(v(1) - v(0));
-      out[c] = d;
-      out[comps + c] = d;
-      continue;
-    }
-    out[c] = static_cast<float>(0.5 * (-3.0 * v(0) + 4.0 * v(1) - v(2)));
-    for (vtkIdType i = 1; i + 1 < n; ++i)
-    {
-      out[i * comps + c] = static_cast<float>(0.5 * (v(i + 1) - v(i - 1)));
-    }
-    out[(n - 1) * comps + c] =
-      static_cast<float>(0.5 * (3.0 * v(n - 1) - 4.0 * v(n - 2) + v(n - 3)));
-  }
-}
-
-/// One double-reflection step of the rotation-minimizing frame (Wang et al.
-/// 2008): carries the unit normal `r0` at (x0, t0) to the point x1 with unit
-/// tangent t1.
+/// One double-reflection step of the rotation-minimizing frame (Wang, Jüttler,
+/// Zheng and Liu 2008): carries the unit normal `r0` at (x0, t0) to the point
+/// x1 with unit tangent t1.
 vec3 DoubleReflection(
   const vec3& x0, const vec3& t0, const vec3& r0, const vec3& x1, const vec3& t1)
 {
@@ -100,28 +75,180 @@ vec3 DoubleReflection(
 }
 
 //------------------------------------------------------------------------------
-vtkSplineTubeCore::vtkSplineTubeCore()
+// The inputs and the tube table. Nodes are read from the inputs: tube t's
+// node k is point Connectivity[ConnectivityOffset + k] of its source, or
+// MergedPoints[Merged + k] for the (rare) tubes with merged repeated points.
+struct vtkSplineTubeCore::Internals
 {
-  this->NodePositions->SetNumberOfComponents(3);
-  this->NodePositions->SetName("Positions");
-  this->NodeTangents->SetNumberOfComponents(3);
-  this->NodeTangents->SetName("Tangents");
-  this->NodeRadii->SetNumberOfComponents(2);
-  this->NodeRadii->SetName("Radii");
-  this->NodeColors->SetNumberOfComponents(4);
-  this->NodeColors->SetName("Colors");
-  this->NodeColorDerivatives->SetNumberOfComponents(4);
-  this->NodeColorDerivatives->SetName("ColorDerivatives");
-  this->NodeFrames->SetNumberOfComponents(3);
-  this->NodeFrames->SetName("Frames");
-  this->NodeScalars->SetNumberOfComponents(1);
-  this->NodeScalars->SetName("Scalars");
-  this->SegmentFirstNodes->SetName("SegmentFirstNodes");
-  this->SegmentFlags->SetName("SegmentFlags");
-  this->SegmentCellIds->SetName("SegmentCellIds");
-  this->SegmentBlockIds->SetName("SegmentBlockIds");
-  this->TubeFirstNodes->SetName("TubeFirstNodes");
-  this->TubeNumberOfNodes->SetName("TubeNumberOfNodes");
+  struct Source
+  {
+    vtkSmartPointer<vtkPolyData> Data;
+    vtkSmartPointer<vtkDataArray> Points;
+    const float* PointsF = nullptr;
+    const double* PointsD = nullptr;
+    vtkSmartPointer<vtkDataArray> Radius;
+    vtkSmartPointer<vtkDataArray> Scalar;
+    vtkSmartPointer<vtkUnsignedCharArray> Colors;
+    bool ColorsPerCell = false;
+    vtkSmartPointer<vtkCellArray> Lines;
+    const vtkTypeInt64* Connectivity64 = nullptr;
+    const vtkTypeInt32* Connectivity32 = nullptr;
+    vtkIdType FirstCellId = 0;
+    unsigned int BlockId = 0;
+    double ConstantRadius = 0.01;
+    double RadiusScale = 1.0;
+
+    vtkIdType Connectivity(vtkIdType i) const
+    {
+      return this->Connectivity64 ? static_cast<vtkIdType>(this->Connectivity64[i])
+                                  : static_cast<vtkIdType>(this->Connectivity32[i]);
+    }
+    void Point(vtkIdType pid, double xyzr[4]) const
+    {
+      if (this->PointsF)
+      {
+        xyzr[0] = this->PointsF[3 * pid];
+        xyzr[1] = this->PointsF[3 * pid + 1];
+        xyzr[2] = this->PointsF[3 * pid + 2];
+      }
+      else if (this->PointsD)
+      {
+        xyzr[0] = this->PointsD[3 * pid];
+        xyzr[1] = this->PointsD[3 * pid + 1];
+        xyzr[2] = this->PointsD[3 * pid + 2];
+      }
+      else
+      {
+        this->Points->GetTuple(pid, xyzr);
+      }
+      xyzr[3] = this->Radius ? this->Radius->GetComponent(pid, 0) * this->RadiusScale
+                             : this->ConstantRadius;
+    }
+  };
+  struct Tube
+  {
+    vtkIdType ConnectivityOffset = 0;
+    vtkIdType Line = 0; ///< index in the source's line array
+    vtkIdType CellId = 0;
+    vtkIdType Merged = -1;
+    unsigned int Source = 0;
+  };
+
+  std::vector<Source> Sources;
+  std::vector<Tube> Tubes;
+  std::vector<vtkIdType> TubeFirst{ 0 }; ///< tubes + 1: first node of each tube
+  std::vector<vtkIdType> MergedPoints;
+  bool HaveScalars = false;
+
+  vtkIdType TubeOfNode(vtkIdType node) const
+  {
+    return static_cast<vtkIdType>(
+      std::upper_bound(this->TubeFirst.begin(), this->TubeFirst.end(), node) -
+      this->TubeFirst.begin() - 1);
+  }
+  vtkIdType TubeOfSegment(vtkIdType segment) const
+  {
+    // The first segment of tube t is TubeFirst[t] - t (increasing in t).
+    vtkIdType lo = 0;
+    vtkIdType hi = static_cast<vtkIdType>(this->Tubes.size());
+    while (hi - lo > 1)
+    {
+      const vtkIdType mid = (lo + hi) / 2;
+      if (this->TubeFirst[mid] - mid <= segment)
+      {
+        lo = mid;
+      }
+      else
+      {
+        hi = mid;
+      }
+    }
+    return lo;
+  }
+  vtkIdType PointId(vtkIdType tube, vtkIdType k) const
+  {
+    const Tube& t = this->Tubes[tube];
+    if (t.Merged >= 0)
+    {
+      return this->MergedPoints[t.Merged + k];
+    }
+    return this->Sources[t.Source].Connectivity(t.ConnectivityOffset + k);
+  }
+  void Node(vtkIdType tube, vtkIdType k, double xyzr[4]) const
+  {
+    this->Sources[this->Tubes[tube].Source].Point(this->PointId(tube, k), xyzr);
+  }
+  /// Nodes [first, first + count) of a tube (xyzr, 4 each) and, if asked, their derivatives.
+  void Nodes(vtkIdType tube, vtkIdType first, vtkIdType count, double* xyzr, double* dxyzr) const
+  {
+    const vtkIdType n = this->TubeFirst[tube + 1] - this->TubeFirst[tube];
+    // The nodes around too, for the derivatives.
+    const vtkIdType lo = dxyzr ? std::max<vtkIdType>(0, first - 2) : first;
+    const vtkIdType hi = dxyzr ? std::min(n, first + count + 2) : first + count;
+    double local[4 * 64];
+    std::vector<double> heap;
+    double* around = local;
+    if (hi - lo > 64)
+    {
+      heap.resize(static_cast<size_t>(4 * (hi - lo)));
+      around = heap.data();
+    }
+    for (vtkIdType k = lo; k < hi; ++k)
+    {
+      this->Node(tube, k, around + 4 * (k - lo));
+    }
+    for (vtkIdType k = first; k < first + count; ++k)
+    {
+      const double* p = around + 4 * (k - lo);
+      if (xyzr)
+      {
+        std::copy(p, p + 4, xyzr + 4 * (k - first));
+      }
+      if (dxyzr)
+      {
+        auto at = [&](vtkIdType j)
+        {
+          j = std::max(lo, std::min(hi - 1, j));
+          const double* q = around + 4 * (j - lo);
+          return vec4(q[0], q[1], q[2], q[3]);
+        };
+        const vec4 d = vtkSplineTubeMath::svNodeDerivative(at(k - 2), at(k - 1), at(k), at(k + 1),
+          at(k + 2), k == 0, k == n - 1, k - 1 == 0, k + 1 == n - 1);
+        double* out = dxyzr + 4 * (k - first);
+        out[0] = d.x;
+        out[1] = d.y;
+        out[2] = d.z;
+        out[3] = d.w;
+      }
+    }
+  }
+  /// Calls body(tube, firstNode, endNode) for the parts of the tubes in
+  /// [first, first + count), in parallel blocks of nodes.
+  template <typename Body>
+  void ForNodes(vtkIdType first, vtkIdType count, Body&& body) const
+  {
+    if (count <= 0)
+    {
+      return;
+    }
+    const vtkIdType end = first + count;
+    vtkSMPTools::For(first, end, 65536,
+      [&](vtkIdType b, vtkIdType e)
+      {
+        for (vtkIdType t = this->TubeOfNode(b); b < e; ++t)
+        {
+          const vtkIdType stop = std::min(e, this->TubeFirst[t + 1]);
+          body(t, b, stop);
+          b = stop;
+        }
+      });
+  }
+};
+
+//------------------------------------------------------------------------------
+vtkSplineTubeCore::vtkSplineTubeCore()
+  : Internal(new Internals)
+{
   this->TubeFirstChunks->SetName("TubeFirstChunks");
   this->ChunkFirstSegments->SetName("ChunkFirstSegments");
   this->ChunkTubes->SetName("ChunkTubes");
@@ -129,6 +256,7 @@ vtkSplineTubeCore::vtkSplineTubeCore()
   this->ChunkSpheres->SetName("ChunkSpheres");
   this->ChunkSizes->SetNumberOfComponents(3);
   this->ChunkSizes->SetName("ChunkSizes");
+  this->SegmentSpheres->SetName("SegmentSpheres");
 }
 
 //------------------------------------------------------------------------------
@@ -143,19 +271,7 @@ vtkSplineTubeCore::~vtkSplineTubeCore()
 //------------------------------------------------------------------------------
 void vtkSplineTubeCore::Initialize()
 {
-  this->NodePositions->SetNumberOfTuples(0);
-  this->NodeTangents->SetNumberOfTuples(0);
-  this->NodeRadii->SetNumberOfTuples(0);
-  this->NodeColors->SetNumberOfTuples(0);
-  this->NodeColorDerivatives->SetNumberOfTuples(0);
-  this->NodeFrames->SetNumberOfTuples(0);
-  this->NodeScalars->SetNumberOfTuples(0);
-  this->SegmentFirstNodes->SetNumberOfTuples(0);
-  this->SegmentFlags->SetNumberOfTuples(0);
-  this->SegmentCellIds->SetNumberOfTuples(0);
-  this->SegmentBlockIds->SetNumberOfTuples(0);
-  this->TubeFirstNodes->SetNumberOfTuples(0);
-  this->TubeNumberOfNodes->SetNumberOfTuples(0);
+  this->Internal.reset(new Internals);
   this->TubeFirstChunks->SetNumberOfTuples(0);
   this->ChunkFirstSegments->SetNumberOfTuples(0);
   this->ChunkTubes->SetNumberOfTuples(0);
@@ -166,6 +282,7 @@ void vtkSplineTubeCore::Initialize()
   this->ColorsGiven = false;
   this->ColorsMissing = false;
   this->MaximumRadius = 0.0;
+  this->MaximumCellId = 0;
   this->NumberOfSkippedLines = 0;
   this->NumberOfMergedPoints = 0;
   this->Modified();
@@ -174,22 +291,53 @@ void vtkSplineTubeCore::Initialize()
 //------------------------------------------------------------------------------
 vtkIdType vtkSplineTubeCore::GetNumberOfTubes() const
 {
-  return this->TubeFirstNodes->GetNumberOfTuples();
+  return static_cast<vtkIdType>(this->Internal->Tubes.size());
 }
 
 vtkIdType vtkSplineTubeCore::GetNumberOfNodes() const
 {
-  return this->NodePositions->GetNumberOfTuples();
+  return this->Internal->TubeFirst.back();
 }
 
 vtkIdType vtkSplineTubeCore::GetNumberOfSegments() const
 {
-  return this->SegmentFirstNodes->GetNumberOfTuples();
+  return this->GetNumberOfNodes() - this->GetNumberOfTubes();
 }
 
 vtkIdType vtkSplineTubeCore::GetNumberOfChunks() const
 {
   return this->ChunkTubes->GetNumberOfTuples();
+}
+
+vtkIdType vtkSplineTubeCore::GetTubeFirstNode(vtkIdType tube) const
+{
+  return this->Internal->TubeFirst[tube];
+}
+
+vtkIdType vtkSplineTubeCore::GetTubeNumberOfNodes(vtkIdType tube) const
+{
+  return this->Internal->TubeFirst[tube + 1] - this->Internal->TubeFirst[tube];
+}
+
+vtkIdType vtkSplineTubeCore::GetTubeCellId(vtkIdType tube) const
+{
+  return this->Internal->Tubes[tube].CellId;
+}
+
+unsigned int vtkSplineTubeCore::GetTubeBlockId(vtkIdType tube) const
+{
+  const Internals& in = *this->Internal;
+  return in.Sources[in.Tubes[tube].Source].BlockId;
+}
+
+vtkIdType vtkSplineTubeCore::GetTubeOfNode(vtkIdType node) const
+{
+  return this->Internal->TubeOfNode(node);
+}
+
+bool vtkSplineTubeCore::HasNodeScalars() const
+{
+  return this->Internal->HaveScalars;
 }
 
 //------------------------------------------------------------------------------
@@ -233,21 +381,25 @@ bool vtkSplineTubeCore::AddPolyData(
     }
     return true;
   };
+  const char* role = this->NodeScalarRole ? this->NodeScalarRole : "node scalar";
   vtkDataArray* radiusArray = nullptr;
   vtkDataArray* scalarArray = nullptr;
   if (!findArray(this->RadiusArrayName, "radius", radiusArray) ||
-    !findArray(this->NodeScalarArrayName,
-      this->NodeScalarRole ? this->NodeScalarRole : "node scalar", scalarArray))
+    !findArray(this->NodeScalarArrayName, role, scalarArray))
   {
     return false;
   }
-  if (colors && (colors->GetNumberOfComponents() != 4 || colors->GetNumberOfTuples() < numPoints))
+  const vtkIdType colorTuples =
+    colorsPerCell ? input->GetNumberOfCells() : numPoints; // per cell: all cells
+  if (colors && (colors->GetNumberOfComponents() != 4 || colors->GetNumberOfTuples() < colorTuples))
   {
-    vtkErrorMacro(<< "Colors must be RGBA (4 components) with one tuple per point; got "
+    vtkErrorMacro(<< "Colors must be RGBA (4 components) with one tuple per "
+                  << (colorsPerCell ? "cell" : "point") << "; got "
                   << colors->GetNumberOfComponents() << " components and "
-                  << colors->GetNumberOfTuples() << " tuples for " << numPoints << " points.");
+                  << colors->GetNumberOfTuples() << " tuples for " << colorTuples << ".");
     return false;
   }
+  Internals& in = *this->Internal;
   if (colors)
   {
     this->ColorsGiven = true;
@@ -257,14 +409,36 @@ bool vtkSplineTubeCore::AddPolyData(
     this->ColorsMissing = true;
   }
 
-  // Two passes over the polylines, both parallel (vtkSMPTools): the first
-  // validates every line and counts the nodes it keeps; the offsets then
-  // place each line's nodes and segments, and the second pass writes them.
-  // Output order and messages are those of a sequential scan.
-  vtkPoints* points = input->GetPoints();
-  vtkCellArray* lines = input->GetLines();
-  const vtkIdType numLines = lines->GetNumberOfCells();
-  const vtkIdType firstCellId = input->GetNumberOfVerts(); // line cell ids follow the verts
+  Internals::Source source;
+  source.Data = input;
+  source.Points = input->GetPoints()->GetData();
+  if (auto* f = vtkFloatArray::SafeDownCast(source.Points))
+  {
+    source.PointsF = f->GetPointer(0);
+  }
+  else if (auto* d = vtkDoubleArray::SafeDownCast(source.Points))
+  {
+    source.PointsD = d->GetPointer(0);
+  }
+  source.Radius = radiusArray;
+  source.Scalar = scalarArray;
+  source.Colors = colors;
+  source.ColorsPerCell = colorsPerCell;
+  source.Lines = input->GetLines();
+  if (source.Lines->IsStorage64Bit())
+  {
+    source.Connectivity64 = source.Lines->GetConnectivityArray64()->GetPointer(0);
+  }
+  else
+  {
+    source.Connectivity32 = source.Lines->GetConnectivityArray32()->GetPointer(0);
+  }
+  source.FirstCellId = input->GetNumberOfVerts(); // line cell ids follow the verts
+  source.BlockId = blockId;
+  source.ConstantRadius = this->Radius;
+  source.RadiusScale = this->RadiusScale;
+  in.HaveScalars = in.HaveScalars || scalarArray;
+
   // Original cell ids, when the input carries them (one component, integer).
   vtkDataArray* originalIds = nullptr;
   if (this->CellIdArrayName && this->CellIdArrayName[0])
@@ -279,9 +453,12 @@ bool vtkSplineTubeCore::AddPolyData(
       originalIds = nullptr;
     }
   }
-  const double constantRadius = this->Radius;
-  const double radiusScale = this->RadiusScale;
 
+  // One pass over the polylines in parallel (vtkSMPTools): validate every
+  // line and count the nodes it keeps (repeated consecutive points merged);
+  // messages in line order.
+  vtkCellArray* lines = source.Lines;
+  const vtkIdType numLines = lines->GetNumberOfCells();
   enum LineStatus : unsigned char
   {
     LINE_OK,
@@ -295,11 +472,11 @@ bool vtkSplineTubeCore::AddPolyData(
     vtkIdType Merged = 0;
     vtkIdType BadPoint = -1;
     double BadRadius = 0.0;
+    double MaxRadius = 0.0;
     unsigned char Status = LINE_OK;
   };
-  // Scans line `line`: calls keep(pointId, position, radius) for every node
-  // kept (repeated consecutive points merged); stops at the first point with
-  // a non-finite coordinate or radius.
+  // Scans line `line`: calls keep(pointId) for every node kept; stops at the
+  // first point with a non-finite coordinate, radius or scalar.
   auto scanLine = [&](vtkIdType line, vtkIdList* scratch, LineScan& scan, auto&& keep)
   {
     vtkIdType npts;
@@ -308,25 +485,20 @@ bool vtkSplineTubeCore::AddPolyData(
     double last[3] = { 0.0, 0.0, 0.0 };
     for (vtkIdType k = 0; k < npts; ++k)
     {
-      double p[3];
-      points->GetPoint(pts[k], p);
+      double p[4];
+      source.Point(pts[k], p);
       if (!IsFinite(p[0]) || !IsFinite(p[1]) || !IsFinite(p[2]))
       {
         scan.Status = LINE_NONFINITE_POINT;
         scan.BadPoint = pts[k];
         return;
       }
-      double r = constantRadius;
-      if (radiusArray)
+      if (radiusArray && (!IsFinite(p[3]) || p[3] <= 0.0))
       {
-        r = radiusArray->GetComponent(pts[k], 0) * radiusScale;
-        if (!IsFinite(r) || r <= 0.0)
-        {
-          scan.Status = LINE_BAD_RADIUS;
-          scan.BadPoint = pts[k];
-          scan.BadRadius = r;
-          return;
-        }
+        scan.Status = LINE_BAD_RADIUS;
+        scan.BadPoint = pts[k];
+        scan.BadRadius = p[3];
+        return;
       }
       if (scalarArray && !IsFinite(scalarArray->GetComponent(pts[k], 0)))
       {
@@ -334,45 +506,43 @@ bool vtkSplineTubeCore::AddPolyData(
         scan.BadPoint = pts[k];
         return;
       }
-      // Merge repeated consecutive points (the spline needs distinct nodes).
       if (scan.Kept > 0)
       {
         const double d2 = vtkMath::Distance2BetweenPoints(p, last);
-        const double scale = std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]), r });
+        const double scale = std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]), p[3] });
         if (d2 <= (1e-10 * scale) * (1e-10 * scale))
         {
           ++scan.Merged;
           continue;
         }
       }
-      keep(pts[k], p, r, scan.Kept);
+      keep(pts[k]);
       ++scan.Kept;
+      scan.MaxRadius = std::max(scan.MaxRadius, p[3]);
       std::copy(p, p + 3, last);
     }
   };
-
   std::vector<LineScan> scans(static_cast<size_t>(numLines));
-  vtkSMPThreadLocalObject<vtkIdList> scratch1;
+  vtkSMPThreadLocalObject<vtkIdList> scratch;
   vtkSMPTools::For(0, numLines,
     [&](vtkIdType begin, vtkIdType end)
     {
-      vtkIdList* scratch = scratch1.Local();
+      vtkIdList* s = scratch.Local();
       for (vtkIdType line = begin; line < end; ++line)
       {
-        scanLine(line, scratch, scans[line], [](vtkIdType, const double*, double, vtkIdType) {});
+        scanLine(line, s, scans[line], [](vtkIdType) {});
       }
     });
 
-  // Offsets of the lines that become tubes; messages in line order.
-  const vtkIdType nodesBefore = this->NodePositions->GetNumberOfTuples();
-  const vtkIdType segmentsBefore = this->SegmentFirstNodes->GetNumberOfTuples();
-  const vtkIdType tubesBefore = this->TubeFirstNodes->GetNumberOfTuples();
-  std::vector<vtkIdType> tubeOf(static_cast<size_t>(numLines), -1);
-  std::vector<vtkIdType> nodeOffset(static_cast<size_t>(numLines), 0);
+  const vtkIdType firstCellId = source.FirstCellId;
+  const unsigned int sourceIndex = static_cast<unsigned int>(in.Sources.size());
   vtkIdType mergedHere = 0;
   vtkIdType shortLines = 0;
-  vtkIdType numNodes = nodesBefore;
-  vtkIdType numTubes = tubesBefore;
+  std::vector<vtkIdType> mergedLines; // lines whose kept points are listed
+  const vtkTypeInt64* offsets64 =
+    lines->IsStorage64Bit() ? lines->GetOffsetsArray64()->GetPointer(0) : nullptr;
+  const vtkTypeInt32* offsets32 =
+    lines->IsStorage64Bit() ? nullptr : lines->GetOffsetsArray32()->GetPointer(0);
   for (vtkIdType line = 0; line < numLines; ++line)
   {
     const LineScan& scan = scans[line];
@@ -396,9 +566,8 @@ bool vtkSplineTubeCore::AddPolyData(
     if (scan.Status == LINE_BAD_SCALAR)
     {
       vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << scan.BadPoint
-                      << " has a NaN or infinite value in the "
-                      << (this->NodeScalarRole ? this->NodeScalarRole : "node scalar")
-                      << " array \"" << this->NodeScalarArrayName << "\".");
+                      << " has a NaN or infinite value in the " << role << " array \""
+                      << this->NodeScalarArrayName << "\".");
       ++this->NumberOfSkippedLines;
       continue;
     }
@@ -408,125 +577,32 @@ bool vtkSplineTubeCore::AddPolyData(
       ++this->NumberOfSkippedLines;
       continue;
     }
-    tubeOf[line] = numTubes++;
-    nodeOffset[line] = numNodes;
-    numNodes += scan.Kept;
-  }
-  const vtkIdType numSegments =
-    segmentsBefore + (numNodes - nodesBefore) - (numTubes - tubesBefore);
-
-  // Grow keeping what earlier calls added: Resize() keeps the values,
-  // SetNumberOfTuples() alone may reallocate without them (VTK 9.2).
-  this->NodePositions->Resize(numNodes);
-  this->NodePositions->SetNumberOfTuples(numNodes);
-  this->NodeRadii->Resize(numNodes);
-  this->NodeRadii->SetNumberOfTuples(numNodes);
-  this->NodeColors->Resize(numNodes);
-  this->NodeColors->SetNumberOfTuples(numNodes);
-  if (scalarArray)
-  {
-    this->NodeScalars->Resize(numNodes);
-    this->NodeScalars->SetNumberOfTuples(numNodes);
-  }
-  this->SegmentFirstNodes->Resize(numSegments);
-  this->SegmentFirstNodes->SetNumberOfTuples(numSegments);
-  this->SegmentFlags->Resize(numSegments);
-  this->SegmentFlags->SetNumberOfTuples(numSegments);
-  this->SegmentCellIds->Resize(numSegments);
-  this->SegmentCellIds->SetNumberOfTuples(numSegments);
-  this->SegmentBlockIds->Resize(numSegments);
-  this->SegmentBlockIds->SetNumberOfTuples(numSegments);
-  this->TubeFirstNodes->Resize(numTubes);
-  this->TubeFirstNodes->SetNumberOfTuples(numTubes);
-  this->TubeNumberOfNodes->Resize(numTubes);
-  this->TubeNumberOfNodes->SetNumberOfTuples(numTubes);
-
-  float* positions = this->NodePositions->GetPointer(0);
-  float* radii = this->NodeRadii->GetPointer(0);
-  float* nodeColors = this->NodeColors->GetPointer(0);
-  float* nodeScalars = scalarArray ? this->NodeScalars->GetPointer(0) : nullptr;
-  vtkTypeUInt32* segmentFirst = this->SegmentFirstNodes->GetPointer(0);
-  unsigned char* segmentFlags = this->SegmentFlags->GetPointer(0);
-  vtkIdType* segmentCells = this->SegmentCellIds->GetPointer(0);
-  vtkTypeUInt32* segmentBlocks = this->SegmentBlockIds->GetPointer(0);
-  vtkIdType* tubeFirst = this->TubeFirstNodes->GetPointer(0);
-  vtkIdType* tubeNodes = this->TubeNumberOfNodes->GetPointer(0);
-  const unsigned char* colorBytes = colors ? colors->GetPointer(0) : nullptr;
-
-  vtkSMPThreadLocalObject<vtkIdList> scratch2;
-  vtkSMPThreadLocal<double> maxRadius(0.0);
-  vtkSMPTools::For(0, numLines,
-    [&](vtkIdType begin, vtkIdType end)
+    Internals::Tube tube;
+    tube.Source = sourceIndex;
+    tube.Line = line;
+    tube.ConnectivityOffset =
+      offsets64 ? static_cast<vtkIdType>(offsets64[line]) : static_cast<vtkIdType>(offsets32[line]);
+    tube.CellId =
+      originalIds ? static_cast<vtkIdType>(originalIds->GetComponent(cellId, 0)) : cellId;
+    if (scan.Merged > 0)
     {
-      vtkIdList* scratch = scratch2.Local();
-      double& rMax = maxRadius.Local();
-      for (vtkIdType line = begin; line < end; ++line)
-      {
-        const vtkIdType tube = tubeOf[line];
-        if (tube < 0)
-        {
-          continue;
-        }
-        const vtkIdType cellId = firstCellId + line;
-        const vtkIdType first = nodeOffset[line];
-        // Segments of the tubes before this one: one fewer than their nodes.
-        const vtkIdType firstSegment =
-          segmentsBefore + (first - nodesBefore) - (tube - tubesBefore);
-        LineScan scan;
-        scanLine(line, scratch, scan,
-          [&](vtkIdType pointId, const double* p, double r, vtkIdType k)
-          {
-            const vtkIdType i = first + k;
-            positions[3 * i] = static_cast<float>(p[0]);
-            positions[3 * i + 1] = static_cast<float>(p[1]);
-            positions[3 * i + 2] = static_cast<float>(p[2]);
-            radii[2 * i] = static_cast<float>(r);
-            radii[2 * i + 1] = 0.0f;
-            rMax = std::max(rMax, r);
-            if (nodeScalars)
-            {
-              nodeScalars[i] = static_cast<float>(scalarArray->GetComponent(pointId, 0));
-            }
-            float* c = nodeColors + 4 * i;
-            if (colorBytes)
-            {
-              const unsigned char* rgba = colorBytes + 4 * (colorsPerCell ? cellId : pointId);
-              for (int j = 0; j < 4; ++j)
-              {
-                c[j] = static_cast<float>(rgba[j] / 255.0);
-              }
-            }
-            else
-            {
-              std::fill(c, c + 4, 1.0f);
-            }
-          });
-        const vtkIdType n = scan.Kept;
-        tubeFirst[tube] = first;
-        tubeNodes[tube] = n;
-        for (vtkIdType k = 0; k + 1 < n; ++k)
-        {
-          unsigned char flags = 0;
-          if (k == 0)
-          {
-            flags |= TUBE_START;
-          }
-          if (k + 2 == n)
-          {
-            flags |= TUBE_END;
-          }
-          const vtkIdType s = firstSegment + k;
-          segmentFirst[s] = static_cast<vtkTypeUInt32>(first + k);
-          segmentFlags[s] = flags;
-          segmentCells[s] =
-            originalIds ? static_cast<vtkIdType>(originalIds->GetComponent(cellId, 0)) : cellId;
-          segmentBlocks[s] = blockId;
-        }
-      }
-    });
-  for (double r : maxRadius)
+      tube.Merged = static_cast<vtkIdType>(in.MergedPoints.size());
+      in.MergedPoints.resize(in.MergedPoints.size() + static_cast<size_t>(scan.Kept));
+      mergedLines.push_back(static_cast<vtkIdType>(in.Tubes.size()));
+    }
+    this->MaximumRadius = std::max(this->MaximumRadius, scan.MaxRadius);
+    this->MaximumCellId = std::max(this->MaximumCellId, tube.CellId);
+    in.Tubes.push_back(tube);
+    in.TubeFirst.push_back(in.TubeFirst.back() + scan.Kept);
+  }
+  in.Sources.push_back(source);
+  // The kept points of the tubes with merged points (few).
+  vtkNew<vtkIdList> list;
+  for (vtkIdType t : mergedLines)
   {
-    this->MaximumRadius = std::max(this->MaximumRadius, r);
+    vtkIdType k = in.Tubes[t].Merged;
+    LineScan scan;
+    scanLine(in.Tubes[t].Line, list, scan, [&](vtkIdType pid) { in.MergedPoints[k++] = pid; });
   }
 
   if (mergedHere > 0)
@@ -547,315 +623,91 @@ bool vtkSplineTubeCore::AddPolyData(
 //------------------------------------------------------------------------------
 void vtkSplineTubeCore::Build()
 {
-  const vtkIdType numNodes = this->NodePositions->GetNumberOfTuples();
-  const vtkIdType numTubes = this->TubeFirstNodes->GetNumberOfTuples();
-  this->NodeTangents->SetNumberOfTuples(numNodes);
-  this->NodeColorDerivatives->SetNumberOfTuples(numNodes);
-  this->NodeFrames->SetNumberOfTuples(this->ComputeFrames ? numNodes : 0);
-
-  float* positions = this->NodePositions->GetPointer(0);
-  float* tangents = this->NodeTangents->GetPointer(0);
-  float* radii = this->NodeRadii->GetPointer(0);
-  float* colors = this->NodeColors->GetPointer(0);
-  float* colorDerivatives = this->NodeColorDerivatives->GetPointer(0);
-
-  vtkSMPTools::For(0, numTubes,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      std::vector<float> r;
-      std::vector<float> dr;
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        const vtkIdType first = this->TubeFirstNodes->GetValue(t);
-        const vtkIdType n = this->TubeNumberOfNodes->GetValue(t);
-        FiniteDifferences(positions + 3 * first, tangents + 3 * first, n, 3);
-        FiniteDifferences(colors + 4 * first, colorDerivatives + 4 * first, n, 4);
-        r.resize(n);
-        dr.resize(n);
-        for (vtkIdType k = 0; k < n; ++k)
-        {
-          r[k] = radii[2 * (first + k)];
-        }
-        FiniteDifferences(r.data(), dr.data(), n, 1);
-        for (vtkIdType k = 0; k < n; ++k)
-        {
-          radii[2 * (first + k) + 1] = dr[k];
-        }
-        if (this->ComputeFrames)
-        {
-          this->PropagateFrames(t);
-        }
-      }
-    });
   this->BuildChunks();
   this->Modified();
 }
 
 //------------------------------------------------------------------------------
-void vtkSplineTubeCore::BuildChunks()
+void vtkSplineTubeCore::GetNode(vtkIdType node, double xyzr[4]) const
 {
-  const vtkIdType numTubes = this->TubeFirstNodes->GetNumberOfTuples();
-  const vtkIdType numSegments = this->SegmentFirstNodes->GetNumberOfTuples();
-  const vtkIdType* tubeNodes = this->TubeNumberOfNodes->GetPointer(0);
-  this->TubeFirstChunks->SetNumberOfTuples(numTubes + 1);
-  vtkIdType* tubeFirstChunk = this->TubeFirstChunks->GetPointer(0);
-  tubeFirstChunk[0] = 0;
-  for (vtkIdType t = 0; t < numTubes; ++t)
+  const Internals& in = *this->Internal;
+  const vtkIdType t = in.TubeOfNode(node);
+  in.Node(t, node - in.TubeFirst[t], xyzr);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::GetNodeDerivative(vtkIdType node, double dxyzr[4]) const
+{
+  const Internals& in = *this->Internal;
+  const vtkIdType t = in.TubeOfNode(node);
+  in.Nodes(t, node - in.TubeFirst[t], 1, nullptr, dxyzr);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::GetTubeNodes(
+  vtkIdType tube, vtkIdType first, vtkIdType count, double* xyzr, double* dxyzr) const
+{
+  this->Internal->Nodes(tube, first, count, xyzr, dxyzr);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::GetNodeColor(vtkIdType node, double rgba[4]) const
+{
+  const Internals& in = *this->Internal;
+  const vtkIdType t = in.TubeOfNode(node);
+  const Internals::Source& s = in.Sources[in.Tubes[t].Source];
+  if (!s.Colors)
   {
-    tubeFirstChunk[t + 1] =
-      tubeFirstChunk[t] + (tubeNodes[t] - 1 + ChunkSegments - 1) / ChunkSegments;
-  }
-  const vtkIdType numChunks = tubeFirstChunk[numTubes];
-  this->ChunkFirstSegments->SetNumberOfTuples(numChunks + 1);
-  this->ChunkTubes->SetNumberOfTuples(numChunks);
-  this->ChunkSpheres->SetNumberOfTuples(numChunks);
-  this->ChunkSizes->SetNumberOfTuples(numChunks);
-  this->SegmentSpheres->SetNumberOfTuples(numSegments);
-  vtkMath::UninitializeBounds(this->Bounds);
-  if (numChunks == 0)
-  {
-    this->ChunkFirstSegments->SetValue(0, 0);
+    std::fill(rgba, rgba + 4, 1.0);
     return;
   }
-  vtkTypeUInt32* chunkFirst = this->ChunkFirstSegments->GetPointer(0);
-  vtkTypeUInt32* chunkTube = this->ChunkTubes->GetPointer(0);
-  float* spheres = this->ChunkSpheres->GetPointer(0);
-  float* sizes = this->ChunkSizes->GetPointer(0);
-  vtkTypeUInt32* segmentSpheres = this->SegmentSpheres->GetPointer(0);
-  const float* P = this->NodePositions->GetPointer(0);
-  const float* M = this->NodeTangents->GetPointer(0);
-  const float* R = this->NodeRadii->GetPointer(0);
-  const vtkTypeUInt32* first = this->SegmentFirstNodes->GetPointer(0);
-  const vtkIdType* tubeFirstNode = this->TubeFirstNodes->GetPointer(0);
-
-  // The box of a segment: its cubic Bezier control points (the curve lies in
-  // their convex hull) padded by the largest of the radius spline's (the
-  // radius lies below their maximum).
-  auto segmentBox = [&](vtkIdType segment, double box[6], double control[4][3], double& r)
+  const vtkIdType tuple = s.ColorsPerCell ? s.FirstCellId + in.Tubes[t].Line
+                                          : in.PointId(t, node - in.TubeFirst[t]);
+  const unsigned char* c = s.Colors->GetPointer(4 * tuple);
+  for (int k = 0; k < 4; ++k)
   {
-    const vtkIdType i = first[segment];
-    const vtkIdType j = i + 1;
-    r = std::max({ static_cast<double>(R[2 * i]), static_cast<double>(R[2 * j]),
-      R[2 * i] + R[2 * i + 1] / 3.0, R[2 * j] - R[2 * j + 1] / 3.0 });
-    for (int k = 0; k < 3; ++k)
-    {
-      control[0][k] = P[3 * i + k];
-      control[1][k] = P[3 * i + k] + M[3 * i + k] / 3.0;
-      control[2][k] = P[3 * j + k] - M[3 * j + k] / 3.0;
-      control[3][k] = P[3 * j + k];
-      box[2 * k] = std::min({ control[0][k], control[1][k], control[2][k], control[3][k] }) - r;
-      box[2 * k + 1] = std::max({ control[0][k], control[1][k], control[2][k], control[3][k] }) + r;
-    }
-  };
-
-  // Pass 1: per chunk its box (kept in `boxes` until the centre is known),
-  // sizes, first segment and tube; the bounds by thread.
-  std::vector<double> boxes(static_cast<size_t>(6 * numChunks));
-  struct Local
-  {
-    double B[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
-      VTK_DOUBLE_MIN };
-  };
-  vtkSMPThreadLocal<Local> locals;
-  vtkSMPTools::For(0, numTubes,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double* B = locals.Local().B;
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        // Segments of the tubes before this one: one fewer than their nodes.
-        vtkIdType segment = tubeFirstNode[t] - t;
-        const vtkIdType last = segment + tubeNodes[t] - 1;
-        for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
-        {
-          chunkFirst[c] = static_cast<vtkTypeUInt32>(segment);
-          chunkTube[c] = static_cast<vtkTypeUInt32>(t);
-          double* box = &boxes[6 * c];
-          for (int k = 0; k < 3; ++k)
-          {
-            box[2 * k] = VTK_DOUBLE_MAX;
-            box[2 * k + 1] = VTK_DOUBLE_MIN;
-          }
-          double length = 0.0;
-          double maxLength = 0.0;
-          double maxRadius = 0.0;
-          const vtkIdType stop = std::min<vtkIdType>(last, segment + ChunkSegments);
-          for (; segment < stop; ++segment)
-          {
-            double segmentBounds[6];
-            double control[4][3];
-            double r = 0.0;
-            segmentBox(segment, segmentBounds, control, r);
-            for (int k = 0; k < 6; k += 2)
-            {
-              box[k] = std::min(box[k], segmentBounds[k]);
-              box[k + 1] = std::max(box[k + 1], segmentBounds[k + 1]);
-            }
-            double polygon = 0.0;
-            for (int q = 0; q < 3; ++q)
-            {
-              polygon += std::sqrt(vtkMath::Distance2BetweenPoints(control[q], control[q + 1]));
-            }
-            length += polygon;
-            maxLength = std::max(maxLength, polygon);
-            maxRadius = std::max(maxRadius, r);
-          }
-          for (int k = 0; k < 6; k += 2)
-          {
-            B[k] = std::min(B[k], box[k]);
-            B[k + 1] = std::max(B[k + 1], box[k + 1]);
-          }
-          sizes[3 * c] = static_cast<float>(length);
-          sizes[3 * c + 1] = static_cast<float>(maxLength);
-          sizes[3 * c + 2] = static_cast<float>(maxRadius);
-        }
-      }
-    });
-  chunkFirst[numChunks] = static_cast<vtkTypeUInt32>(numSegments);
-  for (int k = 0; k < 6; k += 2)
-  {
-    this->Bounds[k] = VTK_DOUBLE_MAX;
-    this->Bounds[k + 1] = VTK_DOUBLE_MIN;
-  }
-  for (auto& local : locals)
-  {
-    for (int k = 0; k < 6; k += 2)
-    {
-      this->Bounds[k] = std::min(this->Bounds[k], local.B[k]);
-      this->Bounds[k + 1] = std::max(this->Bounds[k + 1], local.B[k + 1]);
-    }
-  }
-
-  // Pass 2: the spheres around the boxes, relative to the centre. Rounding
-  // to float is covered by a relative margin.
-  double center[3];
-  this->GetCenter(center);
-  vtkSMPTools::For(0, numChunks,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType c = begin; c < end; ++c)
-      {
-        const double* box = &boxes[6 * c];
-        double radius2 = 0.0;
-        double extent = 0.0;
-        for (int k = 0; k < 3; ++k)
-        {
-          const double mid = 0.5 * (box[2 * k] + box[2 * k + 1]);
-          spheres[4 * c + k] = static_cast<float>(mid - center[k]);
-          radius2 += 0.25 * (box[2 * k + 1] - box[2 * k]) * (box[2 * k + 1] - box[2 * k]);
-          extent = std::max(extent, std::abs(mid - center[k]));
-        }
-        const double radius = std::sqrt(radius2);
-        spheres[4 * c + 3] = static_cast<float>(radius + 1e-6 * (radius + extent));
-        // The segments' spheres, relative to the chunk's.
-        for (vtkIdType segment = chunkFirst[c]; segment < chunkFirst[c + 1]; ++segment)
-        {
-          double segmentBounds[6];
-          double control[4][3];
-          double r = 0.0;
-          segmentBox(segment, segmentBounds, control, r);
-          double part[4];
-          double partRadius2 = 0.0;
-          for (int k = 0; k < 3; ++k)
-          {
-            part[k] = 0.5 * (segmentBounds[2 * k] + segmentBounds[2 * k + 1]) - center[k];
-            partRadius2 += 0.25 * (segmentBounds[2 * k + 1] - segmentBounds[2 * k]) *
-              (segmentBounds[2 * k + 1] - segmentBounds[2 * k]);
-          }
-          part[3] = std::sqrt(partRadius2) * (1.0 + 1e-6) + 1e-6 * extent;
-          segmentSpheres[segment] = vtkSplineTubeVisibility::EncodePart(spheres + 4 * c, part);
-        }
-      }
-    });
-}
-
-//------------------------------------------------------------------------------
-void vtkSplineTubeCore::GetCenter(double center[3]) const
-{
-  for (int k = 0; k < 3; ++k)
-  {
-    center[k] = vtkMath::AreBoundsInitialized(this->Bounds)
-      ? 0.5 * (this->Bounds[2 * k] + this->Bounds[2 * k + 1])
-      : 0.0;
+    rgba[k] = c[k] / 255.0;
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkSplineTubeCore::PropagateFrames(vtkIdType tube)
+double vtkSplineTubeCore::GetNodeScalar(vtkIdType node) const
 {
-  const vtkIdType first = this->TubeFirstNodes->GetValue(tube);
-  const vtkIdType n = this->TubeNumberOfNodes->GetValue(tube);
-  const float* P = this->NodePositions->GetPointer(0);
-  const float* M = this->NodeTangents->GetPointer(0);
-  float* F = this->NodeFrames->GetPointer(0);
+  const Internals& in = *this->Internal;
+  const vtkIdType t = in.TubeOfNode(node);
+  const Internals::Source& s = in.Sources[in.Tubes[t].Source];
+  return s.Scalar ? s.Scalar->GetComponent(in.PointId(t, node - in.TubeFirst[t]), 0) : 0.0;
+}
 
-  auto node = [&](vtkIdType i) { return vec4(P[3 * i], P[3 * i + 1], P[3 * i + 2], 0.0); };
-  auto deriv = [&](vtkIdType i) { return vec4(M[3 * i], M[3 * i + 1], M[3 * i + 2], 0.0); };
-  // Unit tangent of the cubic of segment s at parameter u; falls back to the
-  // chord when the derivative vanishes (a cusp of the spline).
-  auto unitTangent = [&](vtkIdType s, double u)
-  {
-    vec3 d =
-      vec3(vtkSplineTubeMath::svHermiteDerivative(node(s), deriv(s), node(s + 1), deriv(s + 1), u));
-    double len = glm::length(d);
-    if (len < 1e-12)
-    {
-      d = vec3(node(s + 1) - node(s));
-      len = glm::length(d);
-    }
-    return len > 0.0 ? d / len : vec3(1.0, 0.0, 0.0);
-  };
+//------------------------------------------------------------------------------
+vtkIdType vtkSplineTubeCore::GetSegmentFirstNode(vtkIdType segment) const
+{
+  return segment + this->Internal->TubeOfSegment(segment);
+}
 
-  vec3 t = unitTangent(first, 0.0);
-  vec3 r = vtkSplineTubeMath::svAnyOrthogonal(t);
-  F[3 * first + 0] = static_cast<float>(r.x);
-  F[3 * first + 1] = static_cast<float>(r.y);
-  F[3 * first + 2] = static_cast<float>(r.z);
-
-  const double maxAngle = this->MaximumFrameStepAngle;
-  for (vtkIdType s = first; s + 1 < first + n; ++s)
-  {
-    // Sub-steps: sample the tangent densely enough that no step turns it by
-    // more than maxAngle (the total turning is estimated on 8 samples).
-    double turning = 0.0;
-    vec3 prev = t;
-    for (int k = 1; k <= 8; ++k)
-    {
-      const vec3 cur = unitTangent(s, k / 8.0);
-      turning += std::acos(std::max(-1.0, std::min(1.0, glm::dot(prev, cur))));
-      prev = cur;
-    }
-    const int steps = std::max(1, std::min(256, static_cast<int>(std::ceil(turning / maxAngle))));
-    vec3 x = vec3(node(s));
-    for (int k = 1; k <= steps; ++k)
-    {
-      const double u = static_cast<double>(k) / steps;
-      const vec3 x1 =
-        vec3(vtkSplineTubeMath::svHermite(node(s), deriv(s), node(s + 1), deriv(s + 1), u));
-      const vec3 t1 = unitTangent(s, u);
-      r = DoubleReflection(x, t, r, x1, t1);
-      x = x1;
-      t = t1;
-    }
-    F[3 * (s + 1) + 0] = static_cast<float>(r.x);
-    F[3 * (s + 1) + 1] = static_cast<float>(r.y);
-    F[3 * (s + 1) + 2] = static_cast<float>(r.z);
-  }
+//------------------------------------------------------------------------------
+int vtkSplineTubeCore::GetSegmentFlags(vtkIdType segment) const
+{
+  const Internals& in = *this->Internal;
+  const vtkIdType t = in.TubeOfSegment(segment);
+  const vtkIdType k = segment - (in.TubeFirst[t] - t);
+  const vtkIdType n = in.TubeFirst[t + 1] - in.TubeFirst[t];
+  return (k == 0 ? TUBE_START : 0) | (k == n - 2 ? TUBE_END : 0);
 }
 
 //------------------------------------------------------------------------------
 void vtkSplineTubeCore::EvaluateSegment(vtkIdType segment, double t, double position[3],
-  double derivative[3], double* radius, double* radiusDerivative)
+  double derivative[3], double* radius, double* radiusDerivative) const
 {
-  const vtkIdType i = this->SegmentFirstNodes->GetValue(segment);
-  const float* P = this->NodePositions->GetPointer(0);
-  const float* M = this->NodeTangents->GetPointer(0);
-  const float* R = this->NodeRadii->GetPointer(0);
-  const vec4 p0(P[3 * i], P[3 * i + 1], P[3 * i + 2], R[2 * i]);
-  const vec4 m0(M[3 * i], M[3 * i + 1], M[3 * i + 2], R[2 * i + 1]);
-  const vtkIdType j = i + 1;
-  const vec4 p1(P[3 * j], P[3 * j + 1], P[3 * j + 2], R[2 * j]);
-  const vec4 m1(M[3 * j], M[3 * j + 1], M[3 * j + 2], R[2 * j + 1]);
+  const Internals& in = *this->Internal;
+  const vtkIdType tube = in.TubeOfSegment(segment);
+  double p[8];
+  double m[8];
+  in.Nodes(tube, segment - (in.TubeFirst[tube] - tube), 2, p, m);
+  const vec4 p0(p[0], p[1], p[2], p[3]);
+  const vec4 m0(m[0], m[1], m[2], m[3]);
+  const vec4 p1(p[4], p[5], p[6], p[7]);
+  const vec4 m1(m[4], m[5], m[6], m[7]);
   const vec4 c = vtkSplineTubeMath::svHermite(p0, m0, p1, m1, t);
   const vec4 d = vtkSplineTubeMath::svHermiteDerivative(p0, m0, p1, m1, t);
   if (position)
@@ -881,9 +733,403 @@ void vtkSplineTubeCore::EvaluateSegment(vtkIdType segment, double t, double posi
 }
 
 //------------------------------------------------------------------------------
+void vtkSplineTubeCore::FillNodes(
+  vtkIdType first, vtkIdType count, const double shift[3], float* xyzr) const
+{
+  const Internals& in = *this->Internal;
+  in.ForNodes(first, count,
+    [&](vtkIdType t, vtkIdType b, vtkIdType e)
+    {
+      for (vtkIdType node = b; node < e; ++node)
+      {
+        double p[4];
+        in.Node(t, node - in.TubeFirst[t], p);
+        float* out = xyzr + 4 * (node - first);
+        for (int c = 0; c < 3; ++c)
+        {
+          out[c] = static_cast<float>(p[c] - shift[c]);
+        }
+        out[3] = static_cast<float>(p[3]);
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::FillNodeInfo(vtkIdType first, vtkIdType count, unsigned int* info) const
+{
+  const Internals& in = *this->Internal;
+  in.ForNodes(first, count,
+    [&](vtkIdType t, vtkIdType b, vtkIdType e)
+    {
+      const vtkIdType firstNode = in.TubeFirst[t];
+      const vtkIdType lastNode = in.TubeFirst[t + 1] - 1;
+      for (vtkIdType node = b; node < e; ++node)
+      {
+        info[node - first] = (static_cast<unsigned int>(t) & NODE_TUBE_MASK) |
+          (node == firstNode ? NODE_FIRST : 0u) | (node == lastNode ? NODE_LAST : 0u);
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::FillColors(vtkIdType first, vtkIdType count, unsigned int* rgba) const
+{
+  const Internals& in = *this->Internal;
+  in.ForNodes(first, count,
+    [&](vtkIdType t, vtkIdType b, vtkIdType e)
+    {
+      const Internals::Source& s = in.Sources[in.Tubes[t].Source];
+      for (vtkIdType node = b; node < e; ++node)
+      {
+        unsigned int word = 0xFFFFFFFFu;
+        if (s.Colors)
+        {
+          const vtkIdType tuple = s.ColorsPerCell ? s.FirstCellId + in.Tubes[t].Line
+                                                  : in.PointId(t, node - in.TubeFirst[t]);
+          const unsigned char* c = s.Colors->GetPointer(4 * tuple);
+          word = static_cast<unsigned int>(c[0]) | (static_cast<unsigned int>(c[1]) << 8) |
+            (static_cast<unsigned int>(c[2]) << 16) | (static_cast<unsigned int>(c[3]) << 24);
+        }
+        rgba[node - first] = word;
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::FillScalars(vtkIdType first, vtkIdType count, float* scalars) const
+{
+  const Internals& in = *this->Internal;
+  in.ForNodes(first, count,
+    [&](vtkIdType t, vtkIdType b, vtkIdType e)
+    {
+      const Internals::Source& s = in.Sources[in.Tubes[t].Source];
+      for (vtkIdType node = b; node < e; ++node)
+      {
+        scalars[node - first] = s.Scalar
+          ? static_cast<float>(s.Scalar->GetComponent(in.PointId(t, node - in.TubeFirst[t]), 0))
+          : 0.0f;
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::PropagateFrames(
+  vtkIdType t, vtkIdType n, const std::function<void(vtkIdType k, const double frame[3])>& write)
+  const
+{
+  // The tube's first n nodes (at least two) and their derivatives.
+  const Internals& in = *this->Internal;
+  const vtkIdType total = in.TubeFirst[t + 1] - in.TubeFirst[t];
+  n = std::min(total, std::max<vtkIdType>(n, 2));
+  std::vector<double> p(static_cast<size_t>(4 * n));
+  std::vector<double> m(static_cast<size_t>(4 * n));
+  in.Nodes(t, 0, n, p.data(), m.data());
+  auto node = [&](vtkIdType i) { return vec4(p[4 * i], p[4 * i + 1], p[4 * i + 2], 0.0); };
+  auto deriv = [&](vtkIdType i) { return vec4(m[4 * i], m[4 * i + 1], m[4 * i + 2], 0.0); };
+  // Unit tangent of the cubic of segment s at parameter u; the chord where
+  // the derivative vanishes (a cusp of the spline).
+  auto unitTangent = [&](vtkIdType s, double u)
+  {
+    vec3 d = vec3(
+      vtkSplineTubeMath::svHermiteDerivative(node(s), deriv(s), node(s + 1), deriv(s + 1), u));
+    double len = glm::length(d);
+    if (len < 1e-12)
+    {
+      d = vec3(node(s + 1) - node(s));
+      len = glm::length(d);
+    }
+    return len > 0.0 ? d / len : vec3(1.0, 0.0, 0.0);
+  };
+  auto emit = [&](vtkIdType k, const vec3& r)
+  {
+    const double frame[3] = { r.x, r.y, r.z };
+    write(k, frame);
+  };
+  const double maxAngle = this->MaximumFrameStepAngle;
+  vec3 tangent = unitTangent(0, 0.0);
+  vec3 r = vtkSplineTubeMath::svAnyOrthogonal(tangent);
+  emit(0, r);
+  for (vtkIdType s = 0; s + 1 < n; ++s)
+  {
+    // Sub-steps: sample the tangent densely enough that no step turns it by
+    // more than maxAngle (the total turning is estimated on 8 samples).
+    double turning = 0.0;
+    vec3 prev = tangent;
+    for (int k = 1; k <= 8; ++k)
+    {
+      const vec3 cur = unitTangent(s, k / 8.0);
+      turning += std::acos(std::max(-1.0, std::min(1.0, glm::dot(prev, cur))));
+      prev = cur;
+    }
+    const int steps = std::max(1, std::min(256, static_cast<int>(std::ceil(turning / maxAngle))));
+    vec3 x = vec3(node(s));
+    for (int k = 1; k <= steps; ++k)
+    {
+      const double u = static_cast<double>(k) / steps;
+      const vec3 x1 =
+        vec3(vtkSplineTubeMath::svHermite(node(s), deriv(s), node(s + 1), deriv(s + 1), u));
+      const vec3 t1 = unitTangent(s, u);
+      r = DoubleReflection(x, tangent, r, x1, t1);
+      x = x1;
+      tangent = t1;
+    }
+    emit(s + 1, r);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::GetTubeFrames(vtkIdType tube, double* frames) const
+{
+  this->PropagateFrames(tube, this->GetTubeNumberOfNodes(tube),
+    [&](vtkIdType k, const double frame[3]) { std::copy(frame, frame + 3, frames + 3 * k); });
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::FillFrames(vtkIdType first, vtkIdType count, short* octahedral) const
+{
+  const Internals& in = *this->Internal;
+  in.ForNodes(first, count,
+    [&](vtkIdType t, vtkIdType b, vtkIdType e)
+    {
+      // Propagated from the tube's first node; written for [b, e).
+      const vtkIdType firstNode = in.TubeFirst[t];
+      this->PropagateFrames(t, e - firstNode,
+        [&](vtkIdType k, const double frame[3])
+        {
+          const vtkIdType node = firstNode + k;
+          if (node >= b && node < e)
+          {
+            const vtkSplineTubeMath::vec2 o =
+              vtkSplineTubeMath::svOctEncode(vec3(frame[0], frame[1], frame[2]));
+            short* out = octahedral + 2 * (node - first);
+            out[0] = static_cast<short>(std::lround(32767.0 * o.x));
+            out[1] = static_cast<short>(std::lround(32767.0 * o.y));
+          }
+        });
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::BuildChunks()
+{
+  const Internals& in = *this->Internal;
+  const vtkIdType numTubes = this->GetNumberOfTubes();
+  const vtkIdType numSegments = this->GetNumberOfSegments();
+  this->TubeFirstChunks->SetNumberOfTuples(numTubes + 1);
+  vtkIdType* tubeFirstChunk = this->TubeFirstChunks->GetPointer(0);
+  tubeFirstChunk[0] = 0;
+  for (vtkIdType t = 0; t < numTubes; ++t)
+  {
+    const vtkIdType segments = in.TubeFirst[t + 1] - in.TubeFirst[t] - 1;
+    tubeFirstChunk[t + 1] = tubeFirstChunk[t] + (segments + ChunkSegments - 1) / ChunkSegments;
+  }
+  const vtkIdType numChunks = tubeFirstChunk[numTubes];
+  this->ChunkFirstSegments->SetNumberOfTuples(numChunks + 1);
+  this->ChunkTubes->SetNumberOfTuples(numChunks);
+  this->ChunkSpheres->SetNumberOfTuples(numChunks);
+  this->ChunkSizes->SetNumberOfTuples(numChunks);
+  this->SegmentSpheres->SetNumberOfTuples(numSegments);
+  vtkMath::UninitializeBounds(this->Bounds);
+  if (numChunks == 0)
+  {
+    this->ChunkFirstSegments->SetValue(0, 0);
+    return;
+  }
+  vtkTypeUInt32* chunkFirst = this->ChunkFirstSegments->GetPointer(0);
+  vtkTypeUInt32* chunkTube = this->ChunkTubes->GetPointer(0);
+  float* spheres = this->ChunkSpheres->GetPointer(0);
+  float* sizes = this->ChunkSizes->GetPointer(0);
+  vtkTypeUInt32* segmentSpheres = this->SegmentSpheres->GetPointer(0);
+
+  // The box of segment k (nodes k, k + 1 of p, m): its cubic Bezier control
+  // points (the curve lies in their convex hull) padded by the largest of
+  // the radius spline's (the radius lies below their maximum).
+  auto segmentBox = [](const double* p, const double* m, vtkIdType k, double box[6],
+                      double control[4][3], double& r)
+  {
+    const double* a = p + 4 * k;
+    const double* b = p + 4 * (k + 1);
+    const double* da = m + 4 * k;
+    const double* db = m + 4 * (k + 1);
+    r = std::max({ a[3], b[3], a[3] + da[3] / 3.0, b[3] - db[3] / 3.0 });
+    for (int c = 0; c < 3; ++c)
+    {
+      control[0][c] = a[c];
+      control[1][c] = a[c] + da[c] / 3.0;
+      control[2][c] = b[c] - db[c] / 3.0;
+      control[3][c] = b[c];
+      box[2 * c] = std::min({ control[0][c], control[1][c], control[2][c], control[3][c] }) - r;
+      box[2 * c + 1] =
+        std::max({ control[0][c], control[1][c], control[2][c], control[3][c] }) + r;
+    }
+  };
+  struct Scratch
+  {
+    std::vector<double> P;
+    std::vector<double> M;
+  };
+  vtkSMPThreadLocal<Scratch> scratch;
+
+  // Pass 1: per chunk its box (kept until the centre is known), sizes, first
+  // segment and tube; the bounds by thread.
+  std::vector<double> boxes(static_cast<size_t>(6 * numChunks));
+  struct Local
+  {
+    double B[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
+      VTK_DOUBLE_MIN };
+  };
+  vtkSMPThreadLocal<Local> locals;
+  vtkSMPTools::For(0, numTubes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double* B = locals.Local().B;
+      Scratch& s = scratch.Local();
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const vtkIdType n = in.TubeFirst[t + 1] - in.TubeFirst[t];
+        s.P.resize(static_cast<size_t>(4 * n));
+        s.M.resize(static_cast<size_t>(4 * n));
+        in.Nodes(t, 0, n, s.P.data(), s.M.data());
+        vtkIdType k = 0; // segment of the tube
+        for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
+        {
+          chunkFirst[c] = static_cast<vtkTypeUInt32>(in.TubeFirst[t] - t + k);
+          chunkTube[c] = static_cast<vtkTypeUInt32>(t);
+          double* box = &boxes[6 * c];
+          for (int q = 0; q < 3; ++q)
+          {
+            box[2 * q] = VTK_DOUBLE_MAX;
+            box[2 * q + 1] = VTK_DOUBLE_MIN;
+          }
+          double length = 0.0;
+          double maxLength = 0.0;
+          double maxRadius = 0.0;
+          const vtkIdType stop = std::min<vtkIdType>(n - 1, k + ChunkSegments);
+          for (; k < stop; ++k)
+          {
+            double segmentBounds[6];
+            double control[4][3];
+            double r = 0.0;
+            segmentBox(s.P.data(), s.M.data(), k, segmentBounds, control, r);
+            for (int q = 0; q < 6; q += 2)
+            {
+              box[q] = std::min(box[q], segmentBounds[q]);
+              box[q + 1] = std::max(box[q + 1], segmentBounds[q + 1]);
+            }
+            double polygon = 0.0;
+            for (int q = 0; q < 3; ++q)
+            {
+              polygon += std::sqrt(vtkMath::Distance2BetweenPoints(control[q], control[q + 1]));
+            }
+            length += polygon;
+            maxLength = std::max(maxLength, polygon);
+            maxRadius = std::max(maxRadius, r);
+          }
+          for (int q = 0; q < 6; q += 2)
+          {
+            B[q] = std::min(B[q], box[q]);
+            B[q + 1] = std::max(B[q + 1], box[q + 1]);
+          }
+          sizes[3 * c] = static_cast<float>(length);
+          sizes[3 * c + 1] = static_cast<float>(maxLength);
+          sizes[3 * c + 2] = static_cast<float>(maxRadius);
+        }
+      }
+    });
+  chunkFirst[numChunks] = static_cast<vtkTypeUInt32>(numSegments);
+  for (int k = 0; k < 6; k += 2)
+  {
+    this->Bounds[k] = VTK_DOUBLE_MAX;
+    this->Bounds[k + 1] = VTK_DOUBLE_MIN;
+  }
+  for (auto& local : locals)
+  {
+    for (int k = 0; k < 6; k += 2)
+    {
+      this->Bounds[k] = std::min(this->Bounds[k], local.B[k]);
+      this->Bounds[k + 1] = std::max(this->Bounds[k + 1], local.B[k + 1]);
+    }
+  }
+
+  // Pass 2: the spheres around the boxes, relative to the centre (rounding
+  // to float covered by a relative margin), and the segments' spheres.
+  double center[3];
+  this->GetCenter(center);
+  vtkSMPTools::For(0, numTubes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      Scratch& s = scratch.Local();
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const vtkIdType n = in.TubeFirst[t + 1] - in.TubeFirst[t];
+        s.P.resize(static_cast<size_t>(4 * n));
+        s.M.resize(static_cast<size_t>(4 * n));
+        in.Nodes(t, 0, n, s.P.data(), s.M.data());
+        const vtkIdType firstSegment = in.TubeFirst[t] - t;
+        for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
+        {
+          const double* box = &boxes[6 * c];
+          double radius2 = 0.0;
+          double extent = 0.0;
+          for (int k = 0; k < 3; ++k)
+          {
+            const double mid = 0.5 * (box[2 * k] + box[2 * k + 1]);
+            spheres[4 * c + k] = static_cast<float>(mid - center[k]);
+            radius2 += 0.25 * (box[2 * k + 1] - box[2 * k]) * (box[2 * k + 1] - box[2 * k]);
+            extent = std::max(extent, std::abs(mid - center[k]));
+          }
+          const double radius = std::sqrt(radius2);
+          spheres[4 * c + 3] = static_cast<float>(radius + 1e-6 * (radius + extent));
+          for (vtkIdType segment = chunkFirst[c]; segment < chunkFirst[c + 1]; ++segment)
+          {
+            double segmentBounds[6];
+            double control[4][3];
+            double r = 0.0;
+            segmentBox(s.P.data(), s.M.data(), segment - firstSegment, segmentBounds, control, r);
+            double part[4];
+            double partRadius2 = 0.0;
+            for (int k = 0; k < 3; ++k)
+            {
+              part[k] = 0.5 * (segmentBounds[2 * k] + segmentBounds[2 * k + 1]) - center[k];
+              partRadius2 += 0.25 * (segmentBounds[2 * k + 1] - segmentBounds[2 * k]) *
+                (segmentBounds[2 * k + 1] - segmentBounds[2 * k]);
+            }
+            part[3] = std::sqrt(partRadius2) * (1.0 + 1e-6) + 1e-6 * extent;
+            segmentSpheres[segment] = vtkSplineTubeVisibility::EncodePart(spheres + 4 * c, part);
+          }
+        }
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::GetCenter(double center[3]) const
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    center[k] = vtkMath::AreBoundsInitialized(this->Bounds)
+      ? 0.5 * (this->Bounds[2 * k] + this->Bounds[2 * k + 1])
+      : 0.0;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkSplineTubeCore::GetBounds(double bounds[6]) const
 {
   std::copy(this->Bounds, this->Bounds + 6, bounds);
+}
+
+//------------------------------------------------------------------------------
+size_t vtkSplineTubeCore::GetMemorySize() const
+{
+  const Internals& in = *this->Internal;
+  return in.Tubes.size() * sizeof(Internals::Tube) + in.TubeFirst.size() * sizeof(vtkIdType) +
+    in.MergedPoints.size() * sizeof(vtkIdType) +
+    static_cast<size_t>(this->TubeFirstChunks->GetActualMemorySize() +
+      this->ChunkFirstSegments->GetActualMemorySize() + this->ChunkTubes->GetActualMemorySize() +
+      this->ChunkSpheres->GetActualMemorySize() + this->ChunkSizes->GetActualMemorySize() +
+      this->SegmentSpheres->GetActualMemorySize()) *
+    1024;
 }
 
 //------------------------------------------------------------------------------

@@ -1,58 +1,44 @@
 /**
  * @class   vtkSplineTubeCore
- * @brief   CPU preparation of spline tubes: node data, frames and the segment table.
+ * @brief   CPU side of the spline tubes: the tubes of polylines, their nodes' splines,
+ * chunks for culling and the compact GPU layout, without copying the points.
  *
- * The shared "tube core" of the tube mappers (Salm, "Interactive Rendering of
+ * The shared "tube core" of the line mappers (Salm, "Interactive Rendering of
  * Spline Tubes", §3 'Commonalities and terminology'). From the polylines of
- * one or more vtkPolyData it builds, once per data change:
+ * one or more vtkPolyData it makes, once per data change:
  *
- * - per node (a point of a polyline, after merging repeated points):
- *   position, tangent, radius and its derivative, color (RGBA in [0, 1]) and
- *   its derivative — the values and derivatives of cubic Hermite splines
- *   through the nodes, with the nodes at successive integer values of the
- *   curve parameter (Salm's equidistant-node assumption);
- * - per node, a unit vector orthogonal to the tangent ("orthogonal vector" of
- *   Salm §3.1) propagated along each tube as a **rotation-minimizing frame**;
- * - a segment table (segment i spans nodes first[i] and first[i] + 1, flags for
- *   the first and last segment of a tube, the polyline's cell id and block),
- *   so that one instanced draw renders every segment of every tube without
- *   dummy segments (Salm Fig. 3, the "tubes buffer").
+ * - the tube table: per tube (a valid polyline) its first node, its input
+ *   block and cell; a node is a point of a polyline after repeated
+ *   consecutive points are merged. Nodes are read from the input when needed
+ *   (the core keeps the inputs, not a copy of their points: one copy of the
+ *   data on the CPU); per node the position and radius, and their
+ *   derivatives along the tube (svNodeDerivative(): central differences
+ *   inside, second-order one-sided at the ends, so that the cubic Hermite
+ *   splines through the nodes are C1 and reproduce straight lines and
+ *   parabolas; the chord for two-node tubes), the same on the CPU and in the
+ *   shaders; colors (mapped scalars, RGBA) and a node scalar likewise;
+ * - chunks: runs of at most ChunkSegments consecutive segments with a
+ *   bounding sphere of everything drawn for them (the segments' Bezier control
+ *   points padded by their radii) and a sphere per segment, the units of the
+ *   renderers' per-view work (vtkSplineTubeVisibility, levels of detail), and
+ *   the bounds;
+ * - the GPU layout, filled range by range for uploads in pieces
+ *   (FillNodes(): position relative to a shift and radius, 16 bytes, plus the
+ *   tube and its end flags, 4 bytes; FillColors(): RGBA8; FillFrames(): the
+ *   rotation-minimizing frames of Salm §3.1, double reflection of Wang et
+ *   al. 2008 with sub-steps where the tangent turns more than
+ *   MaximumFrameStepAngle, octahedral int16 x 2).
  *
- * Tangents are Catmull-Rom tangents (central differences of the neighbouring
- * nodes, m_i = (p_{i+1} - p_{i-1}) / 2) inside a tube and second-order one-sided
- * differences at its ends (m_0 = (-3 p_0 + 4 p_1 - p_2) / 2), so that the
- * spline is C1, interpolates every node and reproduces straight lines and
- * parabolas exactly. Radii and colors use the same differences. A tube of two
- * nodes is a straight segment with constant-speed parametrisation.
- *
- * Frames are propagated by the double-reflection method (Wang, Jüttler, Zheng
- * and Liu, ACM TOG 2008) along the cubic position spline, with sub-steps where
- * the tangent turns by more than MaximumFrameStepAngle between samples (Salm
- * inserts sub-steps where successive tangents turn by nearly 90 degrees; the
- * double reflection needs them to stay rotation-minimizing at any curvature).
- *
- * Per data change Build() also cuts every tube into **chunks**, runs of at
- * most ChunkSegments consecutive segments, each with a bounding sphere of
- * everything drawn for it (the segments' Bezier control points padded by
- * their radii): the units of the renderers' per-view work (frustum and
- * occlusion culling, vtkSplineTubeVisibility; level of detail).
- *
- * The split of each cubic segment into C1-continuous quadratic sub-segments
- * and their oriented bounding boxes (Salm §3.2 'Rendering') are in
- * vtkSplineTubeMath.h, shared with the shaders; see SplitSegment().
+ * Segment s (numbered tube by tube) runs from node GetSegmentFirstNode(s) to
+ * the next.
  *
  * Bad input is reported, never rendered as garbage: polylines with a NaN or
- * infinite coordinate, or a NaN, infinite, zero or negative radius, are
- * skipped with a warning naming the cell and point; repeated consecutive
- * points are merged (one warning with the count); polylines with fewer than
- * two distinct points are skipped (one warning with the count). A missing,
- * non-numeric or multi-component radius array is an error (AddPolyData()
+ * infinite coordinate, or a NaN, infinite, zero or negative radius (or node
+ * scalar), are skipped with a warning naming the cell and point; repeated
+ * consecutive points are merged (one warning with the count); polylines with
+ * fewer than two distinct points are skipped. A missing, non-numeric or
+ * multi-component radius (or node scalar) array is an error (AddPolyData()
  * returns false and adds nothing).
- *
- * An optional one-component point array (NodeScalarArrayName, e.g. the
- * stylized lines' orientation angles) is carried to the nodes the same way
- * (NodeScalars); polylines with a NaN or infinite value in it are skipped with
- * a warning, and a missing, non-numeric or multi-component array is an error.
  */
 
 #ifndef vtkSplineTubeCore_h
@@ -61,6 +47,9 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkNew.h"          // for vtkNew
 #include "vtkObject.h"
+
+#include <functional> // for std::function
+#include <memory>     // for std::unique_ptr
 
 class vtkFloatArray;
 class vtkIdTypeArray;
@@ -82,10 +71,16 @@ public:
     TUBE_END = 2    ///< last segment of its tube: the end cap is drawn
   };
 
+  /// Bits of the node info words of FillNodes() (the rest: the tube).
+  static constexpr unsigned int NODE_FIRST = 0x40000000u;
+  static constexpr unsigned int NODE_LAST = 0x80000000u;
+  static constexpr unsigned int NODE_TUBE_MASK = 0x3FFFFFFFu;
+
+  /// The longest chunk, in segments.
+  static constexpr int ChunkSegments = 8;
+
   ///@{
-  /**
-   * Radius in world units used when no radius array is set. Default 0.01.
-   */
+  /// Radius in world units used when no radius array is set. Default 0.01.
   vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Radius, double);
   ///@}
@@ -100,17 +95,15 @@ public:
   ///@}
 
   ///@{
-  /**
-   * Factor applied to the radius array's values. Default 1.
-   */
+  /// Factor applied to the radius array's values. Default 1.
   vtkSetClampMacro(RadiusScale, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(RadiusScale, double);
   ///@}
 
   ///@{
   /**
-   * Name of a one-component point array whose values are carried to the
-   * nodes (GetNodeScalars()). nullptr (default): none.
+   * Name of a one-component point array whose values the nodes carry
+   * (GetNodeScalar()). nullptr (default): none.
    */
   vtkSetStringMacro(NodeScalarArrayName);
   vtkGetStringMacro(NodeScalarArrayName);
@@ -119,20 +112,16 @@ public:
   ///@{
   /**
    * Name of an integer cell array of original cell ids (ParaView's
-   * "vtkOriginalCellIds" of geometry filtered input): when a block has it,
-   * the segments' cell ids (GetSegmentCellIds(), what picking reports) are
-   * its values instead of the cell's index in the block. nullptr (default):
-   * the index.
+   * "vtkOriginalCellIds"): when a block has it, the tubes' cell ids (what
+   * picking reports) are its values instead of the cell's index in the block.
+   * nullptr (default): the index.
    */
   vtkSetStringMacro(CellIdArrayName);
   vtkGetStringMacro(CellIdArrayName);
   ///@}
 
   ///@{
-  /**
-   * What the node scalars are, for messages ("The <role> array ..."). Default
-   * "node scalar".
-   */
+  /// What the node scalars are, for messages ("The <role> array ..."). Default "node scalar".
   vtkSetStringMacro(NodeScalarRole);
   vtkGetStringMacro(NodeScalarRole);
   ///@}
@@ -140,147 +129,77 @@ public:
   ///@{
   /**
    * Largest angle (radians) the tangent may turn between two steps of the
-   * frame propagation; longer turns are sub-divided. Default 0.1.
+   * frame propagation (FillFrames()); longer turns are sub-divided. Default 0.1.
    */
   vtkSetClampMacro(MaximumFrameStepAngle, double, 1e-3, 1.5);
   vtkGetMacro(MaximumFrameStepAngle, double);
   ///@}
 
-  ///@{
-  /**
-   * Whether Build() propagates the rotation-minimizing frames (needed by
-   * the tessellated tubes; the ray-cast tubes, sphere-swept, do not use
-   * them). Default on. Without frames, GetNodeFrames() is empty.
-   */
-  vtkSetMacro(ComputeFrames, bool);
-  vtkGetMacro(ComputeFrames, bool);
-  vtkBooleanMacro(ComputeFrames, bool);
-  ///@}
-
-  /// The longest chunk, in segments.
-  static constexpr int ChunkSegments = 8;
-
-  /**
-   * Forget all tubes (the settings are kept).
-   */
+  /// Forget all tubes and inputs (the settings are kept).
   void Initialize();
 
   /**
-   * Append the polylines (VTK_LINE and VTK_POLY_LINE cells of the line array)
-   * of `input` as tubes. `colors`, if given, holds one RGBA color (4 unsigned
-   * char components, as made by vtkScalarsToColors::MapScalars) per point of
-   * `input`, or per cell when `colorsPerCell` is true (then every node of a
-   * polyline gets the polyline's color); without colors every node is white.
-   * `blockId` is stored with every segment (the flat index of the block of a
-   * composite data set).
-   * Returns false, with an error, when the input cannot be used at all.
-   * Call Build() after the last AddPolyData().
+   * Add the polylines (VTK_LINE and VTK_POLY_LINE cells of the line array) of
+   * `input` as tubes; the core keeps a reference to `input` (and `colors`).
+   * `colors`, if given, holds one RGBA color (4 unsigned char components, as
+   * made by vtkScalarsToColors::MapScalars) per point of `input`, or per cell
+   * when `colorsPerCell` is true; without colors every node is white.
+   * `blockId` is stored with every tube (the flat index of the block of a
+   * composite data set). Returns false, with an error, when the input cannot
+   * be used at all. Call Build() after the last AddPolyData().
    */
   bool AddPolyData(vtkPolyData* input, vtkUnsignedCharArray* colors, unsigned int blockId = 0,
     bool colorsPerCell = false);
 
-  /**
-   * Compute tangents, derivatives and frames of everything added (in
-   * parallel over tubes). Must be called once after the AddPolyData() calls.
-   */
+  /// Make the chunks and the bounds (in parallel over tubes). Call once after the AddPolyData()s.
   void Build();
 
   ///@{
-  /**
-   * Counts of what was built.
-   */
+  /// Counts of what was built.
   vtkIdType GetNumberOfTubes() const;
   vtkIdType GetNumberOfNodes() const;
   vtkIdType GetNumberOfSegments() const;
-  ///@}
-
-  ///@{
-  /**
-   * Per-node data (one tuple per node; nodes of a tube are consecutive).
-   * Positions (3), tangents (3, derivative with respect to the node parameter,
-   * not normalized), radii (2: radius and its derivative), colors (4: RGBA in
-   * [0, 1]), color derivatives (4), frames (3: unit vector orthogonal to the
-   * tangent, rotation-minimizing along the tube).
-   */
-  vtkFloatArray* GetNodePositions() { return this->NodePositions; }
-  vtkFloatArray* GetNodeTangents() { return this->NodeTangents; }
-  vtkFloatArray* GetNodeRadii() { return this->NodeRadii; }
-  vtkFloatArray* GetNodeColors() { return this->NodeColors; }
-  vtkFloatArray* GetNodeColorDerivatives() { return this->NodeColorDerivatives; }
-  vtkFloatArray* GetNodeFrames() { return this->NodeFrames; }
-  /// The values of NodeScalarArrayName per node (empty without that array).
-  vtkFloatArray* GetNodeScalars() { return this->NodeScalars; }
-  ///@}
-
-  ///@{
-  /**
-   * Segment table (one tuple per segment, ordered tube by tube): index of the
-   * segment's first node (the second is that plus one), flags (SegmentFlagBits),
-   * the cell id of the polyline in its input and the block id given to
-   * AddPolyData().
-   */
-  vtkTypeUInt32Array* GetSegmentFirstNodes() { return this->SegmentFirstNodes; }
-  vtkUnsignedCharArray* GetSegmentFlags() { return this->SegmentFlags; }
-  vtkIdTypeArray* GetSegmentCellIds() { return this->SegmentCellIds; }
-  vtkTypeUInt32Array* GetSegmentBlockIds() { return this->SegmentBlockIds; }
-  ///@}
-
-  ///@{
-  /**
-   * Tube table: first node and number of nodes of each tube.
-   */
-  vtkIdTypeArray* GetTubeFirstNodes() { return this->TubeFirstNodes; }
-  vtkIdTypeArray* GetTubeNumberOfNodes() { return this->TubeNumberOfNodes; }
-  ///@}
-
-  ///@{
-  /**
-   * Chunk table (made by Build()): per chunk its first segment (one more
-   * tuple than chunks: the last is the number of segments), its tube, its
-   * bounding sphere (x, y, z relative to GetCenter(), radius) and its sizes
-   * (the length of its segments' Bezier control polygons, the longest such
-   * polygon of one of its segments, its largest radius). Chunks of a tube
-   * are consecutive.
-   */
   vtkIdType GetNumberOfChunks() const;
-  vtkTypeUInt32Array* GetChunkFirstSegments() { return this->ChunkFirstSegments; }
-  vtkTypeUInt32Array* GetChunkTubes() { return this->ChunkTubes; }
-  vtkFloatArray* GetChunkSpheres() { return this->ChunkSpheres; }
-  vtkFloatArray* GetChunkSizes() { return this->ChunkSizes; }
-  /// Per segment its bounding sphere relative to its chunk's (vtkSplineTubeVisibility::EncodePart).
-  vtkTypeUInt32Array* GetSegmentSpheres() { return this->SegmentSpheres; }
-  vtkIdTypeArray* GetTubeFirstChunks() { return this->TubeFirstChunks; }
   ///@}
-
-  /**
-   * The centre of the tubes' bounds (made by Build(); the origin of the chunk
-   * spheres, and of the positions the mappers upload).
-   */
-  void GetCenter(double center[3]) const;
-
-  /**
-   * True when colors were given for every piece added.
-   */
-  bool HasColors() const { return this->ColorsGiven && !this->ColorsMissing; }
-
-  /**
-   * Bounds of the tubes' surfaces (the convex hulls of the cubic segments'
-   * Bezier control points, padded by the largest radius of each segment),
-   * made by Build(). Uninitialized bounds when there are no tubes.
-   */
-  void GetBounds(double bounds[6]) const;
-
-  /**
-   * Largest radius over all nodes (0 without tubes).
-   */
-  double GetMaximumRadius() const { return this->MaximumRadius; }
 
   ///@{
   /**
-   * What the last AddPolyData() calls skipped or merged (since Initialize()).
+   * The tube table: first node, number of nodes, the polyline's cell id in
+   * its input (or its original id, see CellIdArrayName) and block; the tube
+   * of a node, the first segment of a tube.
    */
-  vtkGetMacro(NumberOfSkippedLines, vtkIdType);
-  vtkGetMacro(NumberOfMergedPoints, vtkIdType);
+  vtkIdType GetTubeFirstNode(vtkIdType tube) const;
+  vtkIdType GetTubeNumberOfNodes(vtkIdType tube) const;
+  vtkIdType GetTubeCellId(vtkIdType tube) const;
+  unsigned int GetTubeBlockId(vtkIdType tube) const;
+  vtkIdType GetTubeOfNode(vtkIdType node) const;
+  vtkIdType GetTubeFirstSegment(vtkIdType tube) const { return this->GetTubeFirstNode(tube) - tube; }
+  ///@}
+
+  ///@{
+  /**
+   * A node's position and radius (x, y, z, r; the input's coordinates), their
+   * derivatives along the tube (see the class comment), its color (RGBA in
+   * [0, 1], white without colors) and scalar (0 without NodeScalarArrayName).
+   */
+  void GetNode(vtkIdType node, double xyzr[4]) const;
+  void GetNodeDerivative(vtkIdType node, double dxyzr[4]) const;
+  void GetNodeColor(vtkIdType node, double rgba[4]) const;
+  double GetNodeScalar(vtkIdType node) const;
+  ///@}
+
+  /**
+   * Positions and radii (4 doubles each) and their derivatives of the `count`
+   * nodes of tube `tube` from its node `first` (either output may be
+   * nullptr): the fast way to read runs of nodes.
+   */
+  void GetTubeNodes(
+    vtkIdType tube, vtkIdType first, vtkIdType count, double* xyzr, double* dxyzr) const;
+
+  ///@{
+  /// Segment s: its first node (the second is the next), its flags (SegmentFlagBits).
+  vtkIdType GetSegmentFirstNode(vtkIdType segment) const;
+  int GetSegmentFlags(vtkIdType segment) const;
   ///@}
 
   /**
@@ -289,7 +208,77 @@ public:
    * (any output pointer may be nullptr).
    */
   void EvaluateSegment(vtkIdType segment, double t, double position[3], double derivative[3],
-    double* radius, double* radiusDerivative);
+    double* radius, double* radiusDerivative) const;
+
+  ///@{
+  /**
+   * The GPU layout of the nodes [first, first + count), in parallel:
+   * FillNodes: 4 floats per node (position minus `shift`, radius);
+   * FillNodeInfo: one word per node (its tube | NODE_FIRST | NODE_LAST, the
+   * first and last node of the tube); FillColors: RGBA8 in one
+   * word (red lowest); FillScalars: the node scalar; FillFrames: the unit
+   * orthogonal vector of the rotation-minimizing frame, octahedral, 2 int16
+   * (frames propagate along whole tubes: for a range cutting a tube, its
+   * nodes before `first` are propagated but not written).
+   */
+  void FillNodes(vtkIdType first, vtkIdType count, const double shift[3], float* xyzr) const;
+  void FillNodeInfo(vtkIdType first, vtkIdType count, unsigned int* info) const;
+  void FillColors(vtkIdType first, vtkIdType count, unsigned int* rgba) const;
+  void FillScalars(vtkIdType first, vtkIdType count, float* scalars) const;
+  void FillFrames(vtkIdType first, vtkIdType count, short* octahedral) const;
+  ///@}
+
+  /// The frames (unit orthogonal vectors, 3 doubles per node) of a tube, before encoding.
+  void GetTubeFrames(vtkIdType tube, double* frames) const;
+
+  ///@{
+  /**
+   * Chunk table (made by Build()): per chunk its first segment (one more
+   * tuple than chunks: the last is the number of segments), its tube, its
+   * bounding sphere (x, y, z relative to GetCenter(), radius) and its sizes
+   * (the length of its segments' Bezier control polygons, the longest such
+   * polygon of one of its segments, its largest radius); per tube its first
+   * chunk (one more tuple); per segment its sphere relative to its chunk's
+   * (vtkSplineTubeVisibility::EncodePart). Chunks of a tube are consecutive.
+   */
+  vtkTypeUInt32Array* GetChunkFirstSegments() { return this->ChunkFirstSegments; }
+  vtkTypeUInt32Array* GetChunkTubes() { return this->ChunkTubes; }
+  vtkFloatArray* GetChunkSpheres() { return this->ChunkSpheres; }
+  vtkFloatArray* GetChunkSizes() { return this->ChunkSizes; }
+  vtkIdTypeArray* GetTubeFirstChunks() { return this->TubeFirstChunks; }
+  vtkTypeUInt32Array* GetSegmentSpheres() { return this->SegmentSpheres; }
+  ///@}
+
+  /// The centre of the tubes' bounds (the origin of the chunk spheres).
+  void GetCenter(double center[3]) const;
+
+  /// True when colors were given for every piece added.
+  bool HasColors() const { return this->ColorsGiven && !this->ColorsMissing; }
+
+  /// True when the nodes carry scalars (NodeScalarArrayName was found).
+  bool HasNodeScalars() const;
+
+  /**
+   * Bounds of the tubes' surfaces (the convex hulls of the cubic segments'
+   * Bezier control points, padded by the largest radius of each segment),
+   * made by Build(). Uninitialized bounds when there are no tubes.
+   */
+  void GetBounds(double bounds[6]) const;
+
+  /// Largest radius over all nodes (0 without tubes).
+  double GetMaximumRadius() const { return this->MaximumRadius; }
+
+  /// Largest cell id of the tubes (what picking may report).
+  vtkIdType GetMaximumCellId() const { return this->MaximumCellId; }
+
+  ///@{
+  /// What the last AddPolyData() calls skipped or merged (since Initialize()).
+  vtkGetMacro(NumberOfSkippedLines, vtkIdType);
+  vtkGetMacro(NumberOfMergedPoints, vtkIdType);
+  ///@}
+
+  /// Bytes the core holds (tube and chunk tables; not the inputs).
+  size_t GetMemorySize() const;
 
 protected:
   vtkSplineTubeCore();
@@ -302,21 +291,7 @@ protected:
   char* NodeScalarRole = nullptr;
   char* CellIdArrayName = nullptr;
   double MaximumFrameStepAngle = 0.1;
-  bool ComputeFrames = true;
 
-  vtkNew<vtkFloatArray> NodePositions;
-  vtkNew<vtkFloatArray> NodeTangents;
-  vtkNew<vtkFloatArray> NodeRadii;
-  vtkNew<vtkFloatArray> NodeColors;
-  vtkNew<vtkFloatArray> NodeColorDerivatives;
-  vtkNew<vtkFloatArray> NodeFrames;
-  vtkNew<vtkFloatArray> NodeScalars;
-  vtkNew<vtkTypeUInt32Array> SegmentFirstNodes;
-  vtkNew<vtkUnsignedCharArray> SegmentFlags;
-  vtkNew<vtkIdTypeArray> SegmentCellIds;
-  vtkNew<vtkTypeUInt32Array> SegmentBlockIds;
-  vtkNew<vtkIdTypeArray> TubeFirstNodes;
-  vtkNew<vtkIdTypeArray> TubeNumberOfNodes;
   vtkNew<vtkIdTypeArray> TubeFirstChunks;
   vtkNew<vtkTypeUInt32Array> ChunkFirstSegments;
   vtkNew<vtkTypeUInt32Array> ChunkTubes;
@@ -328,6 +303,7 @@ protected:
   bool ColorsGiven = false;
   bool ColorsMissing = false;
   double MaximumRadius = 0.0;
+  vtkIdType MaximumCellId = 0;
   vtkIdType NumberOfSkippedLines = 0;
   vtkIdType NumberOfMergedPoints = 0;
 
@@ -335,9 +311,14 @@ private:
   vtkSplineTubeCore(const vtkSplineTubeCore&) = delete;
   void operator=(const vtkSplineTubeCore&) = delete;
 
-  void PropagateFrames(vtkIdType tube);
-  /// The chunk table, the bounds and the centre (after the tangents).
+  /// The chunk table, the bounds and the centre.
   void BuildChunks();
+  /// The rotation-minimizing frames of tube t's first n nodes (at least 2), node by node.
+  void PropagateFrames(vtkIdType t, vtkIdType n,
+    const std::function<void(vtkIdType k, const double frame[3])>& write) const;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
 };
 
 #endif

@@ -1,6 +1,7 @@
 #include "vtkSplineTubeMapper.h"
 
 #include "vtkSplineTubeColor.h"
+#include "vtkSplineTubeNodes.h"
 #include "vtkSplineTubeCore.h"
 #include "vtkSplineTubeVisibility.h"
 #include "vtkSplineVizGPUBuffer.h"
@@ -50,7 +51,7 @@ struct vtkSplineTubeMapper::PyramidHolder
 //------------------------------------------------------------------------------
 vtkSplineTubeMapper::vtkSplineTubeMapper()
   : NodesBuffer(new vtkSplineVizGPUBuffer)
-  , SegmentsBuffer(new vtkSplineVizGPUBuffer)
+  , NodeInfoBuffer(new vtkSplineVizGPUBuffer)
   , TubesBuffer(new vtkSplineVizGPUBuffer)
   , ColorsBuffer(new vtkSplineVizGPUBuffer)
   , Visibility(new vtkSplineTubeVisibility)
@@ -206,13 +207,8 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
     addLeaf(vtkPolyData::SafeDownCast(input), 0);
   }
   this->Core->Build();
-  // The largest cell id the shaders write, once per data (picking needs it).
-  this->MaximumCellId = 0;
-  vtkIdTypeArray* cellIds = this->Core->GetSegmentCellIds();
-  for (vtkIdType s = 0; s < cellIds->GetNumberOfTuples(); ++s)
-  {
-    this->MaximumCellId = std::max(this->MaximumCellId, cellIds->GetValue(s));
-  }
+  // The largest cell id the shaders write (picking needs it).
+  this->MaximumCellId = this->Core->GetMaximumCellId();
   this->HaveColors = this->Core->HasColors();
   if (this->Core->GetNumberOfTubes() == 0 && inputCells > 0 &&
     this->Core->GetNumberOfSkippedLines() == 0)
@@ -297,6 +293,7 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   // The superclass reads CurrentInput in places (timers, shader decisions);
   // an empty polydata keeps those paths neutral.
   this->CurrentInput = this->EmptyInput;
+  this->RenderStart = std::chrono::steady_clock::now();
   this->RenderPieceStart(ren, actor);
   if (vtkHardwareSelector* selector = ren->GetSelector())
   {
@@ -400,20 +397,37 @@ void vtkSplineTubeMapper::DrawVisibleChunks(vtkRenderer* ren, vtkActor* act,
   // read back (not multisampled).
   GLint sampleBuffers = 0;
   glGetIntegerv(GL_SAMPLE_BUFFERS, &sampleBuffers);
-  const bool occlusion = this->OcclusionCulling && sampleBuffers == 0 &&
+  const bool occlusionPossible = this->OcclusionCulling && sampleBuffers == 0 &&
     !act->IsRenderingTranslucentPolygonalGeometry() && view.Width > 0 && view.Height > 0;
 
   // The interaction subset: the fraction that met the budget last time; the
-  // first interactive frame after a still one scales the still frame's time.
-  const double budget = std::max(act->GetAllocatedRenderTime(), 1e-3);
+  // first interactive frame after a still one scales the still frame's cost.
+  const double budget = this->InteractiveFrameTime > 0.0
+    ? this->InteractiveFrameTime
+    : std::max(act->GetAllocatedRenderTime(), 1e-3);
   double fraction = 1.0;
   if (this->InteractiveRender)
   {
-    fraction = this->LastRenderInteractive || this->LastStillDrawTime <= 0.0
-      ? this->InteractiveFraction
-      : std::max(1e-3, std::min(1.0, budget / this->LastStillDrawTime));
+    fraction = this->InteractiveFraction;
+    if (!this->LastRenderInteractive && this->LastProportionalTime > 0.0)
+    {
+      // From the still frame's cost, undamped.
+      const double available = std::max(budget - this->LastFixedTime, budget / 3.0);
+      fraction = std::max(
+        MinimumLineFraction, std::min(1.0, available / std::max(this->LastProportionalTime, 1e-9)));
+    }
   }
-  this->Visibility->BeginFrame(view, fraction, occlusion, true);
+  // Small subsets hide little: no occlusion culling (its read-backs would
+  // cost more than they save).
+  const bool occlusion = occlusionPossible && fraction >= 0.1;
+  double fixed = std::chrono::duration<double>(start - this->RenderStart).count();
+  auto timed = [&fixed](const std::function<void()>& work)
+  {
+    const auto t = std::chrono::steady_clock::now();
+    work();
+    fixed += std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  };
+  timed([&]() { this->Visibility->BeginFrame(view, fraction, occlusion, true); });
   std::vector<std::uint32_t> chunks;
   const int groups = this->Visibility->GetNumberOfGroups();
   bool pyramid = false;
@@ -423,39 +437,50 @@ void vtkSplineTubeMapper::DrawVisibleChunks(vtkRenderer* ren, vtkActor* act,
     {
       pyramid = this->ReadDepthPyramid(ren);
     }
-    this->Visibility->CullGroup(g, pyramid ? &this->Pyramid->Pyramid : nullptr, chunks);
+    timed([&]()
+      { this->Visibility->CullGroup(g, pyramid ? &this->Pyramid->Pyramid : nullptr, chunks); });
     if (!chunks.empty())
     {
       draw(chunks);
     }
   }
-  // Remember what is visible in the finished picture for the next frame.
-  const bool finalPyramid = occlusion && groups > 0 && this->ReadDepthPyramid(ren);
-  this->Visibility->EndFrame(finalPyramid ? &this->Pyramid->Pyramid : nullptr);
+  // Remember what is visible in the finished picture for the next frame
+  // (still frames only: a subset's visible chunks hide less).
+  if (!this->InteractiveRender)
+  {
+    const bool finalPyramid = occlusion && groups > 0 && this->ReadDepthPyramid(ren);
+    timed([&]() { this->Visibility->EndFrame(finalPyramid ? &this->Pyramid->Pyramid : nullptr); });
+  }
 
   // The time to the end of the GPU's work adapts the interaction subset.
   if (this->InteractiveSubset)
   {
     glFinish();
   }
+  // Cost model: the per-view work (classification, projection, culling
+  // tests) is fixed, the rest (drawing, waiting for the rasterizer) grows
+  // with the lines drawn.
   this->LastDrawTime =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - this->RenderStart).count();
+  this->LastFixedTime = fixed;
+  this->LastProportionalTime = std::max(this->LastDrawTime - fixed, 1e-6) / fraction;
   this->LastLineFraction = fraction;
   this->LastRenderInteractive = this->InteractiveRender;
-  if (!this->InteractiveSubset)
+  if (this->InteractiveRender)
   {
-    return;
+    this->InteractiveFraction = this->NextFraction(fraction, budget);
   }
-  if (!this->InteractiveRender)
-  {
-    this->LastStillDrawTime = this->LastDrawTime;
-  }
-  else
-  {
-    // Damped multiplicative update toward the budget.
-    const double ratio = budget / std::max(this->LastDrawTime, 1e-6);
-    this->InteractiveFraction = std::max(1e-3, std::min(1.0, fraction * std::pow(ratio, 0.7)));
-  }
+}
+
+//------------------------------------------------------------------------------
+double vtkSplineTubeMapper::NextFraction(double fraction, double budget) const
+{
+  // The fraction whose drawing fits what the fixed work leaves of the
+  // budget (at least a third of it), damped.
+  const double available = std::max(budget - this->LastFixedTime, budget / 3.0);
+  const double wanted = available / std::max(this->LastProportionalTime, 1e-9);
+  const double ratio = std::max(0.2, std::min(5.0, wanted / fraction));
+  return std::max(MinimumLineFraction, std::min(1.0, fraction * std::pow(ratio, 0.8)));
 }
 
 //------------------------------------------------------------------------------
@@ -471,7 +496,7 @@ void vtkSplineTubeMapper::ReleaseGraphicsResources(vtkWindow* window)
     this->SelectionPrimitives[i].ReleaseGraphicsResources(window);
   }
   this->NodesBuffer->ReleaseGraphicsResources(window);
-  this->SegmentsBuffer->ReleaseGraphicsResources(window);
+  this->NodeInfoBuffer->ReleaseGraphicsResources(window);
   this->TubesBuffer->ReleaseGraphicsResources(window);
   this->ColorsBuffer->ReleaseGraphicsResources(window);
   this->UploadTime = vtkTimeStamp();
@@ -483,88 +508,55 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
 {
   vtkSplineTubeCore* core = this->Core;
   const vtkIdType numNodes = core->GetNumberOfNodes();
-  const vtkIdType numSegments = core->GetNumberOfSegments();
   const vtkIdType numTubes = core->GetNumberOfTubes();
-  if (numNodes >= (vtkIdType(1) << 30))
+  if (numTubes > static_cast<vtkIdType>(vtkSplineTubeCore::NODE_TUBE_MASK))
   {
-    vtkErrorMacro(<< "Too many nodes (" << numNodes << "); at most 2^30 are supported.");
+    vtkErrorMacro(<< "Too many tubes (" << numTubes << "); at most 2^30 are supported.");
     return false;
   }
-
-  // Nodes: (x, y, z, r), (dx, dy, dz, dr), positions relative to Shift.
-  std::vector<float> nodes(static_cast<size_t>(8 * numNodes));
-  const float* P = core->GetNodePositions()->GetPointer(0);
-  const float* M = core->GetNodeTangents()->GetPointer(0);
-  const float* R = core->GetNodeRadii()->GetPointer(0);
+  // Filled piece by piece from the input: no copy of the whole data on the
+  // CPU side (vtkSplineTubeCore::Fill...).
   const double shift[3] = { this->Shift[0], this->Shift[1], this->Shift[2] };
-  vtkSMPTools::For(0, numNodes,
-    [&](vtkIdType begin, vtkIdType end)
+  bool ok = this->NodesBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 4, VTK_FLOAT,
+    GL_RGBA32F,
+    [&](size_t first, size_t count, void* destination)
     {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        float* n = &nodes[8 * i];
-        for (int c = 0; c < 3; ++c)
-        {
-          n[c] = static_cast<float>(P[3 * i + c] - shift[c]);
-          n[4 + c] = M[3 * i + c];
-        }
-        n[3] = R[2 * i];
-        n[7] = R[2 * i + 1];
-      }
+      core->FillNodes(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count), shift,
+        static_cast<float*>(destination));
     });
-  bool ok = this->NodesBuffer->Upload(window, nodes.data(), 2 * numNodes, 4, VTK_FLOAT, GL_RGBA32F);
-
-  // Segments: (first node | flags << 30, tube); tubes: (cell id, block id).
-  std::vector<vtkTypeUInt32> segments(static_cast<size_t>(2 * numSegments));
-  std::vector<vtkTypeInt32> tubes(static_cast<size_t>(2 * std::max<vtkIdType>(numTubes, 1)));
-  const vtkTypeUInt32* first = core->GetSegmentFirstNodes()->GetPointer(0);
-  const unsigned char* flags = core->GetSegmentFlags()->GetPointer(0);
-  vtkIdType s = 0;
-  for (vtkIdType t = 0; t < numTubes; ++t)
-  {
-    const vtkIdType n = core->GetTubeNumberOfNodes()->GetValue(t);
-    tubes[2 * t] = static_cast<vtkTypeInt32>(core->GetSegmentCellIds()->GetValue(s));
-    tubes[2 * t + 1] = static_cast<vtkTypeInt32>(core->GetSegmentBlockIds()->GetValue(s));
-    for (vtkIdType k = 0; k + 1 < n; ++k, ++s)
-    {
-      segments[2 * s] = first[s] | (static_cast<vtkTypeUInt32>(flags[s]) << 30);
-      segments[2 * s + 1] = static_cast<vtkTypeUInt32>(t);
-    }
-  }
-  ok = this->SegmentsBuffer->Upload(
-         window, segments.data(), numSegments, 2, VTK_TYPE_UINT32, GL_RG32UI) &&
-    ok;
-  ok = this->TubesBuffer->Upload(window, tubes.data(), numTubes, 2, VTK_TYPE_INT32, GL_RG32I) && ok;
-
-  // Colors (RGBA8) and their derivatives (signed bytes, scaled by 127,
-  // clamped to [-1, 1]: a full color change per segment), one RG32UI texel
-  // per node (vtkSplineTubeColor.glsl), only with scalar coloring.
-  if (this->HaveColors)
-  {
-    std::vector<vtkTypeUInt32> colors(static_cast<size_t>(2 * numNodes));
-    const float* C = core->GetNodeColors()->GetPointer(0);
-    const float* D = core->GetNodeColorDerivatives()->GetPointer(0);
-    vtkSMPTools::For(0, numNodes,
-      [&](vtkIdType begin, vtkIdType end)
+  ok = ok &&
+    this->NodeInfoBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 1,
+      VTK_TYPE_UINT32, GL_R32UI,
+      [&](size_t first, size_t count, void* destination)
       {
-        for (vtkIdType i = begin; i < end; ++i)
+        core->FillNodeInfo(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+          static_cast<unsigned int*>(destination));
+      });
+  // Per tube: (cell id, block id), for picking.
+  ok = ok &&
+    this->TubesBuffer->UploadInPieces(window, static_cast<size_t>(numTubes), 2, VTK_TYPE_INT32,
+      GL_RG32I,
+      [&](size_t first, size_t count, void* destination)
+      {
+        auto* ids = static_cast<vtkTypeInt32*>(destination);
+        for (size_t t = 0; t < count; ++t)
         {
-          vtkTypeUInt32 color = 0;
-          vtkTypeUInt32 derivative = 0;
-          for (int c = 0; c < 4; ++c)
-          {
-            const long byte = std::lround(255.0f * std::min(1.0f, std::max(0.0f, C[4 * i + c])));
-            const long slope = std::lround(127.0f * std::min(1.0f, std::max(-1.0f, D[4 * i + c])));
-            color |= static_cast<vtkTypeUInt32>(byte) << (8 * c);
-            derivative |= (static_cast<vtkTypeUInt32>(slope) & 0xFFu) << (8 * c);
-          }
-          colors[2 * i] = color;
-          colors[2 * i + 1] = derivative;
+          ids[2 * t] = static_cast<vtkTypeInt32>(core->GetTubeCellId(first + t));
+          ids[2 * t + 1] = static_cast<vtkTypeInt32>(core->GetTubeBlockId(first + t));
         }
       });
-    ok =
-      this->ColorsBuffer->Upload(window, colors.data(), numNodes, 2, VTK_TYPE_UINT32, GL_RG32UI) &&
-      ok;
+  // Colors (RGBA8, one word per node), only with scalar coloring; the
+  // derivatives come from the neighbours in the shaders.
+  if (this->HaveColors)
+  {
+    ok = ok &&
+      this->ColorsBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 1,
+        VTK_TYPE_UINT32, GL_R32UI,
+        [&](size_t first, size_t count, void* destination)
+        {
+          core->FillColors(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+            static_cast<unsigned int*>(destination));
+        });
   }
   else
   {
@@ -583,7 +575,7 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
 void vtkSplineTubeMapper::ActivateTubeBuffers(vtkShaderProgram* program)
 {
   this->NodesBuffer->Activate(program, "tubeNodes");
-  this->SegmentsBuffer->Activate(program, "tubeSegments");
+  this->NodeInfoBuffer->Activate(program, "tubeNodeInfo");
   if (program->IsUniformUsed("tubeTubes"))
   {
     this->TubesBuffer->Activate(program, "tubeTubes");
@@ -598,7 +590,7 @@ void vtkSplineTubeMapper::ActivateTubeBuffers(vtkShaderProgram* program)
 void vtkSplineTubeMapper::DeactivateTubeBuffers()
 {
   this->NodesBuffer->Deactivate();
-  this->SegmentsBuffer->Deactivate();
+  this->NodeInfoBuffer->Deactivate();
   this->TubesBuffer->Deactivate();
   this->ColorsBuffer->Deactivate();
 }
@@ -606,8 +598,14 @@ void vtkSplineTubeMapper::DeactivateTubeBuffers()
 //------------------------------------------------------------------------------
 size_t vtkSplineTubeMapper::GetTubeBuffersSize()
 {
-  return this->NodesBuffer->GetNumberOfBytes() + this->SegmentsBuffer->GetNumberOfBytes() +
+  return this->NodesBuffer->GetNumberOfBytes() + this->NodeInfoBuffer->GetNumberOfBytes() +
     this->TubesBuffer->GetNumberOfBytes() + this->ColorsBuffer->GetNumberOfBytes();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSplineTubeMapper::GetTubeNodesDeclarations()
+{
+  return vtkSplineTubeNodes;
 }
 
 //------------------------------------------------------------------------------
@@ -919,4 +917,5 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveSubset: " << this->InteractiveSubset << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "ForceInteractive: " << this->ForceInteractive << "\n";
+  os << indent << "InteractiveFrameTime: " << this->InteractiveFrameTime << "\n";
 }

@@ -21,13 +21,14 @@
  * - bounds that include the tubes' radii.
  *
  * - the tubes buffer on the GPU (Salm §3, Fig. 3), as buffer textures read by
- *   the shaders with texelFetch: per node the position and radius, the
- *   tangent and radius derivative (`tubeNodes`, 2 RGBA32F texels), per segment
- *   its first node, the TUBE_START/TUBE_END flags and its tube (`tubeSegments`,
- *   RG32UI), per tube the cell and block ids for picking (`tubeTubes`, RG32I)
- *   and, with scalar coloring, per node the color and its derivative (scaled
- *   by 127) as bytes in one texel (`tubeColors`, RG32UI; the color spline of
- *   glsl/vtkSplineTubeColor.glsl);
+ *   the shaders with texelFetch (glsl/vtkSplineTubeNodes.glsl): per node the
+ *   position and radius (`tubeNodes`, RGBA32F) and its tube with the flags
+ *   first and last node of the tube (`tubeNodeInfo`, R32UI); the derivatives
+ *   are the neighbours' differences, computed where they are used (the same
+ *   as vtkSplineTubeCore's); per tube the cell and block ids for picking
+ *   (`tubeTubes`, RG32I); with scalar coloring, per node the color (RGBA8,
+ *   `tubeColors`, R32UI). 20 bytes per node, 24 with colors, uploaded in
+ *   pieces from the input (no copy of the data kept on the CPU side);
  * - the fragment-shader code for the color spline and for hardware picking
  *   (cell = polyline, composite index = block).
  *
@@ -41,6 +42,7 @@
 #include "vtkNew.h"          // for vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 
+#include <chrono>     // for std::chrono::steady_clock
 #include <cstdint>    // for std::uint32_t
 #include <functional> // for std::function
 #include <iosfwd>     // for std::ostream
@@ -122,13 +124,16 @@ public:
   ///@{
   /**
    * Interaction budget (default on): while the camera moves (the render
-   * window's desired update rate at least InteractiveUpdateRate, as VTK's
-   * interactors set it during interaction), draw a stable, spatially even
-   * subset of the lines sized so that the mapper's frame fits the actor's
-   * allocated render time (1 / desired update rate for a single actor); all
-   * lines when the camera stops. The subset is a fraction of the lines by a
-   * fixed hash of their index (nested: a larger fraction adds lines), so
-   * nothing is uploaded again. ForceInteractive draws the subset always (the
+   * window's desired update rate at least InteractiveUpdateRate, default 1,
+   * as VTK's interactors set it during interaction), draw a stable,
+   * spatially even subset of the lines sized so that the mapper's frame fits
+   * InteractiveFrameTime (seconds; 0, the default: the actor's allocated
+   * render time, 1 / desired update rate for a single actor); all lines when
+   * the camera stops. The subset is a fraction of the lines (at least
+   * MinimumLineFraction) by a fixed hash of their index (nested: a larger
+   * fraction adds lines), so nothing is uploaded again; its size follows a
+   * cost model (per-view work fixed, drawing proportional to the lines) fitted
+   * to the frames measured. ForceInteractive draws the subset always (the
    * ParaView representations' level-of-detail mapper).
    */
   vtkSetMacro(InteractiveSubset, bool);
@@ -136,6 +141,9 @@ public:
   vtkBooleanMacro(InteractiveSubset, bool);
   vtkSetClampMacro(InteractiveUpdateRate, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(InteractiveUpdateRate, double);
+  vtkSetClampMacro(InteractiveFrameTime, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(InteractiveFrameTime, double);
+  static constexpr double MinimumLineFraction = 0.002;
   vtkSetMacro(ForceInteractive, bool);
   vtkGetMacro(ForceInteractive, bool);
   vtkBooleanMacro(ForceInteractive, bool);
@@ -145,7 +153,7 @@ public:
   /**
    * What the last render drew: the fraction of the lines (1 at rest), the
    * chunks in the view frustum, the chunks drawn and those dropped as hidden,
-   * the depth pyramids read back, and the time the draw took (seconds, to
+   * the depth pyramids read back, and the time the render took (seconds, to
    * the end of the GPU's work).
    */
   double GetLastLineFraction() const { return this->LastLineFraction; }
@@ -233,7 +241,7 @@ protected:
    * The tubes buffer shared by the tube mappers (see the class comment).
    * UploadTubeBuffers() uploads it from the core (positions relative to
    * Shift); ActivateTubeBuffers() binds it to the uniforms tubeNodes,
-   * tubeSegments, tubeTubes and tubeColors (those the program uses);
+   * tubeNodeInfo, tubeTubes and tubeColors (those the program uses);
    * GetTubeBuffersSize() counts its bytes.
    */
   bool UploadTubeBuffers(vtkOpenGLRenderWindow* window);
@@ -243,9 +251,15 @@ protected:
   ///@}
 
   /**
-   * Shader declarations of the color spline (with scalar coloring; needs the
-   * spline-tube math before them): glsl/vtkSplineTubeColor.glsl, its
-   * function `vec4 tubeColorSpline(int node, float t)`.
+   * Shader declarations of the tubes buffer (needs the spline-tube math
+   * before them): glsl/vtkSplineTubeNodes.glsl, e.g. tubeSegmentModel().
+   */
+  static std::string GetTubeNodesDeclarations();
+
+  /**
+   * Shader declarations of the color spline (needs the tubes buffer's before
+   * them): glsl/vtkSplineTubeColor.glsl, its function
+   * `vec4 tubeColorSpline(int node, float t)`.
    */
   static std::string GetTubeColorDeclarations();
 
@@ -370,6 +384,7 @@ protected:
   bool InteractiveSubset = true;
   double InteractiveUpdateRate = 1.0;
   bool ForceInteractive = false;
+  double InteractiveFrameTime = 0.0;
 
   std::unique_ptr<vtkSplineTubeVisibility> Visibility;
 
@@ -386,7 +401,7 @@ protected:
   int ShaderVariant = -1;        ///< colors and composite input the shaders were made for
 
   std::unique_ptr<vtkSplineVizGPUBuffer> NodesBuffer;
-  std::unique_ptr<vtkSplineVizGPUBuffer> SegmentsBuffer;
+  std::unique_ptr<vtkSplineVizGPUBuffer> NodeInfoBuffer;
   std::unique_ptr<vtkSplineVizGPUBuffer> TubesBuffer;
   std::unique_ptr<vtkSplineVizGPUBuffer> ColorsBuffer;
 
@@ -401,8 +416,12 @@ private:
 
   bool InteractiveRender = false;
   bool LastRenderInteractive = false;
-  double InteractiveFraction = 1.0; ///< the subset's fraction for the next interactive frame
-  double LastStillDrawTime = 0.0;   ///< seconds, all lines
+  double InteractiveFraction = 1.0;  ///< the subset's fraction for the next interactive frame
+  double LastFixedTime = 0.0;        ///< seconds of per-view work in the last render
+  double LastProportionalTime = 0.0; ///< seconds of drawing per unit of line fraction
+  std::chrono::steady_clock::time_point RenderStart;
+  /// The fraction for the next interactive frame (see InteractiveSubset).
+  double NextFraction(double fraction, double budget) const;
   double LastLineFraction = 1.0;
   double LastDrawTime = 0.0;
   int LastNumberOfDepthPyramids = 0;

@@ -130,6 +130,25 @@ void vtkSplineTubeVisibility::SetChunks(const float* spheres, const std::uint32_
   this->NumberOfChunks = count;
   this->Projection.assign(static_cast<size_t>(count), Projected());
   this->Visible.assign(static_cast<size_t>(count), 0);
+  // The chunks by their line's rank (a counting sort in RankBuckets buckets),
+  // so that a subset's chunks are a prefix.
+  this->RankBucketStart.assign(RankBuckets + 1, 0);
+  std::vector<int> bucketOf(static_cast<size_t>(count));
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    bucketOf[c] = std::min(RankBuckets - 1, static_cast<int>(Rank(lines[c]) * RankBuckets));
+    ++this->RankBucketStart[bucketOf[c] + 1];
+  }
+  for (int b = 0; b < RankBuckets; ++b)
+  {
+    this->RankBucketStart[b + 1] += this->RankBucketStart[b];
+  }
+  this->RankOrder.resize(static_cast<size_t>(count));
+  std::vector<vtkIdType> cursor(this->RankBucketStart.begin(), this->RankBucketStart.end() - 1);
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    this->RankOrder[cursor[bucketOf[c]]++] = static_cast<std::uint32_t>(c);
+  }
   this->Order.clear();
   this->GroupStarts.assign(1, 0);
   this->DrawnChunks.clear();
@@ -291,20 +310,30 @@ void vtkSplineTubeVisibility::BeginFrame(
   this->CurrentView = view;
   this->PixelSlope[0] = pixelSlope[0];
   this->PixelSlope[1] = pixelSlope[1];
-  // Project the chunks of the subset in the frustum (in parallel).
+  // The candidates: all chunks, or those of the lines in the subset (a
+  // prefix of the chunks ordered by their line's rank).
   const vtkIdType n = this->NumberOfChunks;
-  std::vector<unsigned char> inside(static_cast<size_t>(n), 0);
   const bool all = fraction >= 1.0;
-  vtkSMPTools::For(0, n,
+  vtkIdType numCandidates = n;
+  if (!all)
+  {
+    const int b = std::max(0, std::min(RankBuckets, static_cast<int>(fraction * RankBuckets) + 1));
+    numCandidates = this->RankBucketStart[b];
+  }
+  auto candidate = [&](vtkIdType i) -> vtkIdType { return all ? i : this->RankOrder[i]; };
+  // Project the candidates in the frustum (in parallel).
+  std::vector<unsigned char> inside(static_cast<size_t>(numCandidates), 0);
+  vtkSMPTools::For(0, numCandidates,
     [&](vtkIdType begin, vtkIdType end)
     {
-      for (vtkIdType c = begin; c < end; ++c)
+      for (vtkIdType i = begin; i < end; ++i)
       {
+        const vtkIdType c = candidate(i);
         if (!all && Rank(this->Lines[c]) >= fraction)
         {
           continue;
         }
-        inside[c] =
+        inside[i] =
           this->Project(this->Spheres + 4 * c, view, pixelSlope, this->Projection[c]) ? 1 : 0;
       }
     });
@@ -323,11 +352,11 @@ void vtkSplineTubeVisibility::BeginFrame(
     const int b = std::min(Buckets - 1, static_cast<int>(this->Projection[c].Depth * Buckets));
     return (temporal && this->Visible[c]) ? b : Buckets + b;
   };
-  for (vtkIdType c = 0; c < n; ++c)
+  for (vtkIdType i = 0; i < numCandidates; ++i)
   {
-    if (inside[c])
+    if (inside[i])
     {
-      ++counts[bucket(c) + 1];
+      ++counts[bucket(candidate(i)) + 1];
     }
   }
   for (int b = 0; b < 2 * Buckets; ++b)
@@ -337,10 +366,11 @@ void vtkSplineTubeVisibility::BeginFrame(
   const vtkIdType numInside = counts[2 * Buckets];
   const vtkIdType numTemporal = counts[Buckets];
   this->Order.resize(static_cast<size_t>(numInside));
-  for (vtkIdType c = 0; c < n; ++c)
+  for (vtkIdType i = 0; i < numCandidates; ++i)
   {
-    if (inside[c])
+    if (inside[i])
     {
+      const vtkIdType c = candidate(i);
       this->Order[counts[bucket(c)]++] = static_cast<std::uint32_t>(c);
     }
   }

@@ -149,8 +149,11 @@ private:
   const std::uint32_t* Parts = nullptr;
   const std::uint32_t* PartFirsts = nullptr;
   vtkIdType NumberOfChunks = 0;
-  std::vector<Projected> Projection; ///< per chunk, valid for those in Order
-  std::vector<std::uint32_t> Order;  ///< chunks in the frustum, by group, front to back
+  static constexpr int RankBuckets = 65536;
+  std::vector<std::uint32_t> RankOrder;   ///< chunks by their line's rank
+  std::vector<vtkIdType> RankBucketStart; ///< RankBuckets + 1 offsets into RankOrder
+  std::vector<Projected> Projection;      ///< per chunk, valid for those in Order
+  std::vector<std::uint32_t> Order;       ///< chunks in the frustum, by group, front to back
   std::vector<vtkIdType> GroupStarts;
   std::vector<unsigned char> Visible; ///< per chunk: visible at the end of the last frame
   std::vector<std::uint32_t> DrawnChunks;

@@ -11,7 +11,10 @@
 
 #include <cstdlib>
 #include <limits>
+#include <algorithm>
+#include <cstring>
 #include <sstream>
+#include <vector>
 #include <string>
 
 namespace
@@ -59,6 +62,21 @@ bool vtkSplineVizGPUBuffer::Upload(vtkOpenGLRenderWindow* window, const void* da
 {
   const size_t texelBytes =
     static_cast<size_t>(components) * static_cast<size_t>(vtkDataArray::GetDataTypeSize(vtkType));
+  return this->UploadInPieces(window, texels, components, vtkType, glInternalFormat,
+    [&](size_t first, size_t count, void* destination)
+    {
+      std::memcpy(destination, static_cast<const unsigned char*>(data) + first * texelBytes,
+        count * texelBytes);
+    });
+}
+
+//------------------------------------------------------------------------------
+bool vtkSplineVizGPUBuffer::UploadInPieces(vtkOpenGLRenderWindow* window, size_t texels,
+  int components, int vtkType, unsigned int glInternalFormat,
+  const std::function<void(size_t first, size_t count, void* destination)>& fill)
+{
+  const size_t texelBytes =
+    static_cast<size_t>(components) * static_cast<size_t>(vtkDataArray::GetDataTypeSize(vtkType));
   const size_t limit = GetMaximumNumberOfTexels(window);
   if (texels > limit)
   {
@@ -73,26 +91,54 @@ bool vtkSplineVizGPUBuffer::Upload(vtkOpenGLRenderWindow* window, const void* da
     this->ReleaseGraphicsResources(window);
     return false;
   }
-  const size_t bytes = texels * texelBytes;
   if (!this->Buffer)
   {
     this->Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
     this->Buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
   }
-  // A zero-sized buffer texture is not allowed: keep one dummy texel.
-  const unsigned char zeros[16] = { 0 };
-  const void* source = texels > 0 ? data : zeros;
-  const size_t uploadBytes = texels > 0 ? bytes : sizeof(zeros);
+  // The buffer first (a zero-sized buffer texture is not allowed: one dummy
+  // texel), then the data piece by piece.
+  const size_t bytes = texels * texelBytes;
+  const size_t allocate = texels > 0 ? bytes : 16;
   for (int i = 0; i < 64 && glGetError() != GL_NO_ERROR; ++i)
   {
     // errors of earlier calls are not this upload's
   }
-  if (!this->Buffer->Upload(static_cast<const unsigned char*>(source), uploadBytes,
-        vtkOpenGLBufferObject::TextureBuffer) ||
-    glGetError() == GL_OUT_OF_MEMORY)
+  const unsigned char zeros[16] = { 0 };
+  if (!this->Buffer->Upload(zeros, sizeof(zeros), vtkOpenGLBufferObject::TextureBuffer) ||
+    !this->Buffer->Bind())
   {
-    LastUploadError() = "the GPU could not allocate a buffer of " + std::to_string(uploadBytes) +
+    LastUploadError() = "the GPU could not create a buffer: nothing is drawn";
+    this->ReleaseGraphicsResources(window);
+    return false;
+  }
+  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(allocate), texels > 0 ? nullptr : zeros,
+    GL_STATIC_DRAW);
+  if (glGetError() == GL_OUT_OF_MEMORY)
+  {
+    LastUploadError() = "the GPU could not allocate a buffer of " + std::to_string(allocate) +
       " bytes (GL_OUT_OF_MEMORY): nothing is drawn";
+    this->Buffer->Release();
+    this->ReleaseGraphicsResources(window);
+    return false;
+  }
+  if (texels > 0)
+  {
+    const size_t perPiece = std::max<size_t>(1, PieceBytes / texelBytes);
+    std::vector<unsigned char> staging(std::min(texels, perPiece) * texelBytes);
+    for (size_t first = 0; first < texels; first += perPiece)
+    {
+      const size_t count = std::min(perPiece, texels - first);
+      fill(first, count, staging.data());
+      glBufferSubData(GL_TEXTURE_BUFFER, static_cast<GLintptr>(first * texelBytes),
+        static_cast<GLsizeiptr>(count * texelBytes), staging.data());
+    }
+  }
+  this->Buffer->Release();
+  if (glGetError() == GL_OUT_OF_MEMORY)
+  {
+    LastUploadError() = "the GPU ran out of memory filling a buffer of " +
+      std::to_string(allocate) + " bytes (GL_OUT_OF_MEMORY): nothing is drawn";
     this->ReleaseGraphicsResources(window);
     return false;
   }

@@ -27,6 +27,7 @@
 #include "vtkSmartPointer.h"
 
 #include <cstddef>
+#include <functional>
 #include <string>
 
 class vtkOpenGLBufferObject;
@@ -49,6 +50,19 @@ public:
    */
   bool Upload(vtkOpenGLRenderWindow* window, const void* data, size_t texels, int components,
     int vtkType, unsigned int glInternalFormat);
+
+  /**
+   * The same, the data made piece by piece: `fill(first, count, destination)`
+   * writes texels [first, first + count) to `destination`, a staging area of
+   * at most PieceBytes, which is then copied into the buffer
+   * (glBufferSubData). The whole data is never in memory twice on the CPU
+   * side, and no single transfer exceeds PieceBytes (drivers refuse or stall
+   * on very large ones).
+   */
+  bool UploadInPieces(vtkOpenGLRenderWindow* window, size_t texels, int components, int vtkType,
+    unsigned int glInternalFormat,
+    const std::function<void(size_t first, size_t count, void* destination)>& fill);
+  static constexpr size_t PieceBytes = 32u << 20;
 
   /// Bind the texture to a free texture unit and set `uniform` of `program` to it.
   void Activate(vtkShaderProgram* program, const char* uniform);

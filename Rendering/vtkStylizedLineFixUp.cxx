@@ -7,6 +7,7 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSplineTubeCore.h"
+#include "vtkSplineTubeVisibility.h"
 #include "vtkTypeUInt32Array.h"
 
 #include <algorithm>
@@ -15,12 +16,7 @@
 namespace
 {
 using vtkStylizedLineMath::vec3;
-
-/// Unit tangent of node i.
-vec3 UnitTangent(const float* T, vtkIdType i)
-{
-  return vec3(T[3 * i], T[3 * i + 1], T[3 * i + 2]);
-}
+using vtkStylizedLineMath::vec4;
 
 /// Column-major 4x4 times a point / a direction.
 vec3 TransformPoint(const double* m, const vec3& p)
@@ -37,55 +33,112 @@ vec3 TransformVector(const double* m, const vec3& v)
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizedLineFixUp::Nodes(
+  vtkIdType tube, vtkIdType k0, vtkIdType k1, double* xyzr, vec3* tangents) const
+{
+  const vtkIdType n = this->Core->GetTubeNumberOfNodes(tube);
+  const vtkIdType lo = std::max<vtkIdType>(0, k0 - 1);
+  const vtkIdType hi = std::min(n - 1, k1 + 1);
+  std::vector<double> around(static_cast<size_t>(4 * (hi - lo + 1)));
+  this->Core->GetTubeNodes(tube, lo, hi - lo + 1, around.data(), nullptr);
+  auto point = [&](vtkIdType k)
+  { return vec3(around[4 * (k - lo)], around[4 * (k - lo) + 1], around[4 * (k - lo) + 2]); };
+  for (vtkIdType k = k0; k <= k1; ++k)
+  {
+    if (xyzr)
+    {
+      std::copy(&around[4 * (k - lo)], &around[4 * (k - lo)] + 4, xyzr + 4 * (k - k0));
+    }
+    if (tangents)
+    {
+      const vec3 before = k > 0 ? point(k) - point(k - 1) : vec3(0.0);
+      const vec3 after = k < n - 1 ? point(k + 1) - point(k) : vec3(0.0);
+      tangents[k - k0] = vtkStylizedLineMath::slPolylineTangent(before, after);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizedLineFixUp::GetTangent(vtkIdType node, double tangent[3]) const
+{
+  const vtkIdType t = this->Core->GetTubeOfNode(node);
+  const vtkIdType k = node - this->Core->GetTubeFirstNode(t);
+  vec3 m;
+  this->Nodes(t, k, k, nullptr, &m);
+  tangent[0] = m.x;
+  tangent[1] = m.y;
+  tangent[2] = m.z;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizedLineFixUp::FillTangents(vtkIdType first, vtkIdType count, short* octahedral) const
+{
+  vtkSMPTools::For(first, first + count, 65536,
+    [&](vtkIdType b, vtkIdType e)
+    {
+      std::vector<vec3> tangents;
+      for (vtkIdType t = this->Core->GetTubeOfNode(b); b < e; ++t)
+      {
+        const vtkIdType tubeFirst = this->Core->GetTubeFirstNode(t);
+        const vtkIdType stop = std::min(e, tubeFirst + this->Core->GetTubeNumberOfNodes(t));
+        tangents.resize(static_cast<size_t>(stop - b));
+        this->Nodes(t, b - tubeFirst, stop - 1 - tubeFirst, nullptr, tangents.data());
+        for (vtkIdType i = b; i < stop; ++i)
+        {
+          const vtkSplineTubeMath::vec2 o = vtkSplineTubeMath::svOctEncode(tangents[i - b]);
+          octahedral[2 * (i - first)] = static_cast<short>(std::lround(32767.0 * o.x));
+          octahedral[2 * (i - first) + 1] = static_cast<short>(std::lround(32767.0 * o.y));
+        }
+        b = stop;
+      }
+    });
+}
+
+//------------------------------------------------------------------------------
 void vtkStylizedLineFixUp::Build(vtkSplineTubeCore* core, const double shift[3])
 {
   this->Core = core;
   std::copy(shift, shift + 3, this->Shift);
   const vtkIdType numTubes = core->GetNumberOfTubes();
-  const float* P = core->GetNodePositions()->GetPointer(0);
-  const float* R = core->GetNodeRadii()->GetPointer(0);
-  const vtkIdType* tubeFirst = core->GetTubeFirstNodes()->GetPointer(0);
-  const vtkIdType* tubeNodes = core->GetTubeNumberOfNodes()->GetPointer(0);
-
-  // The vertex tangents (bisectors; segment directions at the ends).
-  this->Tangents.resize(static_cast<size_t>(3 * core->GetNumberOfNodes()));
-  float* M = this->Tangents.data();
-  vtkSMPTools::For(0, numTubes,
-    [&](vtkIdType begin, vtkIdType end)
+  // Per thread: a tube's nodes and vertex tangents (bisectors; segment
+  // directions at the ends).
+  struct Scratch
+  {
+    vtkIdType Tube = -1;
+    std::vector<double> P;
+    std::vector<vec3> M;
+  };
+  vtkSMPThreadLocal<Scratch> scratch;
+  auto load = [&](vtkIdType t) -> Scratch&
+  {
+    Scratch& s = scratch.Local();
+    if (s.Tube != t)
     {
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        const vtkIdType first = tubeFirst[t];
-        const vtkIdType last = first + tubeNodes[t] - 1;
-        auto point = [P](vtkIdType i) { return vec3(P[3 * i], P[3 * i + 1], P[3 * i + 2]); };
-        for (vtkIdType i = first; i <= last; ++i)
-        {
-          const vec3 before = i > first ? point(i) - point(i - 1) : vec3(0.0);
-          const vec3 after = i < last ? point(i + 1) - point(i) : vec3(0.0);
-          const vec3 tangent = vtkStylizedLineMath::slPolylineTangent(before, after);
-          for (int c = 0; c < 3; ++c)
-          {
-            M[3 * i + c] = static_cast<float>(tangent[c]);
-          }
-        }
-      }
-    });
+      const vtkIdType n = core->GetTubeNumberOfNodes(t);
+      s.P.resize(static_cast<size_t>(4 * n));
+      s.M.resize(static_cast<size_t>(n));
+      this->Nodes(t, 0, n - 1, s.P.data(), s.M.data());
+      s.Tube = t;
+    }
+    return s;
+  };
 
   // Pass 1 (parallel): batches per tube; pass 2: offsets; pass 3: fill.
   const double cosLimit = std::cos(MaximumBatchAngle);
+  // (node numbers within the tube)
   auto cutTube = [&](vtkIdType t, auto&& emit)
   {
-    const vtkIdType first = tubeFirst[t];
-    const vtkIdType last = first + tubeNodes[t] - 1; // last node
-    vtkIdType start = first;
+    const std::vector<vec3>& M = load(t).M;
+    const vtkIdType last = core->GetTubeNumberOfNodes(t) - 1; // last node
+    vtkIdType start = 0;
     while (start < last)
     {
-      const vec3 axis = UnitTangent(M, start);
+      const vec3 axis = M[start];
       vtkIdType end = start + 1; // the batch's last node
       double minCos = 1.0;
       for (;;)
       {
-        const double c = glm::dot(axis, UnitTangent(M, end));
+        const double c = glm::dot(axis, M[end]);
         if (c < cosLimit)
         {
           if (end > start + 1)
@@ -136,8 +189,9 @@ void vtkStylizedLineFixUp::Build(vtkSplineTubeCore* core, const double shift[3])
         cutTube(t,
           [&](vtkIdType start, vtkIdType stop, const vec3& axis, double minCos)
           {
+            const std::vector<double>& P = load(t).P;
             Batch& batch = this->Batches[b++];
-            batch.FirstNode = static_cast<std::uint32_t>(start);
+            batch.FirstNode = static_cast<std::uint32_t>(core->GetTubeFirstNode(t) + start);
             batch.Tube = static_cast<std::uint32_t>(t);
             batch.Segments = static_cast<int>(stop - start);
             for (int c = 0; c < 3; ++c)
@@ -154,11 +208,11 @@ void vtkStylizedLineFixUp::Build(vtkSplineTubeCore* core, const double shift[3])
             {
               for (int c = 0; c < 3; ++c)
               {
-                const double x = P[3 * i + c] - this->Shift[c];
+                const double x = P[4 * i + c] - this->Shift[c];
                 lo[c] = std::min(lo[c], x);
                 hi[c] = std::max(hi[c], x);
               }
-              maxRadius = std::max(maxRadius, static_cast<double>(R[2 * i]));
+              maxRadius = std::max(maxRadius, P[4 * i + 3]);
             }
             double r2 = 0.0;
             for (int c = 0; c < 3; ++c)
@@ -172,25 +226,27 @@ void vtkStylizedLineFixUp::Build(vtkSplineTubeCore* core, const double shift[3])
       }
     });
   this->Flags.assign(this->Batches.size(), 0);
+  this->Stamps.assign(this->Batches.size(), 0);
+  this->ViewStamp = 0;
   this->Candidates = 0;
 }
 
 //------------------------------------------------------------------------------
 bool vtkStylizedLineFixUp::TestVertices(const Batch& batch, const View& view) const
 {
-  const float* P = this->Core->GetNodePositions()->GetPointer(0);
-  const float* M = this->Tangents.data();
-  const float* R = this->Core->GetNodeRadii()->GetPointer(0);
-  for (vtkIdType i = batch.FirstNode; i <= batch.FirstNode + batch.Segments; ++i)
+  const vtkIdType k0 = batch.FirstNode - this->Core->GetTubeFirstNode(batch.Tube);
+  double P[4 * (MaximumBatchSegments + 1)];
+  vec3 M[MaximumBatchSegments + 1];
+  this->Nodes(batch.Tube, k0, k0 + batch.Segments, P, M);
+  for (int i = 0; i <= batch.Segments; ++i)
   {
     const vec3 p = TransformPoint(view.ModelView,
-      vec3(
-        P[3 * i] - this->Shift[0], P[3 * i + 1] - this->Shift[1], P[3 * i + 2] - this->Shift[2]));
-    vec3 t = TransformVector(view.ModelView, UnitTangent(M, i));
+      vec3(P[4 * i] - this->Shift[0], P[4 * i + 1] - this->Shift[1], P[4 * i + 2] - this->Shift[2]));
+    vec3 t = TransformVector(view.ModelView, M[i]);
     const double len = glm::length(t);
     t = len > 0.0 ? t / len : vec3(1.0, 0.0, 0.0);
     if (vtkStylizedLineMath::slNeedsFixUp(
-          p, t, R[2 * i] * view.RadiusScale, view.Parallel, view.Epsilon))
+          p, t, P[4 * i + 3] * view.RadiusScale, view.Parallel, view.Epsilon))
     {
       return true;
     }
@@ -210,149 +266,154 @@ std::vector<unsigned char> vtkStylizedLineFixUp::ClassifyAllVertices(const View&
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizedLineFixUp::Classify(const View& view, bool enabled,
-  std::vector<std::uint32_t>& segments, std::vector<std::uint32_t>& joints)
+bool vtkStylizedLineFixUp::NeedsFixUp(const Batch& batch, const View& view, double thetaEps) const
 {
-  const vtkIdType numBatches = static_cast<vtkIdType>(this->Batches.size());
-  this->Flags.assign(this->Batches.size(), 0);
-  this->Candidates = 0;
-  if (enabled && this->Core)
+  const vec3 c =
+    TransformPoint(view.ModelView, vec3(batch.Center[0], batch.Center[1], batch.Center[2]));
+  vec3 a = TransformVector(view.ModelView, vec3(batch.Axis[0], batch.Axis[1], batch.Axis[2]));
+  const double al = glm::length(a);
+  a = al > 0.0 ? a / al : vec3(1.0, 0.0, 0.0);
+  const double radius = batch.Radius * view.RadiusScale;
+  const double lineRadius = batch.MaxRadius * view.RadiusScale;
+  bool candidate = false;
+  vec3 dir(0.0, 0.0, -1.0);
+  double beta = 0.0;
+  double dist = 0.0;
+  if (!view.Parallel)
   {
-    const double epsilon = std::max(0.0, std::min(1.0, view.Epsilon));
-    const double thetaEps = std::acos(1.0 - epsilon);
-    vtkSMPThreadLocal<vtkIdType> candidates(0);
-    vtkSMPTools::For(0, numBatches,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        vtkIdType& local = candidates.Local();
-        for (vtkIdType b = begin; b < end; ++b)
-        {
-          const Batch& batch = this->Batches[b];
-          const vec3 c =
-            TransformPoint(view.ModelView, vec3(batch.Center[0], batch.Center[1], batch.Center[2]));
-          vec3 a =
-            TransformVector(view.ModelView, vec3(batch.Axis[0], batch.Axis[1], batch.Axis[2]));
-          const double al = glm::length(a);
-          a = al > 0.0 ? a / al : vec3(1.0, 0.0, 0.0);
-          const double radius = batch.Radius * view.RadiusScale;
-          const double lineRadius = batch.MaxRadius * view.RadiusScale;
-          bool candidate = false;
-          vec3 dir(0.0, 0.0, -1.0);
-          double beta = 0.0;
-          double dist = 0.0;
-          if (!view.Parallel)
-          {
-            dist = glm::length(c);
-            if (dist <= radius * 1.0001)
-            {
-              candidate = true; // the eye is inside the batch's sphere
-            }
-            else
-            {
-              dir = c / dist;
-              beta = std::asin(std::min(1.0, radius / dist));
-            }
-          }
-          if (!candidate)
-          {
-            const double theta = std::acos(std::min(1.0, std::abs(glm::dot(dir, a))));
-            // The smallest angle any vertex tangent can make with its view ray.
-            const double minAngle = theta - batch.Cone - beta;
-            if (minAngle <= thetaEps + 1e-6)
-            {
-              candidate = true;
-            }
-            else if (!view.Parallel)
-            {
-              // |u_perp| = |u| sin(angle) < SL_NEAR_AXIS r needs a near eye.
-              const double nearDistance = SL_NEAR_AXIS * lineRadius / std::sin(minAngle);
-              candidate = dist - radius < nearDistance * 1.0001;
-            }
-          }
-          if (candidate)
-          {
-            ++local;
-            this->Flags[b] = this->TestVertices(batch, view) ? 1 : 0;
-          }
-        }
-      });
-    for (vtkIdType n : candidates)
+    dist = glm::length(c);
+    if (dist <= radius * 1.0001)
     {
-      this->Candidates += n;
+      candidate = true; // the eye is inside the batch's sphere
+    }
+    else
+    {
+      dir = c / dist;
+      beta = std::asin(std::min(1.0, radius / dist));
     }
   }
+  if (!candidate)
+  {
+    const double theta = std::acos(std::min(1.0, std::abs(glm::dot(dir, a))));
+    // The smallest angle any vertex tangent can make with its view ray.
+    const double minAngle = theta - batch.Cone - beta;
+    if (minAngle <= thetaEps + 1e-6)
+    {
+      candidate = true;
+    }
+    else if (!view.Parallel)
+    {
+      // |u_perp| = |u| sin(angle) < SL_NEAR_AXIS r needs a near eye.
+      const double nearDistance = SL_NEAR_AXIS * lineRadius / std::sin(minAngle);
+      candidate = dist - radius < nearDistance * 1.0001;
+    }
+  }
+  if (!candidate)
+  {
+    return false;
+  }
+  ++this->Candidates; // (atomic)
+  return this->TestVertices(batch, view);
+}
 
-  // The fix-up's lists, tube by tube.
+//------------------------------------------------------------------------------
+void vtkStylizedLineFixUp::BeginView(const View& view, bool enabled)
+{
+  this->CurrentView = view;
+  this->Enabled = enabled && this->Core;
+  this->Candidates = 0;
+  ++this->ViewStamp;
+  if (this->ViewStamp == 0)
+  {
+    std::fill(this->Stamps.begin(), this->Stamps.end(), 0);
+    this->ViewStamp = 1;
+  }
+  // The largest radius on screen of the polylines' ends (their caps), and of
+  // the fixed-up points of the last view.
+  this->MaximumScreenRadius = this->FixedScreenRadius;
+  this->FixedScreenRadius = 0.0;
+  if (!this->Core)
+  {
+    return;
+  }
+  const vtkIdType numTubes = this->Core->GetNumberOfTubes();
+  vtkSplineTubeCore* core = this->Core;
+  vtkSMPThreadLocal<double> largest(0.0);
+  vtkSMPTools::For(0, numTubes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double& local = largest.Local();
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const vtkIdType first = core->GetTubeFirstNode(t);
+        local = std::max({ local, this->ScreenRadius(first),
+          this->ScreenRadius(first + core->GetTubeNumberOfNodes(t) - 1) });
+      }
+    });
+  for (double r : largest)
+  {
+    this->MaximumScreenRadius = std::max(this->MaximumScreenRadius, r);
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkStylizedLineFixUp::ScreenRadius(vtkIdType i) const
+{
+  const View& view = this->CurrentView;
+  double P[4];
+  this->Core->GetNode(i, P);
+  const vec3 p = TransformPoint(
+    view.ModelView, vec3(P[0] - this->Shift[0], P[1] - this->Shift[1], P[2] - this->Shift[2]));
+  const double r = P[3] * view.RadiusScale * view.PixelsPerUnit;
+  if (view.Parallel)
+  {
+    return r;
+  }
+  return p.z < 0.0 ? r / std::max(-p.z, 1e-30) : 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizedLineFixUp::BuildDraws(const std::vector<std::uint32_t>& batches,
+  std::vector<int>& stripFirsts, std::vector<int>& stripCounts, std::vector<std::uint32_t>& caps,
+  std::vector<std::uint32_t>& segments, std::vector<std::uint32_t>& joints)
+{
+  stripFirsts.clear();
+  stripCounts.clear();
+  caps.clear();
   segments.clear();
   joints.clear();
   if (!this->Core)
   {
     return;
   }
-  const vtkIdType numTubes = this->Core->GetNumberOfTubes();
-  const vtkIdType* tubeFirst = this->Core->GetTubeFirstNodes()->GetPointer(0);
-  const vtkIdType* tubeNodes = this->Core->GetTubeNumberOfNodes()->GetPointer(0);
-  const float* P = this->Core->GetNodePositions()->GetPointer(0);
-  const float* R = this->Core->GetNodeRadii()->GetPointer(0);
-  auto point = [P](vtkIdType i) { return vec3(P[3 * i], P[3 * i + 1], P[3 * i + 2]); };
-  // The radius on screen of point i, in pixels (0 behind the eye).
-  auto screenRadius = [&](vtkIdType i)
+  const View& view = this->CurrentView;
+  // Classify the batches not yet classified in this view (in parallel).
+  if (this->Enabled)
   {
-    const vec3 p = TransformPoint(view.ModelView,
-      vec3(
-        P[3 * i] - this->Shift[0], P[3 * i + 1] - this->Shift[1], P[3 * i + 2] - this->Shift[2]));
-    const double r = R[2 * i] * view.RadiusScale * view.PixelsPerUnit;
-    if (view.Parallel)
-    {
-      return r;
-    }
-    return p.z < 0.0 ? r / std::max(-p.z, 1e-30) : 0.0;
-  };
-  this->MaximumScreenRadius = 0.0;
-  for (vtkIdType t = 0; t < numTubes; ++t)
-  {
-    const vtkIdType last = tubeFirst[t] + tubeNodes[t] - 1;
-    this->MaximumScreenRadius =
-      std::max({ this->MaximumScreenRadius, screenRadius(tubeFirst[t]), screenRadius(last) });
-    for (vtkIdType b = this->TubeFirstBatch[t]; b < this->TubeFirstBatch[t + 1]; ++b)
-    {
-      if (!this->Flags[b])
+    const double epsilon = std::max(0.0, std::min(1.0, view.Epsilon));
+    const double thetaEps = std::acos(1.0 - epsilon);
+    const vtkIdType n = static_cast<vtkIdType>(batches.size());
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType begin, vtkIdType end)
       {
-        continue;
-      }
-      const Batch& batch = this->Batches[b];
-      for (int s = 0; s < batch.Segments; ++s)
-      {
-        segments.push_back(batch.FirstNode + static_cast<std::uint32_t>(s));
-        this->MaximumScreenRadius =
-          std::max(this->MaximumScreenRadius, screenRadius(batch.FirstNode + s));
-      }
-      // Joints: the batch's points, each once (consecutive fixed batches
-      // share one), but those whose sphere would stick out of an end cap.
-      for (vtkIdType i = batch.FirstNode; i <= batch.FirstNode + batch.Segments; ++i)
-      {
-        if (!joints.empty() && joints.back() >= i)
+        for (vtkIdType i = begin; i < end; ++i)
         {
-          continue;
+          const std::uint32_t b = batches[i];
+          if (this->Stamps[b] != this->ViewStamp)
+          {
+            this->Stamps[b] = this->ViewStamp;
+            this->Flags[b] = this->NeedsFixUp(this->Batches[b], view, thetaEps) ? 1 : 0;
+          }
         }
-        const double clearance = view.JointRadius * R[2 * i];
-        if (glm::distance(point(i), point(tubeFirst[t])) > clearance &&
-          glm::distance(point(i), point(last)) > clearance)
-        {
-          joints.push_back(static_cast<std::uint32_t>(i));
-        }
-      }
-    }
+      });
   }
-}
-
-//------------------------------------------------------------------------------
-void vtkStylizedLineFixUp::BuildStrips(const std::vector<std::uint32_t>& batches,
-  std::vector<int>& stripFirsts, std::vector<int>& stripCounts, std::vector<std::uint32_t>& caps)
-{
-  stripFirsts.clear();
-  stripCounts.clear();
-  caps.clear();
+  vtkSplineTubeCore* core = this->Core;
+  auto point = [core](vtkIdType i)
+  {
+    double p[4];
+    core->GetNode(i, p);
+    return vec4(p[0], p[1], p[2], p[3]);
+  };
   for (std::uint32_t b : batches)
   {
     const Batch& batch = this->Batches[b];
@@ -364,40 +425,98 @@ void vtkStylizedLineFixUp::BuildStrips(const std::vector<std::uint32_t>& batches
     {
       caps.push_back(2 * batch.Tube + 1);
     }
-    if (b < this->Flags.size() && this->Flags[b])
+    if (!this->Enabled || this->Stamps[b] != this->ViewStamp || !this->Flags[b])
     {
-      continue; // drawn by the fix-up
+      // Two strip vertices per point; a batch continuing the last strip
+      // (its first point the strip's last) extends it.
+      const int first = static_cast<int>(2 * batch.FirstNode);
+      const int count = 2 * (batch.Segments + 1);
+      if (!stripFirsts.empty() && stripFirsts.back() + stripCounts.back() - 2 == first)
+      {
+        stripCounts.back() += count - 2;
+      }
+      else
+      {
+        stripFirsts.push_back(first);
+        stripCounts.push_back(count);
+      }
+      continue;
     }
-    // Two strip vertices per point; a batch continuing the last strip (its
-    // first point the strip's last) extends it.
-    const int first = static_cast<int>(2 * batch.FirstNode);
-    const int count = 2 * (batch.Segments + 1);
-    if (!stripFirsts.empty() && stripFirsts.back() + stripCounts.back() - 2 == first)
+    // Fixed up: its segments as cylinders; joints at its points but those
+    // whose sphere would stick out of an end cap.
+    const vtkIdType tubeStart = core->GetTubeFirstNode(batch.Tube);
+    const vtkIdType tubeLast = tubeStart + core->GetTubeNumberOfNodes(batch.Tube) - 1;
+    const vec3 start = vec3(point(tubeStart));
+    const vec3 end = vec3(point(tubeLast));
+    for (int s = 0; s < batch.Segments; ++s)
     {
-      stripCounts.back() += count - 2;
+      segments.push_back(batch.FirstNode + static_cast<std::uint32_t>(s));
+      this->FixedScreenRadius =
+        std::max(this->FixedScreenRadius, this->ScreenRadius(batch.FirstNode + s));
     }
-    else
+    for (vtkIdType i = batch.FirstNode; i <= batch.FirstNode + batch.Segments; ++i)
     {
-      stripFirsts.push_back(first);
-      stripCounts.push_back(count);
+      const vec4 p = point(i);
+      const double clearance = view.JointRadius * p.w;
+      if (glm::distance(vec3(p), start) > clearance && glm::distance(vec3(p), end) > clearance)
+      {
+        joints.push_back(static_cast<std::uint32_t>(i));
+      }
     }
   }
+  // Consecutive fixed-up batches share a point: one joint.
+  std::sort(joints.begin(), joints.end());
+  joints.erase(std::unique(joints.begin(), joints.end()), joints.end());
+  this->MaximumScreenRadius = std::max(this->MaximumScreenRadius, this->FixedScreenRadius);
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizedLineFixUp::GetCullingChunks(
-  double widen, std::vector<float>& spheres, std::vector<std::uint32_t>& tubes) const
+void vtkStylizedLineFixUp::GetCullingChunks(double widen, std::vector<float>& spheres,
+  std::vector<std::uint32_t>& tubes, std::vector<std::uint32_t>& parts,
+  std::vector<std::uint32_t>& partFirsts) const
 {
   const size_t n = this->Batches.size();
   spheres.resize(4 * n);
   tubes.resize(n);
+  partFirsts.resize(n + 1);
+  partFirsts[0] = 0;
   for (size_t b = 0; b < n; ++b)
   {
-    const Batch& batch = this->Batches[b];
-    std::copy(batch.Center, batch.Center + 3, &spheres[4 * b]);
-    spheres[4 * b + 3] = static_cast<float>(
-      (batch.Radius + widen * batch.MaxRadius) * (1.0 + 1e-6) + 1e-6 * std::abs(batch.Center[0]) +
-      1e-6 * std::abs(batch.Center[1]) + 1e-6 * std::abs(batch.Center[2]));
-    tubes[b] = batch.Tube;
+    partFirsts[b + 1] = partFirsts[b] + static_cast<std::uint32_t>(this->Batches[b].Segments);
   }
+  parts.resize(partFirsts[n]);
+  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType b = begin; b < end; ++b)
+      {
+        const Batch& batch = this->Batches[b];
+        const double extent =
+          std::abs(batch.Center[0]) + std::abs(batch.Center[1]) + std::abs(batch.Center[2]);
+        std::copy(batch.Center, batch.Center + 3, &spheres[4 * b]);
+        spheres[4 * b + 3] = static_cast<float>(
+          (batch.Radius + widen * batch.MaxRadius) * (1.0 + 1e-6) + 1e-6 * extent);
+        tubes[b] = batch.Tube;
+        // The segments: straight, within `widen` radii of their points.
+        const vtkIdType k0 = batch.FirstNode - this->Core->GetTubeFirstNode(batch.Tube);
+        double P[4 * (MaximumBatchSegments + 1)];
+        this->Core->GetTubeNodes(batch.Tube, k0, batch.Segments + 1, P, nullptr);
+        for (int s = 0; s < batch.Segments; ++s)
+        {
+          double part[4];
+          double half2 = 0.0;
+          for (int k = 0; k < 3; ++k)
+          {
+            const double a = P[4 * s + k] - this->Shift[k];
+            const double c = P[4 * s + 4 + k] - this->Shift[k];
+            part[k] = 0.5 * (a + c);
+            half2 += 0.25 * (c - a) * (c - a);
+          }
+          part[3] = (std::sqrt(half2) + widen * std::max(P[4 * s + 3], P[4 * s + 7])) *
+              (1.0 + 1e-6) +
+            1e-6 * extent;
+          parts[partFirsts[b] + s] = vtkSplineTubeVisibility::EncodePart(&spheres[4 * b], part);
+        }
+      }
+    });
 }

@@ -14,8 +14,9 @@
  * vtkSplineTubeCore into batches: runs of at most MaximumBatchSegments
  * consecutive segments whose vertex tangents stay within MaximumBatchAngle
  * of the batch's first tangent (Stoll: 10-15 degrees), each with its tangent
- * cone and a bounding sphere. Per view change, Classify() decides for every
- * batch (in parallel, vtkSMPTools) whether one of its vertices needs the
+ * cone and a bounding sphere. Per view (BeginView()), when a batch is first
+ * drawn (BuildDraws(), for the batches of a visibility group, in parallel,
+ * vtkSMPTools), it decides whether one of its vertices needs the
  * fix-up (slNeedsFixUp() of vtkStylizedLineMath.h, the same criterion the
  * tests use): a conservative cone test rejects most batches at once (the
  * smallest angle any of its vertices can make with its view ray, from the
@@ -30,8 +31,10 @@
 #define vtkStylizedLineFixUp_h
 
 #include "SplineVizModule.h" // for export macro
+#include "vtkStylizedLineMath.h" // for vec3
 #include "vtkType.h"
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -41,7 +44,7 @@ class SPLINEVIZ_EXPORT vtkStylizedLineFixUp
 {
 public:
   /// Longest batch, in segments.
-  static constexpr int MaximumBatchSegments = 16;
+  static constexpr int MaximumBatchSegments = 8;
   /// Largest angle (radians) between a batch's vertex tangents and its first one (12 degrees).
   static constexpr double MaximumBatchAngle = 0.20943951023931953;
 
@@ -64,45 +67,51 @@ public:
   void Build(vtkSplineTubeCore* core, const double shift[3]);
 
   /**
-   * Classify the batches for `view` (when `enabled`; otherwise none is fixed
-   * up) and write the fix-up's lists: the first point of every fixed-up
-   * segment, and the joints: the points of the fixed-up segments (each once)
-   * whose sphere of JointRadius line radii stays behind the polyline's end
-   * caps (further than that from both ends).
+   * Start a view: the batches are classified when BuildDraws() first meets
+   * them (when `enabled`; otherwise none is fixed up).
    */
-  void Classify(const View& view, bool enabled, std::vector<std::uint32_t>& segments,
-    std::vector<std::uint32_t>& joints);
+  void BeginView(const View& view, bool enabled);
 
   /**
-   * The draw lists of `batches` (after Classify(); ids ordered as the mapper
-   * draws them): per strip its first vertex (2 x first point) and its vertex
-   * count (2 x points) for the batches not fixed up, consecutive batches of a
-   * polyline in one strip; and the caps (2 x polyline + end) of the polylines
-   * whose first or last batch is among them.
+   * The draw lists of `batches` (ids ordered as the mapper draws them), after
+   * classifying those not classified in this view: per strip its first vertex
+   * (2 x first point) and its vertex count (2 x points) for the batches not
+   * fixed up, consecutive batches of a polyline in one strip; the caps (2 x
+   * polyline + end) of the polylines whose first or last batch is among them;
+   * the first point of every fixed-up segment; and the joints: the points of
+   * the fixed-up segments (each once) whose sphere of JointRadius line radii
+   * stays behind the polyline's end caps (further than that from both ends).
    */
-  void BuildStrips(const std::vector<std::uint32_t>& batches, std::vector<int>& stripFirsts,
-    std::vector<int>& stripCounts, std::vector<std::uint32_t>& caps);
+  void BuildDraws(const std::vector<std::uint32_t>& batches, std::vector<int>& stripFirsts,
+    std::vector<int>& stripCounts, std::vector<std::uint32_t>& caps,
+    std::vector<std::uint32_t>& segments, std::vector<std::uint32_t>& joints);
 
   /**
    * The batches as chunks of vtkSplineTubeVisibility: spheres (shifted model
    * coordinates) that also hold `widen` times the largest line radius around
-   * the vertices, and the polyline of each.
+   * the vertices, the polyline of each, and the spheres of their segments
+   * (parts, encoded by vtkSplineTubeVisibility::EncodePart; batch b's in
+   * [partFirsts[b], partFirsts[b + 1])).
    */
-  void GetCullingChunks(
-    double widen, std::vector<float>& spheres, std::vector<std::uint32_t>& tubes) const;
+  void GetCullingChunks(double widen, std::vector<float>& spheres,
+    std::vector<std::uint32_t>& tubes, std::vector<std::uint32_t>& parts,
+    std::vector<std::uint32_t>& partFirsts) const;
 
-  /// Unit tangent per line vertex (3 floats each), made by Build().
-  const std::vector<float>& GetTangents() const { return this->Tangents; }
+  /// The unit tangent of a line vertex (the bisector; the segment's direction at the ends).
+  void GetTangent(vtkIdType node, double tangent[3]) const;
+
+  /// The tangents of the vertices [first, first + count), octahedral, 2 int16 each (in parallel).
+  void FillTangents(vtkIdType first, vtkIdType count, short* octahedral) const;
 
   /**
    * The largest radius on screen, in pixels, of the polylines' ends (the
-   * caps, in front of the eye) and of the fixed-up segments' points, found
-   * by the last Classify(); the mapper tessellates the caps and cylinders
-   * from it.
+   * caps, in front of the eye) in this view and of the fixed-up segments'
+   * points (in this view so far and the last); the mapper tessellates the
+   * caps and cylinders from it.
    */
   double GetMaximumScreenRadius() const { return this->MaximumScreenRadius; }
 
-  /// Per batch: 1 when the last Classify() fixed it up.
+  /// Per batch: 1 when it is fixed up in this view (if classified in it).
   const std::vector<unsigned char>& GetBatchFlags() const { return this->Flags; }
 
   /**
@@ -112,7 +121,7 @@ public:
   std::vector<unsigned char> ClassifyAllVertices(const View& view) const;
 
   vtkIdType GetNumberOfBatches() const { return static_cast<vtkIdType>(this->Batches.size()); }
-  /// Batches the last Classify() tested vertex by vertex (those the cone test kept).
+  /// Batches tested vertex by vertex in this view (those the cone test kept).
   vtkIdType GetNumberOfCandidateBatches() const { return this->Candidates; }
   /// First point and segment count of batch b.
   vtkIdType GetBatchFirstNode(vtkIdType b) const { return this->Batches[b].FirstNode; }
@@ -131,15 +140,26 @@ private:
     float MaxRadius; ///< largest line radius in the batch
   };
   bool TestVertices(const Batch& batch, const View& view) const;
+  /// Nodes [k0, k1] of a tube (positions and radii, 4 each; may be nullptr) and their tangents.
+  void Nodes(vtkIdType tube, vtkIdType k0, vtkIdType k1, double* xyzr,
+    vtkStylizedLineMath::vec3* tangents) const;
+  /// The cone test, then the vertices of the candidates.
+  bool NeedsFixUp(const Batch& batch, const View& view, double thetaEps) const;
+  /// Radius on screen (pixels) of point i in the current view (0 behind the eye).
+  double ScreenRadius(vtkIdType i) const;
 
   vtkSplineTubeCore* Core = nullptr;
   double Shift[3] = { 0.0, 0.0, 0.0 };
-  std::vector<float> Tangents;
   std::vector<Batch> Batches;
   std::vector<vtkIdType> TubeFirstBatch; ///< tubes + 1
   std::vector<unsigned char> Flags;
-  vtkIdType Candidates = 0;
+  std::vector<std::uint32_t> Stamps; ///< the view a batch was classified in
+  std::uint32_t ViewStamp = 0;
+  View CurrentView{};
+  bool Enabled = false;
+  mutable std::atomic<vtkIdType> Candidates{ 0 };
   double MaximumScreenRadius = 0.0;
+  double FixedScreenRadius = 0.0;
 };
 
 #endif

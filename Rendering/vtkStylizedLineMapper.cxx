@@ -84,17 +84,11 @@ struct vtkStylizedLineMapper::vtkInternals
   std::vector<std::uint32_t> Caps;
   std::vector<float> CullingSpheres; // the batches as chunks of the visibility
   std::vector<std::uint32_t> CullingTubes;
+  std::vector<std::uint32_t> CullingParts;
+  std::vector<std::uint32_t> CullingPartFirsts;
   double CullingWiden = -1.0; // the halo the spheres were made for
   std::vector<std::uint32_t> FixedSegments;
   std::vector<std::uint32_t> Joints;
-  std::vector<std::uint32_t> UploadedSegments; // what the buffers hold
-  std::vector<float> StageNodes;               // upload staging, kept between uploads
-  std::vector<vtkTypeInt16> StageTangents;
-  std::vector<unsigned char> StageColors;
-  std::vector<float> StageCoords;
-  std::vector<vtkTypeInt16> StageFrames;
-  std::vector<std::uint32_t> UploadedJoints;
-  bool ListsUploaded = false;
   std::vector<double> LastView;
 
   // Whole polylines as strips (the shadow map's draw), per data.
@@ -138,8 +132,6 @@ bool vtkStylizedLineMapper::NeedsTextureData() const
 void vtkStylizedLineMapper::ConfigureTubeCore(vtkSplineTubeCore* core)
 {
   const bool texture = this->NeedsTextureData();
-  // Frames only for the texture's circumferential coordinate.
-  core->SetComputeFrames(texture);
   core->SetNodeScalarRole("orientation");
   core->SetNodeScalarArrayName(texture && this->OrientationArray && this->OrientationArray[0]
       ? this->OrientationArray
@@ -211,7 +203,6 @@ void vtkStylizedLineMapper::ReleaseGraphicsResources(vtkWindow* window)
   in.MeshBytes = 0;
   in.MeshSides = 0;
   in.LastView.clear();
-  in.ListsUploaded = false;
   this->Superclass::ReleaseGraphicsResources(window);
 }
 
@@ -247,7 +238,6 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   const vtkIdType numTubes = core->GetNumberOfTubes();
   in.LastView.clear();
   in.FixedSegments.clear();
-  in.ListsUploaded = false;
   if (numNodes >= (vtkIdType(1) << 30))
   {
     vtkErrorMacro(<< "Too many line vertices (" << numNodes << "); at most 2^30 are supported.");
@@ -256,80 +246,56 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
     in.StripCounts.clear();
     return;
   }
-  const float* P = core->GetNodePositions()->GetPointer(0);
-  const float* R = core->GetNodeRadii()->GetPointer(0);
   const double shift[3] = { this->Shift[0], this->Shift[1], this->Shift[2] };
-  // The fix-up's batches (per data); it owns the vertex tangents.
+  // The fix-up's batches (per data).
   in.FixUp.Build(core, this->Shift);
-  const float* M = in.FixUp.GetTangents().data();
 
-  // Positions (relative to the shift) and radii; unit tangents, octahedral.
-  // Staging arrays kept between uploads (moving lines upload every frame).
-  std::vector<float>& nodes = in.StageNodes;
-  std::vector<vtkTypeInt16>& tangents = in.StageTangents;
-  nodes.resize(static_cast<size_t>(4 * numNodes));
-  tangents.resize(static_cast<size_t>(2 * numNodes));
-  vtkSMPTools::For(0, numNodes,
-    [&](vtkIdType begin, vtkIdType end)
+  // Positions (relative to the shift) and radii; unit tangents, octahedral;
+  // filled piece by piece from the input (no copy kept on the CPU side).
+  const size_t nodes = static_cast<size_t>(numNodes);
+  bool ok = in.Nodes.UploadInPieces(window, nodes, 4, VTK_FLOAT, GL_RGBA32F,
+    [&](size_t first, size_t count, void* destination)
     {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        for (int c = 0; c < 3; ++c)
-        {
-          nodes[4 * i + c] = static_cast<float>(P[3 * i + c] - shift[c]);
-        }
-        nodes[4 * i + 3] = R[2 * i];
-        const vtkSplineTubeMath::vec2 e = vtkSplineTubeMath::svOctEncode(
-          vtkSplineTubeMath::vec3(M[3 * i], M[3 * i + 1], M[3 * i + 2]));
-        tangents[2 * i] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.x));
-        tangents[2 * i + 1] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.y));
-      }
+      core->FillNodes(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count), shift,
+        static_cast<float*>(destination));
     });
-  bool ok = in.Nodes.Upload(window, nodes.data(), numNodes, 4, VTK_FLOAT, GL_RGBA32F);
-  ok = in.Tangents.Upload(window, tangents.data(), numNodes, 2, VTK_TYPE_INT16, GL_RG16I) && ok;
+  ok = ok &&
+    in.Tangents.UploadInPieces(window, nodes, 2, VTK_TYPE_INT16, GL_RG16I,
+      [&](size_t first, size_t count, void* destination)
+      {
+        in.FixUp.FillTangents(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+          static_cast<short*>(destination));
+      });
 
   // Polylines: first vertices (and the end), cell and block ids.
   std::vector<vtkTypeUInt32> starts(static_cast<size_t>(numTubes + 1));
   std::vector<vtkTypeInt32> tubes(static_cast<size_t>(2 * std::max<vtkIdType>(numTubes, 1)), 0);
-  const vtkIdType* tubeFirst = core->GetTubeFirstNodes()->GetPointer(0);
-  const vtkIdType* tubeNodes = core->GetTubeNumberOfNodes()->GetPointer(0);
-  vtkIdType segment = 0;
-  for (vtkIdType t = 0; t < numTubes; ++t)
-  {
-    starts[t] = static_cast<vtkTypeUInt32>(tubeFirst[t]);
-    tubes[2 * t] = static_cast<vtkTypeInt32>(core->GetSegmentCellIds()->GetValue(segment));
-    tubes[2 * t + 1] = static_cast<vtkTypeInt32>(core->GetSegmentBlockIds()->GetValue(segment));
-    segment += tubeNodes[t] - 1;
-  }
-  starts[numTubes] = static_cast<vtkTypeUInt32>(numNodes);
   in.WholeFirsts.resize(static_cast<size_t>(numTubes));
   in.WholeCounts.resize(static_cast<size_t>(numTubes));
   for (vtkIdType t = 0; t < numTubes; ++t)
   {
-    in.WholeFirsts[t] = static_cast<int>(2 * tubeFirst[t]);
-    in.WholeCounts[t] = static_cast<int>(2 * tubeNodes[t]);
+    starts[t] = static_cast<vtkTypeUInt32>(core->GetTubeFirstNode(t));
+    tubes[2 * t] = static_cast<vtkTypeInt32>(core->GetTubeCellId(t));
+    tubes[2 * t + 1] = static_cast<vtkTypeInt32>(core->GetTubeBlockId(t));
+    in.WholeFirsts[t] = static_cast<int>(2 * core->GetTubeFirstNode(t));
+    in.WholeCounts[t] = static_cast<int>(2 * core->GetTubeNumberOfNodes(t));
   }
+  starts[numTubes] = static_cast<vtkTypeUInt32>(numNodes);
   in.LastShadowKey.clear();
-  ok =
-    in.TubeStarts.Upload(window, starts.data(), numTubes + 1, 1, VTK_TYPE_UINT32, GL_R32UI) && ok;
-  ok = this->TubesBuffer->Upload(window, tubes.data(), numTubes, 2, VTK_TYPE_INT32, GL_RG32I) && ok;
+  ok = ok &&
+    in.TubeStarts.Upload(window, starts.data(), numTubes + 1, 1, VTK_TYPE_UINT32, GL_R32UI);
+  ok = ok && this->TubesBuffer->Upload(window, tubes.data(), numTubes, 2, VTK_TYPE_INT32, GL_RG32I);
 
-  // Colors, with scalar coloring.
+  // Colors (RGBA8), with scalar coloring.
   if (this->HaveColors)
   {
-    const float* C = core->GetNodeColors()->GetPointer(0);
-    std::vector<unsigned char>& colors = in.StageColors;
-    colors.resize(static_cast<size_t>(4 * numNodes));
-    vtkSMPTools::For(0, 4 * numNodes,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
+    ok = ok &&
+      in.Colors.UploadInPieces(window, nodes, 4, VTK_UNSIGNED_CHAR, GL_RGBA8,
+        [&](size_t first, size_t count, void* destination)
         {
-          colors[i] =
-            static_cast<unsigned char>(std::lround(255.0f * std::min(1.0f, std::max(0.0f, C[i]))));
-        }
-      });
-    ok = in.Colors.Upload(window, colors.data(), numNodes, 4, VTK_UNSIGNED_CHAR, GL_RGBA8) && ok;
+          core->FillColors(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+            static_cast<unsigned int*>(destination));
+        });
   }
   else
   {
@@ -339,45 +305,54 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   // With a texture: the coordinate along each line (arc length, or its
   // integral over 1 / radius, along the straight segments), the orientation
   // angle, and the rotation-minimizing frame vectors.
-  in.TextureData = core->GetNodeFrames()->GetNumberOfTuples() == numNodes && numNodes > 0;
+  in.TextureData = this->NeedsTextureData() && numNodes > 0;
   if (in.TextureData)
   {
-    const float* F = core->GetNodeFrames()->GetPointer(0);
-    vtkFloatArray* scalars = core->GetNodeScalars();
-    const float* O =
-      scalars->GetNumberOfTuples() == numNodes && numNodes > 0 ? scalars->GetPointer(0) : nullptr;
     const bool radii = this->TextureRepeatUnits == RADII;
-    std::vector<float>& coords = in.StageCoords;
-    std::vector<vtkTypeInt16>& frames = in.StageFrames;
-    coords.resize(static_cast<size_t>(2 * numNodes));
-    frames.resize(static_cast<size_t>(2 * numNodes));
-    vtkSMPTools::For(0, numTubes,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType t = begin; t < end; ++t)
+    ok = ok &&
+      in.TexCoords.UploadInPieces(window, nodes, 2, VTK_FLOAT, GL_RG32F,
+        [&](size_t first, size_t count, void* destination)
         {
-          double s = 0.0;
-          for (vtkIdType k = 0; k < tubeNodes[t]; ++k)
+          auto* coords = static_cast<float*>(destination);
+          std::vector<float> orientation(count);
+          core->FillScalars(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+            orientation.data());
+          const vtkIdType end = static_cast<vtkIdType>(first + count);
+          std::vector<double> p;
+          for (vtkIdType b = static_cast<vtkIdType>(first), t = core->GetTubeOfNode(b); b < end;
+               ++t)
           {
-            const vtkIdType i = tubeFirst[t] + k;
-            if (k > 0)
+            // The arc length from the tube's first node.
+            const vtkIdType tubeFirst = core->GetTubeFirstNode(t);
+            const vtkIdType stop = std::min(end, tubeFirst + core->GetTubeNumberOfNodes(t));
+            p.resize(static_cast<size_t>(4 * (stop - tubeFirst)));
+            core->GetTubeNodes(t, 0, stop - tubeFirst, p.data(), nullptr);
+            double s = 0.0;
+            for (vtkIdType k = 0; k < stop - tubeFirst; ++k)
             {
-              const double d =
-                glm::distance(vtkSplineTubeMath::vec3(P[3 * i - 3], P[3 * i - 2], P[3 * i - 1]),
-                  vtkSplineTubeMath::vec3(P[3 * i], P[3 * i + 1], P[3 * i + 2]));
-              s += radii ? 0.5 * d * (1.0 / R[2 * i - 2] + 1.0 / R[2 * i]) : d;
+              if (k > 0)
+              {
+                const double d = std::sqrt(vtkMath::Distance2BetweenPoints(&p[4 * k - 4], &p[4 * k]));
+                s += radii ? 0.5 * d * (1.0 / p[4 * k - 1] + 1.0 / p[4 * k + 3]) : d;
+              }
+              const vtkIdType i = tubeFirst + k;
+              if (i >= b)
+              {
+                coords[2 * (i - static_cast<vtkIdType>(first))] = static_cast<float>(s);
+                coords[2 * (i - static_cast<vtkIdType>(first)) + 1] =
+                  orientation[i - static_cast<vtkIdType>(first)];
+              }
             }
-            coords[2 * i] = static_cast<float>(s);
-            coords[2 * i + 1] = O ? O[i] : 0.0f;
-            const vtkSplineTubeMath::vec2 e = vtkSplineTubeMath::svOctEncode(
-              vtkSplineTubeMath::vec3(F[3 * i], F[3 * i + 1], F[3 * i + 2]));
-            frames[2 * i] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.x));
-            frames[2 * i + 1] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.y));
+            b = stop;
           }
-        }
-      });
-    ok = in.TexCoords.Upload(window, coords.data(), numNodes, 2, VTK_FLOAT, GL_RG32F) && ok;
-    ok = in.Frames.Upload(window, frames.data(), numNodes, 2, VTK_TYPE_INT16, GL_RG16I) && ok;
+        });
+    ok = ok &&
+      in.Frames.UploadInPieces(window, nodes, 2, VTK_TYPE_INT16, GL_RG16I,
+        [&](size_t first, size_t count, void* destination)
+        {
+          core->FillFrames(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+            static_cast<short*>(destination));
+        });
   }
   else
   {
@@ -443,9 +418,11 @@ void vtkStylizedLineMapper::SetVisibilityChunks()
   // and fix-up geometry, within a radius).
   vtkInternals& in = *this->Internals;
   in.CullingWiden = 1.0 + std::max(0.0, this->HaloWidth);
-  in.FixUp.GetCullingChunks(in.CullingWiden, in.CullingSpheres, in.CullingTubes);
+  in.FixUp.GetCullingChunks(
+    in.CullingWiden, in.CullingSpheres, in.CullingTubes, in.CullingParts, in.CullingPartFirsts);
   this->Visibility->SetChunks(in.CullingSpheres.data(), in.CullingTubes.data(),
-    static_cast<vtkIdType>(in.CullingTubes.size()));
+    static_cast<vtkIdType>(in.CullingTubes.size()), in.CullingParts.data(),
+    in.CullingPartFirsts.data());
 }
 
 //------------------------------------------------------------------------------
@@ -480,29 +457,10 @@ void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   v.Epsilon = this->FixUpEpsilon;
   v.JointRadius = 1.0 + this->HaloWidth;
   v.PixelsPerUnit = pixelsPerUnit;
-  in.FixUp.Classify(v, this->FixUp, in.FixedSegments, in.Joints);
+  in.FixUp.BeginView(v, this->FixUp);
   // Sides of about 3 pixels for the largest cap or cylinder on screen.
   const double sides = std::ceil(2.0 * vtkMath::Pi() * in.FixUp.GetMaximumScreenRadius() / 3.0);
   in.Sides = static_cast<int>(std::max(8.0, std::min<double>(this->FixUpSides, sides)));
-  // Upload the lists only when they changed (a turning camera often keeps them).
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  if (!in.ListsUploaded || in.FixedSegments != in.UploadedSegments ||
-    in.Joints != in.UploadedJoints)
-  {
-    if (!in.Segments.Upload(
-          window, in.FixedSegments.data(), in.FixedSegments.size(), 1, VTK_TYPE_UINT32, GL_R32UI) ||
-      !in.JointsBuffer.Upload(
-        window, in.Joints.data(), in.Joints.size(), 1, VTK_TYPE_UINT32, GL_R32UI))
-    {
-      vtkErrorMacro(<< "Could not upload the fix-up's segment lists: "
-                    << vtkSplineVizGPUBuffer::GetLastUploadError());
-      in.FixedSegments.clear();
-      in.Joints.clear();
-    }
-    in.UploadedSegments = in.FixedSegments;
-    in.UploadedJoints = in.Joints;
-    in.ListsUploaded = true;
-  }
   in.LastView = view;
 }
 
@@ -992,20 +950,30 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
   state->vtkglDisable(GL_CULL_FACE);
 
-  // Group by group (vtkSplineVisibility): 1. the silhouette quads of the
-  // visible batches, one multi-draw; 2. their polylines' caps, 3. the
-  // fix-up's cylinders and joints (with the first group: few, and found per
-  // view); then the caps' halos.
+  // Group by group (vtkSplineTubeVisibility): 1. the silhouette quads of
+  // the visible batches, one multi-draw; 2. their polylines' caps, 3. the
+  // fix-up's cylinders and joints of the batches fixed up; then the caps'
+  // halos.
   auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
   const GLsizei sides = static_cast<GLsizei>(in.MeshSides);
   const void* capOffset = reinterpret_cast<const void*>(6 * sizeof(unsigned short) * in.MeshSides);
   const size_t jointOffset = 9 * sizeof(unsigned short) * in.MeshSides;
-  const GLsizei fixed = static_cast<GLsizei>(in.FixedSegments.size());
-  bool firstGroup = true;
+  auto list = [&](vtkSplineVizGPUBuffer& buffer, const std::vector<std::uint32_t>& values,
+                const char* uniform)
+  {
+    if (values.empty() ||
+      !buffer.Upload(window, values.data(), values.size(), 1, VTK_TYPE_UINT32, GL_R32UI))
+    {
+      return false;
+    }
+    buffer.Activate(program, uniform);
+    return true;
+  };
   this->DrawVisibleChunks(ren, act,
     [&](const std::vector<std::uint32_t>& batches)
     {
-      in.FixUp.BuildStrips(batches, in.StripFirsts, in.StripCounts, in.Caps);
+      in.FixUp.BuildDraws(
+        batches, in.StripFirsts, in.StripCounts, in.Caps, in.FixedSegments, in.Joints);
       program->SetUniformi("lineMode", STRIPS);
       program->SetUniformi("lineHaloPass", 0);
       if (!in.StripFirsts.empty())
@@ -1013,13 +981,10 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
         glMultiDrawArrays(GL_TRIANGLE_STRIP, in.StripFirsts.data(), in.StripCounts.data(),
           static_cast<GLsizei>(in.StripFirsts.size()));
       }
-      const bool caps = this->Capping && !in.Caps.empty() &&
-        in.CapsBuffer.Upload(window, in.Caps.data(), in.Caps.size(), 1, VTK_TYPE_UINT32, GL_R32UI);
-      if (caps)
-      {
-        in.CapsBuffer.Activate(program, "lineCaps");
-        program->SetUniformi("lineCapList", 1);
-      }
+      const bool caps = this->Capping && list(in.CapsBuffer, in.Caps, "lineCaps");
+      const bool fixed = list(in.Segments, in.FixedSegments, "lineSegments");
+      const bool joints = list(in.JointsBuffer, in.Joints, "lineJoints");
+      program->SetUniformi("lineCapList", 1);
       in.Meshes->Bind();
       for (int halo = 0; halo < (this->HaloWidth > 0.0 ? 2 : 1); ++halo)
       {
@@ -1034,12 +999,13 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
         // length a halo ring would cut the line's own parts further back
         // wherever they curve out of its profile (Stoll's halo is the
         // quads' band).
-        if (fixed > 0 && halo == 0 && firstGroup)
+        if (fixed && halo == 0)
         {
           program->SetUniformi("lineMode", FIXUP_CYLINDERS);
-          glDrawElementsInstanced(GL_TRIANGLES, 6 * sides, GL_UNSIGNED_SHORT, nullptr, fixed);
+          glDrawElementsInstanced(GL_TRIANGLES, 6 * sides, GL_UNSIGNED_SHORT, nullptr,
+            static_cast<GLsizei>(in.FixedSegments.size()));
         }
-        if (!in.Joints.empty() && halo == 0 && firstGroup)
+        if (joints && halo == 0)
         {
           program->SetUniformi("lineMode", FIXUP_JOINTS);
           glDrawElementsInstanced(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT,
@@ -1047,10 +1013,7 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
         }
       }
       in.Meshes->Release();
-      firstGroup = false;
     });
-  in.Meshes->Bind();
-  in.Meshes->Release();
   if (shadows)
   {
     in.ShadowMap->Deactivate();

@@ -41,19 +41,21 @@ struct ViewNode
   double Clip[4];
 };
 
-ViewNode ToView(const ThinView& v, const float* P, const float* M, const float* R, vtkIdType i)
+/// Node i of P (positions and radii, 4 per node, model coordinates) and M
+/// (their derivatives) in view coordinates.
+ViewNode ToView(const ThinView& v, const double* P, const double* M, vtkIdType i)
 {
   ViewNode n;
-  const double x[3] = { P[3 * i] - v.Shift[0], P[3 * i + 1] - v.Shift[1],
-    P[3 * i + 2] - v.Shift[2] };
+  const double x[3] = { P[4 * i] - v.Shift[0], P[4 * i + 1] - v.Shift[1],
+    P[4 * i + 2] - v.Shift[2] };
   const float* mv = v.ModelView;
   for (int r = 0; r < 3; ++r)
   {
     n.P[r] = mv[r] * x[0] + mv[4 + r] * x[1] + mv[8 + r] * x[2] + mv[12 + r];
-    n.D[r] = mv[r] * M[3 * i] + mv[4 + r] * M[3 * i + 1] + mv[8 + r] * M[3 * i + 2];
+    n.D[r] = mv[r] * M[4 * i] + mv[4 + r] * M[4 * i + 1] + mv[8 + r] * M[4 * i + 2];
   }
-  n.R = R[2 * i] * v.RadiusScale;
-  n.DR = R[2 * i + 1] * v.RadiusScale;
+  n.R = P[4 * i + 3] * v.RadiusScale;
+  n.DR = M[4 * i + 3] * v.RadiusScale;
   for (int r = 0; r < 4; ++r)
   {
     n.Clip[r] =
@@ -112,11 +114,11 @@ bool ThinScreen(const ThinView& v, const ViewNode& n, double p[2])
 /// and last rings. The same bounds, through the same functions
 /// (vtkSplineTubeMathShared.glsl's svThin...), computed once per view on the
 /// CPU instead of per patch on the GPU.
-void ThinChunkLevels(const ThinView& v, const float* P, const float* M, const float* R,
-  vtkIdType first, vtkIdType count, double& along, double& ring0, double& ring1)
+void ThinChunkLevels(const ThinView& v, const double* P, const double* M, vtkIdType first,
+  vtkIdType count, double& along, double& ring0, double& ring1)
 {
-  const ViewNode a = ToView(v, P, M, R, first);
-  const ViewNode b = ToView(v, P, M, R, first + count);
+  const ViewNode a = ToView(v, P, M, first);
+  const ViewNode b = ToView(v, P, M, first + count);
   ring0 = ThinRingLevel(v, a);
   ring1 = ThinRingLevel(v, b);
   using vtkSplineTubeMath::vec3;
@@ -159,7 +161,7 @@ void ThinChunkLevels(const ThinView& v, const float* P, const float* M, const fl
   double previousLength3 = 0.0;
   for (vtkIdType k = 0; k <= count; ++k)
   {
-    const ViewNode n = k == 0 ? a : (k == count ? b : ToView(v, P, M, R, first + k));
+    const ViewNode n = k == 0 ? a : (k == count ? b : ToView(v, P, M, first + k));
     double p2[2];
     if (!ThinScreen(v, n, p2))
     {
@@ -354,6 +356,7 @@ void vtkTessellatedTubeLevels::SetCore(vtkSplineTubeCore* core)
   this->ChunkPixels.assign(static_cast<size_t>(numChunks), -1.0f);
   this->ChunkThinLevels.assign(static_cast<size_t>(numChunks), 0);
   this->TubeSideBin.assign(static_cast<size_t>(core->GetNumberOfTubes()), Culled);
+  this->TubeStamp.assign(static_cast<size_t>(core->GetNumberOfTubes()), 0);
   this->ThinCaps.assign(static_cast<size_t>(core->GetNumberOfSegments()), 0);
   this->LastView.clear();
 }
@@ -366,7 +369,6 @@ bool vtkTessellatedTubeLevels::ClassifyView(const View& view, const Settings& se
   {
     return false;
   }
-  const vtkIdType numTubes = core->GetNumberOfTubes();
   const vtkIdType numChunks = core->GetNumberOfChunks();
 
   // Skip the classification when nothing it depends on changed.
@@ -386,24 +388,20 @@ bool vtkTessellatedTubeLevels::ClassifyView(const View& view, const Settings& se
   this->CurrentView = view;
   this->CurrentSettings = settings;
 
-  const int ringBins = static_cast<int>(this->RingLadder.size());
-  const int sideBins = static_cast<int>(this->SideLadder.size());
-  if (!settings.LevelOfDetail)
+  // The tubes are classified when first drawn in this view (ClassifyTube()).
+  ++this->ViewStamp;
+  if (this->ViewStamp == 0)
   {
-    std::fill(this->ChunkRingBin.begin(), this->ChunkRingBin.end(), 0);
-    std::fill(this->ChunkPixels.begin(), this->ChunkPixels.end(), 0.0f);
-    std::fill(this->TubeSideBin.begin(), this->TubeSideBin.end(), 0);
-    return true;
+    std::fill(this->TubeStamp.begin(), this->TubeStamp.end(), 0);
+    this->ViewStamp = 1;
   }
-  const double(*proj)[4] = view.Proj;
-  const float* modelView = view.ModelView;
   // Frustum planes (view coordinates, normalized): row3 +- row0, +- row1, +- row2.
-  double planes[6][4];
+  const double(*proj)[4] = view.Proj;
   for (int k = 0; k < 3; ++k)
   {
     for (int side = 0; side < 2; ++side)
     {
-      double* p = planes[2 * k + side];
+      double* p = this->Planes[2 * k + side];
       for (int c = 0; c < 4; ++c)
       {
         p[c] = proj[3][c] + (side == 0 ? 1.0 : -1.0) * proj[k][c];
@@ -415,6 +413,31 @@ bool vtkTessellatedTubeLevels::ClassifyView(const View& view, const Settings& se
       }
     }
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTessellatedTubeLevels::ClassifyTube(vtkIdType t)
+{
+  vtkSplineTubeCore* core = this->Core;
+  const View& view = this->CurrentView;
+  const Settings& settings = this->CurrentSettings;
+  const int ringBins = static_cast<int>(this->RingLadder.size());
+  const int sideBins = static_cast<int>(this->SideLadder.size());
+  const vtkIdType* tubeFirstChunk = core->GetTubeFirstChunks()->GetPointer(0);
+  if (!settings.LevelOfDetail)
+  {
+    for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
+    {
+      this->ChunkRingBin[c] = 0;
+      this->ChunkPixels[c] = 0.0f;
+    }
+    this->TubeSideBin[t] = 0;
+    return;
+  }
+  const double(*proj)[4] = view.Proj;
+  const float* modelView = view.ModelView;
+  const double(*planes)[4] = this->Planes;
   const double pixelScale =
     0.5 * std::max(proj[0][0] * view.Width, proj[1][1] * view.Height); // pixels per unit at w = 1
   const double wSlope =
@@ -422,82 +445,73 @@ bool vtkTessellatedTubeLevels::ClassifyView(const View& view, const Settings& se
   const double ringTarget = 0.5 * settings.MaxEdgeLength;
   const double sideTarget = 2.0 * settings.MaxSilhouetteEdgeLength;
   const double twoPi = 2.0 * vtkMath::Pi();
-  const vtkIdType* tubeFirstChunk = core->GetTubeFirstChunks()->GetPointer(0);
   const float* spheres = core->GetChunkSpheres()->GetPointer(0);
   const float* sizes = core->GetChunkSizes()->GetPointer(0);
   const double radiusScale = view.RadiusScale;
-  vtkSMPTools::For(0, numTubes,
-    [&](vtkIdType begin, vtkIdType end)
+  double widest = -1.0; // pixels; < 0: the tube is culled
+  for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
+  {
+    const float* sphere = spheres + 4 * c;
+    double center[3];
+    for (int r = 0; r < 3; ++r)
     {
-      for (vtkIdType t = begin; t < end; ++t)
+      center[r] = modelView[r] * sphere[0] + modelView[4 + r] * sphere[1] +
+        modelView[8 + r] * sphere[2] + modelView[12 + r];
+    }
+    const double radius = sphere[3] * radiusScale;
+    bool outside = false;
+    for (int k = 0; k < 6 && !outside; ++k)
+    {
+      outside = planes[k][0] * center[0] + planes[k][1] * center[1] + planes[k][2] * center[2] +
+          planes[k][3] <
+        -radius;
+    }
+    if (outside)
+    {
+      this->ChunkRingBin[c] = Culled;
+      this->ChunkPixels[c] = -1.0f;
+      continue;
+    }
+    const double w = proj[3][0] * center[0] + proj[3][1] * center[1] + proj[3][2] * center[2] +
+      proj[3][3] - wSlope * radius;
+    int ringBin = 0;
+    double radiusPixels = VTK_DOUBLE_MAX;
+    double lengthPixels = VTK_DOUBLE_MAX;
+    if (w > 1e-6 * (std::abs(proj[3][3]) + std::abs(center[2]) + radius))
+    {
+      const double scale = pixelScale * radiusScale / w;
+      lengthPixels = sizes[3 * c] * scale;
+      const double intervals = sizes[3 * c + 1] * scale / ringTarget;
+      radiusPixels = sizes[3 * c + 2] * scale;
+      ringBin = ringBins - 1;
+      while (ringBin > 0 && this->RingLadder[ringBin] - 1 < intervals)
       {
-        double widest = -1.0; // pixels; < 0: the tube is culled
-        for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
-        {
-          const float* sphere = spheres + 4 * c;
-          double center[3];
-          for (int r = 0; r < 3; ++r)
-          {
-            center[r] = modelView[r] * sphere[0] + modelView[4 + r] * sphere[1] +
-              modelView[8 + r] * sphere[2] + modelView[12 + r];
-          }
-          const double radius = sphere[3] * radiusScale;
-          bool outside = false;
-          for (int k = 0; k < 6 && !outside; ++k)
-          {
-            outside = planes[k][0] * center[0] + planes[k][1] * center[1] +
-                planes[k][2] * center[2] + planes[k][3] <
-              -radius;
-          }
-          if (outside)
-          {
-            this->ChunkRingBin[c] = Culled;
-            this->ChunkPixels[c] = -1.0f;
-            continue;
-          }
-          const double w = proj[3][0] * center[0] + proj[3][1] * center[1] +
-            proj[3][2] * center[2] + proj[3][3] - wSlope * radius;
-          int ringBin = 0;
-          double radiusPixels = VTK_DOUBLE_MAX;
-          double lengthPixels = VTK_DOUBLE_MAX;
-          if (w > 1e-6 * (std::abs(proj[3][3]) + std::abs(center[2]) + radius))
-          {
-            const double scale = pixelScale * radiusScale / w;
-            lengthPixels = sizes[3 * c] * scale;
-            const double intervals = sizes[3 * c + 1] * scale / ringTarget;
-            radiusPixels = sizes[3 * c + 2] * scale;
-            ringBin = ringBins - 1;
-            while (ringBin > 0 && this->RingLadder[ringBin] - 1 < intervals)
-            {
-              --ringBin;
-            }
-          }
-          this->ChunkRingBin[c] = static_cast<unsigned char>(ringBin);
-          this->ChunkPixels[c] = static_cast<float>(std::min(lengthPixels, 1e30));
-          widest = std::max(widest, radiusPixels);
-        }
-        // Sides: one patch around when at most SinglePatchSides ring edges
-        // are needed (the tessellator makes them), else the fewest base
-        // vertices that the silhouette refinement can at least double to
-        // the need.
-        int sideBin = Culled;
-        if (widest >= 0.0)
-        {
-          const double sidesNeeded = twoPi * widest / sideTarget;
-          sideBin = sideBins - 1;
-          if (sidesNeeded > SinglePatchSides)
-          {
-            sideBin = sideBins - 2;
-            while (sideBin > 0 && this->SideLadder[sideBin] < 0.5 * sidesNeeded)
-            {
-              --sideBin;
-            }
-          }
-        }
-        this->TubeSideBin[t] = static_cast<unsigned char>(sideBin);
+        --ringBin;
       }
-    });
-  return true;
+    }
+    this->ChunkRingBin[c] = static_cast<unsigned char>(ringBin);
+    this->ChunkPixels[c] = static_cast<float>(std::min(lengthPixels, 1e30));
+    widest = std::max(widest, radiusPixels);
+  }
+  // Sides: one patch around when at most SinglePatchSides ring edges are
+  // needed (the tessellator makes them), else the fewest base vertices that
+  // the silhouette refinement can at least double to the need. From the
+  // widest chunk of the tube in view, so that the rings of its chunks match.
+  int sideBin = Culled;
+  if (widest >= 0.0)
+  {
+    const double sidesNeeded = twoPi * widest / sideTarget;
+    sideBin = sideBins - 1;
+    if (sidesNeeded > SinglePatchSides)
+    {
+      sideBin = sideBins - 2;
+      while (sideBin > 0 && this->SideLadder[sideBin] < 0.5 * sidesNeeded)
+      {
+        --sideBin;
+      }
+    }
+  }
+  this->TubeSideBin[t] = static_cast<unsigned char>(sideBin);
 }
 
 //------------------------------------------------------------------------------
@@ -530,16 +544,17 @@ void vtkTessellatedTubeLevels::ClassifyThin(std::uint32_t c)
     thin.Edge = vtkSplineTubeMath::svThinEdgeFactor * settings.MaxEdgeLength;
     thin.MaxLevel = settings.MaxTessellationLevel;
     thin.Parallel = view.Parallel;
-    const float* nodeP = core->GetNodePositions()->GetPointer(0);
-    const float* nodeM = core->GetNodeTangents()->GetPointer(0);
-    const float* nodeR = core->GetNodeRadii()->GetPointer(0);
-    const vtkTypeUInt32* firstNodes = core->GetSegmentFirstNodes()->GetPointer(0);
-    const unsigned char* segmentFlags = core->GetSegmentFlags()->GetPointer(0);
+    // The chunk's nodes, read from the core.
+    const vtkIdType tube = core->GetChunkTubes()->GetValue(c);
+    const vtkIdType firstSegment = core->GetTubeFirstSegment(tube);
+    const vtkIdType k0 = chunkFirst[c] - firstSegment;
+    double P[4 * (vtkSplineTubeCore::ChunkSegments + 1)];
+    double M[4 * (vtkSplineTubeCore::ChunkSegments + 1)];
+    core->GetTubeNodes(tube, k0, count + 1, P, M);
     double along = 1.0;
     double ring0 = 3.0;
     double ring1 = 3.0;
-    ThinChunkLevels(
-      thin, nodeP, nodeM, nodeR, firstNodes[chunkFirst[c]], count, along, ring0, ring1);
+    ThinChunkLevels(thin, P, M, 0, count, along, ring0, ring1);
     if (std::max(ring0, ring1) <= ThinMaxSides)
     {
       size_t rung = 0;
@@ -549,17 +564,19 @@ void vtkTessellatedTubeLevels::ClassifyThin(std::uint32_t c)
       }
       this->ChunkRingBin[c] = ThinChunk;
       this->ChunkThinLevels[c] = static_cast<std::uint32_t>(rung);
+      // Caps of the tube's ends turned to the eye (the control stage's test).
+      const vtkIdType lastSegment = firstSegment + core->GetTubeNumberOfNodes(tube) - 2;
       for (vtkIdType s = chunkFirst[c]; settings.Capping && s < chunkFirst[c + 1]; ++s)
       {
         unsigned char visible = 0;
-        for (int kind = 1; kind <= 2; ++kind)
+        if (s == firstSegment && ThinCapVisible(thin, ToView(thin, P, M, s - chunkFirst[c]), 1))
         {
-          if ((segmentFlags[s] & kind) != 0 &&
-            ThinCapVisible(
-              thin, ToView(thin, nodeP, nodeM, nodeR, firstNodes[s] + (kind == 2 ? 1 : 0)), kind))
-          {
-            visible |= static_cast<unsigned char>(kind);
-          }
+          visible |= 1;
+        }
+        if (s == lastSegment &&
+          ThinCapVisible(thin, ToView(thin, P, M, s - chunkFirst[c] + 1), 2))
+        {
+          visible |= 2;
         }
         this->ThinCaps[s] = visible;
       }
@@ -585,11 +602,35 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
   const int sideBins = static_cast<int>(this->SideLadder.size());
   const vtkTypeUInt32* chunkFirst = core->GetChunkFirstSegments()->GetPointer(0);
   const vtkTypeUInt32* chunkTube = core->GetChunkTubes()->GetPointer(0);
-  const unsigned char* flags = core->GetSegmentFlags()->GetPointer(0);
+  // A segment's flags: 1 when it starts its tube, 2 when it ends it.
+  auto segmentFlags = [&](vtkIdType s, std::uint32_t t)
+  {
+    const vtkIdType firstSegment = core->GetTubeFirstSegment(t);
+    return (s == firstSegment ? 1 : 0) |
+      (s == firstSegment + core->GetTubeNumberOfNodes(t) - 2 ? 2 : 0);
+  };
 
-  // The thin tubes' chunks: their levels, for this view, in parallel. (The
-  // ring bins of ClassifyView() are kept for the other tubes.)
+  // The tubes of these chunks not yet classified in this view (in parallel),
+  // then the thin tubes' chunks: their levels, in parallel.
   const vtkIdType n = static_cast<vtkIdType>(chunks.size());
+  std::vector<std::uint32_t> tubes;
+  for (std::uint32_t c : chunks)
+  {
+    const std::uint32_t t = chunkTube[c];
+    if (this->TubeStamp[t] != this->ViewStamp)
+    {
+      this->TubeStamp[t] = this->ViewStamp;
+      tubes.push_back(t);
+    }
+  }
+  vtkSMPTools::For(0, static_cast<vtkIdType>(tubes.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        this->ClassifyTube(tubes[i]);
+      }
+    });
   if (settings.LevelOfDetail)
   {
     vtkSMPTools::For(0, n,
@@ -642,7 +683,7 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
     }
     for (vtkIdType s = chunkFirst[c]; settings.Capping && s < chunkFirst[c + 1]; ++s)
     {
-      if (flags[s] == 0)
+      if (segmentFlags(s, chunkTube[c]) == 0)
       {
         continue;
       }
@@ -663,6 +704,7 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
   }
   this->Instances.resize(static_cast<size_t>(offsets.back()));
   std::vector<vtkIdType> cursor(offsets.begin(), offsets.end() - 1);
+  // Instance entries name segments by their first node (segment + tube).
   for (std::uint32_t c : chunks)
   {
     if (!drawn(c))
@@ -673,20 +715,23 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
     const unsigned char ringBin = this->ChunkRingBin[c];
     const vtkIdType first = chunkFirst[c];
     const vtkIdType stop = chunkFirst[c + 1];
+    const std::uint32_t toNode = chunkTube[c];
     const bool thinChunk = ringBin == ThinChunk;
     if (thinChunk)
     {
       vtkIdType& entry = cursor[thinBin(this->ChunkThinLevels[c])];
-      this->Instances[entry++] = static_cast<std::uint32_t>(first);
+      this->Instances[entry++] = static_cast<std::uint32_t>(first) + toNode;
       // (count | whether the run starts and ends its tube << 8)
       this->Instances[entry++] = static_cast<std::uint32_t>(stop - first) |
-        (static_cast<std::uint32_t>((flags[first] & 1) | (flags[stop - 1] & 2)) << 8);
+        (static_cast<std::uint32_t>(
+           (segmentFlags(first, chunkTube[c]) & 1) | (segmentFlags(stop - 1, chunkTube[c]) & 2))
+          << 8);
     }
     const bool whole = thinChunk || ringBin == WholeChunk;
     if (whole && !thinChunk)
     {
       vtkIdType& entry = cursor[chunkBin];
-      this->Instances[entry++] = static_cast<std::uint32_t>(first);
+      this->Instances[entry++] = static_cast<std::uint32_t>(first) + toNode;
       this->Instances[entry++] = static_cast<std::uint32_t>(stop - first);
     }
     vtkIdType& wall = cursor[whole ? 0 : ringBin * sideBins + sideBin];
@@ -694,22 +739,23 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
     {
       if (!whole)
       {
-        this->Instances[wall++] = static_cast<std::uint32_t>(s);
+        this->Instances[wall++] = static_cast<std::uint32_t>(s) + toNode;
       }
-      if (settings.Capping && flags[s] != 0 && thinChunk)
+      const int flags = segmentFlags(s, chunkTube[c]);
+      if (settings.Capping && flags != 0 && thinChunk)
       {
         for (std::uint32_t kind = 1; kind <= 2; ++kind)
         {
           if ((this->ThinCaps[s] & kind) != 0)
           {
-            this->Instances[cursor[thinCapBin]++] = static_cast<std::uint32_t>(s);
+            this->Instances[cursor[thinCapBin]++] = static_cast<std::uint32_t>(s) + toNode;
             this->Instances[cursor[thinCapBin]++] = kind;
           }
         }
       }
-      else if (settings.Capping && flags[s] != 0)
+      else if (settings.Capping && flags != 0)
       {
-        this->Instances[cursor[bins + sideBin]++] = static_cast<std::uint32_t>(s);
+        this->Instances[cursor[bins + sideBin]++] = static_cast<std::uint32_t>(s) + toNode;
       }
     }
   }

@@ -151,6 +151,8 @@ public:
 
 private:
   void ClassifyThin(std::uint32_t chunk);
+  /// A tube's chunks in this view: frustum, length on screen, rings; its sides.
+  void ClassifyTube(vtkIdType tube);
 
   // Base meshes.
   std::vector<int> RingLadder; ///< vertex rings, finest first
@@ -175,6 +177,9 @@ private:
   std::vector<float> ChunkPixels; ///< length on screen (< 0: culled)
   std::vector<std::uint32_t> ChunkThinLevels;
   std::vector<unsigned char> TubeSideBin;
+  std::vector<std::uint32_t> TubeStamp; ///< the view a tube was last classified in
+  std::uint32_t ViewStamp = 0;
+  double Planes[6][4] = {};            ///< frustum planes of the view, view coordinates
   std::vector<unsigned char> ThinCaps; ///< per segment of thin runs: its caps turned to the eye
 
   // Per draw list.

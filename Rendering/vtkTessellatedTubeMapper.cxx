@@ -33,6 +33,7 @@
 #include "vtkSplineTubeMathPrelude.h"
 #include "vtkSplineTubeMathShared.h"
 #include "vtkSplineTubeColor.h"
+#include "vtkSplineTubeNodes.h"
 #include "vtkTessellatedTubeCommon.h"
 #include "vtkTessellatedTubeFS.h"
 #include "vtkTessellatedTubeTCS.h"
@@ -61,12 +62,13 @@ std::string TubeMathSource()
   return std::string(vtkSplineTubeMathPrelude) + vtkSplineTubeMathShared;
 }
 
-/// What the vertex and tessellation stages share, with the color spline.
+/// What the vertex and tessellation stages share: the tubes buffer, the
+/// color spline, the tessellated tubes' common code.
 std::string CommonSource()
 {
   std::string common = vtkTessellatedTubeCommon;
   vtkShaderProgram::Substitute(common, "//VTK::SplineTubeColor::Dec", vtkSplineTubeColor);
-  return common;
+  return std::string(vtkSplineTubeNodes) + common;
 }
 
 /// The source with line numbers, for error messages.
@@ -253,23 +255,16 @@ void vtkTessellatedTubeMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   {
     return;
   }
-  // Orthogonal vectors: octahedral encoding, 2 x int16 per node.
+  // Orthogonal vectors (rotation-minimizing frames): octahedral, 2 x int16
+  // per node, made piece by piece.
   vtkSplineTubeCore* core = this->Core;
-  const vtkIdType numNodes = core->GetNumberOfNodes();
-  const float* F = core->GetNodeFrames()->GetPointer(0);
-  std::vector<vtkTypeInt16> frames(static_cast<size_t>(2 * numNodes));
-  vtkSMPTools::For(0, numNodes,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        const vtkSplineTubeMath::vec2 e = vtkSplineTubeMath::svOctEncode(
-          vtkSplineTubeMath::vec3(F[3 * i], F[3 * i + 1], F[3 * i + 2]));
-        frames[2 * i] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.x));
-        frames[2 * i + 1] = static_cast<vtkTypeInt16>(std::lround(32767.0 * e.y));
-      }
-    });
-  if (!this->FramesBuffer->Upload(window, frames.data(), numNodes, 2, VTK_TYPE_INT16, GL_RG16I))
+  if (!this->FramesBuffer->UploadInPieces(window, static_cast<size_t>(core->GetNumberOfNodes()),
+        2, VTK_TYPE_INT16, GL_RG16I,
+        [&](size_t first, size_t count, void* destination)
+        {
+          core->FillFrames(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
+            static_cast<short*>(destination));
+        }))
   {
     vtkErrorMacro(<< "Could not upload the orthogonal vectors to the GPU: "
                   << vtkSplineVizGPUBuffer::GetLastUploadError());

@@ -22,6 +22,7 @@ void vtkSplineTubeRepresentation::SetTubeMappers(
   this->Mapper = mapper;
   this->LODMapper = lodMapper;
   lodMapper->ForceInteractiveOn();
+  lodMapper->SetInteractiveFrameTime(0.15);
   // The superclass wires its pipeline and actor to the mappers here.
   this->SetupDefaults();
 }

@@ -28,6 +28,10 @@ in TubeRectangle
   flat ivec4 info;
   flat vec4 frame;
   flat vec4 span;
+  flat vec4 c0;
+  flat vec4 d0;
+  flat vec4 c1;
+  flat vec4 d1;
 } tubeRect[];
 
 out vec4 vertexVCGSOutput;       // position on the rectangle, view coordinates
@@ -35,6 +39,7 @@ flat out vec4 tubeQ0GSOutput;    // quadratic sub-segment in view coordinates
 flat out vec4 tubeQ1GSOutput;    // (xyz: control point, w: radius)
 flat out vec4 tubeQ2GSOutput;
 flat out ivec4 tubeInfoGSOutput; // first node, sub-segment, tube, flags | mode << 2
+//VTK::TubeColor::GSDec
 
 void main()
 {
@@ -55,6 +60,7 @@ void main()
     tubeQ1GSOutput = tubeRect[0].q1;
     tubeQ2GSOutput = tubeRect[0].q2;
     tubeInfoGSOutput = tubeRect[0].info;
+    //VTK::TubeColor::GSImpl
     gl_PrimitiveID = gl_PrimitiveIDIn;
     gl_Position = VCDCMatrix * vec4(p, 1.0);
     EmitVertex();

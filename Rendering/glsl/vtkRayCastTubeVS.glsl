@@ -2,8 +2,9 @@
 
 // Ray-cast spline tubes (Salm §3.2 'Rendering'), vertex stage.
 //
-// One point per quadratic sub-segment (gl_VertexID = sub-segment), no vertex
-// attributes. The vertex reads its sub-segment's two nodes from the tubes
+// One point per quadratic sub-segment of the chunks drawn (gl_VertexID =
+// (entry of tubeChunkList) x tubeChunkSegments x subSegments + sub-segment
+// in the chunk), no vertex attributes. The vertex reads its sub-segment's two nodes from the tubes
 // buffer, splits the cubic segment into its quadratic sub-segments
 // (svSplitSegment), takes the one it owns into view coordinates, bounds it
 // with its oriented box (svSubSegmentBox) and covers the box's projection
@@ -19,9 +20,10 @@
 // 3 times more triangles per sub-segment and the triangle setup dominates the
 // frame time (see vtkRayCastTubeMapper.h for the measurements).
 
-uniform samplerBuffer tubeNodes;     // per node: (x, y, z, r), (dx, dy, dz, dr)
-uniform usamplerBuffer tubeSegments; // per segment: (first node | flags << 30, tube)
 uniform int subSegments;             // quadratic sub-segments per cubic segment
+uniform usamplerBuffer tubeChunkList; // per chunk drawn: its first node, its segment count
+uniform int tubeHaveColors;          // the color spline's ends for the fragment stage
+uniform int tubeChunkSegments;       // the longest chunk, in segments
 uniform mat4 tubeMCVC;               // model (shifted) to view
 uniform float tubeRadiusScale;       // model to view scale of radii
 uniform float tubeNearPlane;         // distance of the near plane (view units)
@@ -39,6 +41,10 @@ out TubeRectangle
   flat ivec4 info; // first node, sub-segment, tube, flags | mode << 2
   flat vec4 frame; // u (xy: the rectangle's first axis; v = (-u.y, u.x)), z of its plane, w > 0: drawn
   flat vec4 span;  // lo (xy), hi (zw): extents along u and v
+  flat vec4 c0;    // the color spline: colors and derivatives at the segment's ends
+  flat vec4 d0;
+  flat vec4 c1;
+  flat vec4 d1;
 } tubeRect;
 
 //VTK::SplineTubeMath::Dec
@@ -55,19 +61,28 @@ vec2 projectToPlane(vec3 p, float zp)
 
 void main()
 {
-  int id = gl_VertexID;
   tubeRect.frame = vec4(0.0); // not drawn (unless set below)
   tubeRect.span = vec4(0.0);
-  int segment = id / subSegments;
-  int k = id - segment * subSegments;
-  uvec2 s = texelFetch(tubeSegments, segment).xy;
-  int node = int(s.x & 0x3FFFFFFFu);
-  int flags = int(s.x >> 30u);
-
-  vec4 p0 = texelFetch(tubeNodes, 2 * node);
-  vec4 m0 = texelFetch(tubeNodes, 2 * node + 1);
-  vec4 p1 = texelFetch(tubeNodes, 2 * node + 2);
-  vec4 m1 = texelFetch(tubeNodes, 2 * node + 3);
+  int perChunk = tubeChunkSegments * subSegments;
+  int entry = gl_VertexID / perChunk;
+  int local = gl_VertexID - entry * perChunk;
+  uvec2 chunk = texelFetch(tubeChunkList, entry).xy;
+  if (local >= int(chunk.y) * subSegments)
+  {
+    tubeRect.info = ivec4(0);
+    tubeRect.q0 = tubeRect.q1 = tubeRect.q2 = vec4(0.0);
+    tubeRect.c0 = tubeRect.d0 = tubeRect.c1 = tubeRect.d1 = vec4(0.0);
+    return; // past the chunk's end: no rectangle
+  }
+  int node = int(chunk.x) + local / subSegments;
+  int k = local - (local / subSegments) * subSegments;
+  vec4 p0;
+  vec4 m0;
+  vec4 p1;
+  vec4 m1;
+  int flags;
+  int tube;
+  tubeSegmentModel(node, p0, m0, p1, m1, flags, tube);
   // The segment in view coordinates (Hermite and Bezier forms transform with
   // their control points), then its sub-segment k.
   vec4 a = vec4((tubeMCVC * vec4(p0.xyz, 1.0)).xyz, p0.w * tubeRadiusScale);
@@ -146,7 +161,14 @@ void main()
   tubeRect.q0 = q0;
   tubeRect.q1 = q1;
   tubeRect.q2 = q2;
-  tubeRect.info = ivec4(node, k, int(s.y), flags | (mode << 2));
+  tubeRect.info = ivec4(node, k, tube, flags | (mode << 2));
+  if (tubeHaveColors != 0)
+  {
+    tubeRect.c0 = tubeNodeColor(node);
+    tubeRect.d0 = tubeNodeColorDerivative(node);
+    tubeRect.c1 = tubeNodeColor(node + 1);
+    tubeRect.d1 = tubeNodeColorDerivative(node + 1);
+  }
 
   // Fast path: the sub-segment lies in the convex hull of its control points
   // with the largest radius (Bernstein property, radii >= 0); bound the

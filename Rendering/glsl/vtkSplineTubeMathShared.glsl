@@ -40,6 +40,31 @@ vec4 svHermiteDerivative(vec4 p0, vec4 m0, vec4 p1, vec4 m1, real t)
   return d00 * p0 + d10 * m0 + d01 * p1 + d11 * m1;
 }
 
+// Derivative (with respect to the node parameter) of the splines through a
+// tube's nodes at node p, from its neighbours: central differences inside,
+// second-order one-sided differences at the tube's first and last node
+// (`first`, `last`; they reproduce straight lines and parabolas), the chord
+// for a tube of two nodes. prev2, prev, next, next2 are the nodes around p
+// (those beyond the tube's ends are not used: `prevIsFirst`, `nextIsLast`
+// say where it ends); x, y, z and the radius alike.
+vec4 svNodeDerivative(vec4 prev2, vec4 prev, vec4 p, vec4 next, vec4 next2, bool first, bool last,
+  bool prevIsFirst, bool nextIsLast)
+{
+  if (first && last)
+  {
+    return vec4(0.0, 0.0, 0.0, 0.0);
+  }
+  if (first)
+  {
+    return nextIsLast ? next - p : 0.5 * (-3.0 * p + 4.0 * next - next2);
+  }
+  if (last)
+  {
+    return prevIsFirst ? p - prev : 0.5 * (3.0 * p - 4.0 * prev + prev2);
+  }
+  return 0.5 * (next - prev);
+}
+
 //------------------------------------------------------------------------------
 // Quadratic sub-segments.
 //

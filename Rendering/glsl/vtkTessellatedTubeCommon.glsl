@@ -1,11 +1,8 @@
 // Tessellated spline tubes (Salm §3.1): what the vertex, tessellation-control
 // and tessellation-evaluation stages share. Needs the spline-tube math
-// (vtkSplineTubeMathShared.glsl) before it.
-//
-// The tubes buffer (see vtkSplineTubeMapper and vtkTessellatedTubeMapper):
-uniform samplerBuffer tubeNodes;     // per node: (x, y, z, r), (dx, dy, dz, dr)
+// (vtkSplineTubeMathShared.glsl) and the tubes buffer
+// (vtkSplineTubeNodes.glsl) before it.
 uniform isamplerBuffer tubeFrames;   // per node: orthogonal vector, octahedral, int16
-uniform usamplerBuffer tubeSegments; // per segment: (first node | flags << 30, tube)
 uniform mat4 tubeMCVC;               // model (shifted) to view
 uniform float tubeRadiusScale;       // model to view scale of radii
 
@@ -23,14 +20,23 @@ struct TubeSegment
 
 vec4 tubeNodePosition(int node)
 {
-  vec4 p = texelFetch(tubeNodes, 2 * node);
+  vec4 p = tubeNodeModel(node);
   return vec4((tubeMCVC * vec4(p.xyz, 1.0)).xyz, p.w * tubeRadiusScale);
 }
 
 vec4 tubeNodeDerivative(int node)
 {
-  vec4 m = texelFetch(tubeNodes, 2 * node + 1);
+  vec4 m = tubeNodeDerivativeModel(node);
   return vec4(mat3(tubeMCVC) * m.xyz, m.w * tubeRadiusScale);
+}
+
+// The flags of the run of `count` segments from `node`: 1 when it starts its
+// tube, 2 when it ends it.
+int tubeRunFlags(int node, int count)
+{
+  uint a = texelFetch(tubeNodeInfo, node).x;
+  uint b = texelFetch(tubeNodeInfo, node + count).x;
+  return ((a & tubeFirstNodeBit) != 0u ? 1 : 0) | ((b & tubeLastNodeBit) != 0u ? 2 : 0);
 }
 
 vec3 tubeNodeFrame(int node)

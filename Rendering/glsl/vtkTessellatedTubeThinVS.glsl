@@ -61,7 +61,7 @@ out vec4 vertexVCVSOutput; // position, view coordinates
 out vec4 tubeAxisVCVSOutput;
 out vec4 tubeNormalVCVSOutput;
 out float tubeTVSOutput;         // curve parameter in the run
-flat out ivec4 tubeInfoVSOutput; // first node, segment, tube, count << 4 | ends (caps: kind << 2)
+flat out ivec4 tubeInfoVSOutput; // first node, first node, tube, count << 4 | ends (caps: kind << 2)
 out vec4 tubeColorVSOutput;
 
 //VTK::SplineTubeMath::Dec
@@ -76,10 +76,8 @@ out vec4 tubeColorVSOutput;
 void tubeThinCap()
 {
   int entry = tubeListOffset + 2 * gl_InstanceID;
-  int segment = int(texelFetch(tubeInstances, entry).x);
+  int first = int(texelFetch(tubeInstances, entry).x);
   int kind = int(texelFetch(tubeInstances, entry + 1).x);
-  uvec2 sd = texelFetch(tubeSegments, segment).xy;
-  int first = int(sd.x & 0x3FFFFFFFu);
   float t = kind == 1 ? 0.0 : 1.0;
   int node = first + int(t);
   vec4 c = tubeNodePosition(node);
@@ -103,7 +101,7 @@ void tubeThinCap()
   tubeAxisVCVSOutput = vec4(0.0);
   tubeNormalVCVSOutput = vec4(dot(tangent, toEye) < 0.0 ? -tangent : tangent, 0.0);
   tubeTVSOutput = t;
-  tubeInfoVSOutput = ivec4(first, segment, int(sd.y), (kind << 2) | (1 << 4));
+  tubeInfoVSOutput = ivec4(first, first, tubeOfNode(first), (kind << 2) | (1 << 4));
   tubeColorVSOutput = tubeColorAt(first, t);
   gl_Position = VCDCMatrix * vec4(position, 1.0);
 }
@@ -116,7 +114,7 @@ void main()
     return;
   }
   int entry = tubeListOffset + 2 * gl_InstanceID;
-  int segment = int(texelFetch(tubeInstances, entry).x);
+  int first = int(texelFetch(tubeInstances, entry).x);
   uint run = texelFetch(tubeInstances, entry + 1).x;
   int count = int(run & 0xFFu);
   int intervals = tubeRings - 1;
@@ -130,8 +128,6 @@ void main()
   int k = clamp(int(ceil(tGlobal)) - 1, 0, count - 1);
   float t = tGlobal - float(k);
 
-  uvec2 sd = texelFetch(tubeSegments, segment).xy;
-  int first = int(sd.x & 0x3FFFFFFFu);
   int node = first + k;
   vec4 p0 = tubeNodePosition(node);
   vec4 m0 = tubeNodeDerivative(node);
@@ -153,7 +149,7 @@ void main()
   tubeAxisVCVSOutput = c;
   tubeNormalVCVSOutput = d;
   tubeTVSOutput = tGlobal;
-  tubeInfoVSOutput = ivec4(first, segment, int(sd.y), (count << 4) | int((run >> 8u) & 3u));
+  tubeInfoVSOutput = ivec4(first, first, tubeOfNode(first), (count << 4) | int((run >> 8u) & 3u));
   tubeColorVSOutput = tubeColorAt(node, t);
   gl_Position = VCDCMatrix * vec4(position, 1.0);
 }

@@ -22,14 +22,14 @@
 
 uniform int tubeRings;
 uniform int tubeSides;
-uniform usamplerBuffer tubeInstances; // segment indices of the level-of-detail bins
+uniform usamplerBuffer tubeInstances; // the segments (first nodes) of the level-of-detail bins
 uniform int tubeListOffset;
-uniform int tubeChunks; // instances are (first segment, count) runs of one tube
+uniform int tubeChunks; // instances are (first node, count) runs of one tube
 
 out vec4 vertexVCVSOutput;       // position, view coordinates
 out vec3 tubeNormalVCVSOutput;   // normal, view coordinates
 out float tubeTVSOutput;         // curve parameter
-flat out ivec4 tubeInfoVSOutput; // first node, segment, tube, flags | kind << 2 | count << 4
+flat out ivec4 tubeInfoVSOutput; // first node, first node, tube, flags | kind << 2 | count << 4
 out vec4 tubeColorVSOutput;      // (made by the evaluation stage)
 out vec4 tubeAxisVSOutput;       // unit tangent (view coordinates), s
 
@@ -39,24 +39,19 @@ out vec4 tubeAxisVSOutput;       // unit tangent (view coordinates), s
 
 void main()
 {
-  int segment;
+  int node;
   int count = 1;
   if (tubeChunks != 0)
   {
-    segment = int(texelFetch(tubeInstances, tubeListOffset + 2 * gl_InstanceID).x);
+    node = int(texelFetch(tubeInstances, tubeListOffset + 2 * gl_InstanceID).x);
     count = int(texelFetch(tubeInstances, tubeListOffset + 2 * gl_InstanceID + 1).x);
   }
   else
   {
-    segment = int(texelFetch(tubeInstances, tubeListOffset + gl_InstanceID).x);
+    node = int(texelFetch(tubeInstances, tubeListOffset + gl_InstanceID).x);
   }
-  uvec2 sd = texelFetch(tubeSegments, segment).xy;
-  int node = int(sd.x & 0x3FFFFFFFu);
-  int flags = int(sd.x >> 30u);
-  if (count > 1)
-  {
-    flags = (flags & 1) | (int(texelFetch(tubeSegments, segment + count - 1).x >> 30u) & 2);
-  }
+  int flags = tubeRunFlags(node, count);
+  int tube = tubeOfNode(node);
 
   int perRing = tubeSides + 1;
   if (tubeSides == 1)
@@ -68,7 +63,7 @@ void main()
     vertexVCVSOutput = vec4(0.0, 0.0, 0.0, 1.0);
     tubeNormalVCVSOutput = vec3(0.0, 0.0, 1.0);
     tubeTVSOutput = capKind == 0 ? float(ring) / float(tubeRings - 1) : float(capKind - 1);
-    tubeInfoVSOutput = ivec4(node, segment, int(sd.y), flags | (capKind << 2) | (count << 4));
+    tubeInfoVSOutput = ivec4(node, node, tube, flags | (capKind << 2) | (count << 4));
     tubeAxisVSOutput = vec4(0.0);
     tubeColorVSOutput = vec4(1.0);
     gl_Position = vec4(0.0, 0.0, 0.0, 1.0);
@@ -119,7 +114,7 @@ void main()
   vertexVCVSOutput = vec4(position, 1.0);
   tubeNormalVCVSOutput = normal;
   tubeTVSOutput = t;
-  tubeInfoVSOutput = ivec4(node, segment, int(sd.y), flags | (kind << 2) | (1 << 4));
+  tubeInfoVSOutput = ivec4(node, node, tube, flags | (kind << 2) | (1 << 4));
   tubeAxisVSOutput = vec4(unitTangent, s);
   tubeColorVSOutput = vec4(1.0);
   gl_Position = vec4(position, 1.0);

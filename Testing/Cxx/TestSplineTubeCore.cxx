@@ -113,6 +113,75 @@ Vec HermiteRef(const Vec& p0, const Vec& m0, const Vec& p1, const Vec& m1, doubl
   return r;
 }
 
+
+/// The core's node data as arrays (read through its accessors): positions
+/// (3), derivatives of the position spline (3), radii and their derivatives
+/// (2), rotation-minimizing frames (3), node scalars (1).
+vtkSmartPointer<vtkFloatArray> NodeArray(vtkSplineTubeCore* core, int which)
+{
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  const int comps = which == 2 ? 2 : (which == 4 ? 1 : 3);
+  a->SetNumberOfComponents(comps);
+  a->SetNumberOfTuples(core->GetNumberOfNodes());
+  for (vtkIdType t = 0; t < core->GetNumberOfTubes(); ++t)
+  {
+    const vtkIdType first = core->GetTubeFirstNode(t);
+    const vtkIdType n = core->GetTubeNumberOfNodes(t);
+    std::vector<double> p(4 * n), m(4 * n), f(3 * n);
+    core->GetTubeNodes(t, 0, n, p.data(), m.data());
+    if (which == 3)
+    {
+      core->GetTubeFrames(t, f.data());
+    }
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      for (int c = 0; c < comps; ++c)
+      {
+        double v = 0.0;
+        switch (which)
+        {
+          case 0:
+            v = p[4 * k + c];
+            break;
+          case 1:
+            v = m[4 * k + c];
+            break;
+          case 2:
+            v = c == 0 ? p[4 * k + 3] : m[4 * k + 3];
+            break;
+          case 3:
+            v = f[3 * k + c];
+            break;
+          default:
+            v = core->GetNodeScalar(first + k);
+        }
+        a->SetComponent(first + k, c, v);
+      }
+    }
+  }
+  return a;
+}
+vtkSmartPointer<vtkFloatArray> Positions(vtkSplineTubeCore* core)
+{
+  return NodeArray(core, 0);
+}
+vtkSmartPointer<vtkFloatArray> Tangents(vtkSplineTubeCore* core)
+{
+  return NodeArray(core, 1);
+}
+vtkSmartPointer<vtkFloatArray> Radii(vtkSplineTubeCore* core)
+{
+  return NodeArray(core, 2);
+}
+vtkSmartPointer<vtkFloatArray> Frames(vtkSplineTubeCore* core)
+{
+  return NodeArray(core, 3);
+}
+vtkSmartPointer<vtkFloatArray> Scalars(vtkSplineTubeCore* core)
+{
+  return NodeArray(core, 4);
+}
+
 Vec NodeVec(vtkFloatArray* a, vtkIdType i)
 {
   return { a->GetComponent(i, 0), a->GetComponent(i, 1), a->GetComponent(i, 2) };
@@ -148,7 +217,7 @@ void TestHermite(SplineVizTestStatus& status)
     {
       expected = Scale(Sub(pts[i + 1], pts[i - 1]), 0.5);
     }
-    const Vec got = NodeVec(core->GetNodeTangents(), i);
+    const Vec got = NodeVec(Tangents(core), i);
     SV_CHECK_NEAR(status, Norm(Sub(got, expected)), 0.0, 1e-5);
   }
 
@@ -160,14 +229,14 @@ void TestHermite(SplineVizTestStatus& status)
     core->EvaluateSegment(s, 0.0, p, d, &r, &dr);
     SV_CHECK_NEAR(status, Norm(Sub({ p[0], p[1], p[2] }, pts[s])), 0.0, 1e-6);
     SV_CHECK_NEAR(
-      status, Norm(Sub({ d[0], d[1], d[2] }, NodeVec(core->GetNodeTangents(), s))), 0.0, 1e-6);
+      status, Norm(Sub({ d[0], d[1], d[2] }, NodeVec(Tangents(core), s))), 0.0, 1e-6);
     core->EvaluateSegment(s, 1.0, p, d, &r, &dr);
     SV_CHECK_NEAR(status, Norm(Sub({ p[0], p[1], p[2] }, pts[s + 1])), 0.0, 1e-6);
     SV_CHECK_NEAR(
-      status, Norm(Sub({ d[0], d[1], d[2] }, NodeVec(core->GetNodeTangents(), s + 1))), 0.0, 1e-6);
+      status, Norm(Sub({ d[0], d[1], d[2] }, NodeVec(Tangents(core), s + 1))), 0.0, 1e-6);
     core->EvaluateSegment(s, 0.3, p, nullptr, nullptr, nullptr);
-    const Vec ref = HermiteRef(pts[s], NodeVec(core->GetNodeTangents(), s), pts[s + 1],
-      NodeVec(core->GetNodeTangents(), s + 1), 0.3);
+    const Vec ref = HermiteRef(pts[s], NodeVec(Tangents(core), s), pts[s + 1],
+      NodeVec(Tangents(core), s + 1), 0.3);
     SV_CHECK_NEAR(status, Norm(Sub({ p[0], p[1], p[2] }, ref)), 0.0, 1e-6);
   }
 
@@ -183,7 +252,7 @@ void TestHermite(SplineVizTestStatus& status)
   for (int i = 0; i < 6; ++i)
   {
     SV_CHECK_NEAR(status,
-      Norm(Sub(NodeVec(line->GetNodeTangents(), i), Sub(straight[1], straight[0]))), 0.0, 1e-6);
+      Norm(Sub(NodeVec(Tangents(line), i), Sub(straight[1], straight[0]))), 0.0, 1e-6);
   }
 }
 
@@ -194,11 +263,11 @@ void TestHermite(SplineVizTestStatus& status)
 /// vector. Returns the largest angle (radians) between reference and core.
 double CompareWithReferenceFrames(vtkSplineTubeCore* core, vtkIdType tube, int steps)
 {
-  const vtkIdType first = core->GetTubeFirstNodes()->GetValue(tube);
-  const vtkIdType n = core->GetTubeNumberOfNodes()->GetValue(tube);
-  vtkFloatArray* P = core->GetNodePositions();
-  vtkFloatArray* M = core->GetNodeTangents();
-  Vec r = NodeVec(core->GetNodeFrames(), first);
+  const vtkIdType first = core->GetTubeFirstNode(tube);
+  const vtkIdType n = core->GetTubeNumberOfNodes(tube);
+  vtkSmartPointer<vtkFloatArray> P = Positions(core);
+  vtkSmartPointer<vtkFloatArray> M = Tangents(core);
+  Vec r = NodeVec(Frames(core), first);
   double worst = 0.0;
   for (vtkIdType i = first; i + 1 < first + n; ++i)
   {
@@ -221,7 +290,7 @@ double CompareWithReferenceFrames(vtkSplineTubeCore* core, vtkIdType tube, int s
       r = Unit(Sub(r, Scale(tangent, Dot(r, tangent))));
       prev = cur;
     }
-    const Vec got = NodeVec(core->GetNodeFrames(), i + 1);
+    const Vec got = NodeVec(Frames(core), i + 1);
     const double c = std::max(-1.0, std::min(1.0, Dot(Unit(got), r)));
     worst = std::max(worst, std::acos(c));
   }
@@ -234,8 +303,8 @@ void CheckOrthonormalFrames(SplineVizTestStatus& status, vtkSplineTubeCore* core
   double worstDot = 0.0;
   for (vtkIdType i = 0; i < core->GetNumberOfNodes(); ++i)
   {
-    const Vec f = NodeVec(core->GetNodeFrames(), i);
-    const Vec t = Unit(NodeVec(core->GetNodeTangents(), i));
+    const Vec f = NodeVec(Frames(core), i);
+    const Vec t = Unit(NodeVec(Tangents(core), i));
     worstLength = std::max(worstLength, std::abs(Norm(f) - 1.0));
     worstDot = std::max(worstDot, std::abs(Dot(f, t)));
   }
@@ -266,11 +335,11 @@ void TestFrames(SplineVizTestStatus& status)
     core->Build();
     CheckOrthonormalFrames(status, core);
     const Vec normal = { 0, 0, 1 };
-    const double a0 = Dot(NodeVec(core->GetNodeFrames(), 0), normal);
+    const double a0 = Dot(NodeVec(Frames(core), 0), normal);
     double worst = 0.0;
     for (vtkIdType i = 0; i < core->GetNumberOfNodes(); ++i)
     {
-      worst = std::max(worst, std::abs(Dot(NodeVec(core->GetNodeFrames(), i), normal) - a0));
+      worst = std::max(worst, std::abs(Dot(NodeVec(Frames(core), i), normal) - a0));
     }
     SV_CHECK_MSG(status, worst < 1e-4, "planar frame drifts from the normal by " << worst);
     const double angle = CompareWithReferenceFrames(core, 0, 20000);
@@ -445,18 +514,18 @@ void TestSplit(SplineVizTestStatus& status)
   double worst = 0.0;
   for (vtkIdType s = 0; s < core->GetNumberOfSegments(); ++s)
   {
-    const vtkIdType i = core->GetSegmentFirstNodes()->GetValue(s);
+    const vtkIdType i = core->GetSegmentFirstNode(s);
     auto node = [&](vtkIdType j)
     {
-      return vec4(core->GetNodePositions()->GetComponent(j, 0),
-        core->GetNodePositions()->GetComponent(j, 1), core->GetNodePositions()->GetComponent(j, 2),
-        core->GetNodeRadii()->GetComponent(j, 0));
+      return vec4(Positions(core)->GetComponent(j, 0),
+        Positions(core)->GetComponent(j, 1), Positions(core)->GetComponent(j, 2),
+        Radii(core)->GetComponent(j, 0));
     };
     auto deriv = [&](vtkIdType j)
     {
-      return vec4(core->GetNodeTangents()->GetComponent(j, 0),
-        core->GetNodeTangents()->GetComponent(j, 1), core->GetNodeTangents()->GetComponent(j, 2),
-        core->GetNodeRadii()->GetComponent(j, 1));
+      return vec4(Tangents(core)->GetComponent(j, 0),
+        Tangents(core)->GetComponent(j, 1), Tangents(core)->GetComponent(j, 2),
+        Radii(core)->GetComponent(j, 1));
     };
     worst = std::max(worst, SplitDeviation(node(i), deriv(i), node(i + 1), deriv(i + 1), 2) / 0.02);
   }
@@ -539,18 +608,18 @@ void TestBoxes(SplineVizTestStatus& status)
   core->Build();
   for (vtkIdType s = 0; s < core->GetNumberOfSegments(); ++s)
   {
-    const vtkIdType i = core->GetSegmentFirstNodes()->GetValue(s);
+    const vtkIdType i = core->GetSegmentFirstNode(s);
     auto node = [&](vtkIdType j)
     {
-      return vec4(core->GetNodePositions()->GetComponent(j, 0),
-        core->GetNodePositions()->GetComponent(j, 1), core->GetNodePositions()->GetComponent(j, 2),
-        core->GetNodeRadii()->GetComponent(j, 0));
+      return vec4(Positions(core)->GetComponent(j, 0),
+        Positions(core)->GetComponent(j, 1), Positions(core)->GetComponent(j, 2),
+        Radii(core)->GetComponent(j, 0));
     };
     auto deriv = [&](vtkIdType j)
     {
-      return vec4(core->GetNodeTangents()->GetComponent(j, 0),
-        core->GetNodeTangents()->GetComponent(j, 1), core->GetNodeTangents()->GetComponent(j, 2),
-        core->GetNodeRadii()->GetComponent(j, 1));
+      return vec4(Tangents(core)->GetComponent(j, 0),
+        Tangents(core)->GetComponent(j, 1), Tangents(core)->GetComponent(j, 2),
+        Radii(core)->GetComponent(j, 1));
     };
     for (int k = 0; k < 2; ++k)
     {
@@ -583,16 +652,16 @@ void TestSegmentTable(SplineVizTestStatus& status)
   vtkIdType s = 0;
   for (vtkIdType t = 0; t < core->GetNumberOfTubes(); ++t)
   {
-    const vtkIdType first = core->GetTubeFirstNodes()->GetValue(t);
-    const vtkIdType n = core->GetTubeNumberOfNodes()->GetValue(t);
+    const vtkIdType first = core->GetTubeFirstNode(t);
+    const vtkIdType n = core->GetTubeNumberOfNodes(t);
     for (vtkIdType k = 0; k + 1 < n; ++k, ++s)
     {
-      SV_CHECK(status, core->GetSegmentFirstNodes()->GetValue(s) == first + k);
-      const int flags = core->GetSegmentFlags()->GetValue(s);
+      SV_CHECK(status, core->GetSegmentFirstNode(s) == first + k);
+      const int flags = core->GetSegmentFlags(s);
       SV_CHECK(status, ((flags & vtkSplineTubeCore::TUBE_START) != 0) == (k == 0));
       SV_CHECK(status, ((flags & vtkSplineTubeCore::TUBE_END) != 0) == (k + 2 == n));
-      SV_CHECK(status, core->GetSegmentCellIds()->GetValue(s) == t % 30);
-      SV_CHECK(status, core->GetSegmentBlockIds()->GetValue(s) == (t < 30 ? 3u : 4u));
+      SV_CHECK(status, core->GetTubeCellId(core->GetTubeOfNode(core->GetSegmentFirstNode(s))) == t % 30);
+      SV_CHECK(status, core->GetTubeBlockId(core->GetTubeOfNode(core->GetSegmentFirstNode(s))) == (t < 30 ? 3u : 4u));
     }
   }
   SV_CHECK(status, s == core->GetNumberOfSegments());
@@ -654,8 +723,8 @@ void TestDegenerateInput(SplineVizTestStatus& status)
   const std::vector<double> radii = { 0.1, 0.2, 0.3 };
   core->AddPolyData(MakeLine({ { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 } }, &radii), nullptr);
   core->Build();
-  SV_CHECK_NEAR(status, core->GetNodeRadii()->GetComponent(2, 0), 0.6, 1e-6);
-  SV_CHECK_NEAR(status, core->GetNodeRadii()->GetComponent(1, 1), 0.2, 1e-6);
+  SV_CHECK_NEAR(status, Radii(core)->GetComponent(2, 0), 0.6, 1e-6);
+  SV_CHECK_NEAR(status, Radii(core)->GetComponent(1, 1), 0.2, 1e-6);
   SV_CHECK_NEAR(status, core->GetMaximumRadius(), 0.6, 1e-6);
 
   // Missing radius array: an error, nothing added.
@@ -727,7 +796,7 @@ void TestNodeScalars(SplineVizTestStatus& status)
   core->AddPolyData(line, nullptr);
   core->AddPolyData(second, nullptr);
   core->Build();
-  vtkFloatArray* values = core->GetNodeScalars();
+  vtkSmartPointer<vtkFloatArray> values = Scalars(core);
   SV_CHECK(status, core->GetNumberOfNodes() == 5);
   SV_CHECK(status, values->GetNumberOfTuples() == 5);
   // The merged point keeps the first of the repeated values.

@@ -227,7 +227,6 @@ void TestFixUp(SplineVizTestStatus& status)
   Random random(3);
   vtkNew<vtkSplineTubeCore> core;
   core->SetRadiusArrayName("Radius");
-  core->ComputeFramesOff();
   core->AddPolyData(RandomLines(random), nullptr);
   core->Build();
   const double shift[3] = { 0.3, -0.2, 0.1 };
@@ -235,10 +234,20 @@ void TestFixUp(SplineVizTestStatus& status)
   fixUp.Build(core, shift);
   const vtkIdType numTubes = core->GetNumberOfTubes();
   const vtkIdType numNodes = core->GetNumberOfNodes();
-  const float* P = core->GetNodePositions()->GetPointer(0);
-  const float* R = core->GetNodeRadii()->GetPointer(0);
-  const std::vector<float>& T = fixUp.GetTangents();
-  SV_CHECK(status, static_cast<vtkIdType>(T.size()) == 3 * numNodes);
+  // The nodes (positions, radii) and the fix-up's vertex tangents, read
+  // through the accessors, laid out 3, 2 and 3 per node.
+  std::vector<double> P(static_cast<size_t>(3 * numNodes));
+  std::vector<double> R(static_cast<size_t>(2 * numNodes));
+  std::vector<double> T(static_cast<size_t>(3 * numNodes));
+  for (vtkIdType i = 0; i < numNodes; ++i)
+  {
+    double p[4];
+    core->GetNode(i, p);
+    std::copy(p, p + 3, &P[3 * i]);
+    R[2 * i] = p[3];
+    fixUp.GetTangent(i, &T[3 * i]);
+    SV_CHECK(status, std::abs(glm::length(vec3(T[3 * i], T[3 * i + 1], T[3 * i + 2])) - 1.0) < 1e-9);
+  }
 
   // Batches tile the polylines: consecutive, sharing their end points, at
   // most 16 segments, tangents within 12 degrees of the first.
@@ -265,8 +274,8 @@ void TestFixUp(SplineVizTestStatus& status)
   }
   for (vtkIdType t = 0; t < numTubes; ++t)
   {
-    const vtkIdType first = core->GetTubeFirstNodes()->GetValue(t);
-    const vtkIdType n = core->GetTubeNumberOfNodes()->GetValue(t);
+    const vtkIdType first = core->GetTubeFirstNode(t);
+    const vtkIdType n = core->GetTubeNumberOfNodes(t);
     for (vtkIdType s = first; s + 1 < first + n; ++s)
     {
       SV_CHECK(status, segmentBatches[s] == 1);
@@ -317,14 +326,14 @@ void TestFixUp(SplineVizTestStatus& status)
     std::vector<int> counts;
     std::vector<std::uint32_t> segments;
     std::vector<std::uint32_t> joints;
-    fixUp.Classify(view, true, segments, joints);
     std::vector<std::uint32_t> all(static_cast<size_t>(fixUp.GetNumberOfBatches()));
     for (size_t b = 0; b < all.size(); ++b)
     {
       all[b] = static_cast<std::uint32_t>(b);
     }
     std::vector<std::uint32_t> caps;
-    fixUp.BuildStrips(all, firsts, counts, caps);
+    fixUp.BeginView(view, true);
+    fixUp.BuildDraws(all, firsts, counts, caps, segments, joints);
     SV_CHECK_MSG(status, static_cast<vtkIdType>(caps.size()) == 2 * numTubes,
       "view " << trial << ": " << caps.size() << " caps for " << numTubes << " polylines");
     const std::vector<unsigned char>& flags = fixUp.GetBatchFlags();
@@ -393,8 +402,8 @@ void TestFixUp(SplineVizTestStatus& status)
     long wrong = 0;
     for (vtkIdType t = 0; t < numTubes; ++t)
     {
-      const vtkIdType first = core->GetTubeFirstNodes()->GetValue(t);
-      const vtkIdType n = core->GetTubeNumberOfNodes()->GetValue(t);
+      const vtkIdType first = core->GetTubeFirstNode(t);
+      const vtkIdType n = core->GetTubeNumberOfNodes(t);
       for (vtkIdType i = first; i < first + n; ++i)
       {
         wrong += drawn[i] != (i + 1 < first + n ? 1 : 0) ? 1 : 0;
@@ -430,14 +439,14 @@ void TestFixUp(SplineVizTestStatus& status)
   std::vector<int> counts;
   std::vector<std::uint32_t> segments;
   std::vector<std::uint32_t> joints;
-  fixUp.Classify(view, false, segments, joints);
   std::vector<std::uint32_t> all(static_cast<size_t>(fixUp.GetNumberOfBatches()));
   for (size_t b = 0; b < all.size(); ++b)
   {
     all[b] = static_cast<std::uint32_t>(b);
   }
   std::vector<std::uint32_t> caps;
-  fixUp.BuildStrips(all, firsts, counts, caps);
+  fixUp.BeginView(view, false);
+  fixUp.BuildDraws(all, firsts, counts, caps, segments, joints);
   SV_CHECK(status, static_cast<vtkIdType>(firsts.size()) == numTubes);
   SV_CHECK(status, segments.empty() && joints.empty());
 }

@@ -39,6 +39,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 #include <cstdint>
 #include <iostream>
 
@@ -64,21 +65,21 @@ struct Segment
 
 Segment GetSegment(vtkSplineTubeCore* core, vtkIdType s)
 {
-  const vtkIdType i = core->GetSegmentFirstNodes()->GetValue(s);
-  const float* P = core->GetNodePositions()->GetPointer(0);
-  const float* M = core->GetNodeTangents()->GetPointer(0);
-  const float* R = core->GetNodeRadii()->GetPointer(0);
-  const float* F = core->GetNodeFrames()->GetPointer(0);
+  const vtkIdType i = core->GetSegmentFirstNode(s);
+  const vtkIdType tube = core->GetTubeOfNode(i);
+  const vtkIdType k = i - core->GetTubeFirstNode(tube);
+  double P[8];
+  double M[8];
+  core->GetTubeNodes(tube, k, 2, P, M);
+  std::vector<double> F(3 * core->GetTubeNumberOfNodes(tube));
+  core->GetTubeFrames(tube, F.data());
   Segment g;
-  auto node = [&](vtkIdType k) { return vec4(P[3 * k], P[3 * k + 1], P[3 * k + 2], R[2 * k]); };
-  auto deriv = [&](vtkIdType k)
-  { return vec4(M[3 * k], M[3 * k + 1], M[3 * k + 2], R[2 * k + 1]); };
-  g.p0 = node(i);
-  g.m0 = deriv(i);
-  g.p1 = node(i + 1);
-  g.m1 = deriv(i + 1);
-  g.f0 = vec3(F[3 * i], F[3 * i + 1], F[3 * i + 2]);
-  g.f1 = vec3(F[3 * i + 3], F[3 * i + 4], F[3 * i + 5]);
+  g.p0 = vec4(P[0], P[1], P[2], P[3]);
+  g.m0 = vec4(M[0], M[1], M[2], M[3]);
+  g.p1 = vec4(P[4], P[5], P[6], P[7]);
+  g.m1 = vec4(M[4], M[5], M[6], M[7]);
+  g.f0 = vec3(F[3 * k], F[3 * k + 1], F[3 * k + 2]);
+  g.f1 = vec3(F[3 * k + 3], F[3 * k + 4], F[3 * k + 5]);
   return g;
 }
 

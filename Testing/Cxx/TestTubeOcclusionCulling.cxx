@@ -133,7 +133,7 @@ void TestMapper(SplineVizTestStatus& status, const std::string& name, vtkSplineT
   renderer->AddActor(tubes);
   renderer->AddActor(sphere);
   vtkNew<vtkRenderWindow> window;
-  const int width = 500, height = 400;
+  const int width = 360, height = 300;
   window->SetSize(width, height);
   window->SetMultiSamples(0);
   window->AddRenderer(renderer);
@@ -161,7 +161,7 @@ void TestMapper(SplineVizTestStatus& status, const std::string& name, vtkSplineT
         what << ": " << hidden << " chunks hidden (expected " << (culled ? "some" : "none") << ")");
       const Difference d = Compare(on, off);
       Report(what + ", culling on vs off", d);
-      SV_CHECK_MSG(status, d.Covered > 10000, what << ": too little covered: " << d.Covered);
+      SV_CHECK_MSG(status, d.Covered > 5000, what << ": too little covered: " << d.Covered);
       // Equal up to rounding ties: at most 0.02 % of the covered pixels.
       SV_CHECK_MSG(status, d.Color <= d.Covered / 5000,
         what << ": culling changes the color of " << d.Color << " pixels");
@@ -177,17 +177,19 @@ void TestMapper(SplineVizTestStatus& status, const std::string& name, vtkSplineT
     camera->SetViewUp(0, 1, 0);
     camera->SetViewAngle(30);
     camera->SetParallelProjection(parallel);
-    camera->SetParallelScale(28.0);
+    camera->SetParallelScale(20.0);
     renderer->ResetCameraClippingRange();
   };
 
-  // The whole tractogram in perspective: culling must drop most chunks there.
-  view(0, 100.0);
+  // The whole tractogram in perspective: culling must drop a good share of
+  // the chunks there (a fifth of them at this small size: lines a pixel or
+  // two wide).
+  view(0, 70.0);
   const Frame reference = onOff("perspective", true);
   Grab(window);
   const double share = static_cast<double>(mapper->GetLastNumberOfChunksHidden()) /
     std::max<vtkIdType>(mapper->GetLastNumberOfChunksInFrustum(), 1);
-  SV_CHECK_MSG(status, share > 0.3, "only " << share << " of the chunks hidden");
+  SV_CHECK_MSG(status, share > 0.2, "only " << share << " of the chunks hidden");
   // Negative control: a bias hides visible chunks; the comparison must see it.
   mapper->SetOcclusionCullingDepthBias(0.05);
   Grab(window);
@@ -198,14 +200,14 @@ void TestMapper(SplineVizTestStatus& status, const std::string& name, vtkSplineT
   SV_CHECK_MSG(status, wrong.Color > wrong.Covered / 1000,
     "the comparison cannot tell visible chunks culled: " << wrong.Color << " pixels differ");
 
-  view(1, 100.0);
+  view(1, 70.0);
   onOff("parallel", true);
   // Among the lines: chunks around the eye are never hidden.
   view(0, 6.0);
   onOff("camera among the lines", true);
 
   // Depth peeling with a translucent sphere: the opaque lines are culled.
-  view(0, 100.0);
+  view(0, 70.0);
   renderer->SetUseDepthPeeling(1);
   renderer->SetMaximumNumberOfPeels(8);
   renderer->SetOcclusionRatio(0.0);
@@ -244,12 +246,12 @@ int TestTubeOcclusionCulling(int, char*[])
 {
   SplineVizTestStatus status;
   vtkNew<vtkSyntheticTractogramSource> source;
-  source->SetNumberOfStreamlines(1500);
+  source->SetNumberOfStreamlines(900);
   source->SetNumberOfBundles(12);
   source->SetMinimumPoints(30);
-  source->SetMaximumPoints(80);
-  source->SetBrainRadii(22.0, 26.0, 18.0);
-  source->SetBundleRadiusRange(1.5, 4.0);
+  source->SetMaximumPoints(60);
+  source->SetBrainRadii(15.0, 18.0, 12.0);
+  source->SetBundleRadiusRange(1.0, 2.5);
   source->Update();
   vtkPolyData* lines = source->GetOutput();
 

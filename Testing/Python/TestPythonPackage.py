@@ -40,5 +40,9 @@ core.SetRadiusArrayName("Radius")
 assert core.AddPolyData(out, None, 0)
 core.Build()
 assert core.GetNumberOfSegments() == 3530, core.GetNumberOfSegments()
-assert core.GetNodeFrames().GetNumberOfTuples() == 3771
+assert core.GetNumberOfNodes() == 3771, core.GetNumberOfNodes()
+assert core.GetNumberOfChunks() == core.GetTubeFirstChunks().GetValue(241)
+xyzr = [0.0] * 4
+core.GetNode(5, xyzr)
+assert xyzr[3] > 0.0, xyzr
 print("splineviz package OK:", ", ".join(splineviz.__all__))
