@@ -11,15 +11,21 @@ list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkIFEMBlockBuilder"
   "${SPLINEVIZ_FOLDER}/vtkIFEMFile"
   "${SPLINEVIZ_FOLDER}/vtkIFEMLagrangePatch")
-# Neuroimaging: NIfTI diffusion tensor volumes (on top of VTK's NIfTI reader)
-# and MRtrix .tck / TrackVis .trk tractograms, read and written.
+# Neuroimaging: NIfTI diffusion tensor volumes and scalar / vector volumes,
+# MRtrix .tck / TrackVis .trk tractograms, read and written.
 list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkNIfTITensorReader"
+  "${SPLINEVIZ_FOLDER}/vtkNIfTIVolumeReader"
   "${SPLINEVIZ_FOLDER}/vtkTractogramReader"
   "${SPLINEVIZ_FOLDER}/vtkTractogramWriter")
 # Plain C++ shared by the tractogram reader and writer: the headers of the
 # formats, byte order, the TrackVis voxel-mm to RAS+ mm map.
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkTractogramFormats")
+# Plain C++ NIfTI-1/2 file layer shared by the NIfTI readers: header parsing
+# and validation, the affine and the image placement, voxels (gzip through
+# VTK's zlib).
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkNIfTIFile")
 list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkSplineVizNameList.h")

@@ -1,21 +1,18 @@
 #include "vtkNIfTITensorReader.h"
 
 #include "vtkSplineVizNameList.h"
+#include "vtkSplineVizProgress.h"
 #include "vtkSplineVizTensorMath.h"
 
-#include "vtkCallbackCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMatrix4x4.h"
-#include "vtkIntArray.h"
-#include "vtkNIFTIImageHeader.h"
-#include "vtkNIFTIImageReader.h"
+#include "vtkNIfTIFile.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -25,10 +22,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cctype>
 #include <cstring>
-#include <fstream>
 #include <limits>
+#include <memory>
 #include <vector>
 
 vtkStandardNewMacro(vtkNIfTITensorReader);
@@ -37,303 +33,106 @@ namespace TM = vtkSplineVizTensorMath;
 
 namespace
 {
-// NIfTI-1 data type codes that cannot hold tensor components.
-constexpr int NIFTI_COMPLEX64 = 32;
-constexpr int NIFTI_COMPLEX128 = 1792;
-constexpr int NIFTI_COMPLEX256 = 2048;
-constexpr int NIFTI_RGB24 = 128;
-constexpr int NIFTI_RGBA32 = 2304;
-constexpr int NIFTI_FLOAT64 = 64;
-
-// Collects the messages of VTK's NIfTI reader (and its executive) so that
-// they become this reader's error, instead of being printed on their own.
-struct MessageCatcher
+// The volumes (indices over dimensions 4 to 7) holding the tensor
+// components: the 5th dimension's 6 or 9 (NIfTI standard; the first of
+// several 4th-dimension tensor volumes), else the 4th dimension's (FSL).
+// Empty when the file does not hold 6 or 9 components in one of them.
+std::vector<std::int64_t> TensorVolumes(const vtkNIfTIFile& file, bool& fourD)
 {
-  std::string Text;
-  vtkNew<vtkCallbackCommand> Command;
-  MessageCatcher()
+  const auto& d = file.GetHeader().Dim;
+  std::vector<std::int64_t> volumes;
+  fourD = false;
+  if (d[5] == 6 || d[5] == 9)
   {
-    this->Command->SetClientData(this);
-    this->Command->SetCallback(
-      [](vtkObject*, unsigned long, void* clientData, void* callData)
-      {
-        auto* self = static_cast<MessageCatcher*>(clientData);
-        if (callData && self->Text.empty())
-        {
-          std::string msg = static_cast<const char*>(callData);
-          // VTK's messages start with the file and line; keep the last line.
-          while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' '))
-          {
-            msg.pop_back();
-          }
-          const auto nl = msg.find_last_of('\n');
-          msg = nl == std::string::npos ? msg : msg.substr(nl + 1);
-          // and drop the "vtkNIFTIImageReader (0x...): " prefix
-          const auto tag = msg.find("): ");
-          if (tag != std::string::npos && msg.find(" (0x") < tag)
-          {
-            msg = msg.substr(tag + 3);
-          }
-          self->Text = msg;
-        }
-      });
+    for (std::int64_t c = 0; c < d[5]; ++c)
+    {
+      volumes.push_back(c * d[4]);
+    }
   }
-  void Watch(vtkAlgorithm* a)
+  else if (d[5] == 1 && (d[4] == 6 || d[4] == 9))
   {
-    a->AddObserver(vtkCommand::ErrorEvent, this->Command);
-    a->AddObserver(vtkCommand::WarningEvent, this->Command);
-    a->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->Command);
+    fourD = true;
+    for (std::int64_t c = 0; c < d[4]; ++c)
+    {
+      volumes.push_back(c);
+    }
   }
-};
+  return volumes;
+}
 
-// What a NIfTI header says about one volume.
-struct Volume
+bool HoldsTensors(int dataType)
 {
-  std::string FileName;
-  int Dims[3] = { 0, 0, 0 };
-  vtkTypeInt64 Dim4 = 1, Dim5 = 1;
-  int Components = 0;
-  bool TimeAsVector = false;
-  int DataType = 0;
-  double Slope = 1.0, Intercept = 0.0;
-  double A[4][4];            // voxel index -> world mm
-  bool Flip = false;         // output slice k' = nz - 1 - k
-  bool InternalFlip = false; // VTK's reader stores slice nz - 1 - k at k
+  return vtkNIfTIFile::GetElementsPerVoxel(dataType) == 1;
+}
+
+// A companion volume: its file, affine and the volumes that become its components.
+struct Companion
+{
+  std::string Name; // as given
+  vtkNIfTIFile File;
+  double A[4][4];
   double InvA[4][4];
+  std::vector<std::int64_t> Volumes;
 };
 
-// Inverts an affine (4x4, row-major); false when it is singular.
-bool Invert(const double m[4][4], double inv[4][4])
+// Opens a companion and checks everything that could stop it from being read
+// onto `points` output points (its header, affine, the memory, its voxels):
+// its first volume with all its vector components (the 5th dimension, else a
+// 4th dimension of 2 to 9).
+bool OpenCompanion(
+  const std::string& name, int source, double points, Companion& c, std::string& error)
 {
-  if (!(std::abs(vtkMatrix4x4::Determinant(&m[0][0])) > 0.0))
+  c.Name = name;
+  if (!c.File.Open(name, error))
   {
     return false;
   }
-  vtkMatrix4x4::Invert(&m[0][0], &inv[0][0]);
-  return true;
-}
-
-double Det3(const double m[4][4])
-{
-  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-    m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-    m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-}
-
-// Reads the header of `file` (through VTK's reader) and the affine chosen by `source`.
-bool ReadVolume(const std::string& file, int source, bool tensors, Volume& v, std::string& error)
-{
-  v = Volume();
-  v.FileName = file;
+  if (!c.File.ComputeAffine(source, c.A, error))
   {
-    std::ifstream probe(file, std::ios::in | std::ios::binary);
-    if (!probe)
-    {
-      error = "cannot open \"" + file + "\" (it does not exist or is not readable)";
-      return false;
-    }
-  }
-  vtkNew<vtkNIFTIImageReader> reader;
-  MessageCatcher catcher;
-  catcher.Watch(reader);
-  if (!reader->CanReadFile(file.c_str()))
-  {
-    error = "\"" + file + "\" is not a NIfTI-1/2 file (no valid header)";
+    error = "\"" + name + "\": " + error;
     return false;
   }
-  reader->SetFileName(file.c_str());
-  reader->UpdateInformation();
-  vtkNIFTIImageHeader* h = reader->GetNIFTIHeader();
-  if (!catcher.Text.empty() || !h)
+  vtkMatrix4x4::Invert(&c.A[0][0], &c.InvA[0][0]);
+  const vtkNIfTIFile::Header& h = c.File.GetHeader();
+  const auto& d = h.Dim;
+  const int elements = vtkNIfTIFile::GetElementsPerVoxel(h.DataType);
+  if (d[5] * elements > 65536)
   {
-    error = "\"" + file + "\": " + (catcher.Text.empty() ? "unreadable header" : catcher.Text);
+    error = "\"" + name + "\" has " + std::to_string(d[5] * elements) +
+      " components per voxel (more than 65536)";
     return false;
   }
-  const int ndim = static_cast<int>(h->GetDim(0));
-  for (int i = 0; i < 3; ++i)
+  c.Volumes.clear();
+  if (d[5] > 1)
   {
-    const vtkTypeInt64 d = i < ndim ? h->GetDim(i + 1) : 1;
-    if (d < 1 || d > (1 << 30))
+    for (std::int64_t q = 0; q < d[5]; ++q)
     {
-      error = "\"" + file + "\": bad dimension " + std::to_string(d);
-      return false;
-    }
-    v.Dims[i] = static_cast<int>(d);
-  }
-  v.Dim4 = ndim >= 4 ? std::max<vtkTypeInt64>(1, h->GetDim(4)) : 1;
-  v.Dim5 = ndim >= 5 ? std::max<vtkTypeInt64>(1, h->GetDim(5)) : 1;
-  v.DataType = h->GetDataType();
-  const double voxels = double(v.Dims[0]) * v.Dims[1] * v.Dims[2];
-  if (voxels > 2147483647.0)
-  {
-    error = "\"" + file + "\": more than 2^31 voxels";
-    return false;
-  }
-  if (tensors)
-  {
-    if (v.DataType == NIFTI_COMPLEX64 || v.DataType == NIFTI_COMPLEX128 ||
-      v.DataType == NIFTI_COMPLEX256 || v.DataType == NIFTI_RGB24 || v.DataType == NIFTI_RGBA32)
-    {
-      error = "\"" + file + "\": complex or RGB voxels (NIfTI datatype " +
-        std::to_string(v.DataType) + ") cannot hold tensor components";
-      return false;
-    }
-    if (v.Dim5 == 6 || v.Dim5 == 9)
-    {
-      v.Components = static_cast<int>(v.Dim5);
-      v.TimeAsVector = false; // the first of Dim4 tensor volumes
-    }
-    else if (v.Dim5 == 1 && (v.Dim4 == 6 || v.Dim4 == 9))
-    {
-      v.Components = static_cast<int>(v.Dim4);
-      v.TimeAsVector = true;
-    }
-    else
-    {
-      const vtkTypeInt64 comps = v.Dim5 > 1 ? v.Dim5 : v.Dim4;
-      error = "\"" + file + "\" is " + std::to_string(v.Dims[0]) + " x " +
-        std::to_string(v.Dims[1]) + " x " + std::to_string(v.Dims[2]) + " x " +
-        std::to_string(v.Dim4) + " x " + std::to_string(v.Dim5) + ": " + std::to_string(comps) +
-        " component(s), but a tensor volume needs 6 (symmetric) or 9 (full) components in its " +
-        "4th (X x Y x Z x 6, FSL) or 5th dimension (X x Y x Z x 1 x 6, NIfTI standard)";
-      return false;
+      c.Volumes.push_back(q * d[4]);
     }
   }
-  if (!tensors)
+  else if (d[4] > 1 && d[4] <= 9)
   {
-    // a companion: its vector components (4th dimension up to 9, or 5th)
-    v.TimeAsVector = v.Dim5 == 1 && v.Dim4 > 1 && v.Dim4 <= 9;
-  }
-  const double slope = h->GetSclSlope();
-  if (std::isfinite(slope) && slope != 0.0)
-  {
-    v.Slope = slope;
-    v.Intercept = std::isfinite(h->GetSclInter()) ? h->GetSclInter() : 0.0;
-  }
-
-  // The voxel -> world affine, in mm.
-  const int units = h->GetXYZTUnits() & 0x07;
-  const double toMM = units == 1 ? 1000.0 : (units == 3 ? 1e-3 : 1.0);
-  const int qcode = h->GetQFormCode(), scode = h->GetSFormCode();
-  int use = source;
-  if (use == vtkNIfTITensorReader::AFFINE_AUTOMATIC)
-  {
-    use = scode > 0
-      ? vtkNIfTITensorReader::AFFINE_SFORM
-      : (qcode > 0 ? vtkNIfTITensorReader::AFFINE_QFORM : vtkNIfTITensorReader::AFFINE_PIXDIM);
-  }
-  double pix[4];
-  for (int i = 0; i < 4; ++i)
-  {
-    pix[i] = h->GetPixDim(i);
-  }
-  double a[4][4] = {};
-  a[3][3] = 1.0;
-  if (use == vtkNIfTITensorReader::AFFINE_SFORM)
-  {
-    if (scode <= 0)
+    for (std::int64_t q = 0; q < d[4]; ++q)
     {
-      error = "\"" + file + "\" has no sform (sform_code 0)";
-      return false;
+      c.Volumes.push_back(q);
     }
-    double rows[3][4];
-    h->GetSRowX(rows[0]);
-    h->GetSRowY(rows[1]);
-    h->GetSRowZ(rows[2]);
-    for (int i = 0; i < 3; ++i)
-    {
-      for (int j = 0; j < 4; ++j)
-      {
-        a[i][j] = rows[i][j];
-      }
-    }
-  }
-  else if (use == vtkNIfTITensorReader::AFFINE_QFORM)
-  {
-    if (qcode <= 0)
-    {
-      error = "\"" + file + "\" has no qform (qform_code 0)";
-      return false;
-    }
-    const double b = h->GetQuaternB(), c = h->GetQuaternC(), d = h->GetQuaternD();
-    const double aa = std::sqrt(std::max(0.0, 1.0 - b * b - c * c - d * d));
-    const double r[3][3] = { { aa * aa + b * b - c * c - d * d, 2 * (b * c - aa * d),
-                               2 * (b * d + aa * c) },
-      { 2 * (b * c + aa * d), aa * aa + c * c - b * b - d * d, 2 * (c * d - aa * b) },
-      { 2 * (b * d - aa * c), 2 * (c * d + aa * b), aa * aa + d * d - c * c - b * b } };
-    const double qfac = pix[0] < 0 ? -1.0 : 1.0;
-    const double s[3] = { pix[1], pix[2], qfac * pix[3] };
-    for (int i = 0; i < 3; ++i)
-    {
-      for (int j = 0; j < 3; ++j)
-      {
-        a[i][j] = r[i][j] * s[j];
-      }
-    }
-    a[0][3] = h->GetQOffsetX();
-    a[1][3] = h->GetQOffsetY();
-    a[2][3] = h->GetQOffsetZ();
   }
   else
   {
-    for (int i = 0; i < 3; ++i)
-    {
-      a[i][i] = std::abs(pix[i + 1]) > 0 ? std::abs(pix[i + 1]) : 1.0;
-    }
+    c.Volumes.push_back(0);
   }
-  for (int i = 0; i < 3; ++i)
+  const bool doubles =
+    h.DataType == vtkNIfTIFile::FLOAT64 || h.DataType == vtkNIfTIFile::COMPLEX128;
+  const double volumes = static_cast<double>(c.Volumes.size());
+  const double bytes = static_cast<double>(c.File.GetNumberOfVoxels()) * volumes *
+      vtkNIfTIFile::GetValueSize(h.DataType) +
+    points * volumes * elements * (doubles ? 8.0 : 4.0);
+  if (!vtkSplineVizProgress::CheckOutputSize(bytes, 1.0, "the companion volume", &error))
   {
-    for (int j = 0; j < 4; ++j)
-    {
-      a[i][j] *= toMM;
-      if (!std::isfinite(a[i][j]))
-      {
-        error = "\"" + file + "\": the voxel to world transform has a non-finite value";
-        return false;
-      }
-    }
-  }
-  std::memcpy(v.A, a, sizeof(a));
-  if (!Invert(v.A, v.InvA))
-  {
-    error = "\"" + file + "\": the voxel to world transform is singular";
+    error = "\"" + name + "\": " + error;
     return false;
   }
-  v.Flip = Det3(v.A) < 0;
-  v.InternalFlip = reader->GetQFac() < 0;
-  return true;
-}
-
-// NIfTI slice k of a volume -> the slice VTK's reader stored it at.
-inline int InternalSlice(const Volume& v, int k)
-{
-  return v.InternalFlip ? v.Dims[2] - 1 - k : k;
-}
-
-// Reads all voxels of a volume. (Not a sub-extent: VTK 9.2's NIfTI reader
-// returns the mirrored slab for sub-extents of files it stores in reverse
-// slice order, qfac = -1; the whole file is decompressed anyway.)
-vtkSmartPointer<vtkImageData> ReadVoxels(const Volume& v, std::string& error)
-{
-  vtkNew<vtkNIFTIImageReader> reader;
-  MessageCatcher catcher;
-  catcher.Watch(reader);
-  reader->SetFileName(v.FileName.c_str());
-  reader->SetTimeAsVector(v.TimeAsVector);
-  reader->Update();
-  vtkImageData* image = reader->GetOutput();
-  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
-  const vtkIdType expected = vtkIdType(v.Dims[0]) * v.Dims[1] * v.Dims[2];
-  const int* e = image ? image->GetExtent() : nullptr;
-  if (!catcher.Text.empty() || !scalars || scalars->GetNumberOfTuples() != expected || e[0] != 0 ||
-    e[2] != 0 || e[4] != 0)
-  {
-    error = "cannot read the voxels of \"" + v.FileName + "\": " +
-      (catcher.Text.empty() ? std::string("the file is truncated or damaged") : catcher.Text);
-    return nullptr;
-  }
-  vtkSmartPointer<vtkImageData> result = image;
-  return result;
+  return c.File.VerifyData(error);
 }
 }
 
@@ -341,10 +140,22 @@ vtkSmartPointer<vtkImageData> ReadVoxels(const Volume& v, std::string& error)
 struct vtkNIfTITensorReader::Internals
 {
   vtkSplineVizNameList Companions;
-  Volume Tensors;
+  std::vector<std::unique_ptr<Companion>> CompanionFiles; // opened by RequestInformation
+  vtkNIfTIFile File;
+  std::vector<std::int64_t> Volumes; // the volumes of the tensor components
+  int Size[3] = { 0, 0, 0 };
   int Layout = -1;
+  double A[4][4];
+  vtkNIfTIFile::Placement Place;
   double R[3][3]; // tensor frame -> world
-  double Origin[3], Spacing[3], Direction[9];
+
+  /// The file slice of output slice k.
+  int FileSlice(int k) const { return vtkNIfTIFile::FileSlice(this->Place, this->Size[2], k); }
+  void ComputeTensorRotation(int frame);
+  vtkSmartPointer<vtkDataArray> ComputeTensors(
+    const vtkNIfTIFile::Voxels& raw, const int ext[6], const char* name);
+  vtkSmartPointer<vtkDataArray> ReadCompanion(
+    Companion& cv, const int ext[6], vtkAlgorithm* algorithm, std::string& error);
 };
 
 //------------------------------------------------------------------------------
@@ -389,19 +200,7 @@ const char* vtkNIfTITensorReader::GetCompanionFileName(int i) const
 
 std::string vtkNIfTITensorReader::CompanionArrayName(const std::string& fileName)
 {
-  const auto slash = fileName.find_last_of("/\\");
-  std::string name = slash == std::string::npos ? fileName : fileName.substr(slash + 1);
-  std::string lower = name;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  for (const char* ext : { ".nii.gz", ".nii", ".img.gz", ".img", ".hdr.gz", ".hdr" })
-  {
-    const std::size_t n = std::strlen(ext);
-    if (lower.size() > n && lower.compare(lower.size() - n, n, ext) == 0)
-    {
-      return name.substr(0, name.size() - n);
-    }
-  }
+  const std::string name = vtkNIfTIFile::BaseName(fileName);
   return name.empty() ? std::string("Companion") : name;
 }
 
@@ -411,8 +210,13 @@ int vtkNIfTITensorReader::CanReadFile(const char* fileName)
   {
     return 0;
   }
-  vtkNew<vtkNIFTIImageReader> reader;
-  return reader->CanReadFile(fileName) > 0 ? 1 : 0;
+  vtkNIfTIFile file;
+  std::string error;
+  bool fourD = false;
+  return file.Open(fileName, error) && HoldsTensors(file.GetHeader().DataType) &&
+      !TensorVolumes(file, fourD).empty()
+    ? 1
+    : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -423,10 +227,7 @@ int vtkNIfTITensorReader::RequestInformation(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   auto fail = [this, outInfo](const std::string& msg)
   {
-    if (vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT()))
-    {
-      output->Initialize(); // no stale data from an earlier read
-    }
+    vtkNIfTIFile::SetEmptyOutputInformation(outInfo);
     this->LastError = msg;
     vtkErrorMacro(<< msg);
     return 0;
@@ -436,69 +237,86 @@ int vtkNIfTITensorReader::RequestInformation(
     return fail("no file name was given");
   }
   Internals& in = *this->Internal;
+  const std::string file = this->FileName;
   std::string error;
-  if (!ReadVolume(this->FileName, this->AffineSource, true, in.Tensors, error))
+  if (!in.File.Open(file, error))
   {
     return fail(error);
   }
-  const Volume& v = in.Tensors;
+  const vtkNIfTIFile::Header& h = in.File.GetHeader();
+  if (!HoldsTensors(h.DataType))
+  {
+    return fail("\"" + file + "\": complex or RGB voxels (NIfTI datatype " +
+      std::to_string(h.DataType) + ") cannot hold tensor components");
+  }
+  bool fourD = false;
+  in.Volumes = TensorVolumes(in.File, fourD);
+  if (in.Volumes.empty())
+  {
+    const std::int64_t comps = h.Dim[5] > 1 ? h.Dim[5] : h.Dim[4];
+    return fail("\"" + file + "\" is " + std::to_string(h.Dim[1]) + " x " +
+      std::to_string(h.Dim[2]) + " x " + std::to_string(h.Dim[3]) + " x " +
+      std::to_string(h.Dim[4]) + " x " + std::to_string(h.Dim[5]) + ": " + std::to_string(comps) +
+      " component(s), but a tensor volume needs 6 (symmetric) or 9 (full) components in its " +
+      "4th (X x Y x Z x 6, FSL) or 5th dimension (X x Y x Z x 1 x 6, NIfTI standard)");
+  }
+  const int nc = static_cast<int>(in.Volumes.size());
   int layout = this->TensorLayout;
   if (layout == LAYOUT_AUTOMATIC)
   {
-    layout = v.TimeAsVector ? TM::SYMMETRIC_FSL : TM::SYMMETRIC_NIFTI;
+    layout = fourD ? TM::SYMMETRIC_FSL : TM::SYMMETRIC_NIFTI;
   }
-  in.Layout = TM::ResolveLayout(layout, v.Components); // 9 components: always FULL_9
+  in.Layout = TM::ResolveLayout(layout, nc); // 9 components: always FULL_9
   if (in.Layout < 0)
   {
-    return fail(std::string("\"") + this->FileName + "\" has " + std::to_string(v.Components) +
+    return fail("\"" + file + "\" has " + std::to_string(nc) +
       " tensor components, which cannot be read in the layout " + TM::GetLayoutName(layout));
   }
-  if (v.Dim5 > 1 && v.Dim4 > 1)
+  if (h.Dim[5] > 1 && h.Dim[4] > 1)
   {
-    vtkWarningMacro(<< this->FileName << " holds " << v.Dim4
-                    << " tensor volumes; the first is read");
+    vtkWarningMacro(<< file << " holds " << h.Dim[4] << " tensor volumes; the first is read");
   }
-
-  // Output geometry: A, with the slices reversed when det A < 0.
-  double a[4][4];
-  std::memcpy(a, v.A, sizeof(a));
-  if (v.Flip)
+  if (!in.File.ComputeAffine(this->AffineSource, in.A, error))
   {
-    for (int i = 0; i < 3; ++i)
+    return fail("\"" + file + "\": " + error);
+  }
+  // Everything that can go wrong is found here, not in RequestData (see
+  // vtkNIfTIFile::VerifyData): the memory of the whole image (the voxels
+  // read and the tensors), the voxels being there, the companions.
+  const bool doubles = h.DataType == vtkNIfTIFile::FLOAT64;
+  const double points = static_cast<double>(in.File.GetNumberOfVoxels());
+  if (!vtkSplineVizProgress::CheckOutputSize(points,
+        nc * vtkNIfTIFile::GetValueSize(h.DataType) + (doubles ? 48.0 : 24.0), "the tensors",
+        &error))
+  {
+    return fail("\"" + file + "\": " + error);
+  }
+  if (!in.File.VerifyData(error))
+  {
+    return fail(error);
+  }
+  const std::size_t nCompanions = in.Companions.Names.size();
+  in.CompanionFiles.resize(nCompanions);
+  for (std::size_t f = 0; f < nCompanions; ++f)
+  {
+    if (!in.CompanionFiles[f])
     {
-      a[i][3] += a[i][2] * (v.Dims[2] - 1);
-      a[i][2] = -a[i][2];
+      in.CompanionFiles[f].reset(new Companion);
     }
-  }
-  for (int j = 0; j < 3; ++j)
-  {
-    const double s = std::sqrt(a[0][j] * a[0][j] + a[1][j] * a[1][j] + a[2][j] * a[2][j]);
-    in.Spacing[j] = s;
-    for (int i = 0; i < 3; ++i)
+    if (!OpenCompanion(
+          in.Companions.Names[f], this->AffineSource, points, *in.CompanionFiles[f], error))
     {
-      in.Direction[3 * i + j] = a[i][j] / s;
+      return fail("companion volume: " + error);
     }
   }
   for (int i = 0; i < 3; ++i)
   {
-    in.Origin[i] = a[i][3];
+    in.Size[i] = in.File.GetSize(i);
   }
-  double shear = 0.0;
-  for (int p = 0; p < 3; ++p)
+  vtkNIfTIFile::ComputePlacement(in.A, in.Size[2], in.Place);
+  if (in.Place.Shear > 1e-4)
   {
-    for (int q = p + 1; q < 3; ++q)
-    {
-      double dot = 0.0;
-      for (int i = 0; i < 3; ++i)
-      {
-        dot += in.Direction[3 * i + p] * in.Direction[3 * i + q];
-      }
-      shear = std::max(shear, std::abs(dot));
-    }
-  }
-  if (shear > 1e-4)
-  {
-    vtkWarningMacro(<< this->FileName
+    vtkWarningMacro(<< file
                     << ": the voxel to world transform has shear; the image's direction "
                        "matrix is not orthonormal");
   }
@@ -506,29 +324,30 @@ int vtkNIfTITensorReader::RequestInformation(
   {
     for (int j = 0; j < 4; ++j)
     {
-      this->Affine[4 * i + j] = v.A[i][j];
+      this->Affine[4 * i + j] = in.A[i][j];
     }
   }
+  in.ComputeTensorRotation(this->TensorFrame);
+  vtkNIfTIFile::SetOutputInformation(outInfo, in.Size, in.Place);
+  return 1;
+}
 
-  // The rotation of the tensors: the orthogonal polar factor of A's 3x3 part,
-  // M (M^T M)^(-1/2), through the eigen-decomposition of M^T M.
-  double mtm[6];
+//------------------------------------------------------------------------------
+void vtkNIfTITensorReader::Internals::ComputeTensorRotation(int frame)
+{
+  // The orthogonal polar factor of A's 3x3 part, M (M^T M)^(-1/2), through
+  // the eigen-decomposition of M^T M.
+  Internals& in = *this;
+  const double(*a)[4] = in.A;
+  double full[3][3];
+  for (int p = 0; p < 3; ++p)
   {
-    double full[3][3];
-    for (int p = 0; p < 3; ++p)
+    for (int q = 0; q < 3; ++q)
     {
-      for (int q = 0; q < 3; ++q)
-      {
-        full[p][q] = v.A[0][p] * v.A[0][q] + v.A[1][p] * v.A[1][q] + v.A[2][p] * v.A[2][q];
-      }
+      full[p][q] = a[0][p] * a[0][q] + a[1][p] * a[1][q] + a[2][p] * a[2][q];
     }
-    mtm[0] = full[0][0];
-    mtm[1] = full[1][1];
-    mtm[2] = full[2][2];
-    mtm[3] = full[0][1];
-    mtm[4] = full[1][2];
-    mtm[5] = full[0][2];
   }
+  const double mtm[6] = { full[0][0], full[1][1], full[2][2], full[0][1], full[1][2], full[0][2] };
   double values[3], vectors[3][3];
   TM::EigenDecomposition(mtm, values, vectors);
   double inverseRoot[3][3] = {};
@@ -547,18 +366,21 @@ int vtkNIfTITensorReader::RequestInformation(
   {
     for (int j = 0; j < 3; ++j)
     {
-      in.R[i][j] = v.A[i][0] * inverseRoot[0][j] + v.A[i][1] * inverseRoot[1][j] +
-        v.A[i][2] * inverseRoot[2][j];
+      in.R[i][j] =
+        a[i][0] * inverseRoot[0][j] + a[i][1] * inverseRoot[1][j] + a[i][2] * inverseRoot[2][j];
     }
   }
-  if (this->TensorFrame == FRAME_FSL && Det3(v.A) > 0)
+  const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+    a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+    a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  if (frame == FRAME_FSL && det > 0)
   {
     for (int i = 0; i < 3; ++i)
     {
       in.R[i][0] = -in.R[i][0]; // R diag(-1, 1, 1)
     }
   }
-  else if (this->TensorFrame == FRAME_WORLD)
+  else if (frame == FRAME_WORLD)
   {
     for (int i = 0; i < 3; ++i)
     {
@@ -568,14 +390,6 @@ int vtkNIfTITensorReader::RequestInformation(
       }
     }
   }
-
-  const int whole[6] = { 0, v.Dims[0] - 1, 0, v.Dims[1] - 1, 0, v.Dims[2] - 1 };
-  outInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole, 6);
-  outInfo->Set(vtkDataObject::ORIGIN(), in.Origin, 3);
-  outInfo->Set(vtkDataObject::SPACING(), in.Spacing, 3);
-  outInfo->Set(vtkDataObject::DIRECTION(), in.Direction, 9);
-  outInfo->Set(CAN_PRODUCE_SUB_EXTENT(), 1);
-  return 1;
 }
 
 //------------------------------------------------------------------------------
@@ -585,9 +399,9 @@ int vtkNIfTITensorReader::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkImageData* output = vtkImageData::GetData(outInfo);
   output->Initialize();
-  auto fail = [this, output](const std::string& msg)
+  auto fail = [this, outInfo](const std::string& msg)
   {
-    output->Initialize();
+    vtkNIfTIFile::SetEmptyOutputInformation(outInfo);
     this->LastError = msg;
     vtkErrorMacro(<< msg);
     return 0;
@@ -597,57 +411,84 @@ int vtkNIfTITensorReader::RequestData(
     return fail(this->LastError); // RequestInformation failed
   }
   Internals& in = *this->Internal;
-  const Volume& v = in.Tensors;
   int ext[6];
   outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), ext);
-  for (int i = 0; i < 3; ++i)
+  if (!vtkNIfTIFile::ClampExtent(ext, in.Size))
   {
-    ext[2 * i] = std::max(ext[2 * i], 0);
-    ext[2 * i + 1] = std::min(ext[2 * i + 1], v.Dims[i] - 1);
-    if (ext[2 * i] > ext[2 * i + 1])
-    {
-      return 1; // an empty piece
-    }
+    return 1; // an empty piece
   }
-  // Output slice k' is NIfTI slice k = nz - 1 - k' when flipped.
-  auto niftiSlice = [&v](int kOut) { return v.Flip ? v.Dims[2] - 1 - kOut : kOut; };
+  // The file slices of this piece (in reverse order when flipped).
+  const int k0 = std::min(in.FileSlice(ext[4]), in.FileSlice(ext[5]));
+  const int k1 = std::max(in.FileSlice(ext[4]), in.FileSlice(ext[5]));
+  in.File.Progress = [this](double f)
+  {
+    this->UpdateProgress(0.4 * f);
+    return !this->CheckAbort();
+  };
+  vtkNIfTIFile::Voxels raw;
   std::string error;
-  vtkSmartPointer<vtkImageData> raw = ReadVoxels(v, error);
-  if (!raw)
+  const bool read = in.File.ReadSlices(in.Volumes, k0, k1, raw, error);
+  in.File.Progress = nullptr;
+  if (!read)
   {
-    return fail(error);
-  }
-  vtkDataArray* comps = raw->GetPointData()->GetScalars();
-  if (comps->GetNumberOfComponents() != v.Components)
-  {
-    return fail("VTK's NIfTI reader gave " + std::to_string(comps->GetNumberOfComponents()) +
-      " components instead of " + std::to_string(v.Components));
+    return error == "aborted" ? (output->Initialize(), 1) : fail(error);
   }
   this->UpdateProgress(0.4);
-  if (this->GetAbortExecute())
+  vtkNIfTIFile::SetOutputGeometry(output, ext, in.Place);
+  vtkSmartPointer<vtkDataArray> tensors = in.ComputeTensors(raw, ext, this->TensorArrayName);
+  if (!tensors)
+  {
+    return fail("\"" + std::string(this->FileName) +
+      "\": the tensors would not fit in this "
+      "machine's memory");
+  }
+  raw = vtkNIfTIFile::Voxels();
+  output->GetPointData()->SetTensors(tensors);
+  this->UpdateProgress(0.7);
+  if (this->CheckAbort())
   {
     output->Initialize();
     return 1;
   }
 
-  output->SetExtent(ext);
-  output->SetOrigin(in.Origin);
-  output->SetSpacing(in.Spacing);
-  output->SetDirectionMatrix(in.Direction);
+  // Companion volumes, on this grid or resampled onto it.
+  const std::size_t nCompanions = in.CompanionFiles.size();
+  for (std::size_t f = 0; f < nCompanions; ++f)
+  {
+    vtkSmartPointer<vtkDataArray> array = in.ReadCompanion(*in.CompanionFiles[f], ext, this, error);
+    if (!array)
+    {
+      return error == "aborted" ? (output->Initialize(), 1) : fail("companion volume: " + error);
+    }
+    output->GetPointData()->AddArray(array);
+    this->UpdateProgress(0.7 + 0.3 * (f + 1) / nCompanions);
+    if (this->CheckAbort())
+    {
+      output->Initialize();
+      return 1;
+    }
+  }
+  vtkNIfTIFile::AddFieldData(output->GetFieldData(), in.A, in.Place.Flip);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ComputeTensors(
+  const vtkNIfTIFile::Voxels& raw, const int ext[6], const char* name)
+{
+  Internals& in = *this;
   const int nx = ext[1] - ext[0] + 1, ny = ext[3] - ext[2] + 1, nz = ext[5] - ext[4] + 1;
   const vtkIdType n = vtkIdType(nx) * ny * nz;
-  const int* rawExt = raw->GetExtent();
-  const vtkIdType rnx = rawExt[1] - rawExt[0] + 1, rny = rawExt[3] - rawExt[2] + 1;
-  // raw index of output point (i, j, k) (relative to ext)
-  auto rawIndex = [&](int i, int j, int k) -> vtkIdType
+  const bool doubles = in.File.GetHeader().DataType == vtkNIfTIFile::FLOAT64;
+  std::string error;
+  if (!vtkSplineVizProgress::CheckOutputSize(
+        static_cast<double>(n), doubles ? 48.0 : 24.0, "the tensors", &error))
   {
-    const int kInternal = InternalSlice(v, niftiSlice(ext[4] + k));
-    return (vtkIdType(kInternal - rawExt[4]) * rny + (ext[2] + j - rawExt[2])) * rnx +
-      (ext[0] + i - rawExt[0]);
-  };
-
+    return nullptr;
+  }
   vtkSmartPointer<vtkDataArray> tensors;
-  if (v.DataType == NIFTI_FLOAT64)
+  if (doubles)
   {
     tensors = vtkSmartPointer<vtkDoubleArray>::New();
   }
@@ -655,13 +496,14 @@ int vtkNIfTITensorReader::RequestData(
   {
     tensors = vtkSmartPointer<vtkFloatArray>::New();
   }
-  tensors->SetName(this->TensorArrayName ? this->TensorArrayName : "Tensors");
+  tensors->SetName(name ? name : "Tensors");
   tensors->SetNumberOfComponents(6);
   tensors->SetNumberOfTuples(n);
   const int layout = in.Layout;
   const double(*R)[3] = in.R;
-  const double slope = v.Slope, intercept = v.Intercept;
-  const int nc = v.Components;
+  const double slope = in.File.GetSlope(), intercept = in.File.GetIntercept();
+  const int nc = static_cast<int>(in.Volumes.size());
+  const int fileNX = in.Size[0];
   vtkSMPTools::For(0, n,
     [&](vtkIdType b, vtkIdType e)
     {
@@ -669,13 +511,12 @@ int vtkNIfTITensorReader::RequestData(
       const double nan = std::numeric_limits<double>::quiet_NaN();
       for (vtkIdType id = b; id < e; ++id)
       {
-        const int i = static_cast<int>(id % nx);
-        const int j = static_cast<int>((id / nx) % ny);
-        const int k = static_cast<int>(id / (vtkIdType(nx) * ny));
-        const vtkIdType r = rawIndex(i, j, k);
+        const int i = ext[0] + static_cast<int>(id % nx);
+        const int j = ext[2] + static_cast<int>((id / nx) % ny);
+        const int k = in.FileSlice(ext[4] + static_cast<int>(id / (vtkIdType(nx) * ny)));
         for (int q = 0; q < nc; ++q)
         {
-          c[q] = slope * comps->GetComponent(r, q) + intercept;
+          c[q] = slope * raw.Get(q, i, j, k, 0, fileNX) + intercept;
         }
         double out[6] = { nan, nan, nan, nan, nan, nan };
         if (TM::ToSymmetric(layout, c, t))
@@ -705,178 +546,150 @@ int vtkNIfTITensorReader::RequestData(
         tensors->SetTuple(id, out);
       }
     });
-  raw = nullptr;
-  output->GetPointData()->SetTensors(tensors);
-  this->UpdateProgress(0.7);
+  return tensors;
+}
 
-  // Companion volumes, on this grid or resampled onto it.
-  const std::size_t nCompanions = in.Companions.Names.size();
-  for (std::size_t f = 0; f < nCompanions; ++f)
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ReadCompanion(
+  Companion& cv, const int ext[6], vtkAlgorithm* algorithm, std::string& error)
+{
+  Internals& in = *this;
+  const std::string& name = cv.Name;
+  const vtkNIfTIFile::Header& ch = cv.File.GetHeader();
+  int size[3];
+  for (int p = 0; p < 3; ++p)
   {
-    Volume cv;
-    if (!ReadVolume(in.Companions.Names[f], this->AffineSource, false, cv, error))
+    size[p] = cv.File.GetSize(p);
+  }
+  bool sameGrid = size[0] == in.Size[0] && size[1] == in.Size[1] && size[2] == in.Size[2];
+  const double tolerance =
+    1e-3 * std::min({ in.Place.Spacing[0], in.Place.Spacing[1], in.Place.Spacing[2] });
+  for (int p = 0; p < 3 && sameGrid; ++p)
+  {
+    for (int q = 0; q < 4 && sameGrid; ++q)
     {
-      return fail("companion volume: " + error);
-    }
-    bool sameGrid = cv.Dims[0] == v.Dims[0] && cv.Dims[1] == v.Dims[1] && cv.Dims[2] == v.Dims[2];
-    const double tolerance = 1e-3 * std::min({ in.Spacing[0], in.Spacing[1], in.Spacing[2] });
-    for (int p = 0; p < 3 && sameGrid; ++p)
-    {
-      for (int q = 0; q < 4 && sameGrid; ++q)
-      {
-        sameGrid = std::abs(cv.A[p][q] - v.A[p][q]) <= tolerance;
-      }
-    }
-    vtkSmartPointer<vtkImageData> image = ReadVoxels(cv, error);
-    if (!image)
-    {
-      return fail("companion volume: " + error);
-    }
-    vtkDataArray* values = image->GetPointData()->GetScalars();
-    const int ncc = values->GetNumberOfComponents();
-    vtkSmartPointer<vtkDataArray> array;
-    if (values->GetDataType() == VTK_DOUBLE)
-    {
-      array = vtkSmartPointer<vtkDoubleArray>::New();
-    }
-    else
-    {
-      array = vtkSmartPointer<vtkFloatArray>::New();
-    }
-    array->SetName(CompanionArrayName(in.Companions.Names[f]).c_str());
-    array->SetNumberOfComponents(ncc);
-    array->SetNumberOfTuples(n);
-    const int* iext = image->GetExtent();
-    const vtkIdType inx = iext[1] - iext[0] + 1, iny = iext[3] - iext[2] + 1;
-    const double cs = cv.Slope, ci = cv.Intercept;
-    const bool nearest =
-      !(values->GetDataType() == VTK_FLOAT || values->GetDataType() == VTK_DOUBLE);
-    double toIndex[4][4]; // output index -> companion NIfTI index
-    {
-      // output index (i, j, k') -> world: origin + D diag(spacing) (i, j, k')
-      double o2w[4][4] = {};
-      for (int p = 0; p < 3; ++p)
-      {
-        for (int q = 0; q < 3; ++q)
-        {
-          o2w[p][q] = in.Direction[3 * p + q] * in.Spacing[q];
-        }
-        o2w[p][3] = in.Origin[p];
-      }
-      o2w[3][3] = 1.0;
-      for (int p = 0; p < 4; ++p)
-      {
-        for (int q = 0; q < 4; ++q)
-        {
-          toIndex[p][q] = cv.InvA[p][0] * o2w[0][q] + cv.InvA[p][1] * o2w[1][q] +
-            cv.InvA[p][2] * o2w[2][q] + cv.InvA[p][3] * o2w[3][q];
-        }
-      }
-    }
-    vtkSMPTools::For(0, n,
-      [&](vtkIdType b, vtkIdType e)
-      {
-        std::vector<double> out(static_cast<std::size_t>(ncc));
-        for (vtkIdType id = b; id < e; ++id)
-        {
-          const int i = static_cast<int>(id % nx);
-          const int j = static_cast<int>((id / nx) % ny);
-          const int k = static_cast<int>(id / (vtkIdType(nx) * ny));
-          std::fill(out.begin(), out.end(), 0.0);
-          if (sameGrid)
-          {
-            const int kInternal = InternalSlice(cv, niftiSlice(ext[4] + k));
-            const vtkIdType r =
-              (vtkIdType(kInternal - iext[4]) * iny + (ext[2] + j - iext[2])) * inx +
-              (ext[0] + i - iext[0]);
-            for (int q = 0; q < ncc; ++q)
-            {
-              out[q] = cs * values->GetComponent(r, q) + ci;
-            }
-          }
-          else
-          {
-            const double x[3] = { double(ext[0] + i), double(ext[2] + j), double(ext[4] + k) };
-            double u[3];
-            for (int p = 0; p < 3; ++p)
-            {
-              u[p] =
-                toIndex[p][0] * x[0] + toIndex[p][1] * x[1] + toIndex[p][2] * x[2] + toIndex[p][3];
-            }
-            const double eps = 1e-6;
-            bool inside = true;
-            for (int p = 0; p < 3; ++p)
-            {
-              inside = inside && u[p] >= -eps && u[p] <= cv.Dims[p] - 1 + eps;
-              u[p] = std::min(std::max(u[p], 0.0), double(cv.Dims[p] - 1));
-            }
-            if (inside && nearest)
-            {
-              const int ii = static_cast<int>(std::lround(u[0]));
-              const int jj = static_cast<int>(std::lround(u[1]));
-              const int kk = InternalSlice(cv, static_cast<int>(std::lround(u[2])));
-              const vtkIdType r = (vtkIdType(kk) * iny + jj) * inx + ii;
-              for (int q = 0; q < ncc; ++q)
-              {
-                out[q] = cs * values->GetComponent(r, q) + ci;
-              }
-            }
-            else if (inside)
-            {
-              int i0[3];
-              double fr[3];
-              for (int p = 0; p < 3; ++p)
-              {
-                i0[p] = std::min(static_cast<int>(std::floor(u[p])), std::max(cv.Dims[p] - 2, 0));
-                fr[p] = u[p] - i0[p];
-              }
-              for (int corner = 0; corner < 8; ++corner)
-              {
-                int idx[3];
-                double weight = 1.0;
-                for (int p = 0; p < 3; ++p)
-                {
-                  const int bit = (corner >> p) & 1;
-                  idx[p] = std::min(i0[p] + bit, cv.Dims[p] - 1);
-                  weight *= bit ? fr[p] : 1.0 - fr[p];
-                }
-                if (weight == 0.0)
-                {
-                  continue;
-                }
-                const vtkIdType r =
-                  (vtkIdType(InternalSlice(cv, idx[2])) * iny + idx[1]) * inx + idx[0];
-                for (int q = 0; q < ncc; ++q)
-                {
-                  out[q] += weight * (cs * values->GetComponent(r, q) + ci);
-                }
-              }
-            }
-          }
-          array->SetTuple(id, out.data());
-        }
-      });
-    output->GetPointData()->AddArray(array);
-    this->UpdateProgress(0.7 + 0.3 * (f + 1) / nCompanions);
-    if (this->GetAbortExecute())
-    {
-      output->Initialize();
-      return 1;
+      sameGrid = std::abs(cv.A[p][q] - in.A[p][q]) <= tolerance;
     }
   }
-
-  vtkNew<vtkDoubleArray> affine;
-  affine->SetName("NIfTIAffine");
-  affine->SetNumberOfComponents(16);
-  affine->SetNumberOfTuples(1);
-  affine->SetTuple(0, this->Affine);
-  output->GetFieldData()->AddArray(affine);
-  vtkNew<vtkIntArray> reversed;
-  reversed->SetName("NIfTISlicesReversed");
-  reversed->InsertNextValue(v.Flip ? 1 : 0);
-  output->GetFieldData()->AddArray(reversed);
-  this->UpdateProgress(1.0);
-  return 1;
+  // The same grid: this piece's slices; another grid: all of them (resampled).
+  const int k0 = sameGrid ? std::min(in.FileSlice(ext[4]), in.FileSlice(ext[5])) : 0;
+  const int k1 = sameGrid ? std::max(in.FileSlice(ext[4]), in.FileSlice(ext[5])) : size[2] - 1;
+  vtkNIfTIFile::Voxels values;
+  cv.File.Progress = [algorithm](double) { return !algorithm->CheckAbort(); };
+  if (!cv.File.ReadSlices(cv.Volumes, k0, k1, values, error))
+  {
+    return nullptr;
+  }
+  const int elements = values.Elements;
+  const int ncc = static_cast<int>(cv.Volumes.size()) * elements;
+  const int nx = ext[1] - ext[0] + 1, ny = ext[3] - ext[2] + 1, nz = ext[5] - ext[4] + 1;
+  const vtkIdType n = vtkIdType(nx) * ny * nz;
+  const bool doubles =
+    ch.DataType == vtkNIfTIFile::FLOAT64 || ch.DataType == vtkNIfTIFile::COMPLEX128;
+  if (!vtkSplineVizProgress::CheckOutputSize(
+        static_cast<double>(n) * ncc, doubles ? 8.0 : 4.0, "the companion volume", &error))
+  {
+    return nullptr;
+  }
+  vtkSmartPointer<vtkDataArray> array;
+  if (doubles)
+  {
+    array = vtkSmartPointer<vtkDoubleArray>::New();
+  }
+  else
+  {
+    array = vtkSmartPointer<vtkFloatArray>::New();
+  }
+  array->SetName(CompanionArrayName(name).c_str());
+  array->SetNumberOfComponents(ncc);
+  array->SetNumberOfTuples(n);
+  const double cs = cv.File.GetSlope(), ci = cv.File.GetIntercept();
+  const bool nearest = !vtkNIfTIFile::IsFloatingPoint(ch.DataType);
+  double toIndex[4][4]; // output index -> companion NIfTI index
+  {
+    // output index (i, j, k') -> world: origin + D diag(spacing) (i, j, k')
+    double o2w[4][4] = {};
+    for (int p = 0; p < 3; ++p)
+    {
+      for (int q = 0; q < 3; ++q)
+      {
+        o2w[p][q] = in.Place.Direction[3 * p + q] * in.Place.Spacing[q];
+      }
+      o2w[p][3] = in.Place.Origin[p];
+    }
+    o2w[3][3] = 1.0;
+    vtkMatrix4x4::Multiply4x4(&cv.InvA[0][0], &o2w[0][0], &toIndex[0][0]);
+  }
+  // value of component q (volume q / elements, element q % elements) at a file index
+  auto value = [&](int i, int j, int k, int q)
+  { return cs * values.Get(q / elements, i, j, k, q % elements, size[0]) + ci; };
+  vtkSMPTools::For(0, n,
+    [&](vtkIdType b, vtkIdType e)
+    {
+      std::vector<double> out(static_cast<std::size_t>(ncc));
+      for (vtkIdType id = b; id < e; ++id)
+      {
+        const int i = ext[0] + static_cast<int>(id % nx);
+        const int j = ext[2] + static_cast<int>((id / nx) % ny);
+        const int k = ext[4] + static_cast<int>(id / (vtkIdType(nx) * ny));
+        std::fill(out.begin(), out.end(), 0.0);
+        if (sameGrid)
+        {
+          for (int q = 0; q < ncc; ++q)
+          {
+            out[q] = value(i, j, in.FileSlice(k), q);
+          }
+          array->SetTuple(id, out.data());
+          continue;
+        }
+        const double x[3] = { double(i), double(j), double(k) };
+        double u[3];
+        bool inside = true;
+        for (int p = 0; p < 3; ++p)
+        {
+          u[p] = toIndex[p][0] * x[0] + toIndex[p][1] * x[1] + toIndex[p][2] * x[2] + toIndex[p][3];
+          inside = inside && u[p] >= -1e-6 && u[p] <= size[p] - 1 + 1e-6;
+          u[p] = std::min(std::max(u[p], 0.0), double(size[p] - 1));
+        }
+        if (inside && nearest)
+        {
+          const int ii = static_cast<int>(std::lround(u[0]));
+          const int jj = static_cast<int>(std::lround(u[1]));
+          const int kk = static_cast<int>(std::lround(u[2]));
+          for (int q = 0; q < ncc; ++q)
+          {
+            out[q] = value(ii, jj, kk, q);
+          }
+        }
+        else if (inside)
+        {
+          int i0[3];
+          double fr[3];
+          for (int p = 0; p < 3; ++p)
+          {
+            i0[p] = std::min(static_cast<int>(std::floor(u[p])), std::max(size[p] - 2, 0));
+            fr[p] = u[p] - i0[p];
+          }
+          for (int corner = 0; corner < 8; ++corner)
+          {
+            int idx[3];
+            double weight = 1.0;
+            for (int p = 0; p < 3; ++p)
+            {
+              const int bit = (corner >> p) & 1;
+              idx[p] = std::min(i0[p] + bit, size[p] - 1);
+              weight *= bit ? fr[p] : 1.0 - fr[p];
+            }
+            for (int q = 0; weight != 0.0 && q < ncc; ++q)
+            {
+              out[q] += weight * value(idx[0], idx[1], idx[2], q);
+            }
+          }
+        }
+        array->SetTuple(id, out.data());
+      }
+    });
+  return array;
 }
 
 //------------------------------------------------------------------------------

@@ -1,84 +1,42 @@
 /**
  * @class   vtkNIfTITensorReader
- * @brief   Reads a diffusion tensor volume from a NIfTI-1/2 file (.nii, .nii.gz) into
- * vtkImageData with point tensors in world RAS+ mm, rotated with the image into the world frame.
+ * @brief   Reads a diffusion tensor volume from a NIfTI-1/2 file into vtkImageData with point
+ * tensors in world RAS+ mm, rotated with the image into the world frame.
  *
- * What DIPY (`TensorModel`, `save_nifti`), FSL (`dtifit --save_tensor`) and
- * other diffusion MRI tools write, read for the superquadric glyphs
- * (vtkSuperquadricGlyphMapper), vtkTensorAnalysisFilter and
- * vtkTensorLineTracer. The voxels are read by VTK's own vtkNIFTIImageReader
- * (byte order, gzip, NIfTI-1 and -2); this class interprets them.
+ * What DIPY, FSL (`dtifit --save_tensor`) and MRtrix write, for the
+ * superquadric glyphs, vtkTensorAnalysisFilter and vtkTensorLineTracer. The
+ * file (.nii, .nii.gz, .hdr/.img) is read by vtkNIfTIFile, which checks
+ * every header field first. docs/nifti.md has the details.
  *
- * **Components** (TensorLayout, the vtkSplineVizTensorMath layouts): 6
- * components of a symmetric tensor or 9 of a full one (row-major,
- * symmetrized), in the 5th dimension (X x Y x Z x 1 x 6, the NIfTI
- * standard's NIFTI_INTENT_SYMMATRIX layout, as DIPY writes) or in the 4th
- * (X x Y x Z x 6, as FSL writes). AUTOMATIC (the default) reads 5D files in
- * the NIfTI standard's lower-triangular order XX XY YY XZ YZ ZZ
- * (SYMMETRIC_NIFTI, DIPY's) and 4D files in FSL dtifit's upper-triangular
- * order XX XY XZ YY YZ ZZ (SYMMETRIC_FSL, also DIPY's `nifti_tensor=False`);
- * any other layout of 6 components can be chosen (a wrong choice gives
- * wrong tensors without an error: check the file's documentation). Other
- * component counts (e.g. 5) are an error. `scl_slope` / `scl_inter` are
- * applied when the slope is neither 0 nor NaN.
+ * **Components** (TensorLayout): 6 (symmetric) or 9 (full, symmetrized) in
+ * the 5th dimension (X x Y x Z x 1 x 6, NIFTI_INTENT_SYMMATRIX, DIPY) or the
+ * 4th (X x Y x Z x 6, FSL). AUTOMATIC reads 5D files in the NIfTI order XX XY
+ * YY XZ YZ ZZ and 4D files in FSL's XX XY XZ YY YZ ZZ; a wrong layout gives
+ * wrong tensors without an error. scl_slope / scl_inter are applied.
  *
- * **Geometry**: the voxel to world affine A is the sform when sform_code > 0,
- * else the qform (quaternion, qfac) when qform_code > 0, else pixdim scaling
- * (AffineSource chooses; nibabel's and MRtrix's precedence), in mm (the
- * spatial units of xyzt_units, metres or microns, are converted). The output
- * is a vtkImageData whose origin, spacing (the lengths of A's columns) and
- * **direction matrix** (the columns of A divided by them) place every voxel
- * centre exactly where A does, in RAS+ (x right, y anterior, z superior).
- * When det A < 0 (a flip, e.g. the usual LAS storage of FSL-style files) the
- * slices are stored in reverse order (VTK index k' = nz - 1 - k), so that the
- * direction matrix is a rotation (det +1), as VTK's own NIfTI reader does.
- * The direction matrix rather than resampling: resampling would interpolate
- * (blur) the tensors and change every value nibabel, DIPY or FSL would read
- * at a voxel. The SplineViz glyph mapper (point positions from GetPoint()),
- * the tensor line tracer (its image path honours the direction matrix) and
- * ParaView 5.11's Slice filter and Extract Subset (which keeps the matrix)
- * all place such images correctly; a filter that ignores the direction matrix
- * would show the image unrotated. A sheared affine (columns not orthogonal)
- * is kept as a non-orthogonal direction matrix, with a warning.
+ * **Geometry** (shared with vtkNIfTIVolumeReader): the affine A chosen by
+ * AffineSource (sform, else qform, else pixdim; mm) becomes origin, spacing
+ * and the **direction matrix**, slices reversed when det A < 0, so that
+ * GetPoint() is where A puts each voxel (no resampling: the tensors keep the
+ * values nibabel reads). Sheared affines give a warning.
  *
- * **Tensors in the world frame**: the components refer to a frame given by
- * TensorFrame. VOXEL (default): the voxel axes i, j, k of the file, the frame
- * of FSL-convention b-vectors that DIPY fits in (and FSL when det A < 0);
- * FSL: FSL's b-vector convention, the voxel axes with x flipped when
- * det A > 0 (radiological storage; FSL's dtifit); WORLD: already in RAS+
- * world coordinates (MRtrix's `dwi2tensor`, whose gradients are in scanner
- * space). The output tensors are T' = R T R^T with R the rotation of A (the
- * orthogonal polar factor of its 3x3 part, the "finite strain" rotation for
- * sheared affines; FSL: R diag(-1, 1, 1) when det A > 0; WORLD: R = I), so
- * that glyphs and fibre tracking follow the anatomy. Units of the tensor
- * values are unchanged (DIPY and FSL write mm^2/s).
+ * **Frame** (TensorFrame): VOXEL (the file's voxel axes, DIPY), FSL (voxel
+ * axes with x flipped when det A > 0) or WORLD (MRtrix). Output tensors are
+ * T' = R T R^T, R the orthogonal polar factor of A (FSL: R diag(-1, 1, 1)
+ * when det A > 0; WORLD: I), in VTK's order XX YY ZZ XY YZ XZ (float, double
+ * for float64 files; NaN where a component is not finite). Field data:
+ * "NIfTIAffine", "NIfTISlicesReversed".
  *
- * **Output**: point data TensorArrayName ("Tensors", the active tensors) in
- * VTK's 6-component order XX YY ZZ XY YZ XZ (SYMMETRIC_VTK, the default
- * layout of the mappers and filters: no layout to choose downstream; float,
- * or double when the file holds float64); voxels with a NaN or infinite
- * component give NaN tensors (the mappers skip them). Field data:
- * "NIfTIAffine" (A as used, row-major 4x4, from the file's voxel indices),
- * "NIfTISlicesReversed" (1 when k' = nz - 1 - k).
+ * **Companion volumes** (FA, a mask, a T1, FSL's V1): point arrays named
+ * after their files, the first volume with its vector components; copied on
+ * the same grid, else resampled in world coordinates (trilinear, nearest
+ * voxel for integer data, 0 outside); vectors are not rotated.
  *
- * **Companion volumes** (AddCompanionFileName(): FA, a brain mask, a T1
- * registered to the diffusion space, FSL's V1): each becomes a point array
- * named after its file (`dti_FA.nii.gz` -> "dti_FA"), its first volume with
- * all its vector components. A companion with the same grid (dimensions and
- * affine within 1e-3 voxel) is copied voxel by voxel; another grid is
- * resampled at the output's points in world coordinates (trilinear for
- * floating-point data, nearest voxel for integer data such as masks; 0
- * outside), so a T1 on its own grid lines up too. Companion vectors are not
- * rotated.
- *
- * Piece requests: the reader produces the requested sub-extent
- * (CAN_PRODUCE_SUB_EXTENT), so ParaView's parallel pipeline splits the
- * volume; each piece reads the whole file and keeps its part (VTK 9.2's
- * vtkNIFTIImageReader returns the mirrored slab for sub-extents of files it
- * stores in reverse slice order, and a .nii.gz is decompressed whole anyway). Bad input (no file,
- * not NIfTI, a truncated file, a volume without 6 or 9 components, more than 2^31 voxels, a missing
- * qform/sform asked for, a singular affine, unreadable companions) is an error (vtkErrorMacro,
- * RequestInformation/RequestData return 0) with an empty output.
+ * Pieces read only their slices. Bad input (a header field out of range, a
+ * truncated or damaged file, complex or RGB voxels, no 6 or 9 components, a
+ * missing transform asked for, a singular affine, sizes beyond this
+ * machine's memory, unreadable companions) is an error found in
+ * RequestInformation where possible, with an empty output.
  */
 
 #ifndef vtkNIfTITensorReader_h
@@ -98,7 +56,7 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The NIfTI file (.nii, .nii.gz; .hdr/.img pairs through VTK's reader too).
+  /// The NIfTI file (.nii, .nii.gz, or either file of a .hdr/.img pair).
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
   ///@}
@@ -173,7 +131,7 @@ public:
   /// The point array a companion file becomes: its name without .nii / .nii.gz / .img / .hdr.
   static std::string CompanionArrayName(const std::string& fileName);
 
-  /// Is this a NIfTI-1/2 (or Analyze) file VTK can read?
+  /// Is this a valid NIfTI-1/2 file with 6 or 9 tensor components in its 4th or 5th dimension?
   static int CanReadFile(const char* fileName);
 
   /// The message of the last error (empty when the last read succeeded).

@@ -1,6 +1,7 @@
 #include "vtkTractogramReader.h"
 
 #include "vtkSplineVizNameList.h"
+#include "vtkSplineVizProgress.h"
 #include "vtkTractogramFormats.h"
 
 #include "vtkCellArray.h"
@@ -422,6 +423,13 @@ bool vtkTractogramReader::ReadChunked(const std::string& fileName, unsigned long
   std::string& error)
 {
   buffer.clear();
+  // The data and the polylines made from them (about 1.4 times the data:
+  // float32 points, 32-bit connectivity) must fit in this machine's memory.
+  if (!vtkSplineVizProgress::CheckOutputSize(
+        static_cast<double>(size), 2.4, "the data and the polylines made from them", &error))
+  {
+    return false;
+  }
   try
   {
     buffer.Bytes.reset(new char[std::max<unsigned long long>(size, 1)]);

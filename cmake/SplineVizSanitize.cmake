@@ -11,7 +11,7 @@
 #                          coverage instrumentation (-fsanitize=fuzzer-no-link).
 #
 # scripts/test.sh --sanitize configures such a build in build-sanitize/ with
-# clang (see README, "Sanitizers and fuzzing").
+# clang (see docs/reliability.md).
 option(SPLINEVIZ_SANITIZE "Build with AddressSanitizer and UndefinedBehaviorSanitizer" OFF)
 option(SPLINEVIZ_FUZZ "Build the libFuzzer targets (clang; implies coverage instrumentation)" OFF)
 

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Run the libFuzzer targets of the sanitizer build (scripts/test.sh --sanitize
-# builds them in build-sanitize/), one after the other.
+# builds them in build-sanitize/), one after the other. The targets, their
+# seeds and input size limits are listed in Testing/Fuzz/targets.txt.
 #
-#   scripts/fuzz.sh                    # CI: 120 s per target
+#   scripts/fuzz.sh                    # 120 s per target
 #   scripts/fuzz.sh --time 600         # seconds per target
 #   scripts/fuzz.sh --runs 1000000     # a long campaign: 10^6 executions per target
 #   scripts/fuzz.sh --runs 1000000 FuzzG2Parser   # one target
-#   scripts/fuzz.sh --time 120 --parallel          # CI: all targets at once
+#   scripts/fuzz.sh --time 45 --parallel           # CI: as many at once as there
+#                                                  # are cores (SPLINEVIZ_FUZZ_JOBS)
 #
 # Every target starts from its seeds (Testing/Fuzz/corpus/, the real files in
 # Testing/Data/External/, the regression inputs) and keeps what it learns in
@@ -29,11 +31,13 @@ while [ $# -gt 0 ]; do
     *) targets+=("$1"); shift ;;
   esac
 done
-if [ ${#targets[@]} -eq 0 ]; then
-  targets=(FuzzLRSplineParser FuzzG2Parser FuzzLRSplineReader)
-  targets+=(FuzzIFEMReader)
-fi
 fuzz="$here/Testing/Fuzz"
+table="$fuzz/targets.txt"
+# column $2 of target $1's line in the table
+column() { awk -v t="$1" -v c="$2" '$1 == t { print $c }' "$table"; }
+if [ ${#targets[@]} -eq 0 ]; then
+  mapfile -t targets < <(awk '/^[A-Za-z]/ { print $1 }' "$table")
+fi
 work="$build/fuzz"
 mkdir -p "$work"
 export ASAN_SYMBOLIZER_PATH="${ASAN_SYMBOLIZER_PATH:-$(command -v llvm-symbolizer || true)}"
@@ -45,37 +49,40 @@ export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 # stay sequential so that a crash points at the input that caused it.
 export VTK_SMP_BACKEND_IN_USE=Sequential
 run_target() {
-  local t="$1" exe seeds ext log start
+  local t="$1" exe seeds ext log start maxlen globs c g f
   exe="$build/bin/$t"
   if [ ! -x "$exe" ]; then
     echo "ERROR: $exe not built (scripts/test.sh --sanitize builds it)" >&2
     return 1
   fi
-  case "$t" in
-    FuzzLRSplineParser) seeds=("$fuzz/corpus/lr") ;;
-    FuzzG2Parser) seeds=("$fuzz/corpus/g2") ;;
-    FuzzIFEMReader) seeds=("$fuzz/corpus/ifem") ;;
-    *) seeds=("$fuzz/corpus/lr" "$fuzz/corpus/g2") ;;
-  esac
-  # The real files (the 1.2 MB .lr too: -max_len cuts it, truncated files are
+  if [ -z "$(column "$t" 1)" ]; then
+    echo "ERROR: $t is not in $table" >&2
+    return 1
+  fi
+  seeds=()
+  for c in $(column "$t" 2 | tr ',' ' '); do
+    seeds+=("$fuzz/corpus/$c")
+  done
+  maxlen="$(column "$t" 3)"
+  # The real files (large ones too: -max_len cuts them, truncated files are
   # good inputs as well).
   ext="$work/external-$t"
   mkdir -p "$ext"
-  for f in "$here"/Testing/Data/External/*.lr "$here"/Testing/Data/External/*.g2; do
-    case "$t:$f" in
-      FuzzLRSplineParser:*.g2 | FuzzG2Parser:*.lr | FuzzIFEMReader:*) ;;
-      *) cp -f "$f" "$ext/" ;;
-    esac
-  done
+  globs="$(column "$t" 4)"
+  if [ "$globs" != "-" ]; then
+    for g in $(echo "$globs" | tr ',' ' '); do
+      for f in "$here"/Testing/Data/External/$g; do
+        if [ -f "$f" ]; then cp -f "$f" "$ext/"; fi
+      done
+    done
+  fi
   if [ -d "$fuzz/regressions/$t" ]; then
     seeds+=("$fuzz/regressions/$t")
   fi
   mkdir -p "$work/corpus-$t"
   log="$work/$t.log"
   start=$(date +%s)
-  maxlen=4096
-  [ "$t" = FuzzIFEMReader ] && maxlen=32768 # HDF5 files: the seeds are 7-27 kB
-  if "$exe" "${limit[@]}" -timeout=1 -rss_limit_mb=2048 -max_len=$maxlen \
+  if "$exe" "${limit[@]}" -timeout=1 -rss_limit_mb=2048 -max_len="$maxlen" \
       -print_final_stats=1 -artifact_prefix="$work/$t-" \
       "$work/corpus-$t" "${seeds[@]}" "$ext" >"$log" 2>&1; then
     echo "== $t (${limit[*]}): ok after $(( $(date +%s) - start )) s"
@@ -89,14 +96,22 @@ run_target() {
 
 status=0
 if [ -n "$parallel" ]; then
+  # As many targets at once as there are cores: more would starve them into
+  # libFuzzer's 1 s limit per input.
+  jobs="${SPLINEVIZ_FUZZ_JOBS:-$(nproc)}"
   pids=()
+  names=()
   for t in "${targets[@]}"; do
+    while [ "$(jobs -rp | wc -l)" -ge "$jobs" ]; do
+      sleep 1
+    done
     run_target "$t" > "$work/$t.summary" 2>&1 &
     pids+=($!)
+    names+=("$t")
   done
   for i in "${!pids[@]}"; do
     wait "${pids[$i]}" || status=1
-    cat "$work/${targets[$i]}.summary"
+    cat "$work/${names[$i]}.summary"
   done
 else
   for t in "${targets[@]}"; do

@@ -9,7 +9,7 @@
 #                                   # clang, ASan + UBSan (+ LeakSanitizer),
 #                                   # libFuzzer targets, in build-sanitize/
 #   scripts/test.sh --sanitize --ci # the sanitizer subset CI runs (see
-#                                   # README, "Sanitizers and fuzzing")
+#                                   # docs/reliability.md)
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 sanitize=""

@@ -490,7 +490,17 @@ int TestNIfTITensorReader(int, char*[])
     reader->RemoveAllCompanionFileNames();
   }
 
-  // Sub-extents (ParaView's pieces): the same values at the same points.
+  // Sub-extents (ParaView's pieces): the same values at the same points, for
+  // slices stored reversed (sform with a flip) and for a qform with qfac = -1.
+  {
+    const std::string qfac = OutDir + "/TestNIfTITensorReader-qform9.nii";
+    reader->SetFileName(qfac.c_str());
+    const int sub[6] = { 0, 4, 1, 5, 1, 3 };
+    reader->UpdateExtent(sub);
+    vtkImageData* part = reader->GetOutput();
+    SV_CHECK(status, part->GetNumberOfPoints() == 5 * 5 * 3);
+    SV_CHECK(status, FieldError(part) < 2e-6);
+  }
   {
     reader->SetFileName(lower.c_str());
     const int sub[6] = { 1, 5, 0, 3, 2, 4 };

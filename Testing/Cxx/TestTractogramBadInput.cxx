@@ -9,7 +9,9 @@
 // running past the end, a negative point count, NaN coordinates, names
 // covering more values than n_scalars, a file shorter than its header.
 // Writer: NaN coordinates (the file is removed), a missing array, an unknown
-// extension, too many TrackVis names. Plus a non-existent and an empty file.
+// extension, too many TrackVis names. Plus a non-existent and an empty file,
+// and sparse .tck and .trk files of four times this machine's memory (refused
+// before anything is allocated).
 #include "vtkTractogramReader.h"
 #include "vtkTractogramWriter.h"
 
@@ -21,6 +23,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+
+#include <vtksys/SystemInformation.hxx>
 
 #include <chrono>
 #include <cstdio>
@@ -124,6 +128,10 @@ int TestTractogramBadInput(int, char*[])
     n.AddStreamline(2, { 1, 2, 3, 0.5f, nan, 5, 6, 0.6f }, { 9 });
     n.AddStreamline(1, { 7, 8, 9, 0.7f }, { 10 });
     cases.push_back({ "trk NaN coordinates", n.Bytes(), ".trk", "NaN or infinite coordinates" });
+    TrkFile tiny = t; // finite points, but beyond float32 once divided by the voxel size
+    tiny.VoxelSize[0] = 1e-38f;
+    cases.push_back(
+      { "trk voxel size 1e-38", tiny.Bytes(), ".trk", "after the voxel-mm to RAS+ map" });
     n.VoxelSize[1] = 0;
     cases.push_back({ "trk zero voxel size", n.Bytes(), ".trk", "voxel size" });
   }
@@ -157,6 +165,35 @@ int TestTractogramBadInput(int, char*[])
     WriteBytes(path, g.first);
     reader->SetFileName(path.c_str());
     SV_CHECK_MSG(status, h.Run(reader) && reader->GetOutput()->GetNumberOfPoints() == 3, h.Error());
+  }
+  // Sparse files four times this machine's memory (.tck and .trk): refused
+  // before anything is read or allocated.
+  {
+    vtksys::SystemInformation info;
+    const double bytes = 4.0 * static_cast<double>(info.GetHostMemoryTotal()) * 1024.0;
+    for (const std::pair<std::string, std::string>& g :
+      { std::make_pair(good.substr(0, good.find("END\n") + 4), std::string(".tck")),
+        std::make_pair(trk.Header(), std::string(".trk")) })
+    {
+      const std::string path = OutDir + "/TestTractogramBadInput-sparse" + g.second;
+      {
+        std::ofstream f(path, std::ios::binary | std::ios::trunc);
+        f.write(g.first.data(), static_cast<std::streamsize>(g.first.size()));
+        f.seekp(static_cast<std::streamoff>(bytes));
+        f.put('\0');
+      }
+      reader->SetFileName(path.c_str());
+      const auto t0 = std::chrono::steady_clock::now();
+      const bool ok = h.Run(reader);
+      const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      const std::string msg = reader->GetLastErrorMessage();
+      std::cout << "sparse " << g.second << " of " << bytes / (1 << 30) << " GiB: " << msg
+                << std::endl;
+      SV_CHECK_MSG(status, !ok && msg.find("memory") != std::string::npos && seconds < 2.0,
+        g.second << " sparse file: " << msg << " after " << seconds << " s");
+      std::remove(path.c_str());
+    }
   }
   reader->SetFileName((OutDir + "/does-not-exist.tck").c_str());
   SV_CHECK(status, !h.Run(reader));

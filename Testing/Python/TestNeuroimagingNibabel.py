@@ -19,7 +19,8 @@ only an sform. vtkNIfTITensorReader must place every voxel where nibabel's
 affine does and give R T R^T (R the rotation of the affine, T as nibabel reads
 it) to 1e-6 relative; 5D and 4D files give identical tensors; negative
 controls (FSL order read as NIfTI order, tensors left unrotated) must fail;
-DIPY's FA as a companion volume is copied exactly; 5 components are refused.
+NIfTI-2, big-endian and .hdr/.img copies read identically; DIPY's FA as a
+companion volume is copied exactly; 5 components are refused.
 """
 import os
 import struct
@@ -347,6 +348,21 @@ check(compare(wrong, nii4, "negative control: FSL file read in NIfTI order")[2] 
 reader, wrong, errors = read_tensors(nii5, frame=2)
 check(compare(wrong, nii5, "negative control: tensors not rotated")[2] > 1e-2,
       "negative control: tensors taken as world-frame (not rotated) differ")
+
+# the same tensors as NIfTI-2, big-endian NIfTI-1 and a .hdr/.img pair (nibabel): identical
+reference = vtk_to_numpy(dti5.GetPointData().GetArray("Tensors"))
+for label, img, name in (
+        ("NIfTI-2", nib.Nifti2Image(lower_triangular(q)[:, :, :, None, :], scan.affine), "dti5d-nifti2.nii"),
+        ("big-endian", nib.Nifti1Image(lower_triangular(q)[:, :, :, None, :], scan.affine,
+                                       header=nib.Nifti1Header(endianness=">")), "dti5d-big.nii"),
+        (".hdr/.img pair", nib.Nifti1Pair(lower_triangular(q)[:, :, :, None, :], scan.affine),
+         "dti5d-pair.img")):
+    path = os.path.join(out, "TestNeuroimagingNibabel-" + name)
+    nib.save(img, path)
+    reader, image, errors = read_tensors(path)
+    got = image.GetPointData().GetArray("Tensors")
+    check(got is not None and np.array_equal(vtk_to_numpy(got), reference),
+          "DIPY tensors as %s: the same tensors as from the .nii.gz" % label)
 
 # an affine with a 30 degree rotation and a flip; qform only; sform only
 axis = np.array([1.0, 1.0, 0.3]) / np.linalg.norm([1.0, 1.0, 0.3])

@@ -4,7 +4,9 @@ nibabel saves the tensors (5D NIfTI) and DIPY's FA. Then, in ParaView:
 
 - File > Open of the .nii.gz picks "NIfTI Diffusion Tensors" (listed by the
   reader factory), with the FA as a companion volume; the image keeps the
-  scan's affine as its direction matrix;
+  scan's affine as its direction matrix; the reader factory offers both
+  NIfTI readers for the tensor file and only "NIfTI Volume" for the FA,
+  which File > Open reads onto the tensors' points with the same values;
 - "Tensor Analysis" on it gives DIPY's FA (the rotated tensors keep their
   invariants), "Superquadric Glyphs" draw it (the whole volume and a slice
   from Extract Subset), "Tensor Line Tracer" traces it: at every seed the
@@ -62,8 +64,23 @@ rotation = u @ vt  # voxel frame -> world
 
 factory = servermanager.vtkSMProxyManager.GetProxyManager().GetReaderFactory()
 types = factory.GetSupportedFileTypes(servermanager.ActiveConnection.Session)
-check("NIfTI Diffusion Tensors (*.nii *.nii.gz)" in types, "File > Open lists NIfTI Diffusion Tensors")
+check("NIfTI Diffusion Tensors (*.nii *.nii.gz *.hdr *.hdr.gz *.img *.img.gz)" in types,
+      "File > Open lists NIfTI Diffusion Tensors")
 check("Tractograms (MRtrix .tck, TrackVis .trk) (*.tck *.trk)" in types, "File > Open lists tractograms")
+check("NIfTI Volume (*.nii *.nii.gz *.hdr *.hdr.gz *.img *.img.gz)" in types,
+      "File > Open lists NIfTI Volume")
+session = servermanager.ActiveConnection.Session
+
+
+def readers_of(path):
+    found = factory.GetReaders(path, session)
+    return [found.GetString(i) for i in range(1, found.GetLength(), 3)]
+
+
+check(readers_of(nii) == ["NIfTITensorReader", "NIfTIVolumeReader"],
+      "a tensor file: both NIfTI readers offered (%s)" % readers_of(nii))
+check(readers_of(fa_file) == ["NIfTIVolumeReader"],
+      "a scalar volume: only NIfTI Volume offered (%s)" % readers_of(fa_file))
 
 dti = OpenDataFile(nii)  # noqa: F405
 check(dti is not None and dti.GetXMLName() == "NIfTITensorReader",
@@ -78,6 +95,30 @@ check(image.GetNumberOfPoints() == 1000 and image.GetPointData().GetArray("Tenso
       "tensors and the FA companion on 1000 voxels")
 check(np.abs(direction - np.eye(3)).max() > 0.1 and abs(np.linalg.det(direction) - 1) < 1e-6,
       "the scan's rotation is the image's direction matrix")
+
+# DIPY's FA through File > Open: "NIfTI Volume", on the tensors' points, DIPY's values
+fa_volume = OpenDataFile(fa_file)  # noqa: F405
+check(fa_volume is not None and fa_volume.GetXMLName() == "NIfTIVolumeReader",
+      "the FA .nii.gz opens with the NIfTI Volume reader")
+fa_image = servermanager.Fetch(fa_volume)
+same_points = fa_image.GetNumberOfPoints() == image.GetNumberOfPoints() and all(
+    fa_image.GetPoint(i) == image.GetPoint(i) for i in range(image.GetNumberOfPoints()))
+fa_values = vtk_to_numpy(fa_image.GetPointData().GetArray("TestPluginNeuroimaging-FA"))
+check(same_points and np.array_equal(
+    fa_values, vtk_to_numpy(image.GetPointData().GetArray("TestPluginNeuroimaging-FA"))),
+      "NIfTI Volume: the tensors' points, the companion's values")
+
+# NIfTI Volume's Volume Index on a 4D series: the range offered, the volume read
+series = np.stack([fa_dipy * np.float32(t + 1) for t in range(5)], -1)
+series_file = os.path.join(out, "TestPluginNeuroimaging-series.nii.gz")
+nib.save(nib.Nifti1Image(series, scan.affine), series_file)
+series_reader = NIfTIVolume(FileName=series_file)  # noqa: F405
+series_reader.UpdatePipelineInformation()
+series_reader.VolumeIndex = 3
+series_reader.UpdatePipeline()
+volume3 = vtk_to_numpy(servermanager.Fetch(series_reader).GetPointData().GetArray(0))
+check(list(series_reader.GetPropertyValue("VolumeRangeInfo")) == [0, 4] and np.array_equal(volume3, fa_values * 4),
+      "NIfTI Volume on 5 volumes: Volume Index 0..4 offered, volume 3 read")
 
 analysis = TensorAnalysis(Input=dti)  # noqa: F405
 analysis.Tensors = ["POINTS", "Tensors"]
