@@ -5,7 +5,8 @@
 //             unknown extension (the format recognised by its first bytes)
 //   bit 2     FileFormat set (TCK, or TRK for 1) instead of automatic
 //   bit 3     KeepEmptyStreamlines
-//   bit 4     read piece 1 of 3 instead of everything
+//   bit 4     a piece request: the number of pieces (1-8) and the piece from the last byte
+//   bits 5-6  SubsetMode (0 all, 1 every 3rd, 2 a random half, 3 all)
 // The reader must succeed with complete, finite polylines whose point ids
 // are points of the output, or fail with a message and an empty output.
 //
@@ -97,7 +98,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
     reader->SetFileFormat(kind == TRK ? vtkTractogramReader::TRK : vtkTractogramReader::TCK);
   }
   reader->SetKeepEmptyStreamlines((mode & 8) != 0);
-  const int ok = (mode & 16) ? reader->UpdatePiece(1, 3, 0) : reader->GetExecutive()->Update();
+  reader->SetSubsetMode(((mode >> 5) & 3) % 3);
+  reader->SetSubsetStride(3);
+  reader->SetSubsetFraction(0.5);
+  const int last = n > 0 ? payload[n - 1] : 0;
+  const int pieces = 1 + last % 8;
+  const int ok = (mode & 16) ? reader->UpdatePiece((last / 8) % pieces, pieces, 0)
+                             : reader->GetExecutive()->Update();
   SplineVizFuzz::CheckReaderResult(reader, ok, reader->GetLastErrorMessage());
   if (ok)
   {
