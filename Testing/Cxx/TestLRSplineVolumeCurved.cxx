@@ -16,6 +16,13 @@
 // homogeneous coefficients (w x, w) and (w f, w)); a shader that leaves the
 // weight out of the field must fail. Isosurfaces (f = +-0.3, shaded) against
 // the reference's bisection; the geometry ignored must fail there too.
+// IFEM-Poisson's result on the bent patches: the analytic solution
+// u = sin(pi x) sin(pi y) sin(pi z) of cube-2patch.xinp projected onto the
+// basis by least squares (8 points per element, the basis by Cox-de Boor,
+// as Testing/Python/ifem_poisson.py does), rendered at a fixed step against
+// the CPU ray marcher at the same step over the ANALYTIC u at the physical
+// points, masked by the reference's inversion (inside the patches); the
+// analytic field with a wrong phase (cos(pi z)) or shifted by 0.1 must fail.
 #include "LRSplinePhysicalReference.h"
 #include "LRSplineVolumeTestUtilities.h"
 
@@ -55,8 +62,11 @@ void Bend(const double x[3], double y[3])
 }
 
 // The LRSplines text with bent coefficients (field false) or with the
-// scalar coefficients f (field true).
-std::string BentOrField(const std::string& text, bool field, bool rational)
+// scalar coefficients f (field true): sin(pi x) sin(pi y) sin(pi z) at the
+// unbent coefficient, or `values` (one per basis function, in the text's
+// order).
+std::string BentOrField(
+  const std::string& text, bool field, bool rational, const std::vector<double>* values = nullptr)
 {
   // Rational: homogeneous coefficients (w c, w) with random weights, the
   // same sequence for the geometry and the field.
@@ -67,6 +77,7 @@ std::string BentOrField(const std::string& text, bool field, bool rational)
   out.precision(17);
   std::string line;
   bool header = false;
+  std::size_t next = 0;
   while (std::getline(in, line))
   {
     if (line.find("# LRSPLINE") == 0)
@@ -100,7 +111,9 @@ std::string BentOrField(const std::string& text, bool field, bool rational)
       double x[3], y[3];
       c >> x[0] >> x[1] >> x[2];
       Bend(x, y);
-      const double f = std::sin(Pi * x[0]) * std::sin(Pi * x[1]) * std::sin(Pi * x[2]);
+      const double f = values && next < values->size()
+        ? (*values)[next++]
+        : std::sin(Pi * x[0]) * std::sin(Pi * x[1]) * std::sin(Pi * x[2]);
       const double w = rational ? weight(rng) : 1.0;
       out << line.substr(0, close + 1) << " ";
       if (field)
@@ -125,8 +138,8 @@ std::string BentOrField(const std::string& text, bool field, bool rational)
 
 // The bent patches with the scalar "f" (the fourth component) as active
 // scalars; `ignoreGeometry`: marked as field mode (LRMode 0).
-vtkSmartPointer<vtkMultiBlockDataSet> CurvedData(
-  const std::string& text, bool ignoreGeometry, bool rational = false)
+vtkSmartPointer<vtkMultiBlockDataSet> CurvedData(const std::string& text, bool ignoreGeometry,
+  bool rational = false, const std::vector<double>* values = nullptr)
 {
   // Both read element by element (no merged points): the same points in
   // the same order, so the field's coefficients attach to the geometry's.
@@ -139,7 +152,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> CurvedData(
   reader->Update();
   vtkNew<vtkLRSplineReader> fieldReader;
   fieldReader->ReadFromInputStringOn();
-  fieldReader->SetInputString(BentOrField(text, true, rational));
+  fieldReader->SetInputString(BentOrField(text, true, rational, values));
   fieldReader->SetRationalModeToPolynomial(); // (w f, w): divided below
   fieldReader->MergePointsOff();
   fieldReader->Update();
@@ -209,12 +222,13 @@ struct Result
 
 // The GPU's picture of `data` against the CPU reference ray marcher over the
 // independent evaluation `reference` (computed once into `cpu`, written as
-// TestLRSplineVolumeCurved-<cpuTag>.png).
-Result Compare(vtkMultiBlockDataSet* data, const lrtest::PhysicalField& reference,
-  const std::string& cpuTag, const std::string& tag, std::vector<double>& cpu,
-  double sampleDistance, int stepsPerPass = 0, bool noWeight = false, bool iso = false)
+// TestLRSplineVolumeCurved-<cpuTag>.png); `sameStep`: the reference at the
+// mapper's fixed step.
+template <class Reference>
+Result Compare(vtkMultiBlockDataSet* data, const Reference& reference, const std::string& cpuTag,
+  const std::string& tag, std::vector<double>& cpu, double sampleDistance, int stepsPerPass = 0,
+  bool noWeight = false, bool iso = false, bool sameStep = false, int width = 120, int height = 90)
 {
-  const int width = 120, height = 90;
   const double background[3] = { 0.1, 0.1, 0.12 };
   vtkSmartPointer<vtkLRSplineVolumeMapper> mapper = noWeight
     ? vtkSmartPointer<vtkLRSplineVolumeMapper>(vtkSmartPointer<NoWeightMapper>::New())
@@ -288,8 +302,9 @@ Result Compare(vtkMultiBlockDataSet* data, const lrtest::PhysicalField& referenc
     view.Set(ren, volume);
     lrvolume::Settings settings;
     // A quarter of the mapper's finest adaptive step (side / 4): the
-    // reference at a tenth differs from it by 0.2/255 RMS.
-    settings.Step = reference.MinimumSide() / 4.0 / 4.0;
+    // reference at a tenth differs from it by 0.2/255 RMS. With
+    // `sameStep`, the mapper's fixed step.
+    settings.Step = sameStep ? sampleDistance : reference.MinimumSide() / 4.0 / 4.0;
     if (iso)
     {
       settings.BlendMode = 5;
@@ -361,6 +376,134 @@ double CrossCheck(vtkMultiBlockDataSet* data, const lrtest::PhysicalField& refer
             << " disagree on inside, largest difference " << worst << std::endl;
   return disagree > 2 || inside < 1000 ? -1.0 : worst;
 }
+
+// IFEM-Poisson's analytic solution of cube-2patch.xinp (with `phase` added
+// to pi z, plus `shift`) and its gradient at physical x.
+double Poisson(const double x[3], double gradient[3], double phase = 0.0, double shift = 0.0)
+{
+  const double s[3] = { std::sin(Pi * x[0]), std::sin(Pi * x[1]), std::sin(Pi * x[2] + phase) };
+  const double c[3] = { std::cos(Pi * x[0]), std::cos(Pi * x[1]), std::cos(Pi * x[2] + phase) };
+  gradient[0] = Pi * c[0] * s[1] * s[2];
+  gradient[1] = Pi * s[0] * c[1] * s[2];
+  gradient[2] = Pi * s[0] * s[1] * c[2];
+  return s[0] * s[1] * s[2] + shift;
+}
+
+// The least-squares projection of Poisson() onto each patch's basis of the
+// (bent) geometry text: 2 x 2 x 2 points per element at the quarters of its
+// parameter box, the basis functions gamma B_u B_v B_w by Cox-de Boor, the
+// normal equations by Cholesky. The coefficients in the text's order, or
+// empty when a system is singular.
+std::vector<double> ProjectPoisson(const std::string& geometryText)
+{
+  std::vector<double> out;
+  for (const lrtest::BrutePatch& P : lrtest::ParseLR(geometryText))
+  {
+    const std::size_t n = P.Gamma.size();
+    std::vector<double> N(n * n, 0.0), r(n, 0.0), b(n);
+    std::vector<std::size_t> active;
+    for (const auto& box : P.Elements)
+    {
+      for (int q = 0; q < 8; ++q)
+      {
+        double u[3], x[3] = { 0, 0, 0 }, g[3];
+        for (int d = 0; d < 3; ++d)
+        {
+          u[d] = box[d] + ((q >> d & 1) ? 0.75 : 0.25) * (box[d + 3] - box[d]);
+        }
+        active.clear();
+        for (std::size_t i = 0; i < n; ++i)
+        {
+          b[i] = P.Gamma[i];
+          for (int d = 0; d < 3 && b[i] != 0.0; ++d)
+          {
+            b[i] *= lrtest::CoxDeBoor(P.Knots[i][d], u[d], false);
+          }
+          if (b[i] != 0.0)
+          {
+            active.push_back(i);
+            for (int k = 0; k < 3; ++k)
+            {
+              x[k] += b[i] * P.Coef[P.Dim * i + k];
+            }
+          }
+        }
+        const double f = Poisson(x, g);
+        for (std::size_t i : active)
+        {
+          r[i] += b[i] * f;
+          for (std::size_t j : active)
+          {
+            N[i * n + j] += b[i] * b[j];
+          }
+        }
+      }
+    }
+    // Cholesky N = L L^T (L in the lower triangle), then two substitutions.
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      for (std::size_t k = 0; k < j; ++k)
+      {
+        N[j * n + j] -= N[j * n + k] * N[j * n + k];
+      }
+      if (!(N[j * n + j] > 1e-14))
+      {
+        return {};
+      }
+      N[j * n + j] = std::sqrt(N[j * n + j]);
+      for (std::size_t i = j + 1; i < n; ++i)
+      {
+        for (std::size_t k = 0; k < j; ++k)
+        {
+          N[i * n + j] -= N[i * n + k] * N[j * n + k];
+        }
+        N[i * n + j] /= N[j * n + j];
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      for (std::size_t k = 0; k < i; ++k)
+      {
+        r[i] -= N[i * n + k] * r[k];
+      }
+      r[i] /= N[i * n + i];
+    }
+    for (std::size_t i = n; i-- > 0;)
+    {
+      for (std::size_t k = i + 1; k < n; ++k)
+      {
+        r[i] -= N[k * n + i] * r[k];
+      }
+      r[i] /= N[i * n + i];
+    }
+    out.insert(out.end(), r.begin(), r.end());
+  }
+  return out;
+}
+
+// The analytic Poisson solution where the independent reference finds the
+// physical point inside the patches (its inversion), for the CPU ray
+// marcher: the spline's own value is discarded, so only the field differs.
+struct AnalyticPoissonField
+{
+  const lrtest::PhysicalField* Geometry = nullptr;
+  double Phase = 0.0, Shift = 0.0;
+
+  int GetNumberOfComponents() const { return 1; }
+  void GetBounds(double bounds[6]) const { this->Geometry->GetBounds(bounds); }
+  double MinimumSide() const { return this->Geometry->MinimumSide(); }
+  template <class Index>
+  int EvaluateWithHint(
+    const double x[3], double* value, double* gradient, int& patch, Index& element) const
+  {
+    const int p = this->Geometry->EvaluateWithHint(x, value, gradient, patch, element);
+    if (p >= 0)
+    {
+      value[0] = Poisson(x, gradient, this->Phase, this->Shift);
+    }
+    return p;
+  }
+};
 }
 
 int TestLRSplineVolumeCurved(int, char*[])
@@ -464,6 +607,82 @@ int TestLRSplineVolumeCurved(int, char*[])
     std::cerr << "ERROR: the negative control (geometry ignored) passed: RMS " << wrong.RMS
               << std::endl;
     ++failures;
+  }
+  // IFEM-Poisson's result (the analytic u projected onto the bent patches'
+  // basis) against the analytic u itself, the same fixed step both sides.
+  const auto p0 = std::chrono::steady_clock::now();
+  const std::vector<double> poissonValues = ProjectPoisson(BentOrField(text, false, false));
+  vtkSmartPointer<vtkMultiBlockDataSet> poisson =
+    poissonValues.empty() ? nullptr : CurvedData(text, false, false, &poissonValues);
+  lrtest::PhysicalField poissonReference;
+  if (!poisson ||
+    !poissonReference.Build(BentOrField(text, false, false),
+      BentOrField(text, true, false, &poissonValues), false, &error))
+  {
+    std::cerr << "ERROR: the Poisson result was not built " << error << std::endl;
+    return EXIT_FAILURE;
+  }
+  const double poissonCheck = CrossCheck(poisson, poissonReference);
+  double projectionError = 0.0;
+  {
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    double bounds[6], f, g[3], a[3];
+    poissonReference.GetBounds(bounds);
+    for (int i = 0; i < 2000; ++i)
+    {
+      double x[3];
+      for (int k = 0; k < 3; ++k)
+      {
+        x[k] = bounds[2 * k] + unit(rng) * (bounds[2 * k + 1] - bounds[2 * k]);
+      }
+      if (poissonReference.Evaluate(x, &f, g) >= 0)
+      {
+        projectionError = std::max(projectionError, std::abs(f - Poisson(x, a)));
+      }
+    }
+  }
+  std::cout << "Poisson: projection error " << projectionError << ", built and checked in "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - p0).count() << " s"
+            << std::endl;
+  if (!(poissonCheck >= 0 && poissonCheck < 1e-9 && projectionError < 2.5e-2))
+  {
+    std::cerr << "ERROR: the Poisson result: cross-check " << poissonCheck << ", projection error "
+              << projectionError << std::endl;
+    ++failures;
+  }
+  // A smaller picture and a coarser step (the same on both sides) than the
+  // cases above keep the test fast.
+  const double poissonStep = poissonReference.MinimumSide() / 8.0;
+  AnalyticPoissonField analytic;
+  analytic.Geometry = &poissonReference;
+  std::vector<double> cpuAnalytic;
+  const Result poissonResult = Compare(poisson, analytic, "cpu-analytic", "poisson", cpuAnalytic,
+    poissonStep, 0, false, false, true, 96, 72);
+  if (!(poissonResult.RMS >= 0 && poissonResult.RMS <= 3.0))
+  {
+    std::cerr << "ERROR: the Poisson result against the analytic field: RMS " << poissonResult.RMS
+              << std::endl;
+    ++failures;
+  }
+  // Negative controls: the analytic field with the wrong phase, or shifted.
+  const double controls[2][2] = { { 0.5 * Pi, 0.0 }, { 0.0, 0.1 } };
+  const char* controlTags[2] = { "cos", "shifted" };
+  for (int c = 0; c < 2; ++c)
+  {
+    AnalyticPoissonField wrongField = analytic;
+    wrongField.Phase = controls[c][0];
+    wrongField.Shift = controls[c][1];
+    std::vector<double> cpuWrong;
+    const Result control = Compare(poisson, wrongField,
+      std::string("cpu-analytic-") + controlTags[c], std::string("poisson-vs-") + controlTags[c],
+      cpuWrong, poissonStep, 0, false, false, true, 96, 72);
+    if (!(control.RMS > 3.0))
+    {
+      std::cerr << "ERROR: the negative control (analytic field, " << controlTags[c]
+                << ") passed: RMS " << control.RMS << std::endl;
+      ++failures;
+    }
   }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
