@@ -1322,7 +1322,10 @@ int vtkTractogramReader::RequestData(
         const char* p = data + lines.Start[s] * 3 * vs;
         if (!lines.Swap && !doublePoints && vs == 4)
         {
-          std::memcpy(pf + 3 * o, p, static_cast<std::size_t>(12 * m));
+          if (m > 0) // an empty streamline (kept) may leave the points array empty (null)
+          {
+            std::memcpy(pf + 3 * o, p, static_cast<std::size_t>(12 * m));
+          }
         }
         else
         {
