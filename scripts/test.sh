@@ -62,5 +62,9 @@ if [ -n "$ci_subset" ]; then
   fi
 fi
 echo "== running the tests${sanitize:+ (sanitizer build)}"
-"$here/scripts/xvfb-run-if-needed.sh" ctest --output-on-failure --timeout "$timeout" ${args[@]+"${args[@]}"}
+# As many tests at once as there are cores (SPLINEVIZ_TEST_JOBS to change it):
+# the GL tests share the X display, the MPI tests oversubscribe, both fine.
+jobs="${SPLINEVIZ_TEST_JOBS:-$(nproc)}"
+"$here/scripts/xvfb-run-if-needed.sh" ctest --output-on-failure --timeout "$timeout" -j "$jobs" \
+  ${args[@]+"${args[@]}"}
 echo "== test images (rendered and, for failures, differences): $build/Testing/Temporary"
