@@ -1,4 +1,4 @@
-// Benchmark of vtkLRSplineImageFitter (issue 17, "a real data path") on the
+// Benchmark of vtkLRSplineImageFitter (a real data path) on the
 // real MR scans Debian's python3-dipy ships, read by VTK's
 // vtkNIFTIImageReader: aniso_vox.nii.gz (58 x 58 x 24) and S0_10slices.nii.gz
 // (128 x 128 x 10).

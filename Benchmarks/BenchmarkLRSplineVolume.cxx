@@ -1,5 +1,5 @@
 // Benchmark of direct volume rendering of LR-spline volumes (Fuchs et al.
-// §4; issue 17, "Performance"): vtkLRSplineVolumeMapper against VTK's way
+// §4): vtkLRSplineVolumeMapper against VTK's way
 // (vtkLRSplineResampleToImage, the "LR-Spline Resample To Image" filter, to
 // 128^3, 256^3 and 512^3, then vtkSmartVolumeMapper with its own vector mode
 // for the magnitude), side by side in one process, on
@@ -1475,7 +1475,7 @@ void RunVolume(Volume& v, const Options& o, bool profile, Findings& found)
 
 void PrintTargets(const std::vector<Findings>& all, const Options& o)
 {
-  std::printf("\n== Targets (issue 17); times at %s, wall clock (CPU time in brackets)\n",
+  std::printf("\n== Targets; times at %s, wall clock (CPU time in brackets)\n",
     o.Sizes.front().c_str());
   // 1. The strongly refined volume at equal image error.
   for (const Findings& f : all)

@@ -25,7 +25,7 @@
  *   see glsl/vtkTensorMathShared.glsl for the definitions implemented).
  * - KindlmannShape(): superquadric exponents alpha, beta and symmetry axis
  *   from cl, cp and the sharpness gamma (Kindlmann 2004; Hlawitschka et al.
- *   §2; Teem's rule, see ../shared/docs/field-notes.md).
+ *   §2; Teem's rule, as in Teem's tenGlyph).
  * - PrincipalEigen(): the eigenvalues and the principal eigenvector only
  *   (faster than EigenDecomposition(); for fiber tracking).
  * - FromEigenSystem(), Log(), Exp(): tensors from eigen-systems and the

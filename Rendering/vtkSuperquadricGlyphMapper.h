@@ -85,15 +85,9 @@
  * fragment shader discards a fragment whose sprite point (on the box, in
  * front of the glyph) lies behind the copied depth, before the ray cast. The
  * box contains the glyph, so this is exact: the image is the same with
- * culling off (TestSuperquadricGlyphCulling). Measured with
- * SplineVizTensorGlyphBenchmark (Mesa llvmpipe on 2 CPU cores shared with
- * other jobs, load average about 9, so absolute times are noisy; ratios from
- * one run): 1M glyphs at 800x600, median frame 3.9 s with culling vs 19.8 s
- * without (5.0x shorter; 5.4x at 1200x768); 100k glyphs at 1200x768, 2.1 s
- * vs 6.1 s (2.9x; 2.8x in a second run, 2.6x at 800x600). So the 3x target
- * of issue 14 is met at 1M glyphs but not quite at 100k (fewer glyphs hide
- * each other there). A gamma change still only sets uniforms (the upload
- * count stays the same).
+ * culling off (TestSuperquadricGlyphCulling). Measurements (up to 5x shorter
+ * frames for 1M glyphs on llvmpipe) are in docs/performance.md. A gamma
+ * change only sets uniforms (nothing is uploaded again).
  *
  * Picking: vtkHardwareSelector prop picking and point-id selection (the ids
  * of the input points; for composite inputs the ids within the concatenation

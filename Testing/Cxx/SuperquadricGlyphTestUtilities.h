@@ -1,7 +1,7 @@
 // Helpers of the superquadric glyph tests: hand-made tensors with known
 // eigen-systems, and an INDEPENDENT CPU reference of the glyphs: eigenvectors
 // from vtkMath::Jacobi, Kindlmann's rule and the scale rule written out here
-// from the paper and ../shared/docs/field-notes.md (not the SplineViz code),
+// from the papers and Teem's documented rule (not the SplineViz code),
 // polygonal superquadrics from vtkSuperquadricSource, placed, rotated and
 // scaled by the eigen-system and drawn by a standard vtkPolyDataMapper.
 #ifndef SuperquadricGlyphTestUtilities_h

@@ -1,4 +1,4 @@
-// Hostile sizes on the GPU (issue 13): data larger than the GPU's buffer
+// Hostile sizes on the GPU: data larger than the GPU's buffer
 // limits must give one clear error (vtkErrorMacro, naming the limit) and
 // draw nothing, never crash or draw stale or partial data. The limit is
 // forced small with SPLINEVIZ_GPU_BUFFER_LIMIT (texels per GPU buffer, or

@@ -1,5 +1,5 @@
 // Progress, abort, hostile sizes and vtkStreamTracer API parity of the
-// SplineViz filters and readers (issue 13):
+// SplineViz filters and readers:
 //  - progress: every long-running filter and reader (LR-spline resample and
 //    probe, both tracers, the tensor analysis, the synthetic fibers, the
 //    LR-spline reader) sends vtkCommand::ProgressEvent several times (>= 5
