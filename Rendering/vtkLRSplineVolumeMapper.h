@@ -75,7 +75,7 @@
  *
  * Performance (Benchmarks/BenchmarkLRSplineVolume against
  * vtkLRSplineResampleToImage + vtkSmartVolumeMapper, one run, 2 shared
- * cores, Mesa llvmpipe, 640x360; README "Performance"): on a quadratic
+ * cores, Mesa llvmpipe, 640x360; docs/performance.md): on a quadratic
  * volume of 33,762 elements refined 8 levels (256x between element sides)
  * the first frame takes 1.9 s with 13 MB on the GPU and an image error of
  * 0.001-0.005 / 255 against the exact CPU reference; resampling to 512^3

@@ -88,7 +88,7 @@
  *   the shared pixels (96.9-100 % with the half rings' polygons; before thin
  *   tubes stayed tubes: IoU 0.92 and 30 % on cb_2's whole view).
  *   The price on llvmpipe (one idle run of SplineVizTubeBenchmark, camera
- *   far, 60 frames, see the README): about one chord per segment on curved
+ *   far, 60 frames, see docs/performance.md): about one chord per segment on curved
  *   data; the frame 0.39 (800x600) and 0.43 (1200x768) times vtkTubeFilter's
  *   (12 sides) on Fibers2, 0.40 and 0.35 on the long smooth curves, 0.30 for
  *   1 M segments (with the half rings 0.45-0.51, 0.37-0.47, 0.53,
