@@ -63,6 +63,25 @@ vtkStandardNewMacro(vtkLRSplineVolumeMapper);
 
 namespace
 {
+// Binds the positions of `buffer` (attribute vertexMC, 3 floats) to
+// `program` in `array` (created on first use) unless `bound`, the program it
+// was last bound to, is that program already.
+void BindPositions(vtkSmartPointer<vtkOpenGLVertexArrayObject>& array, vtkShaderProgram*& bound,
+  vtkShaderProgram* program, vtkOpenGLBufferObject* buffer)
+{
+  if (!array)
+  {
+    array = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
+  }
+  if (bound != program)
+  {
+    array->ShaderProgramChanged();
+    array->Bind();
+    array->AddAttributeArray(program, buffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    bound = program;
+  }
+}
+
 constexpr int MaximumPatches = 16;
 constexpr int MaximumIsoValues = 8;
 constexpr int TransferFunctionSize = 1024;
@@ -1029,18 +1048,7 @@ bool vtkLRSplineVolumeMapper::RenderTrimmingDepths(
     in.Error = "the trimming shader did not compile or link";
     return false;
   }
-  if (!in.TrimArray)
-  {
-    in.TrimArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-  }
-  if (in.TrimArrayProgram != trimProgram)
-  {
-    in.TrimArray->ShaderProgramChanged();
-    in.TrimArray->Bind();
-    in.TrimArray->AddAttributeArray(
-      trimProgram, in.TrimBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-    in.TrimArrayProgram = trimProgram;
-  }
+  BindPositions(in.TrimArray, in.TrimArrayProgram, trimProgram, in.TrimBuffer);
   SetMatrix(trimProgram, "lrMCDCMatrix", dataToClip);
   for (int pass = 0; pass < 2; ++pass)
   {
@@ -1602,18 +1610,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   // Draw the back faces of the proxy box: every pixel the volume may cover
   // runs its ray once, also with the camera inside the box.
-  if (!in.CubeArray)
-  {
-    in.CubeArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-  }
-  if (in.CubeArrayProgram != program)
-  {
-    in.CubeArray->ShaderProgramChanged();
-    in.CubeArray->Bind();
-    in.CubeArray->AddAttributeArray(
-      program, in.CubeBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-    in.CubeArrayProgram = program;
-  }
+  BindPositions(in.CubeArray, in.CubeArrayProgram, program, in.CubeBuffer);
   in.Passes = 1;
   if (multiPass && !this->DrawPasses(ren, program, dataToClip, viewport, stepsPerPass, maxSteps))
   {
@@ -1838,18 +1835,7 @@ bool vtkLRSplineVolumeMapper::DrawPasses(vtkRenderer* ren, vtkShaderProgram* pro
     in.Error = "the final shader of the multi-pass continuation did not compile";
     return false;
   }
-  if (!in.CompositeArray)
-  {
-    in.CompositeArray = vtkSmartPointer<vtkOpenGLVertexArrayObject>::New();
-  }
-  if (in.CompositeArrayProgram != composite)
-  {
-    in.CompositeArray->ShaderProgramChanged();
-    in.CompositeArray->Bind();
-    in.CompositeArray->AddAttributeArray(
-      composite, in.CubeBuffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
-    in.CompositeArrayProgram = composite;
-  }
+  BindPositions(in.CompositeArray, in.CompositeArrayProgram, composite, in.CubeBuffer);
   SetMatrix(composite, "lrMCDCMatrix", dataToClip);
   const float viewportF[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
     static_cast<float>(w), static_cast<float>(h) };

@@ -222,16 +222,8 @@ void vtkRayCastTubeMapper::SetCameraShaderParameters(
   double range[2];
   ren->GetActiveCamera()->GetClippingRange(range);
   cellBO.Program->SetUniformf("tubeNearPlane", static_cast<float>(range[0]));
-  // Pixels per view unit (at unit distance for perspective), for the
-  // straightness tolerance.
-  vtkMatrix4x4* vcdc = GetViewToDisplayMatrix(ren);
-  int width = 1;
-  int height = 1;
-  ren->GetTiledSize(&width, &height);
-  cellBO.Program->SetUniformf("tubePixelScale",
-    static_cast<float>(0.5 *
-      std::max(
-        std::abs(vcdc->GetElement(0, 0)) * width, std::abs(vcdc->GetElement(1, 1)) * height)));
+  // For the straightness tolerance.
+  cellBO.Program->SetUniformf("tubePixelScale", static_cast<float>(GetPixelScale(ren)));
 }
 
 //------------------------------------------------------------------------------

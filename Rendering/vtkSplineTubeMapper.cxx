@@ -810,13 +810,7 @@ void vtkSplineTubeMapper::SetCameraShaderParameters(
   if (program->IsUniformUsed("tubeMinimumRadius"))
   {
     // The narrowest drawn radius at view distance d: a + b d (view units).
-    vtkMatrix4x4* vcdc = GetViewToDisplayMatrix(ren);
-    int width = 1;
-    int height = 1;
-    ren->GetTiledSize(&width, &height);
-    const double pixelScale = 0.5 *
-      std::max(std::abs(vcdc->GetElement(0, 0)) * width, std::abs(vcdc->GetElement(1, 1)) * height);
-    const double halfWidth = 0.5 * this->MinimumPixelWidth / std::max(pixelScale, 1e-30);
+    const double halfWidth = 0.5 * this->MinimumPixelWidth / std::max(GetPixelScale(ren), 1e-30);
     const bool parallel = ren->GetActiveCamera()->GetParallelProjection() != 0;
     const float minimum[2] = { static_cast<float>(parallel ? halfWidth : 0.0),
       static_cast<float>(parallel ? 0.0 : halfWidth) };
@@ -827,6 +821,17 @@ void vtkSplineTubeMapper::SetCameraShaderParameters(
     program->SetUniformMatrix4x4("tubeVCMC", viewModel);
   }
   program->SetUniformMatrix("VCDCMatrix", GetViewToDisplayMatrix(ren));
+}
+
+//------------------------------------------------------------------------------
+double vtkSplineTubeMapper::GetPixelScale(vtkRenderer* ren)
+{
+  vtkMatrix4x4* vcdc = GetViewToDisplayMatrix(ren);
+  int width = 1;
+  int height = 1;
+  ren->GetTiledSize(&width, &height);
+  return 0.5 *
+    std::max(std::abs(vcdc->GetElement(0, 0)) * width, std::abs(vcdc->GetElement(1, 1)) * height);
 }
 
 //------------------------------------------------------------------------------

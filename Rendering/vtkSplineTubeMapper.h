@@ -416,6 +416,12 @@ protected:
    */
   static vtkMatrix4x4* GetViewToDisplayMatrix(vtkRenderer* ren);
 
+  /**
+   * Pixels per view unit of the renderer's camera (at unit distance for a
+   * perspective camera), the larger of the two axes.
+   */
+  static double GetPixelScale(vtkRenderer* ren);
+
   double Radius = 0.0;
   double AutomaticRadiusBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   double EffectiveRadius = 0.0;

@@ -434,13 +434,7 @@ void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
   float radiusScale = 1.0f;
   this->ComputeTubeMatrices(ren, act, modelView, viewModel, radiusScale);
   const bool parallel = ren->GetActiveCamera()->GetParallelProjection() != 0;
-  // Pixels per view unit (at distance 1 for a perspective camera).
-  vtkMatrix4x4* vcdc = GetViewToDisplayMatrix(ren);
-  int width = 1;
-  int height = 1;
-  ren->GetTiledSize(&width, &height);
-  const double pixelsPerUnit =
-    0.5 * std::max(vcdc->GetElement(0, 0) * width, vcdc->GetElement(1, 1) * height);
+  const double pixelsPerUnit = GetPixelScale(ren);
   std::vector<double> view(modelView, modelView + 16);
   view.insert(view.end(),
     { static_cast<double>(radiusScale), parallel ? 1.0 : 0.0, pixelsPerUnit,

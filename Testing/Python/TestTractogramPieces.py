@@ -40,9 +40,9 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkCommand
 
 import splineviz
+from splineviz_testing import output_dir
 
-out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
-os.makedirs(out, exist_ok=True)
+out = output_dir()
 failures = []
 PIECES = (1, 2, 3, 7)
 
