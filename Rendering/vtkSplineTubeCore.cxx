@@ -324,6 +324,12 @@ vtkIdType vtkSplineTubeCore::GetTubeCellId(vtkIdType tube) const
   return this->Internal->Tubes[tube].CellId;
 }
 
+vtkIdType vtkSplineTubeCore::GetTubeCellIndex(vtkIdType tube) const
+{
+  const Internals& in = *this->Internal;
+  return in.Sources[in.Tubes[tube].Source].FirstCellId + in.Tubes[tube].Line;
+}
+
 unsigned int vtkSplineTubeCore::GetTubeBlockId(vtkIdType tube) const
 {
   const Internals& in = *this->Internal;
@@ -667,8 +673,8 @@ void vtkSplineTubeCore::GetNodeColor(vtkIdType node, double rgba[4]) const
     std::fill(rgba, rgba + 4, 1.0);
     return;
   }
-  const vtkIdType tuple = s.ColorsPerCell ? s.FirstCellId + in.Tubes[t].Line
-                                          : in.PointId(t, node - in.TubeFirst[t]);
+  const vtkIdType tuple =
+    s.ColorsPerCell ? s.FirstCellId + in.Tubes[t].Line : in.PointId(t, node - in.TubeFirst[t]);
   const unsigned char* c = s.Colors->GetPointer(4 * tuple);
   for (int k = 0; k < 4; ++k)
   {
@@ -819,9 +825,8 @@ void vtkSplineTubeCore::FillScalars(vtkIdType first, vtkIdType count, float* sca
 }
 
 //------------------------------------------------------------------------------
-void vtkSplineTubeCore::PropagateFrames(
-  vtkIdType t, vtkIdType n, const std::function<void(vtkIdType k, const double frame[3])>& write)
-  const
+void vtkSplineTubeCore::PropagateFrames(vtkIdType t, vtkIdType n,
+  const std::function<void(vtkIdType k, const double frame[3])>& write) const
 {
   // The tube's first n nodes (at least two) and their derivatives.
   const Internals& in = *this->Internal;
@@ -836,8 +841,8 @@ void vtkSplineTubeCore::PropagateFrames(
   // the derivative vanishes (a cusp of the spline).
   auto unitTangent = [&](vtkIdType s, double u)
   {
-    vec3 d = vec3(
-      vtkSplineTubeMath::svHermiteDerivative(node(s), deriv(s), node(s + 1), deriv(s + 1), u));
+    vec3 d =
+      vec3(vtkSplineTubeMath::svHermiteDerivative(node(s), deriv(s), node(s + 1), deriv(s + 1), u));
     double len = glm::length(d);
     if (len < 1e-12)
     {
@@ -971,8 +976,7 @@ void vtkSplineTubeCore::BuildChunks()
       control[2][c] = b[c] - db[c] / 3.0;
       control[3][c] = b[c];
       box[2 * c] = std::min({ control[0][c], control[1][c], control[2][c], control[3][c] }) - r;
-      box[2 * c + 1] =
-        std::max({ control[0][c], control[1][c], control[2][c], control[3][c] }) + r;
+      box[2 * c + 1] = std::max({ control[0][c], control[1][c], control[2][c], control[3][c] }) + r;
     }
   };
   struct Scratch

@@ -171,9 +171,14 @@ public:
   vtkIdType GetTubeFirstNode(vtkIdType tube) const;
   vtkIdType GetTubeNumberOfNodes(vtkIdType tube) const;
   vtkIdType GetTubeCellId(vtkIdType tube) const;
+  /// The polyline's index among the cells of its input (never the original id).
+  vtkIdType GetTubeCellIndex(vtkIdType tube) const;
   unsigned int GetTubeBlockId(vtkIdType tube) const;
   vtkIdType GetTubeOfNode(vtkIdType node) const;
-  vtkIdType GetTubeFirstSegment(vtkIdType tube) const { return this->GetTubeFirstNode(tube) - tube; }
+  vtkIdType GetTubeFirstSegment(vtkIdType tube) const
+  {
+    return this->GetTubeFirstNode(tube) - tube;
+  }
   ///@}
 
   ///@{

@@ -11,12 +11,15 @@
 #include "vtkCamera.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataPipeline.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
@@ -41,6 +44,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <sstream>
 #include <vector>
 
@@ -70,6 +75,7 @@ vtkSplineTubeMapper::vtkSplineTubeMapper()
 vtkSplineTubeMapper::~vtkSplineTubeMapper()
 {
   this->SetRadiusArray(nullptr);
+  this->SetVisibilityArray(nullptr);
   this->SetCellIdArrayName(nullptr);
 }
 
@@ -99,10 +105,10 @@ std::string vtkSplineTubeMapper::BuildSignature()
 {
   std::ostringstream s;
   s.precision(17);
-  s << this->Radius << '|' << this->AutomaticRadiusBounds[0] << ',' << this->AutomaticRadiusBounds[1]
-    << ',' << this->AutomaticRadiusBounds[2] << ',' << this->AutomaticRadiusBounds[3] << ','
-    << this->AutomaticRadiusBounds[4] << ',' << this->AutomaticRadiusBounds[5] << '|'
-    << (this->RadiusArray ? this->RadiusArray : "") << '|'
+  s << this->Radius << '|' << this->AutomaticRadiusBounds[0] << ','
+    << this->AutomaticRadiusBounds[1] << ',' << this->AutomaticRadiusBounds[2] << ','
+    << this->AutomaticRadiusBounds[3] << ',' << this->AutomaticRadiusBounds[4] << ','
+    << this->AutomaticRadiusBounds[5] << '|' << (this->RadiusArray ? this->RadiusArray : "") << '|'
     << this->RadiusScale << '|' << (this->CellIdArrayName ? this->CellIdArrayName : "") << '|'
     << this->ScalarVisibility << '|' << this->ScalarMode << '|' << this->ArrayAccessMode << '|'
     << this->ArrayId << '|' << this->ArrayName << '|' << this->ArrayComponent << '|'
@@ -128,33 +134,44 @@ double vtkSplineTubeMapper::ComputeAutomaticRadius(const double bounds[6])
 
 namespace
 {
-// The bounds of the points of every polydata in `input` (invalid if none).
-void ComputeInputBounds(vtkDataObject* input, double bounds[6])
+// Call `visit(polydata, block id)` for every polydata of `input`: the input
+// itself (block 0) or the non-empty polydata leaves of a composite data set
+// (their flat indices), the blocks the tubes are built from.
+void ForEachPolyData(
+  vtkDataObject* input, const std::function<void(vtkPolyData*, unsigned int)>& visit)
 {
-  vtkBoundingBox box;
-  auto add = [&box](vtkDataObject* leaf)
-  {
-    auto* pd = vtkPolyData::SafeDownCast(leaf);
-    if (pd && pd->GetNumberOfPoints() > 0)
-    {
-      double b[6];
-      pd->GetBounds(b);
-      box.AddBounds(b);
-    }
-  };
   if (auto* cd = vtkCompositeDataSet::SafeDownCast(input))
   {
     auto it = vtk::TakeSmartPointer(cd->NewIterator());
     it->SkipEmptyNodesOn();
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
-      add(it->GetCurrentDataObject());
+      if (auto* pd = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
+      {
+        visit(pd, it->GetCurrentFlatIndex());
+      }
     }
   }
-  else
+  else if (auto* pd = vtkPolyData::SafeDownCast(input))
   {
-    add(input);
+    visit(pd, 0);
   }
+}
+
+// The bounds of the points of every polydata in `input` (invalid if none).
+void ComputeInputBounds(vtkDataObject* input, double bounds[6])
+{
+  vtkBoundingBox box;
+  ForEachPolyData(input,
+    [&box](vtkPolyData* pd, unsigned int)
+    {
+      if (pd->GetNumberOfPoints() > 0)
+      {
+        double b[6];
+        pd->GetBounds(b);
+        box.AddBounds(b);
+      }
+    });
   if (box.IsValid())
   {
     box.GetBounds(bounds);
@@ -171,10 +188,21 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
 {
   vtkDataObject* input = this->GetInputDataObject(0, 0);
   const std::string signature = this->BuildSignature();
-  if (input == this->LastInput && input && input->GetMTime() == this->LastInputMTime &&
-    signature == this->LastSignature && this->CoreBuildTime.GetMTime() > 0)
+  if (input && signature == this->LastSignature && this->CoreBuildTime.GetMTime() > 0)
   {
-    return false;
+    if (input == this->LastInput && input->GetMTime() == this->LastInputMTime)
+    {
+      return false;
+    }
+    // A new or modified input whose tube data is the same (only other
+    // arrays changed, e.g. a selection's): keep the tubes.
+    std::string key = this->InputContentKey(input);
+    if (key == this->LastContentKey)
+    {
+      this->LastInput = input;
+      this->LastInputMTime = input->GetMTime();
+      return false;
+    }
   }
 
   this->Core->Initialize();
@@ -297,8 +325,115 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
   this->LastInput = input;
   this->LastInputMTime = input ? input->GetMTime() : 0;
   this->LastSignature = signature;
+  this->LastContentKey = this->InputContentKey(input);
   this->CoreBuildTime.Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSplineTubeMapper::InputContentKey(vtkDataObject* input)
+{
+  std::ostringstream key;
+  auto identity = [&key](vtkObject* object)
+  { key << object << ':' << (object ? object->GetMTime() : 0) << ','; };
+  ForEachPolyData(input,
+    [&](vtkPolyData* pd, unsigned int blockId)
+    {
+      key << '[' << blockId << ':' << pd->GetNumberOfVerts() << ':' << pd->GetNumberOfCells()
+          << ',';
+      identity(pd->GetPoints() ? pd->GetPoints()->GetData() : nullptr);
+      vtkCellArray* lines = pd->GetLines();
+      identity(lines);
+      if (lines)
+      {
+        identity(lines->GetOffsetsArray());
+        identity(lines->GetConnectivityArray());
+      }
+      int cellFlag = 0;
+      identity(vtkAbstractMapper::GetAbstractScalars(
+        pd, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag));
+      identity(this->RadiusArray ? pd->GetPointData()->GetArray(this->RadiusArray) : nullptr);
+      // Original cell ids are often made anew by each execution (ParaView's
+      // geometry filter): compared by value.
+      vtkDataArray* ids =
+        this->CellIdArrayName ? pd->GetCellData()->GetArray(this->CellIdArrayName) : nullptr;
+      if (ids)
+      {
+        const vtkIdType n = ids->GetNumberOfValues();
+        std::uint64_t hash = 1469598103934665603ull;
+        for (vtkIdType i = 0; i < n; ++i)
+        {
+          hash = (hash ^ static_cast<std::uint64_t>(ids->GetVariantValue(i).ToLongLong())) *
+            1099511628211ull;
+        }
+        key << "ids:" << n << ':' << hash;
+      }
+      key << ']';
+    });
+  return key.str();
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::UpdateLineMask()
+{
+  const bool wanted = this->VisibilityArray && this->VisibilityArray[0];
+  vtkDataObject* input = this->GetInputDataObject(0, 0);
+  std::ostringstream signature;
+  signature << (wanted ? this->VisibilityArray : "") << '|' << input << '|'
+            << (input ? input->GetMTime() : 0) << '|' << this->CoreBuildTime.GetMTime();
+  if (signature.str() == this->LastMaskSignature)
+  {
+    return;
+  }
+  this->LastMaskSignature = signature.str();
+  const vtkIdType numTubes = this->Core->GetNumberOfTubes();
+  this->NumberOfVisibleLines = numTubes;
+  this->LineMaskTime.Modified();
+  if (!wanted)
+  {
+    this->LineMask.clear();
+    this->Visibility->SetLineMask(nullptr);
+    return;
+  }
+  // The array of each block (by flat index).
+  std::vector<vtkDataArray*> arrays;
+  ForEachPolyData(input,
+    [&](vtkPolyData* pd, unsigned int blockId)
+    {
+      vtkDataArray* array = pd->GetCellData()->GetArray(this->VisibilityArray);
+      if (!array || array->GetNumberOfComponents() != 1 ||
+        array->GetNumberOfTuples() != pd->GetNumberOfCells())
+      {
+        vtkErrorMacro(<< "The visibility array \"" << this->VisibilityArray << "\" is "
+                      << (array ? "not one value per cell" : "not a cell array") << " of block "
+                      << blockId << ": all its lines are drawn.");
+        return;
+      }
+      if (arrays.size() <= blockId)
+      {
+        arrays.resize(blockId + 1, nullptr);
+      }
+      arrays[blockId] = array;
+    });
+  this->LineMask.assign(static_cast<size_t>(numTubes), 1);
+  vtkSplineTubeCore* core = this->Core;
+  vtkSMPTools::For(0, numTubes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const unsigned int block = core->GetTubeBlockId(t);
+        vtkDataArray* array = block < arrays.size() ? arrays[block] : nullptr;
+        if (array)
+        {
+          const double value = array->GetComponent(core->GetTubeCellIndex(t), 0);
+          this->LineMask[t] = (value != 0.0 && !std::isnan(value)) ? 1 : 0;
+        }
+      }
+    });
+  this->NumberOfVisibleLines =
+    static_cast<vtkIdType>(std::count(this->LineMask.begin(), this->LineMask.end(), 1));
+  this->Visibility->SetLineMask(this->LineMask.data());
 }
 
 //------------------------------------------------------------------------------
@@ -348,6 +483,7 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
     this->SetVisibilityChunks();
     this->UploadTime.Modified();
   }
+  this->UpdateLineMask();
   // Interaction: the render window's desired rate (VTK's interactors raise
   // it while the camera moves), or the representation's LOD mapper.
   this->InteractiveRender = this->InteractiveSubset &&
@@ -593,8 +729,8 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
         static_cast<float*>(destination));
     });
   ok = ok &&
-    this->NodeInfoBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 1,
-      VTK_TYPE_UINT32, GL_R32UI,
+    this->NodeInfoBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 1, VTK_TYPE_UINT32,
+      GL_R32UI,
       [&](size_t first, size_t count, void* destination)
       {
         core->FillNodeInfo(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
@@ -618,8 +754,8 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
   if (this->HaveColors)
   {
     ok = ok &&
-      this->ColorsBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 1,
-        VTK_TYPE_UINT32, GL_R32UI,
+      this->ColorsBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 1, VTK_TYPE_UINT32,
+        GL_R32UI,
         [&](size_t first, size_t count, void* destination)
         {
           core->FillColors(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
@@ -1002,6 +1138,8 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << this->AutomaticRadiusBounds[5] << "\n";
   os << indent << "MinimumPixelWidth: " << this->MinimumPixelWidth << "\n";
   os << indent << "RadiusArray: " << (this->RadiusArray ? this->RadiusArray : "(none)") << "\n";
+  os << indent << "VisibilityArray: " << (this->VisibilityArray ? this->VisibilityArray : "(none)")
+     << "\n";
   os << indent << "RadiusScale: " << this->RadiusScale << "\n";
   os << indent << "CellIdArrayName: " << (this->CellIdArrayName ? this->CellIdArrayName : "(none)")
      << "\n";

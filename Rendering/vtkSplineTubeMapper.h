@@ -127,6 +127,25 @@ public:
 
   ///@{
   /**
+   * Name of a one-component cell array that says which polylines to draw
+   * (a streamline selection, e.g. vtkStreamlineSelection's "Selected"
+   * array): a polyline whose value is 0 or NaN is left out, any other value
+   * draws it. nullptr or "" (default): all are drawn. When only this
+   * array's values change (the points, lines and coloring arrays are the
+   * same arrays as before), the next frame draws the new selection without
+   * building or uploading the tubes again: the hidden lines' chunks are
+   * dropped from the per-view work. A block without the array is drawn
+   * whole, with an error. The bounds and the automatic radius stay those of
+   * all lines, so that the view does not jump when the selection changes.
+   */
+  vtkSetStringMacro(VisibilityArray);
+  vtkGetStringMacro(VisibilityArray);
+  /// Lines the last render could draw (all tubes without VisibilityArray).
+  vtkIdType GetNumberOfVisibleLines() const { return this->NumberOfVisibleLines; }
+  ///@}
+
+  ///@{
+  /**
    * Factor applied to the values of RadiusArray. Default 1.
    */
   vtkSetClampMacro(RadiusScale, double, 0.0, VTK_DOUBLE_MAX);
@@ -272,6 +291,16 @@ protected:
    */
   void DrawVisibleChunks(vtkRenderer* ren, vtkActor* act,
     const std::function<void(const std::vector<std::uint32_t>& chunks)>& draw);
+
+  /**
+   * Per tube, whether VisibilityArray selects it (1) or not (0); nullptr
+   * when every tube is drawn. Changed at GetLineMaskTime().
+   */
+  const unsigned char* GetLineMask() const
+  {
+    return this->LineMask.empty() ? nullptr : this->LineMask.data();
+  }
+  vtkMTimeType GetLineMaskTime() const { return this->LineMaskTime.GetMTime(); }
 
   /// Whether this render draws the interaction subset (set by RenderPiece()).
   bool IsInteractiveRender() const { return this->InteractiveRender; }
@@ -427,6 +456,7 @@ protected:
   double EffectiveRadius = 0.0;
   double MinimumPixelWidth = 1.0;
   char* RadiusArray = nullptr;
+  char* VisibilityArray = nullptr;
   double RadiusScale = 1.0;
   char* CellIdArrayName = nullptr;
   bool OcclusionCulling = true;
@@ -460,6 +490,15 @@ private:
 
   /// Everything the tube data depends on besides the input's contents.
   std::string BuildSignature();
+  /**
+   * What of the input's contents the tube data depends on: per block its
+   * points, lines, radius and coloring arrays (by identity and modification
+   * time) and its original cell ids (by value). Equal keys: the built tubes
+   * still hold, whatever else changed (e.g. the VisibilityArray's values).
+   */
+  std::string InputContentKey(vtkDataObject* input);
+  /// Read VisibilityArray into LineMask when the input or the tubes changed.
+  void UpdateLineMask();
   /// Read the renderer's part of the depth buffer into DepthImage and build the pyramid.
   bool ReadDepthPyramid(vtkRenderer* ren);
 
@@ -478,7 +517,12 @@ private:
   struct PyramidHolder;
   std::unique_ptr<PyramidHolder> Pyramid;
   std::string LastSignature;
+  std::string LastContentKey;
   vtkMTimeType LastInputMTime = 0;
+  std::vector<unsigned char> LineMask;
+  vtkTimeStamp LineMaskTime;
+  std::string LastMaskSignature;
+  vtkIdType NumberOfVisibleLines = 0;
   vtkDataObject* LastInput = nullptr;
 };
 

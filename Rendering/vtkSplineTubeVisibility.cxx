@@ -329,7 +329,8 @@ void vtkSplineTubeVisibility::BeginFrame(
       for (vtkIdType i = begin; i < end; ++i)
       {
         const vtkIdType c = candidate(i);
-        if (!all && Rank(this->Lines[c]) >= fraction)
+        if ((!all && Rank(this->Lines[c]) >= fraction) ||
+          (this->LineMask && !this->LineMask[this->Lines[c]]))
         {
           continue;
         }

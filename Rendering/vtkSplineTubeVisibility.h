@@ -10,7 +10,8 @@
  * renderer draws for it. Per frame:
  *
  * 1. BeginFrame(): the chunks of the lines in the subset (Rank(line) <
- *    fraction; nested subsets, spatially even in expectation) that meet the
+ *    fraction; nested subsets, spatially even in expectation) and not
+ *    hidden by the line mask (SetLineMask(), a selection) that meet the
  *    view frustum are projected to conservative pixel rectangles and nearest
  *    window depths, ordered front to back and split into groups: first the
  *    chunks that were visible in the last frame (a hint only: correctness never
@@ -92,6 +93,13 @@ public:
   static void DecodePart(const float chunk[4], std::uint32_t code, float part[4]);
   ///@}
 
+  /**
+   * Lines to leave out whatever the view: `mask[line]` 0 hides a line's
+   * chunks (a streamline selection), nullptr (default) shows all. The array
+   * must live until the next SetLineMask() or SetChunks().
+   */
+  void SetLineMask(const unsigned char* mask) { this->LineMask = mask; }
+
   /// Rank of a line in [0, 1): a hash of its index, so subsets are stable and nested.
   static double Rank(std::uint32_t line);
 
@@ -148,6 +156,7 @@ private:
   const std::uint32_t* Lines = nullptr;
   const std::uint32_t* Parts = nullptr;
   const std::uint32_t* PartFirsts = nullptr;
+  const unsigned char* LineMask = nullptr;
   vtkIdType NumberOfChunks = 0;
   static constexpr int RankBuckets = 65536;
   std::vector<std::uint32_t> RankOrder;   ///< chunks by their line's rank

@@ -282,8 +282,8 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   }
   starts[numTubes] = static_cast<vtkTypeUInt32>(numNodes);
   in.LastShadowKey.clear();
-  ok = ok &&
-    in.TubeStarts.Upload(window, starts.data(), numTubes + 1, 1, VTK_TYPE_UINT32, GL_R32UI);
+  ok =
+    ok && in.TubeStarts.Upload(window, starts.data(), numTubes + 1, 1, VTK_TYPE_UINT32, GL_R32UI);
   ok = ok && this->TubesBuffer->Upload(window, tubes.data(), numTubes, 2, VTK_TYPE_INT32, GL_RG32I);
 
   // Colors (RGBA8), with scalar coloring.
@@ -315,8 +315,8 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
         {
           auto* coords = static_cast<float*>(destination);
           std::vector<float> orientation(count);
-          core->FillScalars(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
-            orientation.data());
+          core->FillScalars(
+            static_cast<vtkIdType>(first), static_cast<vtkIdType>(count), orientation.data());
           const vtkIdType end = static_cast<vtkIdType>(first + count);
           std::vector<double> p;
           for (vtkIdType b = static_cast<vtkIdType>(first), t = core->GetTubeOfNode(b); b < end;
@@ -332,7 +332,8 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
             {
               if (k > 0)
               {
-                const double d = std::sqrt(vtkMath::Distance2BetweenPoints(&p[4 * k - 4], &p[4 * k]));
+                const double d =
+                  std::sqrt(vtkMath::Distance2BetweenPoints(&p[4 * k - 4], &p[4 * k]));
                 s += radii ? 0.5 * d * (1.0 / p[4 * k - 1] + 1.0 / p[4 * k + 3]) : d;
               }
               const vtkIdType i = tubeFirst + k;
@@ -559,7 +560,8 @@ bool vtkStylizedLineMapper::UpdateShadowMap(
   std::vector<double> key(in.ShadowView, in.ShadowView + 16);
   key.insert(key.end(),
     { radius, static_cast<double>(this->ShadowMapResolution),
-      static_cast<double>(this->UploadTime.GetMTime()), static_cast<double>(act->GetMTime()) });
+      static_cast<double>(this->UploadTime.GetMTime()), static_cast<double>(act->GetMTime()),
+      static_cast<double>(this->GetLineMaskTime()) });
   if (key == in.LastShadowKey && in.ShadowMap)
   {
     return true;
@@ -655,16 +657,45 @@ bool vtkStylizedLineMapper::UpdateShadowMap(
     program->SetUniformf("lineWiden", 1.0f);
     program->SetUniformi("lineHaloPass", 0);
     program->SetUniformi("lineMode", STRIPS);
-    glMultiDrawArrays(GL_TRIANGLE_STRIP, in.WholeFirsts.data(), in.WholeCounts.data(),
-      static_cast<GLsizei>(in.WholeFirsts.size()));
-    if (this->Capping)
+    // Only the lines drawn cast shadows (see VisibilityArray).
+    const unsigned char* mask = this->GetLineMask();
+    std::vector<int> firsts;
+    std::vector<int> counts;
+    std::vector<std::uint32_t> caps;
+    if (mask)
+    {
+      for (size_t t = 0; t < in.WholeFirsts.size(); ++t)
+      {
+        if (mask[t])
+        {
+          firsts.push_back(in.WholeFirsts[t]);
+          counts.push_back(in.WholeCounts[t]);
+          caps.push_back(static_cast<std::uint32_t>(2 * t));
+          caps.push_back(static_cast<std::uint32_t>(2 * t + 1));
+        }
+      }
+    }
+    const std::vector<int>& drawFirsts = mask ? firsts : in.WholeFirsts;
+    const std::vector<int>& drawCounts = mask ? counts : in.WholeCounts;
+    if (!drawFirsts.empty())
+    {
+      glMultiDrawArrays(GL_TRIANGLE_STRIP, drawFirsts.data(), drawCounts.data(),
+        static_cast<GLsizei>(drawFirsts.size()));
+    }
+    const bool capList = mask && !caps.empty() &&
+      in.CapsBuffer.Upload(window, caps.data(), caps.size(), 1, VTK_TYPE_UINT32, GL_R32UI);
+    if (capList)
+    {
+      in.CapsBuffer.Activate(program, "lineCaps");
+    }
+    if (this->Capping && (!mask || capList))
     {
       in.Meshes->Bind();
       program->SetUniformi("lineMode", CAPS);
-      program->SetUniformi("lineCapList", 0);
+      program->SetUniformi("lineCapList", capList ? 1 : 0);
       glDrawElementsInstanced(GL_TRIANGLES, 3 * in.MeshSides, GL_UNSIGNED_SHORT,
         reinterpret_cast<const void*>(6 * sizeof(unsigned short) * in.MeshSides),
-        static_cast<GLsizei>(2 * this->Core->GetNumberOfTubes()));
+        static_cast<GLsizei>(capList ? caps.size() : 2 * this->Core->GetNumberOfTubes()));
       in.Meshes->Release();
     }
   }

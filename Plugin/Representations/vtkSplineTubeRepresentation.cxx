@@ -52,14 +52,27 @@ void vtkSplineTubeRepresentation::SetRadius(double radius)
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+// ParaView's array lists say "None" (or nothing) for no array.
+const char* ArrayOrNull(const char* name)
+{
+  return (name && (name[0] == '\0' || std::strcmp(name, "None") == 0)) ? nullptr : name;
+}
+}
+
 void vtkSplineTubeRepresentation::SetRadiusArray(const char* name)
 {
-  if (name && (name[0] == '\0' || std::strcmp(name, "None") == 0))
-  {
-    name = nullptr;
-  }
-  this->GetTubeMapper()->SetRadiusArray(name);
-  this->GetLODTubeMapper()->SetRadiusArray(name);
+  this->GetTubeMapper()->SetRadiusArray(ArrayOrNull(name));
+  this->GetLODTubeMapper()->SetRadiusArray(ArrayOrNull(name));
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeRepresentation::SetVisibilityArray(const char* name)
+{
+  this->GetTubeMapper()->SetVisibilityArray(ArrayOrNull(name));
+  this->GetLODTubeMapper()->SetVisibilityArray(ArrayOrNull(name));
   this->Modified();
 }
 

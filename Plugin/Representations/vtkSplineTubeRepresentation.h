@@ -39,10 +39,12 @@ public:
   ///@{
   /**
    * Forwarded to the tube mappers (see vtkSplineTubeMapper). A radius array
-   * name that is empty or "None" selects the constant Radius.
+   * name that is empty or "None" selects the constant Radius; a visibility
+   * array name that is empty or "None" draws all lines.
    */
   void SetRadius(double radius);
   void SetRadiusArray(const char* name);
+  void SetVisibilityArray(const char* name);
   void SetRadiusScale(double scale);
   void SetOcclusionCulling(bool culling);
   void SetMinimumPixelWidth(double width);

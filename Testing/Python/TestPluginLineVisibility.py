@@ -1,0 +1,105 @@
+"""pvbatch: the line representations' Visibility Array.
+
+SyntheticFibers with a cell array "Selected" made by ParaView's Calculator
+(1 for the lines with TubeId above a threshold, else 0) is drawn by each line
+representation ("Ray-Cast Tubes", "Tessellated Tubes", "Stylized Lines") with
+Visibility Array = Selected, and compared with the same representation of
+ParaView's Threshold of the selected lines (extracted as polylines): at most 0.05 % of
+the drawn pixels may differ by more than 8/255 in a channel (the two place
+the uploaded coordinates around different centres, so float rounding shades
+a few hundred pixels by 1-6 levels and flips a few edge pixels; the Python
+test TestLineVisibility, which keeps the centres equal, checks exact
+equality).
+Then the selection changes (the Calculator's function: the other lines) and
+the image follows. Negative controls: Visibility Array None, and the old
+selection's reference, differ in many pixels.
+"""
+import sys
+
+import numpy as np
+
+from paraview.simple import *  # noqa: F401,F403
+from splineviz_testing import output_dir, png_rgb, white_view
+
+LoadPlugin(sys.argv[1], remote=False, ns=globals())
+out = output_dir()
+failures = []
+
+
+def check(ok, what):
+    print(("ok    " if ok else "ERROR: ") + what)
+    if not ok:
+        failures.append(what)
+
+
+fibers = SyntheticFibers(Preset=1)
+fibers.UpdatePipeline()
+tubes = int(fibers.GetCellDataInformation().GetArray("TubeId").GetRange()[1]) + 1
+half = tubes // 2
+calc = Calculator(Input=fibers, AttributeType="Cell Data", ResultArrayName="Selected",
+                  ResultArrayType="Unsigned Char")
+
+
+def select_above(threshold):
+    # 1 where TubeId > threshold, else 0.
+    calc.Function = "(sign(TubeId - %g) + 1) / 2" % (threshold + 0.5)
+
+
+def reference_source(lower, upper):
+    threshold = Threshold(Input=fibers, Scalars=["CELLS", "TubeId"], LowerThreshold=lower,
+                          UpperThreshold=upper)
+    return ExtractSurface(Input=threshold)
+
+
+def draw(source, representation, name, visibility=None):
+    view = white_view((500, 400))
+    view.CameraPosition = [0.3, 0.2, 2.2]
+    view.CameraFocalPoint = [0, 0, 0]
+    view.CameraViewUp = [0, 1, 0]
+    display = Show(source, view)
+    display.Representation = representation
+    display.TubeRadius = 0.008
+    ColorBy(display, None)
+    display.AmbientColor = display.DiffuseColor = [0.8, 0.3, 0.2]
+    if visibility:
+        display.VisibilityArray = visibility
+    png = "%s/TestPluginLineVisibility-%s.png" % (out, name)
+    SaveScreenshot(png, view, ImageResolution=[500, 400])
+    Delete(display)
+    Delete(view)
+    return png_rgb(png)
+
+
+def differing(a, b):
+    return int(np.count_nonzero(np.abs(a - b).max(axis=2) > 8))
+
+
+for representation in ("Ray-Cast Tubes", "Tessellated Tubes", "Stylized Lines"):
+    key = representation.split()[0].lower()
+    select_above(half)
+    upper = reference_source(half + 1, tubes)
+    lower = reference_source(0, half)
+    selected = draw(calc, representation, key + "-upper", "Selected")
+    reference = draw(upper, representation, key + "-upper-reference")
+    drawn = int(np.count_nonzero(np.any(reference != 255, axis=2)))
+    diff = differing(selected, reference)
+    check(drawn > 5000, "%s: the reference draws %d pixels" % (representation, drawn))
+    check(diff <= 0.0005 * drawn, "%s: %d pixels differ from the selected lines alone"
+          % (representation, diff))
+    everything = draw(calc, representation, key + "-all")
+    check(differing(everything, reference) > 0.1 * drawn,
+          "%s: control, all lines differ in %d pixels"
+          % (representation, differing(everything, reference)))
+    # A new selection: the other half.
+    calc.Function = "1 - (sign(TubeId - %g) + 1) / 2" % (half + 0.5)
+    changed = draw(calc, representation, key + "-lower", "Selected")
+    lower_reference = draw(lower, representation, key + "-lower-reference")
+    diff = differing(changed, lower_reference)
+    check(diff <= 0.0005 * drawn, "%s: after the change %d pixels differ from the new selection"
+          % (representation, diff))
+    check(differing(changed, reference) > 0.2 * drawn,
+          "%s: control, the old selection differs in %d pixels"
+          % (representation, differing(changed, reference)))
+
+if failures:
+    sys.exit(1)
