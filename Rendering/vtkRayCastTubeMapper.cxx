@@ -107,7 +107,12 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
     math + GetTubeNodesDeclarations() + GetTubeColorDeclarations());
   std::string declarations = vtkRayCastTubeFS;
   vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", math);
-  if (this->HaveColors)
+  const int colorMode = this->GetTubeColorMode();
+  if (colorMode == 2)
+  {
+    declarations += GetTubeDirectionColorDeclarations();
+  }
+  if (colorMode != 0)
   {
     vtkShaderProgram::Substitute(GSSource, "//VTK::TubeColor::GSDec",
       "flat out vec4 tubeC0GSOutput;\n"
@@ -160,10 +165,16 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
     "  vec4 tubeHitDC = VCDCMatrix * vertexVC;\n"
     "  gl_FragDepth = 0.5 * (gl_DepthRange.diff * (tubeHitDC.z / tubeHitDC.w) +\n"
     "    gl_DepthRange.near + gl_DepthRange.far);\n";
-  if (this->HaveColors)
+  if (colorMode == 1)
   {
     depth += "  vec4 tubeColor = clamp(svHermite(tubeC0VSOutput, tubeD0VSOutput, tubeC1VSOutput,\n"
              "    tubeD1VSOutput, tubeT), 0.0, 1.0);\n";
+  }
+  else if (colorMode == 2)
+  {
+    // The ends carry the position spline: its tangent at the hit.
+    depth += "  vec4 tubeColor = tubeDirectionColor(svHermiteDerivative(tubeC0VSOutput,\n"
+             "    tubeD0VSOutput, tubeC1VSOutput, tubeD1VSOutput, tubeT).xyz);\n";
   }
   depth += GetFragDepthWrittenMarker();
   vtkShaderProgram::Substitute(FSSource, "//VTK::Depth::Impl", depth);
@@ -208,7 +219,7 @@ void vtkRayCastTubeMapper::SetMapperShaderParameters(
   vtkShaderProgram* program = cellBO.Program;
   program->SetUniformi("subSegments", this->SubSegments);
   program->SetUniformi("tubeChunkSegments", vtkSplineTubeCore::ChunkSegments);
-  program->SetUniformi("tubeHaveColors", this->HaveColors ? 1 : 0);
+  program->SetUniformi("tubeHaveColors", this->GetTubeColorMode());
   program->SetUniformi("rootIterations", this->RootIterations);
   program->SetUniformi("rootSamples", this->RootSamples);
   program->SetUniformf("tubeStraightTolerance", static_cast<float>(this->StraightTolerance));
@@ -278,8 +289,8 @@ void vtkRayCastTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
       for (size_t first = 0; first < chunks.size(); first += DrawChunks)
       {
         const size_t count = std::min<size_t>(DrawChunks, chunks.size() - first);
-        glDrawArrays(GL_POINTS, static_cast<GLint>(first) * perChunk,
-          static_cast<GLsizei>(count) * perChunk);
+        glDrawArrays(
+          GL_POINTS, static_cast<GLint>(first) * perChunk, static_cast<GLsizei>(count) * perChunk);
         if (first + count < chunks.size())
         {
           glFinish();

@@ -110,11 +110,11 @@ std::string vtkSplineTubeMapper::BuildSignature()
     << this->AutomaticRadiusBounds[3] << ',' << this->AutomaticRadiusBounds[4] << ','
     << this->AutomaticRadiusBounds[5] << '|' << (this->RadiusArray ? this->RadiusArray : "") << '|'
     << this->RadiusScale << '|' << (this->CellIdArrayName ? this->CellIdArrayName : "") << '|'
-    << this->ScalarVisibility << '|' << this->ScalarMode << '|' << this->ArrayAccessMode << '|'
-    << this->ArrayId << '|' << this->ArrayName << '|' << this->ArrayComponent << '|'
-    << this->ColorMode << '|' << this->UseLookupTableScalarRange << '|' << this->ScalarRange[0]
-    << '|' << this->ScalarRange[1] << '|' << this->FieldDataTupleId << '|' << this->LookupTable
-    << '|' << (this->LookupTable ? this->LookupTable->GetMTime() : 0);
+    << this->DirectionColoring << '|' << this->ScalarVisibility << '|' << this->ScalarMode << '|'
+    << this->ArrayAccessMode << '|' << this->ArrayId << '|' << this->ArrayName << '|'
+    << this->ArrayComponent << '|' << this->ColorMode << '|' << this->UseLookupTableScalarRange
+    << '|' << this->ScalarRange[0] << '|' << this->ScalarRange[1] << '|' << this->FieldDataTupleId
+    << '|' << this->LookupTable << '|' << (this->LookupTable ? this->LookupTable->GetMTime() : 0);
   this->AppendBuildSignature(s);
   return s.str();
 }
@@ -237,7 +237,7 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
     int cellFlag = 0;
     vtkAbstractArray* scalars = vtkAbstractMapper::GetAbstractScalars(
       pd, this->ScalarMode, this->ArrayAccessMode, this->ArrayId, this->ArrayName, cellFlag);
-    if (this->ScalarVisibility && scalars)
+    if (this->ScalarVisibility && scalars && !this->DirectionColoring)
     {
       vtkDataArray* dataArray = vtkArrayDownCast<vtkDataArray>(scalars);
       if (dataArray && dataArray->GetLookupTable())
@@ -819,6 +819,15 @@ std::string vtkSplineTubeMapper::GetTubeColorDeclarations()
 }
 
 //------------------------------------------------------------------------------
+std::string vtkSplineTubeMapper::GetTubeDirectionColorDeclarations()
+{
+  return "vec4 tubeDirectionColor(vec3 derivative)\n"
+         "{\n"
+         "  return vec4(abs(derivative) / max(length(derivative), 1e-30), 1.0);\n"
+         "}\n";
+}
+
+//------------------------------------------------------------------------------
 std::string vtkSplineTubeMapper::GetTubeColorImplementation(
   const char* nodeExpression, const char* tExpression)
 {
@@ -878,7 +887,7 @@ void vtkSplineTubeMapper::ReplaceShaderTubePicking(
 void vtkSplineTubeMapper::ReplaceShaderColor(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
-  if (!this->HaveColors)
+  if (this->GetTubeColorMode() == 0)
   {
     this->Superclass::ReplaceShaderColor(shaders, ren, act);
     return;
@@ -913,7 +922,7 @@ bool vtkSplineTubeMapper::GetNeedToRebuildShaders(
 {
   // Shader variants depend on scalar coloring and composite input too;
   // always let the superclass update its bookkeeping.
-  const int variant = (this->HaveColors ? 1 : 0) | (this->InputIsComposite ? 2 : 0);
+  const int variant = this->GetTubeColorMode() | (this->InputIsComposite ? 4 : 0);
   const bool superclass = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
   if (variant != this->ShaderVariant)
   {
@@ -1138,6 +1147,7 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
      << this->AutomaticRadiusBounds[5] << "\n";
   os << indent << "MinimumPixelWidth: " << this->MinimumPixelWidth << "\n";
   os << indent << "RadiusArray: " << (this->RadiusArray ? this->RadiusArray : "(none)") << "\n";
+  os << indent << "DirectionColoring: " << this->DirectionColoring << "\n";
   os << indent << "VisibilityArray: " << (this->VisibilityArray ? this->VisibilityArray : "(none)")
      << "\n";
   os << indent << "RadiusScale: " << this->RadiusScale << "\n";

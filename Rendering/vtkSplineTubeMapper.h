@@ -146,6 +146,23 @@ public:
 
   ///@{
   /**
+   * Color by direction (default off): every fragment gets the color of the
+   * direction of the spline's tangent at its curve parameter, RGB = the
+   * absolute x, y and z components of the unit tangent in data coordinates
+   * (red left-right, green front-back, blue up-down for a tractogram in RAS+
+   * mm: the convention of every tractography viewer), opaque. No array is
+   * needed; scalar coloring is then ignored. The ray-cast tubes evaluate the
+   * tangent at the hit point; the tessellated tubes and stylized lines
+   * interpolate the signed tangent between their vertices and normalize it
+   * per fragment.
+   */
+  vtkSetMacro(DirectionColoring, bool);
+  vtkGetMacro(DirectionColoring, bool);
+  vtkBooleanMacro(DirectionColoring, bool);
+  ///@}
+
+  ///@{
+  /**
    * Factor applied to the values of RadiusArray. Default 1.
    */
   vtkSetClampMacro(RadiusScale, double, 0.0, VTK_DOUBLE_MAX);
@@ -333,6 +350,18 @@ protected:
   static std::string GetTubeColorDeclarations();
 
   /**
+   * Shader declaration of `vec4 tubeDirectionColor(vec3 derivative)`, the
+   * direction color (see DirectionColoring) of a tangent of any length.
+   */
+  static std::string GetTubeDirectionColorDeclarations();
+
+  /**
+   * What the shaders color by: 0 the actor's color, 1 the color spline of
+   * mapped scalars, 2 the direction (the uniform tubeHaveColors).
+   */
+  int GetTubeColorMode() const { return this->DirectionColoring ? 2 : (this->HaveColors ? 1 : 0); }
+
+  /**
    * Fragment-shader code declaring `vec4 tubeColor`, the color spline of node
    * `nodeExpression` (and the next node) at the curve parameter `tExpression`.
    */
@@ -457,6 +486,7 @@ protected:
   double MinimumPixelWidth = 1.0;
   char* RadiusArray = nullptr;
   char* VisibilityArray = nullptr;
+  bool DirectionColoring = false;
   double RadiusScale = 1.0;
   char* CellIdArrayName = nullptr;
   bool OcclusionCulling = true;

@@ -713,7 +713,7 @@ bool vtkStylizedLineMapper::UpdateShadowMap(
 std::string vtkStylizedLineMapper::ShaderKey(vtkRenderer*, vtkActor*)
 {
   std::ostringstream key;
-  key << this->HaveColors << this->Internals->TextureData << this->Internals->ActorTexture
+  key << this->GetTubeColorMode() << this->Internals->TextureData << this->Internals->ActorTexture
       << (this->DepthCorrection || this->HaloWidth > 0.0) << this->Shadows;
   return key.str();
 }
@@ -754,9 +754,14 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
   const bool writeDepth = this->DepthCorrection || this->HaloWidth > 0.0;
   const bool actorTexture = in.TextureData && in.ActorTexture;
   std::string defines;
-  if (this->HaveColors)
+  const int colorMode = this->GetTubeColorMode();
+  if (colorMode == 1)
   {
     defines += "#define LINE_COLORS\n";
+  }
+  else if (colorMode == 2)
+  {
+    defines += "#define LINE_DIRECTION_COLORS\n";
   }
   if (in.TextureData)
   {
@@ -783,6 +788,10 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
   vtkShaderProgram::Substitute(
     FSSource, "//VTK::System::Dec", "//VTK::System::Dec\n" + defines, false);
   std::string declarations = vtkStylizedLineFS;
+  if (colorMode == 2)
+  {
+    declarations += GetTubeDirectionColorDeclarations();
+  }
   vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", tubeMath);
   vtkShaderProgram::Substitute(
     declarations, "//VTK::StylizedLineMath::Dec", vtkStylizedLineMathShared);
@@ -794,9 +803,13 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
 
   std::string depth = "  vec3 normalVCVSOutput;\n"
                       "  lineFragment(vertexVC, normalVCVSOutput);\n";
-  if (this->HaveColors)
+  if (colorMode == 1)
   {
     depth += "  vec4 tubeColor = lineColorVSOutput;\n";
+  }
+  else if (colorMode == 2)
+  {
+    depth += "  vec4 tubeColor = tubeDirectionColor(lineColorVSOutput.xyz);\n";
   }
   depth += "  //VTK::TubeClip::Impl\n";
   if (writeDepth)

@@ -258,8 +258,8 @@ void vtkTessellatedTubeMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   // Orthogonal vectors (rotation-minimizing frames): octahedral, 2 x int16
   // per node, made piece by piece.
   vtkSplineTubeCore* core = this->Core;
-  if (!this->FramesBuffer->UploadInPieces(window, static_cast<size_t>(core->GetNumberOfNodes()),
-        2, VTK_TYPE_INT16, GL_RG16I,
+  if (!this->FramesBuffer->UploadInPieces(window, static_cast<size_t>(core->GetNumberOfNodes()), 2,
+        VTK_TYPE_INT16, GL_RG16I,
         [&](size_t first, size_t count, void* destination)
         {
           core->FillFrames(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count),
@@ -524,13 +524,49 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
   std::string declarations =
     this->BuildingThinProgram ? vtkTessellatedTubeThinFS : vtkTessellatedTubeFS;
   vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", math);
+  const int colorMode = this->GetTubeColorMode();
+  if (colorMode == 2)
+  {
+    // Per fragment, the position spline's tangent at the curve parameter of
+    // the fragment: the axis point nearest to it (the tube is swept by a
+    // sphere), two Newton steps from the interpolated parameter of the run
+    // (tubeTVSOutput, from its first node), which is off by up to a
+    // fraction of the ring spacing in bends.
+    declarations += "uniform mat4 tubeMCVC;\n" + GetTubeNodesDeclarations() +
+      GetTubeDirectionColorDeclarations() +
+      "vec4 tubeDirectionAt(ivec4 info, float tRun, vec3 pointVC)\n"
+      "{\n"
+      "  int k = clamp(int(floor(tRun)), 0, max(info.w >> 4, 1) - 1);\n"
+      "  int node = info.x + k;\n"
+      "  vec4 p0 = tubeNodeModel(node);\n"
+      "  vec4 m0 = tubeNodeDerivativeModel(node);\n"
+      "  vec4 p1 = tubeNodeModel(node + 1);\n"
+      "  vec4 m1 = tubeNodeDerivativeModel(node + 1);\n"
+      "  vec3 x = (inverse(tubeMCVC) * vec4(pointVC, 1.0)).xyz;\n"
+      "  float t = clamp(tRun - float(k), 0.0, 1.0);\n"
+      "  for (int i = 0; i < 2; ++i)\n"
+      "  {\n"
+      "    vec3 e = svHermite(p0, m0, p1, m1, t).xyz - x;\n"
+      "    vec3 d = svHermiteDerivative(p0, m0, p1, m1, t).xyz;\n"
+      "    vec3 dd = svHermiteSecondDerivative(p0, m0, p1, m1, t).xyz;\n"
+      "    float h = dot(d, d) + dot(e, dd);\n"
+      "    t = clamp(t - (h > 0.0 ? dot(e, d) / h : 0.0), 0.0, 1.0);\n"
+      "  }\n"
+      "  return tubeDirectionColor(svHermiteDerivative(p0, m0, p1, m1, t).xyz);\n"
+      "}\n";
+  }
   vtkShaderProgram::Substitute(FSSource, "//VTK::Normal::Dec", declarations);
   vtkShaderProgram::Substitute(FSSource, "//VTK::PositionVC::Dec", "in vec4 vertexVCVSOutput;");
   std::string position = "  vec4 vertexVC = vertexVCVSOutput;\n";
-  if (this->HaveColors)
+  if (colorMode == 1)
   {
     // The color spline, evaluated per vertex by the evaluation stage.
     position += "  vec4 tubeColor = tubeColorVSOutput;\n";
+  }
+  else if (colorMode == 2)
+  {
+    position +=
+      "  vec4 tubeColor = tubeDirectionAt(tubeInfoVSOutput, tubeTVSOutput, vertexVC.xyz);\n";
   }
   vtkShaderProgram::Substitute(FSSource, "//VTK::PositionVC::Impl", position);
   if (this->BuildingThinProgram)
@@ -618,7 +654,7 @@ void vtkTessellatedTubeMapper::SetMapperShaderParameters(
   program->SetUniformf(
     "tubeMaxSilhouetteLevel", static_cast<float>(this->MaxSilhouetteTessellationLevel));
   program->SetUniformi("tubeCaps", this->Capping ? 1 : 0);
-  program->SetUniformi("tubeHaveColors", this->HaveColors ? 1 : 0);
+  program->SetUniformi("tubeHaveColors", this->GetTubeColorMode());
   program->SetUniformf("tubeSideLength", static_cast<float>(2.0 * this->MaxSilhouetteEdgeLength));
   this->FramesBuffer->Activate(program, "tubeFrames");
   this->InstancesBuffer->Activate(program, "tubeInstances");

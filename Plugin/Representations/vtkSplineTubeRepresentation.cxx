@@ -69,6 +69,14 @@ void vtkSplineTubeRepresentation::SetRadiusArray(const char* name)
 }
 
 //------------------------------------------------------------------------------
+void vtkSplineTubeRepresentation::SetDirectionColoring(bool direction)
+{
+  this->GetTubeMapper()->SetDirectionColoring(direction);
+  this->GetLODTubeMapper()->SetDirectionColoring(direction);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkSplineTubeRepresentation::SetVisibilityArray(const char* name)
 {
   this->GetTubeMapper()->SetVisibilityArray(ArrayOrNull(name));

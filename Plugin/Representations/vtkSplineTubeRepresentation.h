@@ -45,6 +45,7 @@ public:
   void SetRadius(double radius);
   void SetRadiusArray(const char* name);
   void SetVisibilityArray(const char* name);
+  void SetDirectionColoring(bool direction);
   void SetRadiusScale(double scale);
   void SetOcclusionCulling(bool culling);
   void SetMinimumPixelWidth(double width);

@@ -165,12 +165,20 @@ void main()
   tubeRect.q1 = q1;
   tubeRect.q2 = q2;
   tubeRect.info = ivec4(node, k, tube, flags | (mode << 2));
-  if (tubeHaveColors != 0)
+  if (tubeHaveColors == 1)
   {
     tubeRect.c0 = tubeNodeColor(node);
     tubeRect.d0 = tubeNodeColorDerivative(node);
     tubeRect.c1 = tubeNodeColor(node + 1);
     tubeRect.d1 = tubeNodeColorDerivative(node + 1);
+  }
+  else if (tubeHaveColors == 2)
+  {
+    // Direction coloring: the position spline (model coordinates).
+    tubeRect.c0 = tubeNodeModel(node);
+    tubeRect.d0 = tubeNodeDerivativeModel(node);
+    tubeRect.c1 = tubeNodeModel(node + 1);
+    tubeRect.d1 = tubeNodeDerivativeModel(node + 1);
   }
 
   // Fast path: the sub-segment lies in the convex hull of its control points

@@ -15,7 +15,7 @@ in vec3 lineFrontVSOutput;
 in float lineRadiusVSOutput;
 flat in ivec2 lineInfoVSOutput;
 flat in vec4 lineSphereVSOutput;
-#ifdef LINE_COLORS
+#if defined(LINE_COLORS) || defined(LINE_DIRECTION_COLORS)
 in vec4 lineColorVSOutput;
 #endif
 #ifdef LINE_TEXTURE

@@ -51,6 +51,8 @@ uniform float lineDepthCap;   // largest depth-correction distance, in radii
 #ifdef LINE_COLORS
 uniform samplerBuffer lineColors; // per vertex: RGBA8
 out vec4 lineColorVSOutput;
+#elif defined(LINE_DIRECTION_COLORS)
+out vec4 lineColorVSOutput; // the unit tangent (model coordinates), normalized per fragment
 #endif
 #ifdef LINE_TEXTURE
 uniform samplerBuffer lineTexCoords; // per vertex: coordinate along the line, orientation
@@ -102,6 +104,8 @@ void lineAttributes(int node)
 {
 #ifdef LINE_COLORS
   lineColorVSOutput = texelFetch(lineColors, node);
+#elif defined(LINE_DIRECTION_COLORS)
+  lineColorVSOutput = vec4(svOctDecode(vec2(texelFetch(lineTangents, node).xy) / 32767.0), 1.0);
 #endif
 #ifdef LINE_TEXTURE
   lineUVSOutput = texelFetch(lineTexCoords, node).xy;

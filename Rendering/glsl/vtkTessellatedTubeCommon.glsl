@@ -61,13 +61,13 @@ TubeSegment tubeLoadSegment(int node)
 
 // The scalar-color spline (vtkSplineTubeColor.glsl, inserted here), evaluated
 // at curve parameter t of the segment from `node`; white without scalar
-// coloring.
+// coloring (1: scalar coloring; 2: direction coloring, made per fragment).
 uniform int tubeHaveColors;
 //VTK::SplineTubeColor::Dec
 
 vec4 tubeColorAt(int node, float t)
 {
-  if (tubeHaveColors == 0)
+  if (tubeHaveColors != 1)
   {
     return vec4(1.0);
   }

@@ -12,7 +12,8 @@ test TestLineVisibility, which keeps the centres equal, checks exact
 equality).
 Then the selection changes (the Calculator's function: the other lines) and
 the image follows. Negative controls: Visibility Array None, and the old
-selection's reference, differ in many pixels.
+selection's reference, differ in many pixels. Last, Direction Coloring
+shows lines of each direction in its own channel.
 """
 import sys
 
@@ -100,6 +101,22 @@ for representation in ("Ray-Cast Tubes", "Tessellated Tubes", "Stylized Lines"):
     check(differing(changed, reference) > 0.2 * drawn,
           "%s: control, the old selection differs in %d pixels"
           % (representation, differing(changed, reference)))
+
+# Direction Coloring: the representation passes it on (the colors against the
+# analytic tangent are checked by TestDirectionColoring): lines of every
+# direction show in their dominant channel.
+view = white_view((500, 400))
+display = Show(fibers, view)
+display.Representation = "Ray-Cast Tubes"
+display.DirectionColoring = 1
+ResetCamera(view)
+png = "%s/TestPluginLineVisibility-direction.png" % out
+SaveScreenshot(png, view, ImageResolution=[500, 400])
+rgb = png_rgb(png).reshape(-1, 3)
+drawn = rgb[np.any(rgb != 255, axis=1)]
+dominant = [int(np.count_nonzero((drawn[:, c] > 1.6 * np.delete(drawn, c, axis=1).max(axis=1))))
+            for c in range(3)]
+check(min(dominant) > 200, "Direction Coloring: pixels dominated by red, green, blue: %s" % dominant)
 
 if failures:
     sys.exit(1)
