@@ -374,6 +374,54 @@ std::string vtkSplineTubeMapper::InputContentKey(vtkDataObject* input)
 }
 
 //------------------------------------------------------------------------------
+void vtkSplineTubeMapper::UpdateSlabPlanes()
+{
+  const double length = vtkMath::Norm(this->SlabNormal);
+  const bool wanted = this->SlabThickness > 0.0 && length > 0.0 && std::isfinite(length);
+  if (this->SlabThickness > 0.0 && !wanted)
+  {
+    vtkErrorMacro(<< "The slab's normal is zero or not finite: no slab crop.");
+  }
+  if (!wanted)
+  {
+    if (this->SlabPlanesAdded)
+    {
+      this->RemoveClippingPlane(this->SlabPlanes[0]);
+      this->RemoveClippingPlane(this->SlabPlanes[1]);
+      this->SlabPlanesAdded = false;
+    }
+    return;
+  }
+  // Two planes facing into the slab (clipping keeps their positive side).
+  for (int side = 0; side < 2; ++side)
+  {
+    const double sign = side == 0 ? 1.0 : -1.0;
+    double normal[3];
+    double origin[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      normal[c] = sign * this->SlabNormal[c] / length;
+      origin[c] = this->SlabOrigin[c] - 0.5 * this->SlabThickness * normal[c];
+    }
+    vtkPlane* plane = this->SlabPlanes[side];
+    const double* oldNormal = plane->GetNormal();
+    const double* oldOrigin = plane->GetOrigin();
+    if (oldNormal[0] != normal[0] || oldNormal[1] != normal[1] || oldNormal[2] != normal[2] ||
+      oldOrigin[0] != origin[0] || oldOrigin[1] != origin[1] || oldOrigin[2] != origin[2])
+    {
+      plane->SetNormal(normal);
+      plane->SetOrigin(origin);
+    }
+  }
+  if (!this->SlabPlanesAdded)
+  {
+    this->AddClippingPlane(this->SlabPlanes[0]);
+    this->AddClippingPlane(this->SlabPlanes[1]);
+    this->SlabPlanesAdded = true;
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkSplineTubeMapper::UpdateLineMask()
 {
   const bool wanted = this->VisibilityArray && this->VisibilityArray[0];
@@ -484,6 +532,7 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
     this->UploadTime.Modified();
   }
   this->UpdateLineMask();
+  this->UpdateSlabPlanes();
   // Interaction: the render window's desired rate (VTK's interactors raise
   // it while the camera moves), or the representation's LOD mapper.
   this->InteractiveRender = this->InteractiveSubset &&
@@ -1148,6 +1197,9 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumPixelWidth: " << this->MinimumPixelWidth << "\n";
   os << indent << "RadiusArray: " << (this->RadiusArray ? this->RadiusArray : "(none)") << "\n";
   os << indent << "DirectionColoring: " << this->DirectionColoring << "\n";
+  os << indent << "Slab: origin (" << this->SlabOrigin[0] << ", " << this->SlabOrigin[1] << ", "
+     << this->SlabOrigin[2] << "), normal (" << this->SlabNormal[0] << ", " << this->SlabNormal[1]
+     << ", " << this->SlabNormal[2] << "), thickness " << this->SlabThickness << "\n";
   os << indent << "VisibilityArray: " << (this->VisibilityArray ? this->VisibilityArray : "(none)")
      << "\n";
   os << indent << "RadiusScale: " << this->RadiusScale << "\n";

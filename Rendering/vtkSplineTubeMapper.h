@@ -41,6 +41,7 @@
 
 #include "SplineVizModule.h" // for export macro
 #include "vtkNew.h"          // for vtkNew
+#include "vtkPlane.h"        // for vtkNew<vtkPlane>
 #include "vtkOpenGLPolyDataMapper.h"
 
 #include <chrono>     // for std::chrono::steady_clock
@@ -53,6 +54,7 @@
 #include <vector>     // for std::vector
 
 class vtkMatrix4x4;
+class vtkPlane;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkSplineTubeCore;
@@ -159,6 +161,23 @@ public:
   vtkSetMacro(DirectionColoring, bool);
   vtkGetMacro(DirectionColoring, bool);
   vtkBooleanMacro(DirectionColoring, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Slab crop: with SlabThickness > 0, only the parts of the lines within
+   * SlabThickness / 2 of the plane through SlabOrigin with normal SlabNormal
+   * (data coordinates) are drawn, per fragment and exactly, as mrview draws
+   * streamlines around the slice shown under them. 0 (default): no crop. The
+   * slab is two of the mapper's clipping planes (so at most 4 others may be
+   * set); they are added while the slab is on.
+   */
+  vtkSetVector3Macro(SlabOrigin, double);
+  vtkGetVector3Macro(SlabOrigin, double);
+  vtkSetVector3Macro(SlabNormal, double);
+  vtkGetVector3Macro(SlabNormal, double);
+  vtkSetClampMacro(SlabThickness, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(SlabThickness, double);
   ///@}
 
   ///@{
@@ -487,6 +506,9 @@ protected:
   char* RadiusArray = nullptr;
   char* VisibilityArray = nullptr;
   bool DirectionColoring = false;
+  double SlabOrigin[3] = { 0.0, 0.0, 0.0 };
+  double SlabNormal[3] = { 0.0, 0.0, 1.0 };
+  double SlabThickness = 0.0;
   double RadiusScale = 1.0;
   char* CellIdArrayName = nullptr;
   bool OcclusionCulling = true;
@@ -529,6 +551,10 @@ private:
   std::string InputContentKey(vtkDataObject* input);
   /// Read VisibilityArray into LineMask when the input or the tubes changed.
   void UpdateLineMask();
+  /// Add, move or remove the slab's two clipping planes (see SlabThickness).
+  void UpdateSlabPlanes();
+  vtkNew<vtkPlane> SlabPlanes[2];
+  bool SlabPlanesAdded = false;
   /// Read the renderer's part of the depth buffer into DepthImage and build the pyramid.
   bool ReadDepthPyramid(vtkRenderer* ren);
 

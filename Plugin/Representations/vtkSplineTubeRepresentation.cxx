@@ -77,6 +77,28 @@ void vtkSplineTubeRepresentation::SetDirectionColoring(bool direction)
 }
 
 //------------------------------------------------------------------------------
+void vtkSplineTubeRepresentation::SetSlabOrigin(double x, double y, double z)
+{
+  this->GetTubeMapper()->SetSlabOrigin(x, y, z);
+  this->GetLODTubeMapper()->SetSlabOrigin(x, y, z);
+  this->Modified();
+}
+
+void vtkSplineTubeRepresentation::SetSlabNormal(double x, double y, double z)
+{
+  this->GetTubeMapper()->SetSlabNormal(x, y, z);
+  this->GetLODTubeMapper()->SetSlabNormal(x, y, z);
+  this->Modified();
+}
+
+void vtkSplineTubeRepresentation::SetSlabThickness(double thickness)
+{
+  this->GetTubeMapper()->SetSlabThickness(thickness);
+  this->GetLODTubeMapper()->SetSlabThickness(thickness);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkSplineTubeRepresentation::SetVisibilityArray(const char* name)
 {
   this->GetTubeMapper()->SetVisibilityArray(ArrayOrNull(name));

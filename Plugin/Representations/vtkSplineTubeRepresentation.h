@@ -46,6 +46,9 @@ public:
   void SetRadiusArray(const char* name);
   void SetVisibilityArray(const char* name);
   void SetDirectionColoring(bool direction);
+  void SetSlabOrigin(double x, double y, double z);
+  void SetSlabNormal(double x, double y, double z);
+  void SetSlabThickness(double thickness);
   void SetRadiusScale(double scale);
   void SetOcclusionCulling(bool culling);
   void SetMinimumPixelWidth(double width);

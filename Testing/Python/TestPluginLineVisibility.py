@@ -118,5 +118,19 @@ dominant = [int(np.count_nonzero((drawn[:, c] > 1.6 * np.delete(drawn, c, axis=1
             for c in range(3)]
 check(min(dominant) > 200, "Direction Coloring: pixels dominated by red, green, blue: %s" % dominant)
 
+# Slab crop: the representation passes it on (the crop itself is checked by
+# TestSlabCrop): a thin slab draws a fraction of the lines' pixels.
+display.DirectionColoring = 0
+display.SlabOrigin = [0, 0, 0]
+display.SlabNormal = [0, 0, 1]
+png_whole = "%s/TestPluginLineVisibility-slab-whole.png" % out
+SaveScreenshot(png_whole, view, ImageResolution=[500, 400])
+display.SlabThickness = 0.1
+png_slab = "%s/TestPluginLineVisibility-slab.png" % out
+SaveScreenshot(png_slab, view, ImageResolution=[500, 400])
+whole = int(np.count_nonzero(np.any(png_rgb(png_whole) != 255, axis=2)))
+slab = int(np.count_nonzero(np.any(png_rgb(png_slab) != 255, axis=2)))
+check(0 < slab < 0.5 * whole, "Slab Thickness 0.1: %d of %d pixels drawn" % (slab, whole))
+
 if failures:
     sys.exit(1)
