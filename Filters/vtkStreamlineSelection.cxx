@@ -92,11 +92,27 @@ struct Affine
 
 // Segment a + t (b - a), t in [0, 1], clipped to the box [lo, hi] (closed):
 // the parameter interval inside, or false.
+// Cohen-Sutherland outcode: bit 2i below lo[i], bit 2i+1 above hi[i] (0: inside).
+int OutCode(const double p[3], const double lo[3], const double hi[3])
+{
+  int code = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    code |= (p[i] < lo[i] ? 1 : 0) << (2 * i);
+    code |= (p[i] > hi[i] ? 1 : 0) << (2 * i + 1);
+  }
+  return code;
+}
+
 bool ClipToBox(const double a[3], const double b[3], const double lo[3], const double hi[3],
   double& t0, double& t1)
 {
   t0 = 0.0;
   t1 = 1.0;
+  if (OutCode(a, lo, hi) & OutCode(b, lo, hi))
+  {
+    return false; // both ends beyond the same face
+  }
   for (int i = 0; i < 3; ++i)
   {
     const double d = b[i] - a[i];
@@ -228,6 +244,17 @@ struct Prepared
       }
       case BOX:
       {
+        const int ca = OutCode(a, this->Lo, this->Hi);
+        const int cb = OutCode(b, this->Lo, this->Hi);
+        if (ca & cb)
+        {
+          return false; // both ends beyond the same face
+        }
+        if ((ca == 0 && a[0] == a[0] && a[1] == a[1] && a[2] == a[2]) ||
+          (cb == 0 && b[0] == b[0] && b[1] == b[1] && b[2] == b[2]))
+        {
+          return true; // an end inside (a NaN end has outcode 0 but is not inside)
+        }
         double t0, t1;
         return ClipToBox(a, b, this->Lo, this->Hi, t0, t1);
       }
@@ -1065,33 +1092,88 @@ void vtkStreamlineSelection::CopySelected(
   output->Initialize();
   output->GetFieldData()->PassData(input->GetFieldData());
   LineView lines(input->GetLines());
-  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
-  std::vector<vtkIdType> map(numberOfPoints, -1);
-  vtkNew<vtkIdList> sourceCells;
-  vtkIdType connectivitySize = 0;
+  // The selected lines' cells and point ids (input numbering).
+  vtkIdType cells = 0, size = 0;
   for (vtkIdType line = 0; line < lines.Count; ++line)
   {
-    if (!selected[line])
+    if (selected[line])
     {
-      continue;
+      ++cells;
+      size += lines.Offsets[line + 1] - lines.Offsets[line];
     }
-    sourceCells->InsertNextId(input->GetNumberOfVerts() + line);
-    for (vtkIdType k = lines.Offsets[line]; k < lines.Offsets[line + 1]; ++k)
-    {
-      map[lines.Connectivity[k]] = 0;
-    }
-    connectivitySize += lines.Offsets[line + 1] - lines.Offsets[line];
   }
-  vtkNew<vtkIdList> sourcePoints;
-  vtkIdType used = 0;
-  for (vtkIdType p = 0; p < numberOfPoints; ++p)
+  vtkNew<vtkIdList> sourceCells;
+  sourceCells->SetNumberOfIds(cells);
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfValues(cells + 1);
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(size);
+  vtkIdType* ids = connectivity->GetPointer(0);
+  offsets->SetValue(0, 0);
+  for (vtkIdType line = 0, cell = 0, at = 0; line < lines.Count; ++line)
   {
-    if (map[p] == 0)
+    if (selected[line])
     {
-      map[p] = used++;
-      sourcePoints->InsertNextId(p);
+      sourceCells->SetId(cell, input->GetNumberOfVerts() + line);
+      const vtkIdType begin = lines.Offsets[line], end = lines.Offsets[line + 1];
+      std::copy(lines.Connectivity + begin, lines.Connectivity + end, ids + at);
+      at += end - begin;
+      offsets->SetValue(++cell, at);
     }
   }
+  // The points used, in input order, and the connectivity renumbered: a
+  // lookup table over all points when many are used, else sorted ids.
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  vtkNew<vtkIdList> sourcePoints;
+  if (size * 8 >= numberOfPoints)
+  {
+    std::vector<vtkIdType> map(numberOfPoints, -1);
+    for (vtkIdType k = 0; k < size; ++k)
+    {
+      map[ids[k]] = 0;
+    }
+    vtkIdType used = 0;
+    for (vtkIdType p = 0; p < numberOfPoints; ++p)
+    {
+      if (map[p] == 0)
+      {
+        map[p] = used++;
+      }
+    }
+    sourcePoints->SetNumberOfIds(used);
+    for (vtkIdType p = 0; p < numberOfPoints; ++p)
+    {
+      if (map[p] >= 0)
+      {
+        sourcePoints->SetId(map[p], p);
+      }
+    }
+    vtkSMPTools::For(0, size,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType k = begin; k < end; ++k)
+        {
+          ids[k] = map[ids[k]];
+        }
+      });
+  }
+  else
+  {
+    std::vector<vtkIdType> used(ids, ids + size);
+    vtkSMPTools::Sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    sourcePoints->SetNumberOfIds(static_cast<vtkIdType>(used.size()));
+    std::copy(used.begin(), used.end(), sourcePoints->GetPointer(0));
+    vtkSMPTools::For(0, size,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType k = begin; k < end; ++k)
+        {
+          ids[k] = std::lower_bound(used.begin(), used.end(), ids[k]) - used.begin();
+        }
+      });
+  }
+  const vtkIdType used = sourcePoints->GetNumberOfIds();
   if (used > 0)
   {
     vtkNew<vtkPoints> points;
@@ -1102,25 +1184,6 @@ void vtkStreamlineSelection::CopySelected(
     output->GetPointData()->CopyAllocate(input->GetPointData(), used);
     output->GetPointData()->CopyData(
       input->GetPointData(), sourcePoints.GetPointer(), vtkIdType(0));
-  }
-  const vtkIdType cells = sourceCells->GetNumberOfIds();
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfTuples(cells + 1);
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfTuples(connectivitySize);
-  vtkIdType next = 0, cell = 0;
-  offsets->SetValue(0, 0);
-  for (vtkIdType line = 0; line < lines.Count; ++line)
-  {
-    if (!selected[line])
-    {
-      continue;
-    }
-    for (vtkIdType k = lines.Offsets[line]; k < lines.Offsets[line + 1]; ++k)
-    {
-      connectivity->SetValue(next++, map[lines.Connectivity[k]]);
-    }
-    offsets->SetValue(++cell, next);
   }
   vtkNew<vtkCellArray> out;
   out->SetData(offsets, connectivity);
