@@ -26,11 +26,9 @@
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkSphere.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>

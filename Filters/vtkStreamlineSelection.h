@@ -31,15 +31,13 @@
  * A point with a NaN coordinate is inside no region.
  *
  * Output (OutputMode): SELECTED_STREAMLINES, the selected lines with their
- * point and cell data (unused points dropped, other cell types not copied);
- * or MARK_STREAMLINES, the input unchanged with a cell array "Selected"
- * (unsigned char 0/1, 0 for non-line cells). Multi-threaded over streamlines
- * (vtkSMPTools) with progress and abort (an aborted run gives an empty
- * output). Bad input is an error (RequestData returns 0, empty output): a
- * radius <= 0 or not finite, a box with min > max, a singular box map, an
- * empty label set, a label image without the named one-component array, a
- * null function or image. No regions at all selects every streamline, with a
- * warning.
+ * point and cell data (other cell types not copied); or MARK_STREAMLINES, the
+ * input with a cell array "Selected" (unsigned char 0/1). vtkSMPTools over
+ * streamlines, progress and abort (an aborted run gives an empty output).
+ * Bad input is an error (RequestData returns 0, empty output): a radius <= 0,
+ * min > max, a singular box map, an empty label set, a label image without
+ * the named one-component array, a null function or image. No regions at all
+ * selects every streamline, with a warning.
  */
 #ifndef vtkStreamlineSelection_h
 #define vtkStreamlineSelection_h
