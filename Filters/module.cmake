@@ -5,6 +5,7 @@ list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineProbeFilter"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineResampleToImage"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineStreamTracer"
+  "${SPLINEVIZ_FOLDER}/vtkStreamlineSelection"
   "${SPLINEVIZ_FOLDER}/vtkSyntheticFibersSource"
   "${SPLINEVIZ_FOLDER}/vtkSyntheticTractogramSource"
   "${SPLINEVIZ_FOLDER}/vtkTensorAnalysisFilter"

@@ -129,3 +129,21 @@ else:
     if min(drawn) < 0.15 or not 0.75 < drawn[1] / drawn[0] < 1.33:
         print("ERROR: the fitted spline's volume rendering is blank or unlike the scan's")
         sys.exit(1)
+
+# streamline_selection.py: DIPY's cb_2 dissected by a sphere and a box; the
+# picture shows selected (orange) and other (grey) streamlines. Needs DIPY.
+if dipy is None or nibabel is None:
+    print("DIPY or NiBabel not available: streamline_selection.py skipped")
+else:
+    selection_out = os.path.join(out, "TestExamples-selection")
+    sys.argv = ["streamline_selection.py", selection_out]
+    runpy.run_path(os.path.join(source, "Examples", "Python", "streamline_selection.py"),
+                   run_name="__main__")
+    rgb = png_rgb(os.path.join(selection_out, "streamline-selection.png")).reshape(-1, 3).astype(int)
+    orange = int((abs(rgb - (242, 115, 13)).max(axis=1) < 60).sum())
+    grey = int(((abs(rgb - rgb.mean(axis=1, keepdims=True)).max(axis=1) < 12)
+                & (rgb.mean(axis=1) < 215) & (rgb.mean(axis=1) > 60)).sum())
+    print("selection example: %d orange, %d grey pixels" % (orange, grey))
+    if orange < 500 or grey < 2000:
+        print("ERROR: the selection example does not show selected and other streamlines")
+        sys.exit(1)
