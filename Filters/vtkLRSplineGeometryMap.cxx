@@ -362,6 +362,19 @@ bool vtkLRSplineGeometryMap::Newton(
       return false;
     }
     const double dmax = std::max(std::abs(d[0]), std::max(std::abs(d[1]), std::abs(d[2])));
+    // The decrease of |x(s) - x|^2 the step promises, |J d|^2: all of it for a
+    // volume (J d = r), its tangential part for a surface, whose residual at
+    // the foot is the distance (Armijo's rule on that, not on |r|^2).
+    double promised = f;
+    if (pd == 2)
+    {
+      double Jd[3];
+      for (int i = 0; i < 3; ++i)
+      {
+        Jd[i] = J[3 * i] * d[0] + J[3 * i + 1] * d[1];
+      }
+      promised = Norm2(Jd);
+    }
     // Backtracking line search on |x(s) - x|^2 (the full step when the
     // residual is already at rounding level or the step below the
     // convergence tolerance: a surface's residual at its foot is not zero).
@@ -378,8 +391,12 @@ bool vtkLRSplineGeometryMap::Newton(
         rn[i] = xn[i] - x[i];
       }
       fn = Norm2(rn);
-      if (fn <= f * (1.0 - 1e-4 * lambda) || f <= 1e-30 * size * size ||
-        lambda * dmax <= ConvergenceTolerance)
+      const bool armijo =
+        pd == 3 ? fn <= f * (1.0 - 1e-4 * lambda) : fn <= f - 1e-4 * lambda * promised;
+      // (A surface's small steps are taken whole: near the foot |r|^2 is the
+      // squared distance, whose rounding hides the decrease of a tiny step.)
+      if (armijo || f <= 1e-30 * size * size || lambda * dmax <= ConvergenceTolerance ||
+        (pd == 2 && dmax <= 1e-4))
       {
         break;
       }
