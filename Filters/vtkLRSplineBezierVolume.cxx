@@ -4,6 +4,7 @@
 #include "vtkCellType.h"
 #include "vtkDataArray.h"
 #include "vtkHigherOrderHexahedron.h"
+#include "vtkHigherOrderQuadrilateral.h"
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -505,9 +506,16 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
   else
   {
     field = pd->GetVectors() ? pd->GetVectors() : pd->GetScalars();
-    if (!field && pd->GetNumberOfArrays() > 0)
+    for (int a = 0; !field && a < pd->GetNumberOfArrays(); ++a)
     {
-      field = pd->GetArray(0);
+      // The geometry's own arrays are not a field to evaluate.
+      vtkDataArray* candidate = pd->GetArray(a);
+      const char* n = candidate ? candidate->GetName() : nullptr;
+      if (candidate && candidate != pd->GetRationalWeights() &&
+        !(n && (std::string(n) == "LRParameterCoordinates" || std::string(n) == "RationalWeights")))
+      {
+        field = candidate;
+      }
     }
     if (!field)
     {
@@ -544,21 +552,26 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
     cellIds->clear();
   }
   const vtkIdType numCells = grid->GetNumberOfCells();
+  const int cellType = numCells > 0 ? grid->GetCellType(0) : VTK_BEZIER_HEXAHEDRON;
+  const int pdim = cellType == VTK_BEZIER_QUADRILATERAL ? 2 : 3;
+  this->ParametricDimension = pdim;
   bool haveDegree = false;
   vtkNew<vtkIdList> pts;
   for (vtkIdType cell = 0; cell < numCells; ++cell)
   {
-    if (grid->GetCellType(cell) != VTK_BEZIER_HEXAHEDRON)
+    if (grid->GetCellType(cell) != cellType ||
+      (cellType != VTK_BEZIER_HEXAHEDRON && cellType != VTK_BEZIER_QUADRILATERAL))
     {
       std::ostringstream msg;
-      msg << "cell " << cell << " is not a VTK_BEZIER_HEXAHEDRON";
+      msg << "cell " << cell << " is not a VTK_BEZIER_HEXAHEDRON (volume) or, in a grid of them, a "
+          << "VTK_BEZIER_QUADRILATERAL (surface)";
       return fail(msg.str());
     }
     grid->GetCellPoints(cell, pts);
-    int deg[3];
-    if (degrees && degrees->GetNumberOfComponents() >= 3)
+    int deg[3] = { 0, 0, 0 };
+    if (degrees && degrees->GetNumberOfComponents() >= pdim)
     {
-      for (int d = 0; d < 3; ++d)
+      for (int d = 0; d < pdim; ++d)
       {
         deg[d] = static_cast<int>(degrees->GetComponent(cell, d));
       }
@@ -566,11 +579,14 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
     else
     {
       // Like VTK: an isotropic degree from the number of points.
-      const int n =
-        static_cast<int>(std::lround(std::cbrt(static_cast<double>(pts->GetNumberOfIds()))));
-      deg[0] = deg[1] = deg[2] = n - 1;
+      const double count = static_cast<double>(pts->GetNumberOfIds());
+      const int n = static_cast<int>(std::lround(pdim == 2 ? std::sqrt(count) : std::cbrt(count)));
+      for (int d = 0; d < pdim; ++d)
+      {
+        deg[d] = n - 1;
+      }
     }
-    for (int d = 0; d < 3; ++d)
+    for (int d = 0; d < pdim; ++d)
     {
       if (deg[d] < 1 || deg[d] > MaximumDegree)
       {
@@ -603,7 +619,7 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
         box[d] = std::numeric_limits<double>::infinity();
         box[d + 3] = -std::numeric_limits<double>::infinity();
       }
-      for (int corner = 0; corner < 8; ++corner)
+      for (int corner = 0; corner < (pdim == 2 ? 4 : 8); ++corner)
       {
         double x[3];
         grid->GetPoint(pts->GetId(corner), x);
@@ -612,6 +628,11 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
           box[d] = std::min(box[d], x[d]);
           box[d + 3] = std::max(box[d + 3], x[d]);
         }
+      }
+      if (pdim == 2)
+      {
+        box[2] = 0.0; // a surface's w
+        box[5] = 1.0;
       }
     }
     for (int d = 0; d < 3; ++d)
@@ -633,7 +654,8 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
       {
         for (int i = 0; i <= deg[0]; ++i)
         {
-          const int local = vtkHigherOrderHexahedron::PointIndexFromIJK(i, j, k, deg);
+          const int local = pdim == 2 ? vtkHigherOrderQuadrilateral::PointIndexFromIJK(i, j, deg)
+                                      : vtkHigherOrderHexahedron::PointIndexFromIJK(i, j, k, deg);
           const vtkIdType pid = pts->GetId(local);
           double* c = dst + ((k * (deg[1] + 1) + j) * (deg[0] + 1) + i) * nc;
           for (int comp = 0; comp < nc; ++comp)

@@ -42,6 +42,8 @@ public:
 
   int Degree[3] = { 0, 0, 0 };
   int NumberOfComponents = 0;
+  /// 3: a volume; 2: a surface (degree 0 in w, boxes with w in [0, 1]).
+  int ParametricDimension = 3;
   std::vector<double> Boxes;
   std::vector<double> Coefficients;
   /// Single-precision copy of Coefficients (empty until MakeFloatCoefficients()).
@@ -106,14 +108,17 @@ public:
   static void Bernstein(int n, Real s, Real* b, Real* d);
 
   /**
-   * Build from a vtkUnstructuredGrid of VTK_BEZIER_HEXAHEDRON cells as written by
-   * vtkLRSplineReader: cell data "LRParameterBox" (6 components) when present,
-   * otherwise the axis-aligned bounds of each cell's corner points; degrees from
-   * the cell data's HigherOrderDegrees array (all cells must share them); the
-   * coefficients from the point-data array `arrayName` (active vectors, else
-   * active scalars, else the first array when null or empty). `cellIds` (may be
-   * null) receives the grid's cell id of every element. Returns false with a
-   * message when the grid is not such a grid.
+   * Build from a vtkUnstructuredGrid of VTK_BEZIER_HEXAHEDRON cells (a volume)
+   * or VTK_BEZIER_QUADRILATERAL cells (a surface: ParametricDimension 2,
+   * degree 0 in w) as written by vtkLRSplineBezierGrid: cell data
+   * "LRParameterBox" (6 components) when present, otherwise the axis-aligned
+   * bounds of each cell's corner points (w in [0, 1] for a surface); degrees
+   * from the cell data's HigherOrderDegrees array (all cells must share them
+   * and their type); the coefficients from the point-data array `arrayName`
+   * (active vectors, else active scalars, else the first array other than
+   * the geometry's "LRParameterCoordinates" and "RationalWeights", when null
+   * or empty). `cellIds` (may be null) receives the grid's cell id of every
+   * element. Returns false with a message when the grid is not such a grid.
    */
   bool FromUnstructuredGrid(vtkUnstructuredGrid* grid, const char* arrayName, std::string* error,
     std::vector<vtkIdType>* cellIds = nullptr, std::string* usedArrayName = nullptr);

@@ -258,16 +258,10 @@ void vtkLRSplineEvaluator::AtLocal(
   {
     return;
   }
-  // d f / d x = (d f / d s) (d x / d s)^-1.
-  double x[3], J[9];
-  this->Geometry->Map(e, s, x, J);
-  const double c0 = J[4] * J[8] - J[5] * J[7], c1 = J[5] * J[6] - J[3] * J[8],
-               c2 = J[3] * J[7] - J[4] * J[6];
-  const double det = J[0] * c0 + J[1] * c1 + J[2] * c2;
-  const double inv[9] = { c0 / det, (J[2] * J[7] - J[1] * J[8]) / det,
-    (J[1] * J[5] - J[2] * J[4]) / det, c1 / det, (J[0] * J[8] - J[2] * J[6]) / det,
-    (J[2] * J[3] - J[0] * J[5]) / det, c2 / det, (J[1] * J[6] - J[0] * J[7]) / det,
-    (J[0] * J[4] - J[1] * J[3]) / det };
+  // d f / d x = (d f / d s) (d s / d x): the inverse Jacobian (volume) or
+  // its pseudo-inverse (surface: the tangential gradient).
+  double inv[9];
+  this->Geometry->InverseJacobian(e, s, inv);
   for (int c = 0; c < this->Volume.NumberOfComponents; ++c)
   {
     Real* g = gradient + 3 * c;
@@ -499,4 +493,18 @@ void vtkLRSplineEvaluator::EvaluateBatch(
         }
       }
     });
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineEvaluator::ProjectOntoSurface(
+  vtkIdType e, const double x[3], double point[3], double normal[3]) const
+{
+  double s[3];
+  if (!this->Geometry || this->Geometry->GetParametricDimension() != 2 ||
+    !this->Geometry->InvertInElement(e, x, s))
+  {
+    return false;
+  }
+  this->Geometry->SurfaceFrame(e, s, point, normal);
+  return true;
 }

@@ -19,8 +19,10 @@
  * With a geometry map (SetGeometry: an isoparametric patch whose geometry is
  * curved), x is the geometry map of the parameter instead: points are found
  * and converted by vtkLRSplineGeometryMap's inversion, and gradients use the
- * map's Jacobian. Gradients are with respect to x. The single-precision overloads do the whole
- * evaluation in float (the GPU arithmetic, used by the tracer's mixed and single precision modes).
+ * map's Jacobian. Gradients are with respect to x (on a surface: the
+ * tangential gradient; a surface is evaluated at the foot of x on it). The single-precision
+ * overloads do the whole evaluation in float (the GPU arithmetic, used by the tracer's mixed and
+ * single precision modes).
  *
  * All evaluation methods are const and thread-safe; EvaluateBatch() runs in
  * parallel with vtkSMPTools.
@@ -75,6 +77,8 @@ public:
   const vtkLRSplineBezierVolume& GetVolume() const { return this->Volume; }
   const vtkLRSplineElementLocator& GetLocator() const { return this->Locator; }
   int GetNumberOfComponents() const { return this->Volume.NumberOfComponents; }
+  /// 3 (volume) or 2 (surface).
+  int GetParametricDimension() const { return this->Volume.ParametricDimension; }
   vtkIdType GetNumberOfElements() const { return this->Volume.GetNumberOfElements(); }
   /// Largest of the three degrees.
   int GetMaximumDegree() const;
@@ -110,6 +114,13 @@ public:
    * (one conversion to parameter space; the fast path of coherent queries).
    */
   bool EvaluateIfInElement(vtkIdType e, const double x[3], double* value, double* gradient) const;
+
+  /**
+   * A surface patch with a geometry map: the closest point of element e to
+   * physical x (its foot, see vtkLRSplineGeometryMap) and the unit normal
+   * there. False (nothing written) for volumes or when x is not on e.
+   */
+  bool ProjectOntoSurface(vtkIdType e, const double x[3], double point[3], double normal[3]) const;
 
   /// Evaluate at parameter point u; gradient with respect to u.
   vtkIdType EvaluateParameter(const double u[3], double* value, double* gradient = nullptr) const;

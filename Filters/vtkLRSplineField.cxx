@@ -52,7 +52,7 @@ int AutomaticBlocks(vtkIdType numElements)
 
 //------------------------------------------------------------------------------
 bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int locatorType,
-  const int blocks[3], bool parameterSpace, std::string* error)
+  const int blocks[3], bool parameterSpace, std::string* error, double surfaceTolerance)
 {
   auto fail = [error](const std::string& msg)
   {
@@ -107,10 +107,14 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     vtkFieldData* fd = grid->GetFieldData();
     vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
     std::shared_ptr<vtkLRSplineGeometryMap> geometry;
-    if (mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1 && !parameterSpace)
+    const bool geometryMode =
+      mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1;
+    if ((geometryMode || volume.ParametricDimension == 2) && !parameterSpace)
     {
-      // Isoparametric: the points are the geometry's control points.
+      // Isoparametric: the points are the geometry's control points (a
+      // surface's in field mode too: its placement is their Bezier form).
       geometry = std::make_shared<vtkLRSplineGeometryMap>();
+      geometry->SetSurfaceTolerance(surfaceTolerance);
       if (!geometry->Build(grid, blocks, &msg))
       {
         return fail("patch " + std::to_string(g) + " (geometry): " + msg);
@@ -125,7 +129,7 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
       }
     }
     vtkDataArray* transform = fd ? fd->GetArray("LRPhysicalTransform") : nullptr;
-    if (transform && !parameterSpace && transform->GetNumberOfTuples() > 0)
+    if (transform && !parameterSpace && !geometry && transform->GetNumberOfTuples() > 0)
     {
       const vtkIdType count = transform->GetNumberOfComponents() * transform->GetNumberOfTuples();
       const int nc = transform->GetNumberOfComponents();
@@ -245,6 +249,23 @@ void vtkLRSplineField::GetBounds(double bounds[6]) const
       bounds[2 * d + 1] = std::max(bounds[2 * d + 1], b[2 * d + 1]);
     }
   }
+}
+
+int vtkLRSplineField::GetParametricDimension() const
+{
+  int pd = 0;
+  for (const auto& p : this->Patches)
+  {
+    pd = std::max(pd, p->GetParametricDimension());
+  }
+  return pd;
+}
+
+bool vtkLRSplineField::ProjectOntoSurface(
+  int patch, vtkIdType element, const double x[3], double point[3], double normal[3]) const
+{
+  return patch >= 0 && patch < this->GetNumberOfPatches() && element >= 0 &&
+    this->Patches[patch]->ProjectOntoSurface(element, x, point, normal);
 }
 
 int vtkLRSplineField::GetMaximumDegree() const
@@ -454,12 +475,13 @@ vtkIdType vtkLRSplineField::EvaluateIntoPointData(vtkPointData* pd, vtkIdType n,
 //------------------------------------------------------------------------------
 bool vtkLRSplineField::BuildCached(std::unique_ptr<vtkLRSplineField>& field, std::string& key,
   vtkDataObject* source, const char* arrayName, int locatorType, int resolution,
-  bool parameterSpace, std::string* error)
+  bool parameterSpace, std::string* error, double surfaceTolerance)
 {
   std::ostringstream k;
+  k.precision(17);
   k << static_cast<const void*>(source) << "/" << (source ? source->GetMTime() : 0) << "/"
     << (arrayName ? arrayName : "") << "/" << locatorType << "/" << resolution << "/"
-    << parameterSpace;
+    << parameterSpace << "/" << surfaceTolerance;
   if (field && key == k.str())
   {
     return true;
@@ -467,8 +489,8 @@ bool vtkLRSplineField::BuildCached(std::unique_ptr<vtkLRSplineField>& field, std
   key.clear();
   auto fresh = std::make_unique<vtkLRSplineField>();
   const int blocks[3] = { resolution, resolution, resolution };
-  if (!fresh->Build(
-        source, arrayName, locatorType, resolution > 0 ? blocks : nullptr, parameterSpace, error))
+  if (!fresh->Build(source, arrayName, locatorType, resolution > 0 ? blocks : nullptr,
+        parameterSpace, error, surfaceTolerance))
   {
     field.reset();
     return false;

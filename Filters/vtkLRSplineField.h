@@ -2,7 +2,7 @@
  * @class   vtkLRSplineField
  * @brief   The LR-spline field of a reader output (one or several patches) ready for evaluation.
  *
- * Plain C++ (not a vtkObject). Collects the VTK_BEZIER_HEXAHEDRON grids of a
+ * Plain C++ (not a vtkObject). Collects the Bezier grids (volumes or surfaces) of a
  * vtkLRSplineReader output (a vtkUnstructuredGrid patch, or a
  * vtkMultiBlockDataSet / any composite of them), builds one
  * vtkLRSplineEvaluator per patch that has the field's array (the blocks of
@@ -16,8 +16,12 @@
  * Patches read in geometry mode ("LRMode" = 1: the points are the control
  * points of the geometry map, isoparametric fields) are evaluated in
  * physical space by inverting that map (vtkLRSplineGeometryMap); when the
- * map is affine it is used as an affine placement (the fast path). With
- * parameterSpace every patch is evaluated at parameter points instead.
+ * map is affine it is used as an affine placement (the fast path). Surface
+ * patches (VTK_BEZIER_QUADRILATERAL grids, in either mode) are always
+ * evaluated through their geometry map, at the closest point of the surface
+ * within surfaceTolerance (relative to the element's size; see
+ * vtkLRSplineGeometryMap). With parameterSpace every patch is evaluated at
+ * parameter points instead.
  */
 
 #ifndef vtkLRSplineField_h
@@ -25,6 +29,7 @@
 
 #include "SplineVizModule.h" // for export macro
 #include "vtkLRSplineEvaluator.h"
+#include "vtkLRSplineGeometryMap.h" // for DefaultSurfaceTolerance
 
 #include <functional>
 #include <memory>
@@ -45,7 +50,8 @@ public:
    * is no usable patch.
    */
   bool Build(vtkDataObject* source, const char* arrayName, int locatorType, const int blocks[3],
-    bool parameterSpace, std::string* error);
+    bool parameterSpace, std::string* error,
+    double surfaceTolerance = vtkLRSplineGeometryMap::DefaultSurfaceTolerance);
 
   /**
    * Build `field` from `source` unless `key` shows it was built from the same
@@ -54,7 +60,8 @@ public:
    */
   static bool BuildCached(std::unique_ptr<vtkLRSplineField>& field, std::string& key,
     vtkDataObject* source, const char* arrayName, int locatorType, int resolution,
-    bool parameterSpace, std::string* error);
+    bool parameterSpace, std::string* error,
+    double surfaceTolerance = vtkLRSplineGeometryMap::DefaultSurfaceTolerance);
 
   int GetNumberOfPatches() const { return static_cast<int>(this->Patches.size()); }
   const vtkLRSplineEvaluator& GetPatch(int i) const { return *this->Patches[i]; }
@@ -65,6 +72,16 @@ public:
   void GetBounds(double bounds[6]) const;
   /// Largest degree over all patches.
   int GetMaximumDegree() const;
+  /// Largest parametric dimension over the patches: 2 when all are surfaces.
+  int GetParametricDimension() const;
+
+  /**
+   * On a surface patch: the closest point of `element` of `patch` to x and
+   * the unit normal there (vtkLRSplineEvaluator::ProjectOntoSurface); false
+   * for volume patches.
+   */
+  bool ProjectOntoSurface(
+    int patch, vtkIdType element, const double x[3], double point[3], double normal[3]) const;
 
   /// Prepare single-precision evaluation.
   void MakeFloat();

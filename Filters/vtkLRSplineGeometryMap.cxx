@@ -40,6 +40,35 @@ bool Solve3(const double J[9], const double r[3], double d[3])
   return true;
 }
 
+// The Newton step of a map with parametric dimension pd: J d = r for a
+// volume; for a surface (J's third column zero) the least-squares step
+// (J^T J) d = J^T r, d[2] = 0 (Gauss-Newton: the foot of the closest point).
+bool SolveStep(const double J[9], const double r[3], double d[3], int pd)
+{
+  if (pd == 3)
+  {
+    return Solve3(J, r, d);
+  }
+  double G[3] = { 0, 0, 0 }, b[2] = { 0, 0 }; // G00, G01, G11
+  for (int i = 0; i < 3; ++i)
+  {
+    G[0] += J[3 * i] * J[3 * i];
+    G[1] += J[3 * i] * J[3 * i + 1];
+    G[2] += J[3 * i + 1] * J[3 * i + 1];
+    b[0] += J[3 * i] * r[i];
+    b[1] += J[3 * i + 1] * r[i];
+  }
+  const double det = G[0] * G[2] - G[1] * G[1];
+  if (!std::isfinite(det) || !(det > 1e-14 * G[0] * G[2]))
+  {
+    return false;
+  }
+  d[0] = (G[2] * b[0] - G[1] * b[1]) / det;
+  d[1] = (G[0] * b[1] - G[1] * b[0]) / det;
+  d[2] = 0.0;
+  return true;
+}
+
 double Norm2(const double r[3])
 {
   return r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
@@ -147,6 +176,7 @@ bool vtkLRSplineGeometryMap::Build(
     return fail("the geometry is a single point");
   }
   this->Size.resize(ne);
+  const bool surface = this->Volume.ParametricDimension == 2;
   for (vtkIdType e = 0; e < ne; ++e)
   {
     double* b = boxes.data() + 6 * e;
@@ -160,6 +190,15 @@ bool vtkLRSplineGeometryMap::Build(
       s2 += (b[d + 3] - b[d]) * (b[d + 3] - b[d]);
     }
     this->Size[e] = std::sqrt(s2);
+    if (surface)
+    {
+      // A surface's box holds the points within the distance tolerance of it.
+      for (int d = 0; d < 3; ++d)
+      {
+        b[d] -= this->SurfaceTolerance * this->Size[e];
+        b[d + 3] += this->SurfaceTolerance * this->Size[e];
+      }
+    }
   }
   int autoBlocks[3];
   if (!blocks || blocks[0] < 1)
@@ -172,7 +211,11 @@ bool vtkLRSplineGeometryMap::Build(
   {
     return fail("the physical element search: " + msg);
   }
-  this->DetectAffine();
+  this->Affine = false;
+  if (!surface)
+  {
+    this->DetectAffine();
+  }
   return true;
 }
 
@@ -294,10 +337,12 @@ void vtkLRSplineGeometryMap::Map(vtkIdType e, const double s[3], double x[3], do
 
 //------------------------------------------------------------------------------
 bool vtkLRSplineGeometryMap::Newton(
-  vtkIdType e, const double x[3], double s[3], int* iterations) const
+  vtkIdType e, const double x[3], double s[3], int* iterations, bool* far) const
 {
   const double size = this->Size[e];
-  const double accept = 1e-9 * size;
+  const int pd = this->Volume.ParametricDimension;
+  // A volume's residual must vanish; a surface's is the distance to it.
+  const double accept = (pd == 2 ? std::max(1e-9, this->SurfaceTolerance) : 1e-9) * size;
   double xs[3], J[9], r[3];
   this->Map(e, s, xs, J);
   for (int i = 0; i < 3; ++i)
@@ -312,12 +357,27 @@ bool vtkLRSplineGeometryMap::Newton(
       ++*iterations;
     }
     double d[3];
-    if (!Solve3(J, r, d))
+    if (!SolveStep(J, r, d, pd))
     {
       return false;
     }
+    const double dmax = std::max(std::abs(d[0]), std::max(std::abs(d[1]), std::abs(d[2])));
+    // The decrease of |x(s) - x|^2 the step promises, |J d|^2: all of it for a
+    // volume (J d = r), its tangential part for a surface, whose residual at
+    // the foot is the distance (Armijo's rule on that, not on |r|^2).
+    double promised = f;
+    if (pd == 2)
+    {
+      double Jd[3];
+      for (int i = 0; i < 3; ++i)
+      {
+        Jd[i] = J[3 * i] * d[0] + J[3 * i + 1] * d[1];
+      }
+      promised = Norm2(Jd);
+    }
     // Backtracking line search on |x(s) - x|^2 (the full step when the
-    // residual is already at rounding level).
+    // residual is already at rounding level or the step below the
+    // convergence tolerance: a surface's residual at its foot is not zero).
     double lambda = 1.0, sn[3], xn[3], Jn[9], rn[3], fn = 0.0;
     for (int ls = 0; ls < 40; ++ls)
     {
@@ -331,7 +391,12 @@ bool vtkLRSplineGeometryMap::Newton(
         rn[i] = xn[i] - x[i];
       }
       fn = Norm2(rn);
-      if (fn <= f * (1.0 - 1e-4 * lambda) || f <= 1e-30 * size * size)
+      const bool armijo =
+        pd == 3 ? fn <= f * (1.0 - 1e-4 * lambda) : fn <= f - 1e-4 * lambda * promised;
+      // (A surface's small steps are taken whole: near the foot |r|^2 is the
+      // squared distance, whose rounding hides the decrease of a tiny step.)
+      if (armijo || f <= 1e-30 * size * size || lambda * dmax <= ConvergenceTolerance ||
+        (pd == 2 && dmax <= 1e-4))
       {
         break;
       }
@@ -349,6 +414,10 @@ bool vtkLRSplineGeometryMap::Newton(
     }
     if (step <= ConvergenceTolerance)
     {
+      if (far)
+      {
+        *far = !(f <= accept * accept);
+      }
       return f <= accept * accept;
     }
   }
@@ -359,9 +428,10 @@ bool vtkLRSplineGeometryMap::Newton(
 bool vtkLRSplineGeometryMap::InvertInElement(
   vtkIdType e, const double x[3], double s[3], const double* seed, int* iterations) const
 {
+  const int pd = this->Volume.ParametricDimension;
   auto inside = [&]()
   {
-    for (int d = 0; d < 3; ++d)
+    for (int d = 0; d < pd; ++d)
     {
       if (!(s[d] >= -InsideTolerance && s[d] <= 1.0 + InsideTolerance))
       {
@@ -370,7 +440,7 @@ bool vtkLRSplineGeometryMap::InvertInElement(
     }
     for (int d = 0; d < 3; ++d)
     {
-      s[d] = std::min(1.0, std::max(0.0, s[d]));
+      s[d] = d < pd ? std::min(1.0, std::max(0.0, s[d])) : 0.0;
     }
     return true;
   };
@@ -387,34 +457,49 @@ bool vtkLRSplineGeometryMap::InvertInElement(
     }
   }
   // The element's linear approximation: its tangent map at the centre.
-  const double centre[3] = { 0.5, 0.5, 0.5 };
+  // (A surface's w is 0: its map does not depend on it.)
+  const double w0 = pd == 2 ? 0.0 : 0.5;
+  const double centre[3] = { 0.5, 0.5, w0 };
   double xc[3], J[9], r[3], d[3];
   this->Map(e, centre, xc, J);
   for (int i = 0; i < 3; ++i)
   {
     r[i] = x[i] - xc[i];
   }
-  if (Solve3(J, r, d))
+  // A surface's foot is unique near the element: a converged solution
+  // farther than the tolerance is final (no restarts).
+  bool far = false;
+  bool* farFlag = pd == 2 ? &far : nullptr;
+  if (SolveStep(J, r, d, pd))
   {
     for (int i = 0; i < 3; ++i)
     {
-      s[i] = std::min(1.25, std::max(-0.25, 0.5 + d[i]));
+      s[i] = std::min(1.25, std::max(-0.25, centre[i] + d[i]));
     }
-    if (this->Newton(e, x, s, iterations))
+    if (this->Newton(e, x, s, iterations, farFlag))
     {
       return inside();
+    }
+    if (far)
+    {
+      return false;
     }
   }
-  // Fallbacks: the centre and the corners.
-  for (int c = 0; c < 9; ++c)
+  // Fallbacks: the centre and the corners (8 of a volume, 4 of a surface).
+  const int corners = pd == 2 ? 4 : 8;
+  for (int c = 0; c <= corners; ++c)
   {
     for (int i = 0; i < 3; ++i)
     {
-      s[i] = c == 8 ? 0.5 : ((c >> i) & 1 ? 0.9 : 0.1);
+      s[i] = i >= pd ? 0.0 : (c == corners ? 0.5 : ((c >> i) & 1 ? 0.9 : 0.1));
     }
-    if (this->Newton(e, x, s, iterations))
+    if (this->Newton(e, x, s, iterations, farFlag))
     {
       return inside();
+    }
+    if (far)
+    {
+      return false;
     }
   }
   return false;
@@ -454,9 +539,11 @@ void vtkLRSplineGeometryMap::LocalToParameter(vtkIdType e, const double s[3], do
 double vtkLRSplineGeometryMap::GetElementMinimumSide(vtkIdType e) const
 {
   double m = VTK_DOUBLE_MAX;
-  for (int d = 0; d < 3; ++d)
+  const int pd = this->Volume.ParametricDimension;
+  for (int d = 0; d < pd; ++d)
   {
-    double a[3] = { 0.5, 0.5, 0.5 }, b[3] = { 0.5, 0.5, 0.5 }, xa[3], xb[3];
+    const double w0 = pd == 2 ? 0.0 : 0.5;
+    double a[3] = { 0.5, 0.5, w0 }, b[3] = { 0.5, 0.5, w0 }, xa[3], xb[3];
     a[d] = 0.0;
     b[d] = 1.0;
     this->Map(e, a, xa, nullptr);
@@ -483,5 +570,56 @@ void vtkLRSplineGeometryMap::Weight(vtkIdType e, const double s[3], double& W, d
   for (int j = 0; j < 3; ++j)
   {
     dW[j] = dlocal[9 + j];
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineGeometryMap::InverseJacobian(vtkIdType e, const double s[3], double inv[9]) const
+{
+  double x[3], J[9];
+  this->Map(e, s, x, J);
+  if (this->Volume.ParametricDimension == 3)
+  {
+    const double c0 = J[4] * J[8] - J[5] * J[7], c1 = J[5] * J[6] - J[3] * J[8],
+                 c2 = J[3] * J[7] - J[4] * J[6];
+    const double det = J[0] * c0 + J[1] * c1 + J[2] * c2;
+    const double m[9] = { c0 / det, (J[2] * J[7] - J[1] * J[8]) / det,
+      (J[1] * J[5] - J[2] * J[4]) / det, c1 / det, (J[0] * J[8] - J[2] * J[6]) / det,
+      (J[2] * J[3] - J[0] * J[5]) / det, c2 / det, (J[1] * J[6] - J[0] * J[7]) / det,
+      (J[0] * J[4] - J[1] * J[3]) / det };
+    std::copy(m, m + 9, inv);
+    return std::isfinite(det) && det != 0.0;
+  }
+  // A surface: the pseudo-inverse (J^T J)^-1 J^T of the 3x2 Jacobian, so
+  // that gradients are the surface (tangential) gradients.
+  double G00 = 0, G01 = 0, G11 = 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    G00 += J[3 * i] * J[3 * i];
+    G01 += J[3 * i] * J[3 * i + 1];
+    G11 += J[3 * i + 1] * J[3 * i + 1];
+  }
+  const double det = G00 * G11 - G01 * G01;
+  for (int i = 0; i < 3; ++i)
+  {
+    inv[i] = (G11 * J[3 * i] - G01 * J[3 * i + 1]) / det;
+    inv[3 + i] = (G00 * J[3 * i + 1] - G01 * J[3 * i]) / det;
+    inv[6 + i] = 0.0;
+  }
+  return std::isfinite(det) && det > 0.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineGeometryMap::SurfaceFrame(
+  vtkIdType e, const double s[3], double x[3], double normal[3]) const
+{
+  double J[9];
+  this->Map(e, s, x, J);
+  const double n[3] = { J[3] * J[7] - J[6] * J[4], J[6] * J[1] - J[0] * J[7],
+    J[0] * J[4] - J[3] * J[1] };
+  const double len = std::sqrt(Norm2(n));
+  for (int i = 0; i < 3; ++i)
+  {
+    normal[i] = len > 0 ? n[i] / len : 0.0;
   }
 }

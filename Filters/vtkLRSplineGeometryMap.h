@@ -1,36 +1,48 @@
 /**
  * @class   vtkLRSplineGeometryMap
- * @brief   The geometry map x(u) of an isoparametric LR-spline patch and its inverse: the element
- * and the parameter of a physical point.
+ * @brief   The geometry map x(u) of an isoparametric LR-spline patch (volume or surface) and its
+ * inverse: the element and the parameter of a physical point.
  *
  * Plain C++ (not a vtkObject), the one inversion used by vtkLRSplineEvaluator
  * (probing, resampling and tracing on curved geometry) and by the volume
  * mapper's CPU side. Built from a geometry-mode grid of vtkLRSplineReader or
- * vtkIFEMReader (VTK_BEZIER_HEXAHEDRON cells whose points are the geometry's
- * Bezier control points, "RationalWeights" where rational, "LRParameterBox"),
- * it keeps per element the Bezier coefficients (x, y, z), or, rational, the
- * homogeneous (w x, w y, w z, w), and the box of the control points, which
- * contains the element (convex hull property; the weights are positive).
+ * vtkIFEMReader (VTK_BEZIER_HEXAHEDRON or VTK_BEZIER_QUADRILATERAL cells whose
+ * points are the geometry's Bezier control points, "RationalWeights" where
+ * rational, "LRParameterBox"), it keeps per element the Bezier coefficients
+ * (x, y, z), or, rational, the homogeneous (w x, w y, w z, w), and the box of
+ * the control points, which contains the element (convex hull property; the
+ * weights are positive).
  *
  * Inversion of x (Invert): the k-d forest of vtkLRSplineElementLocator over
  * the physical boxes (SetAllowOverlap: curved elements' boxes overlap; list
  * leaves) gives the candidate elements; in each, Newton's method on the
- * element's Bezier map s -> x(s), s in local coordinates [0, 1]^3, started
- * from the element's linear approximation (the tangent map at its centre)
- * and, failing that, from its centre and corners, with a backtracking line
- * search on |x(s) - x|. Converged when the Newton step is below
- * ConvergenceTolerance (local coordinates; the parameter error is at most
- * that times the element's side) with a residual below 1e-9 of the element's
- * size. A point is inside an element when its solution lies in [0, 1]^3 up
- * to InsideTolerance; inside no candidate means outside the geometry.
+ * element's Bezier map s -> x(s), s in local coordinates [0, 1]^3 ([0, 1]^2
+ * and w = 0 for a surface), started from the element's linear approximation
+ * (the tangent map at its centre) and, failing that, from its centre and
+ * corners, with a backtracking line search on |x(s) - x|. Converged when the
+ * Newton step is below ConvergenceTolerance (local coordinates; the
+ * parameter error is at most that times the element's side) with a residual
+ * below 1e-9 of the element's size. A point is inside an element when its
+ * solution lies in [0, 1]^3 up to InsideTolerance; inside no candidate means
+ * outside the geometry.
+ *
+ * Surfaces (parametric dimension 2, in the plane or curved in 3D): the
+ * closest-point projection. Gauss-Newton on |x(s) - x|^2 (the least-squares
+ * step of the 3x2 Jacobian) converges to the foot of x on the element; x is
+ * on the surface when the foot lies in the element and |x(s) - x| is at most
+ * SurfaceTolerance times the element's size (the diagonal of its control
+ * points' box); the boxes are widened by that distance. Points off a planar
+ * surface by more, and points beyond its boundary curves, are outside.
+ * Gradients of surface fields are tangential (the Jacobian's pseudo-inverse).
  *
  * IsAffine(): every element's map is the same affine map of the parameter
  * (equal weights, control points at the affine images of the Bezier points
  * of the identity), within 1e-12 of the patch size; then x = A u + b is
- * exact and the callers keep their fast affine paths.
+ * exact and the callers keep their fast affine paths (volumes only).
  *
- * Limits: volumes (hexahedra) only; degrees up to vtkLRSplineBezierVolume's.
- * Thread-safe (const) after Build().
+ * Limits: degrees up to vtkLRSplineBezierVolume's; on a surface in 3D, points
+ * off a convex crease (a C0 line) whose foot is the crease belong to neither
+ * side. Thread-safe (const) after Build().
  */
 
 #ifndef vtkLRSplineGeometryMap_h
@@ -52,6 +64,19 @@ public:
   static constexpr double ConvergenceTolerance = 1e-13;
   /// How far outside [0, 1]^3 (local) a solution still counts as inside.
   static constexpr double InsideTolerance = 1e-9;
+  /// The default SurfaceTolerance (relative to the element's size).
+  static constexpr double DefaultSurfaceTolerance = 1e-2;
+
+  /**
+   * Surfaces: how far from the surface a point may lie and still be on it,
+   * relative to the size of the element (the diagonal of its control
+   * points' box). Values below 1e-9 mean 1e-9 (rounding). Set before Build().
+   */
+  void SetSurfaceTolerance(double relative)
+  {
+    this->SurfaceTolerance = relative >= 0 ? relative : DefaultSurfaceTolerance;
+  }
+  double GetSurfaceTolerance() const { return this->SurfaceTolerance; }
 
   /**
    * Build from a geometry-mode grid (see the class comment); `blocks` the k-d
@@ -60,6 +85,8 @@ public:
   bool Build(vtkUnstructuredGrid* grid, const int blocks[3], std::string* error);
 
   vtkIdType GetNumberOfElements() const { return this->Volume.GetNumberOfElements(); }
+  /// 3 (volume) or 2 (surface).
+  int GetParametricDimension() const { return this->Volume.ParametricDimension; }
   bool IsRational() const { return this->Rational; }
   /// Bezier coefficients: (x, y, z), or (w x, w y, w z, w) when rational.
   const vtkLRSplineBezierVolume& GetVolume() const { return this->Volume; }
@@ -81,6 +108,16 @@ public:
    * Jacobian J[3 i + j] = d x_i / d s_j.
    */
   void Map(vtkIdType e, const double s[3], double x[3], double J[9]) const;
+
+  /**
+   * d s / d x at local coordinates s of element e, row-major (inv[3 d + j] =
+   * d s_d / d x_j): the inverse Jacobian of a volume, the pseudo-inverse
+   * (J^T J)^-1 J^T of a surface (third row zero). False when singular.
+   */
+  bool InverseJacobian(vtkIdType e, const double s[3], double inv[9]) const;
+
+  /// A surface's point x(s) and unit normal (d x / d s_0 x d x / d s_1) at s of element e.
+  void SurfaceFrame(vtkIdType e, const double s[3], double x[3], double normal[3]) const;
 
   /// The rational weight W(s) and d W / d s (1 and 0 when polynomial).
   void Weight(vtkIdType e, const double s[3], double& W, double dW[3]) const;
@@ -107,12 +144,15 @@ public:
   double GetElementMinimumSide(vtkIdType e) const;
 
 private:
-  bool Newton(vtkIdType e, const double x[3], double s[3], int* iterations) const;
+  // `far` (may be null): converged, but the residual is above the acceptance.
+  bool Newton(
+    vtkIdType e, const double x[3], double s[3], int* iterations, bool* far = nullptr) const;
   void DetectAffine();
 
   vtkLRSplineBezierVolume Volume;
   vtkLRSplineElementLocator Locator;
   std::vector<double> Size; // per element: diagonal of its physical box
+  double SurfaceTolerance = DefaultSurfaceTolerance;
   bool Rational = false;
   bool Affine = false;
   double AffineA[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 };

@@ -107,7 +107,8 @@ int vtkLRSplineProbeFilter::RequestData(
   }
   std::string error;
   if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, source, this->ArrayName,
-        this->LocatorType, this->ForestResolution, this->UseParameterCoordinates != 0, &error))
+        this->LocatorType, this->ForestResolution, this->UseParameterCoordinates != 0, &error,
+        this->SurfaceTolerance))
   {
     vtkErrorMacro(<< "cannot evaluate the spline source: " << error);
     return 0;
@@ -160,4 +161,5 @@ void vtkLRSplineProbeFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "UseParameterCoordinates: " << this->UseParameterCoordinates << "\n";
   os << indent << "LocatorType: " << this->LocatorType << "\n";
   os << indent << "ForestResolution: " << this->ForestResolution << "\n";
+  os << indent << "SurfaceTolerance: " << this->SurfaceTolerance << "\n";
 }

@@ -6,8 +6,10 @@
  * Port 0 (Input): any vtkDataSet (or a composite of them) whose points are
  * where to evaluate: points, a line, a slice, an image for resampling.
  * Port 1 (Source): the spline, i.e. the output of vtkLRSplineReader (one
- * patch's vtkUnstructuredGrid or the whole vtkMultiBlockDataSet). With several
- * patches the first patch (in block order) that contains a point wins.
+ * patch's vtkUnstructuredGrid or the whole vtkMultiBlockDataSet), or the
+ * output of vtkIFEMReader: volumes or surfaces (in the plane or curved in
+ * 3D). With several patches the first patch (in block order) that contains a
+ * point wins.
  *
  * Output: a copy of the input with point arrays
  * - the field, under the source array's name (double, same components);
@@ -21,7 +23,8 @@
  * vtkSMPTools; the search structure is built once per source and reused while
  * the source does not change. Geometry-mode splines and IFEM results are
  * evaluated at physical points by inverting their geometry map
- * (vtkLRSplineGeometryMap); UseParameterCoordinates evaluates at parameter
+ * (vtkLRSplineGeometryMap); a surface at the closest point of a point within
+ * SurfaceTolerance of it. UseParameterCoordinates evaluates at parameter
  * coordinates instead. Progress is
  * reported and abort honoured between batches of points (an aborted run
  * gives an empty output); an input whose probed arrays could not fit in this
@@ -104,6 +107,18 @@ public:
   vtkGetMacro(ForestResolution, int);
   ///@}
 
+  ///@{
+  /**
+   * Surface results: how far from the surface a point may lie and still be
+   * evaluated (at its closest point on the surface), relative to the size of
+   * the element there (the diagonal of its control points' box). Farther
+   * points are outside (mask 0). Default 0.01; 0 keeps only points on the
+   * surface up to rounding (1e-9). Volumes ignore it.
+   */
+  vtkSetClampMacro(SurfaceTolerance, double, 0.0, 1.0);
+  vtkGetMacro(SurfaceTolerance, double);
+  ///@}
+
 protected:
   vtkLRSplineProbeFilter();
   ~vtkLRSplineProbeFilter() override;
@@ -119,6 +134,7 @@ protected:
   vtkTypeBool UseParameterCoordinates = 0;
   int LocatorType = 2;
   int ForestResolution = 0;
+  double SurfaceTolerance = 0.01;
 
 private:
   vtkLRSplineProbeFilter(const vtkLRSplineProbeFilter&) = delete;

@@ -208,13 +208,15 @@ public:
 
   vtkIdType Evaluations = 0;
 
-  // v = f(x); false outside (or non-finite: NaN set).
+  // v = f(x); false outside (or non-finite: NaN set). On a surface patch v
+  // is the tangential part of the field at the foot of x (kept for Snap).
   bool Eval(const S x[3], S v[3], bool& nan)
   {
     ++this->Evaluations;
     nan = false;
+    this->HasFoot = false;
     E xe[3] = { static_cast<E>(x[0]), static_cast<E>(x[1]), static_cast<E>(x[2]) };
-    E ve[3];
+    E ve[3] = { E(0), E(0), E(0) }; // a 2-component field leaves z at 0
     if (this->Field.EvaluateWithHint(xe, ve, nullptr, this->Patch, this->Element) < 0)
     {
       if (!(std::isfinite(x[0]) && std::isfinite(x[1]) && std::isfinite(x[2])))
@@ -232,7 +234,34 @@ public:
         return false;
       }
     }
+    double normal[3];
+    const double xd[3] = { static_cast<double>(xe[0]), static_cast<double>(xe[1]),
+      static_cast<double>(xe[2]) };
+    if (this->Field.GetPatch(this->Patch).GetParametricDimension() == 2 &&
+      this->Field.ProjectOntoSurface(this->Patch, this->Element, xd, this->Foot, normal))
+    {
+      this->HasFoot = true;
+      const double vn = static_cast<double>(v[0]) * normal[0] +
+        static_cast<double>(v[1]) * normal[1] + static_cast<double>(v[2]) * normal[2];
+      for (int d = 0; d < 3; ++d)
+      {
+        v[d] = static_cast<S>(static_cast<double>(v[d]) - vn * normal[d]);
+      }
+    }
     return true;
+  }
+
+  // Move x, the point of the last successful Eval, onto its foot on the
+  // surface (nothing for volumes): the line stays on the surface.
+  void Snap(S x[3]) const
+  {
+    if (this->HasFoot)
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        x[d] = static_cast<S>(this->Foot[d]);
+      }
+    }
   }
 
   // One step of size h (signed) from x with k1 = f(x).
@@ -293,7 +322,7 @@ public:
     {
       const double xd[3] = { static_cast<double>(x[0]), static_cast<double>(x[1]),
         static_cast<double>(x[2]) };
-      double vd[3], J[9];
+      double vd[3] = { 0, 0, 0 }, J[9] = { 0, 0, 0, 0, 0, 0, 0, 0, 0 };
       ++this->Evaluations;
       if (this->Field.Evaluate(xd, vd, J) >= 0)
       {
@@ -324,6 +353,7 @@ public:
       bool nan = false;
       if (this->Step(x, v, sign * mid, xm, err) == STEP_OK && this->Eval(xm, vm, nan))
       {
+        this->Snap(xm);
         lo = mid;
         std::copy(xm, xm + 3, xlo);
         std::copy(vm, vm + 3, vlo);
@@ -338,11 +368,15 @@ public:
       static_cast<double>(xlo[2]) };
     const int patch = this->Field.FindPatch(xd);
     line.Reason = vtkLRSplineStreamTracer::OUT_OF_DOMAIN;
-    if (patch >= 0 && this->Field.GetPatch(patch).GetGeometry() && lo > S(0))
+    const bool surface = patch >= 0 && this->Field.GetPatch(patch).GetParametricDimension() == 2;
+    if (patch >= 0 && this->Field.GetPatch(patch).GetGeometry() && (lo > S(0) || surface))
     {
       // A curved patch: its box is not its boundary; the bisection's last
       // inside point is the boundary point (to 1e-12 of the step).
-      this->Append(line, xlo, vlo, t + static_cast<double>(sign) * static_cast<double>(lo));
+      if (lo > S(0))
+      {
+        this->Append(line, xlo, vlo, t + static_cast<double>(sign) * static_cast<double>(lo));
+      }
       return;
     }
     double bounds[6];
@@ -430,6 +464,7 @@ public:
         nan ? vtkLRSplineStreamTracer::UNEXPECTED_VALUE : vtkLRSplineStreamTracer::OUT_OF_DOMAIN;
       return;
     }
+    this->Snap(x);
     this->PatchOfX = this->Patch;
     this->ElementOfX = this->Element;
     double t = 0.0;
@@ -534,6 +569,7 @@ public:
         this->Exit(line, x, v, hs, t, sign);
         return;
       }
+      this->Snap(xn);
       double dl = 0.0;
       for (int d = 0; d < 3; ++d)
       {
@@ -551,6 +587,7 @@ public:
           this->Exit(line, x, v, hs, t, sign);
           return;
         }
+        this->Snap(xn);
         dl = P.MaxLength - length;
         lastByLength = true;
         lastByTime = false;
@@ -580,6 +617,9 @@ private:
   const Params& P;
   int Patch = -1;
   vtkIdType Element = -1;
+  // The foot on a surface of the last evaluated point.
+  double Foot[3] = { 0, 0, 0 };
+  bool HasFoot = false;
 
   // patch and element of the current point (for the LR heuristic)
   int PatchOfX = 0;
@@ -819,16 +859,18 @@ int vtkLRSplineStreamTracer::RequestData(
   }
   std::string error;
   if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, spline, this->ArrayName,
-        this->LocatorType, this->ForestResolution, false, &error))
+        this->LocatorType, this->ForestResolution, false, &error, this->SurfaceTolerance))
   {
     vtkErrorMacro(<< "cannot evaluate the vector field: " << error);
     return 0;
   }
-  if (this->Field->GetNumberOfComponents() != 3)
+  const int nc = this->Field->GetNumberOfComponents();
+  const bool surfaces = this->Field->GetParametricDimension() == 2;
+  if (nc != 3 && !(nc == 2 && surfaces))
   {
-    vtkErrorMacro(<< "the field \"" << this->Field->GetArrayName() << "\" has "
-                  << this->Field->GetNumberOfComponents()
-                  << " components; streamlines need a 3-component vector field");
+    vtkErrorMacro(<< "the field \"" << this->Field->GetArrayName() << "\" has " << nc
+                  << " components; streamlines need a 3-component vector field"
+                  << (surfaces ? " or, on surfaces, a 2-component one" : ""));
     return 0;
   }
   if (this->Precision != DOUBLE_PRECISION)
@@ -1127,4 +1169,5 @@ void vtkLRSplineStreamTracer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputeVorticity: " << this->ComputeVorticity << "\n";
   os << indent << "LocatorType: " << this->LocatorType << "\n";
   os << indent << "ForestResolution: " << this->ForestResolution << "\n";
+  os << indent << "SurfaceTolerance: " << this->SurfaceTolerance << "\n";
 }

@@ -3,10 +3,14 @@
  * @brief   Streamlines through LR-spline vector fields, integrated on the exact spline (Fuchs et
  * al. §5).
  *
- * Port 0: the vector field, the output of vtkLRSplineReader (one patch or the
- * whole vtkMultiBlockDataSet; with several patches the first patch containing
- * a point wins). Port 1 (Source): the seeds, the points of any data set (or
- * composite of them). Like vtkStreamTracer, but every evaluation is an exact
+ * Port 0: the vector field, the output of vtkLRSplineReader or vtkIFEMReader
+ * (one patch or the whole vtkMultiBlockDataSet; with several patches the
+ * first patch containing a point wins). Volumes, or surfaces (in the plane or
+ * curved in 3D): there the field (2 or 3 components) is integrated on the
+ * surface in physical space: every evaluation is at the foot of the point on
+ * the surface (within SurfaceTolerance) and takes the field's tangential
+ * part, and every accepted point is moved onto its foot. Port 1 (Source): the seeds, the points of
+ * any data set (or composite of them). Like vtkStreamTracer, but every evaluation is an exact
  * evaluation of the spline (k-d forest look-up and Bezier evaluation,
  * vtkLRSplineField, Fuchs et al. §3.2), not an interpolation of samples.
  *
@@ -287,6 +291,16 @@ public:
   vtkGetMacro(ForestResolution, int);
   ///@}
 
+  ///@{
+  /**
+   * Surface fields: how far from the surface a point (a seed, an
+   * integrator's stage) may lie and still be on it, relative to the size of
+   * the element there, see vtkLRSplineProbeFilter. Default 0.01.
+   */
+  vtkSetClampMacro(SurfaceTolerance, double, 0.0, 1.0);
+  vtkGetMacro(SurfaceTolerance, double);
+  ///@}
+
   /// Number of field evaluations of the last execution.
   vtkIdType GetNumberOfEvaluations() const { return this->NumberOfEvaluations; }
 
@@ -327,6 +341,7 @@ protected:
   vtkTypeBool ComputeVorticity = 0;
   int LocatorType = 2;
   int ForestResolution = 0;
+  double SurfaceTolerance = 0.01;
   vtkIdType NumberOfEvaluations = 0;
 
 private:

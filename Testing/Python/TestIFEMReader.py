@@ -80,22 +80,6 @@ def vtk_evaluate(grid, cell_id, r):
     return np.array(x), np.array(w), ids
 
 
-def component_names(name, nc):
-    """The arrays the reader documents for a field (vtkIFEMBlockBuilder)."""
-    if "&&" in name:
-        parts = [p.strip() for p in name.split("&&")]
-        if " " in parts[0]:
-            prefix, parts[0] = parts[0].split(" ", 1)
-            parts = [prefix + " " + p for p in parts]
-        if len(parts) == nc:
-            return parts
-    if nc == 1:
-        return [name]
-    if nc <= 3:
-        return [name + "_" + "xyz"[c] for c in range(nc)]
-    return [name + "_%d" % c for c in range(nc)]
-
-
 def check(label, got, ref, scale, kind):
     err = np.max(np.abs(np.asarray(got) - np.asarray(ref))) / max(scale, 1e-300)
     worst[kind] = max(worst[kind], err)
@@ -114,7 +98,7 @@ def compare_spline_block(label, grid, patch, rational, fields, knotspans, n_elem
     lookup = cells_by_box(grid, pd)
     geo_scale = np.max(np.abs(patch.coefs[:, :nsd] / (patch.coefs[:, -1:] if rational else 1)))
     point_arrays = {n: array_values(grid, n) for n in
-                    {c for f, v in fields.items() for c in component_names(f, v.shape[1])}}
+                    {c for f, v in fields.items() for c in R.component_names(f, v.shape[1])}}
     elements = RNG.choice(len(patch.lo), size=min(n_elem, len(patch.lo)), replace=False)
     detected = {"geometry": 0.0, "field": 0.0}
     for e in elements:
@@ -142,7 +126,7 @@ def compare_spline_block(label, grid, patch, rational, fields, knotspans, n_elem
                 nc = values.shape[1]
                 ref_f = R.field(patch, u, values, rational, B)
                 scale = max(np.max(np.abs(values)), 1e-300) if np.all(np.isfinite(values)) else 1
-                for c, array in enumerate(component_names(name, nc)):
+                for c, array in enumerate(R.component_names(name, nc)):
                     a = point_arrays.get(array)
                     if a is None:
                         fail("%s: no point array %r for field %r" % (label, array, name))
@@ -155,7 +139,7 @@ def compare_spline_block(label, grid, patch, rational, fields, knotspans, n_elem
                     bumped = values.copy()
                     i = int(np.argmax(B))
                     bumped[i, 0] += 1e-9 * scale
-                    a = point_arrays[component_names(name, nc)[0]]
+                    a = point_arrays[R.component_names(name, nc)[0]]
                     detected["field"] = max(detected["field"], np.abs(
                         w @ a[ids, 0] - R.field(patch, u, bumped, rational, B)[0]) / scale)
     check_knotspans(label, grid, knotspans)
@@ -171,7 +155,7 @@ def check_knotspans(label, grid, knotspans):
     ids = array_values(grid, "LRElementId", "cell")[:, 0].astype(int)
     for name, values in knotspans.items():
         nc = values.shape[1]
-        for c, array in enumerate(component_names(name, nc)):
+        for c, array in enumerate(R.component_names(name, nc)):
             a = array_values(grid, array, "cell")
             if a is None:
                 a = array_values(grid, array + " (element)", "cell")
@@ -270,7 +254,7 @@ def compare_lagrange(label, grid, text, fields, knotspans):
         for name, values in fields.items():
             ref = R.lagrange_tensor(p, r, values[elements[e]])
             s = max(np.nanmax(np.abs(values)), 1e-300)
-            for c, array in enumerate(component_names(name, values.shape[1])):
+            for c, array in enumerate(R.component_names(name, values.shape[1])):
                 a = array_values(grid, array)
                 if np.isfinite(ref[c]):
                     check("%s field %r" % (label, array), w @ a[pts, 0], ref[c], s, "field")

@@ -178,6 +178,101 @@ def field(patch, u, values, rational, B=None):
     return B @ values
 
 
+def component_names(name, nc):
+    """The arrays the reader documents for a field (vtkIFEMBlockBuilder)."""
+    if "&&" in name:
+        parts = [p.strip() for p in name.split("&&")]
+        if " " in parts[0]:
+            prefix, parts[0] = parts[0].split(" ", 1)
+            parts = [prefix + " " + p for p in parts]
+        if len(parts) == nc:
+            return parts
+    if nc == 1:
+        return [name]
+    if nc <= 3:
+        return [name + "_" + "xyz"[c] for c in range(nc)]
+    return [name + "_%d" % c for c in range(nc)]
+
+
+def domain(patch):
+    """The parameter domain (lower corner, upper corner)."""
+    return patch.lo.min(axis=0), patch.hi.max(axis=0)
+
+
+def clamp(patch, u):
+    """u kept in the domain, just below its upper ends (the B-splines here are
+    half-open: at the upper end itself they vanish)."""
+    lo, hi = domain(patch)
+    return np.clip(u, lo, hi - 1e-13 * (hi - lo))
+
+
+def tangents(patch, u, rational, h=1e-7):
+    """d x / d u_d of the map by central differences (columns), clamped to
+    the domain: enough for Newton's direction; the residual stays exact."""
+    cols = []
+    for d in range(patch.pardim):
+        a, b = np.array(u, float), np.array(u, float)
+        a[d] -= h
+        b[d] += h
+        a, b = clamp(patch, a), clamp(patch, b)
+        cols.append((geometry(patch, b, rational) - geometry(patch, a, rational)) / (b[d] - a[d]))
+    return np.stack(cols, axis=1)
+
+
+def invert_surface(patch, x, rational, u0, tol=1e-14, iterations=50):
+    """The parameter u of a surface patch whose x(u) is nearest x (Gauss-Newton
+    on |x(u) - x|^2 with difference tangents, from u0, kept in the domain).
+    Returns (u, distance), or (None, inf) when Newton does not converge."""
+    lo, hi = domain(patch)
+    u = np.array(u0, float)
+    x = np.asarray(x, float)
+    for _ in range(iterations):
+        r = geometry(patch, u, rational)[:len(x)] - x
+        J = tangents(patch, u, rational)[:len(x)]
+        step = np.linalg.lstsq(J, r, rcond=None)[0]
+        new = clamp(patch, u - step)
+        moved = np.max(np.abs(new - u) / (hi - lo))
+        u = new
+        if moved < tol:
+            return u, np.linalg.norm(geometry(patch, u, rational)[:len(x)] - x)
+    return None, np.inf
+
+
+class SurfaceField:
+    """A field on the patches of a planar (nsd 2, or z = 0) surface result,
+    evaluated at physical points by this module's own inversion: the patch
+    whose sampled points lie nearest x is tried first."""
+
+    def __init__(self, patches, values, rational, samples=21):
+        self.patches, self.values, self.rational = patches, values, rational
+        self.starts = []
+        for p in patches:
+            lo, hi = domain(p)
+            g = np.linspace(0.0, 1.0, samples)
+            U = np.array([clamp(p, [lo[0] + a * (hi[0] - lo[0]), lo[1] + b * (hi[1] - lo[1])])
+                          for a in g for b in g])
+            X = np.array([geometry(p, u, rational)[:2] for u in U])
+            self.starts.append((U, X))
+
+    def locate(self, x):
+        """(patch index, u) of planar x, or (None, None) outside."""
+        x = np.asarray(x, float)[:2]
+        near = [np.min(np.linalg.norm(X - x, axis=1)) for _, X in self.starts]
+        for k in np.argsort(near):
+            U, X = self.starts[k]
+            u0 = U[np.argmin(np.linalg.norm(X - x, axis=1))]
+            u, dist = invert_surface(self.patches[k], x, self.rational, u0)
+            if u is not None and dist < 1e-9:
+                return k, u
+        return None, None
+
+    def __call__(self, x):
+        k, u = self.locate(x)
+        if k is None:
+            return None
+        return field(self.patches[k], u, self.values[k], self.rational)
+
+
 def parse_lagrange(text):
     """IFEM's "# LAGRANGIAN nodes=N elements=M type=T": nodes (N, 3), elements (M, k)."""
     lines = text.strip().splitlines()

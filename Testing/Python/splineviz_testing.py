@@ -8,14 +8,20 @@ class Observed:
     too), so that expected ones are not printed as failures."""
 
     def __init__(self, algorithm):
+        from vtkmodules.util.vtkConstants import VTK_STRING
+
         self.errors = []
         self.warnings = []
+        self.messages = []  # the errors' texts
+        self._error.__func__.CallDataType = VTK_STRING
         algorithm.AddObserver("ErrorEvent", self._error)
         algorithm.AddObserver("WarningEvent", self._warning)
         algorithm.GetExecutive().AddObserver("ErrorEvent", self._error)
 
-    def _error(self, caller, event):
+    def _error(self, caller, event, message=None):
         self.errors.append(event)
+        if message:
+            self.messages.append(message)
 
     def _warning(self, caller, event):
         self.warnings.append(event)
