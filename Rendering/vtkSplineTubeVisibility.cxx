@@ -154,93 +154,6 @@ void vtkSplineTubeVisibility::SetChunks(const float* spheres, const std::uint32_
   this->DrawnChunks.clear();
   this->Drawn = 0;
   this->Hidden = 0;
-  this->BuildCells();
-}
-
-//------------------------------------------------------------------------------
-void vtkSplineTubeVisibility::BuildCells()
-{
-  const vtkIdType count = this->NumberOfChunks;
-  this->CellOf.assign(static_cast<size_t>(count), 0);
-  this->CellSpheres.clear();
-  if (count == 0)
-  {
-    return;
-  }
-  // A grid over the chunks' centres with about ChunksPerCell chunks per cell
-  // for evenly spread chunks.
-  double lo[3] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
-  double hi[3] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MIN, VTK_DOUBLE_MIN };
-  for (vtkIdType c = 0; c < count; ++c)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      lo[k] = std::min(lo[k], static_cast<double>(this->Spheres[4 * c + k]));
-      hi[k] = std::max(hi[k], static_cast<double>(this->Spheres[4 * c + k]));
-    }
-  }
-  const int side = std::max(
-    1, std::min(256, static_cast<int>(std::cbrt(static_cast<double>(count) / ChunksPerCell))));
-  int dims[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    dims[k] = hi[k] > lo[k] ? side : 1;
-  }
-  auto cellOf = [&](vtkIdType c)
-  {
-    std::uint32_t index = 0;
-    for (int k = 2; k >= 0; --k)
-    {
-      const double f = dims[k] > 1 ? (this->Spheres[4 * c + k] - lo[k]) / (hi[k] - lo[k]) : 0.0;
-      const int i = std::max(0, std::min(dims[k] - 1, static_cast<int>(f * dims[k])));
-      index = index * static_cast<std::uint32_t>(dims[k]) + static_cast<std::uint32_t>(i);
-    }
-    return index;
-  };
-  const size_t numCells = static_cast<size_t>(dims[0]) * dims[1] * dims[2];
-  // Per cell the box of its chunks' spheres, then the sphere around the box.
-  std::vector<double> boxes(6 * numCells);
-  for (size_t i = 0; i < numCells; ++i)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      boxes[6 * i + 2 * k] = VTK_DOUBLE_MAX;
-      boxes[6 * i + 2 * k + 1] = VTK_DOUBLE_MIN;
-    }
-  }
-  for (vtkIdType c = 0; c < count; ++c)
-  {
-    const std::uint32_t cell = cellOf(c);
-    this->CellOf[c] = cell;
-    const float* s = this->Spheres + 4 * c;
-    for (int k = 0; k < 3; ++k)
-    {
-      boxes[6 * cell + 2 * k] = std::min(boxes[6 * cell + 2 * k], static_cast<double>(s[k] - s[3]));
-      boxes[6 * cell + 2 * k + 1] =
-        std::max(boxes[6 * cell + 2 * k + 1], static_cast<double>(s[k] + s[3]));
-    }
-  }
-  this->CellSpheres.assign(4 * numCells, 0.0f);
-  for (size_t i = 0; i < numCells; ++i)
-  {
-    const double* b = &boxes[6 * i];
-    if (b[0] > b[1])
-    {
-      this->CellSpheres[4 * i + 3] = -1.0f; // empty
-      continue;
-    }
-    double r2 = 0.0;
-    for (int k = 0; k < 3; ++k)
-    {
-      this->CellSpheres[4 * i + k] = static_cast<float>(0.5 * (b[2 * k] + b[2 * k + 1]));
-      r2 += 0.25 * (b[2 * k + 1] - b[2 * k]) * (b[2 * k + 1] - b[2 * k]);
-    }
-    // Widened by the float rounding of the centre (a box corner stays inside).
-    const double r = std::sqrt(r2);
-    this->CellSpheres[4 * i + 3] = static_cast<float>(r * (1.0 + 1e-5) + 1e-30);
-  }
-  this->CellProjection.assign(numCells, Projected());
-  this->CellInside.assign(numCells, 0);
 }
 
 //------------------------------------------------------------------------------
@@ -426,23 +339,6 @@ void vtkSplineTubeVisibility::BeginFrame(
       }
     });
 
-  // The cells, for the hierarchical occlusion test.
-  if (this->Occlusion)
-  {
-    const vtkIdType numCells = static_cast<vtkIdType>(this->CellInside.size());
-    vtkSMPTools::For(0, numCells,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType i = begin; i < end; ++i)
-        {
-          this->CellInside[i] = this->CellSpheres[4 * i + 3] >= 0.0f &&
-              this->Project(&this->CellSpheres[4 * i], view, pixelSlope, this->CellProjection[i])
-            ? 1
-            : 0;
-        }
-      });
-  }
-
   // Order front to back: a counting sort by nearest depth in 4096 buckets,
   // the chunks visible in the last frame first.
   this->Order.clear();
@@ -590,27 +486,13 @@ void vtkSplineTubeVisibility::CullGroup(
   }
   else
   {
-    // First the cells (0: not known yet, 1: hidden, 2: not hidden); a cell
-    // outside the frustum holds no chunk in the group.
-    std::vector<unsigned char> cellState(this->CellInside.size(), 0);
-    vtkSMPTools::For(0, static_cast<vtkIdType>(cellState.size()),
-      [&](vtkIdType b, vtkIdType e)
-      {
-        for (vtkIdType i = b; i < e; ++i)
-        {
-          cellState[i] =
-            (this->CellInside[i] && this->IsHidden(this->CellProjection[i], *pyramid)) ? 1 : 2;
-        }
-      });
     std::vector<unsigned char> hidden(static_cast<size_t>(end - begin), 0);
     vtkSMPTools::For(begin, end,
       [&](vtkIdType b, vtkIdType e)
       {
         for (vtkIdType i = b; i < e; ++i)
         {
-          const std::uint32_t c = this->Order[i];
-          hidden[i - begin] =
-            (cellState[this->CellOf[c]] == 1 || this->IsHidden(c, *pyramid)) ? 1 : 0;
+          hidden[i - begin] = this->IsHidden(this->Order[i], *pyramid) ? 1 : 0;
         }
       });
     for (vtkIdType i = begin; i < end; ++i)

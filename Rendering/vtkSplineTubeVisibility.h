@@ -20,11 +20,7 @@
  *    two-phase culling of current game engines).
  * 2. For each group, CullGroup() drops the chunks whose nearest depth lies
  *    behind the depth pyramid (tiles of maxima) of what is already drawn over
- *    their rectangle; the renderer draws the rest. The test is hierarchical:
- *    the chunks are sorted into cells of a spatial grid (about
- *    ChunksPerCell each, made by SetChunks()) with a sphere around each
- *    cell's chunks, and the chunks of a cell whose sphere is hidden are
- *    dropped without testing them one by one.
+ *    their rectangle; the renderer draws the rest.
  * 3. EndFrame() keeps, for the next frame, the drawn chunks that are not
  *    hidden in the finished depth buffer.
  *
@@ -104,9 +100,6 @@ public:
    */
   void SetLineMask(const unsigned char* mask) { this->LineMask = mask; }
 
-  /// About how many chunks share a cell of the hierarchical occlusion test.
-  static constexpr int ChunksPerCell = 32;
-
   /// Rank of a line in [0, 1): a hash of its index, so subsets are stable and nested.
   static double Rank(std::uint32_t line);
 
@@ -169,13 +162,7 @@ private:
   std::vector<std::uint32_t> RankOrder;   ///< chunks by their line's rank
   std::vector<vtkIdType> RankBucketStart; ///< RankBuckets + 1 offsets into RankOrder
   std::vector<Projected> Projection;      ///< per chunk, valid for those in Order
-  std::vector<std::uint32_t> CellOf;      ///< per chunk, its cell
-  std::vector<float> CellSpheres;         ///< per cell, a sphere around its chunks' spheres
-  std::vector<Projected> CellProjection;  ///< per cell, this frame
-  std::vector<unsigned char> CellInside;  ///< per cell, whether it meets the frustum
-  /// Make the cells of the chunks (SetChunks()).
-  void BuildCells();
-  std::vector<std::uint32_t> Order; ///< chunks in the frustum, by group, front to back
+  std::vector<std::uint32_t> Order;       ///< chunks in the frustum, by group, front to back
   std::vector<vtkIdType> GroupStarts;
   std::vector<unsigned char> Visible; ///< per chunk: visible at the end of the last frame
   std::vector<std::uint32_t> DrawnChunks;
