@@ -31,6 +31,8 @@ state = runpy.run_path(os.path.join(source, "Examples", "Python", name + ".py"),
                        run_name="__main__")
 
 expected = {"lines": "Ray-Cast Tubes"}
+if name == "tractography_state":
+    expected = {"lines": "Stylized Lines", "fa": "Slice"}
 if name == "tensor_lines_state":
     expected["glyph_display"] = "Superquadric Glyphs"
 if name == "lr_spline_volume_state":
