@@ -160,11 +160,11 @@ inline std::vector<Vec4> DenseSpline(const std::vector<Vec4>& nodes, int perSegm
 
 /// High-resolution polygonal reference of the tubes: vtkTubeFilter (radius by
 /// absolute scalar, `sides` sides) along the densely resampled spline, plus
-/// spheres for the rounded caps of sphere-swept tubes (vtkRayCastTubeMapper)
-/// or, with `flatCaps`, the filter's flat caps (the disk model of
-/// vtkTessellatedTubeMapper).
-inline vtkSmartPointer<vtkPolyData> ReferenceTubes(
-  const std::vector<std::vector<Vec4>>& curves, int perSegment, int sides, bool flatCaps = false)
+/// spheres (`capResolution` in both angles) for the rounded caps of
+/// sphere-swept tubes (vtkRayCastTubeMapper) or, with `flatCaps`, the
+/// filter's flat caps (the disk model of vtkTessellatedTubeMapper).
+inline vtkSmartPointer<vtkPolyData> ReferenceTubes(const std::vector<std::vector<Vec4>>& curves,
+  int perSegment, int sides, bool flatCaps = false, int capResolution = 64)
 {
   vtkNew<vtkAppendPolyData> append;
   for (const auto& curve : curves)
@@ -188,8 +188,8 @@ inline vtkSmartPointer<vtkPolyData> ReferenceTubes(
       vtkNew<vtkSphereSource> sphere;
       sphere->SetCenter((*end)[0], (*end)[1], (*end)[2]);
       sphere->SetRadius((*end)[3]);
-      sphere->SetThetaResolution(64);
-      sphere->SetPhiResolution(64);
+      sphere->SetThetaResolution(capResolution);
+      sphere->SetPhiResolution(capResolution);
       sphere->Update();
       vtkNew<vtkDoubleArray> radius; // kept by the append filter (RadiusFrame)
       radius->SetName("Radius");
@@ -206,17 +206,18 @@ inline vtkSmartPointer<vtkPolyData> ReferenceTubes(
   return out;
 }
 
-/// vtkTubeFilter, 64 sides, flat caps, radius by absolute scalar "Radius",
-/// around the polylines themselves (the model of the stylized lines:
-/// circular profiles orthogonal to the vertex tangents, straight segments).
-inline vtkSmartPointer<vtkPolyData> PolylineReferenceTubes(vtkPolyData* lines)
+/// vtkTubeFilter (`sides` sides), flat caps, radius by absolute scalar
+/// "Radius", around the polylines themselves (the model of the stylized
+/// lines: circular profiles orthogonal to the vertex tangents, straight
+/// segments).
+inline vtkSmartPointer<vtkPolyData> PolylineReferenceTubes(vtkPolyData* lines, int sides = 64)
 {
   vtkNew<vtkPolyData> input;
   input->ShallowCopy(lines);
   input->GetPointData()->SetActiveScalars("Radius");
   vtkNew<vtkTubeFilter> tubes;
   tubes->SetInputData(input);
-  tubes->SetNumberOfSides(64);
+  tubes->SetNumberOfSides(sides);
   tubes->SetVaryRadiusToVaryRadiusByAbsoluteScalar();
   tubes->CappingOn();
   tubes->Update();
