@@ -8,12 +8,11 @@
 // "tessellated" (vtkTessellatedTubeMapper), "stylized"
 // (vtkStylizedLineMapper), and VTK's "lines" (vtkPolyDataMapper),
 // "linesastubes" (vtkProperty::RenderLinesAsTubes, 3 pixels) and "tubefilter"
-// (vtkTubeFilter, 8 sides, + vtkPolyDataMapper; only up to --tubefilter-max
-// points: it needs about 400 bytes per point). Every (data, renderer) pair
-// runs in a process of its own (this program, --child), so that its peak
-// memory is its own and its window new (the first frame pays the shader
-// compilation, as a user's does). Each child reads the .tck with
-// vtkTractogramReader and reports:
+// (vtkTubeFilter, 8 sides; "tubefilter12": 12 sides; + vtkPolyDataMapper; only up to
+// --tubefilter-max points: it needs about 400 bytes per point). Every (data, renderer) pair runs in
+// a process of its own (this program, --child), so that its peak memory is its own and its window
+// new (the first frame pays the shader compilation, as a user's does). Each child reads the .tck
+// with vtkTractogramReader and reports:
 //  - read: the reader's time and the peak RSS after reading,
 //  - first: from the polylines in memory to the first finished frame,
 //  - still: the median frame of an orbit (camera 10 degrees per frame),
@@ -132,11 +131,13 @@ int Child(const std::string& file, const std::string& renderer, int width, int h
   else
   {
     polys = vtkSmartPointer<vtkPolyDataMapper>::New();
-    if (renderer == "tubefilter")
+    if (renderer.compare(0, 10, "tubefilter") == 0)
     {
+      // "tubefilter": 8 sides; "tubefilter12": 12.
+      const int sides = renderer.size() > 10 ? std::atoi(renderer.c_str() + 10) : 8;
       filter = vtkSmartPointer<vtkTubeFilter>::New();
       filter->SetInputData(lines);
-      filter->SetNumberOfSides(8);
+      filter->SetNumberOfSides(std::max(3, sides));
       filter->SetRadius(radius);
       polys->SetInputConnection(filter->GetOutputPort());
     }
@@ -193,7 +194,7 @@ int Child(const std::string& file, const std::string& renderer, int width, int h
   {
     gpu = static_cast<double>(tubes->GetGPUMemorySize());
   }
-  else if (renderer == "tubefilter")
+  else if (filter)
   {
     gpu = splineviz_benchmark::PolyDataGPUBytes(filter->GetOutput(), false);
   }
@@ -318,7 +319,8 @@ int main(int argc, char* argv[])
   }
   const std::vector<std::string> renderers = Split(options["--renderers"]);
   if (!splineviz_benchmark::AllKnown(renderers,
-        { "raycast", "tessellated", "stylized", "lines", "linesastubes", "tubefilter" },
+        { "raycast", "tessellated", "stylized", "lines", "linesastubes", "tubefilter",
+          "tubefilter12" },
         "renderer") ||
     !splineviz_benchmark::ValidSizes({ options["--size"] }, Usage))
   {
@@ -354,7 +356,7 @@ int main(int argc, char* argv[])
     for (const std::string& renderer : order)
     {
       Result r;
-      if (renderer == "tubefilter" && !results.empty() &&
+      if (renderer.compare(0, 10, "tubefilter") == 0 && !results.empty() &&
         static_cast<double>(results.begin()->second.Segments) > tubeFilterMax)
       {
         std::printf("%-13s (skipped: more than %g segments)\n", renderer.c_str(), tubeFilterMax);
