@@ -17,6 +17,7 @@ list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineBuilder"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineElementLocator"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineEvaluator"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineFitCore"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineGeometryMap"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineField"
   "${SPLINEVIZ_FOLDER}/vtkLRSplinePatch")
