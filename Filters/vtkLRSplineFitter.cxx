@@ -778,8 +778,20 @@ int vtkLRSplineFitter::RequestData(
       stopReason = "the limit of " + std::to_string(rounds) + " refinement rounds was reached";
       break;
     }
+    // Elements with too few points to determine finer functions are not split.
+    std::vector<double> marked = fit.ElementError;
+    bool sparse = false;
+    for (std::size_t e = 0; e < marked.size(); ++e)
+    {
+      if (fit.PointOffsets[e + 1] - fit.PointOffsets[e] < this->MinimumPointsPerElement &&
+        marked[e] > tolerance)
+      {
+        marked[e] = 0.0;
+        sparse = true;
+      }
+    }
     const vtkLRSplineFitCore::Outcome outcome =
-      fit.Core.Refine(fit.ElementError, tolerance, this->MaximumNumberOfElements, &error);
+      fit.Core.Refine(marked, tolerance, this->MaximumNumberOfElements, &error);
     if (outcome == vtkLRSplineFitCore::FAILED)
     {
       vtkErrorMacro(<< "the refinement failed: " << error);
@@ -794,7 +806,10 @@ int vtkLRSplineFitter::RequestData(
         ") was reached"
       : (outcome == vtkLRSplineFitCore::NOTHING_REFINABLE
             ? "the elements above the tolerance are at MaximumRefinementLevels (" +
-              std::to_string(this->MaximumRefinementLevels) + ")"
+              std::to_string(this->MaximumRefinementLevels) + ")" +
+              (sparse ? " or hold fewer than MinimumPointsPerElement (" +
+                    std::to_string(this->MinimumPointsPerElement) + ") data points"
+                      : std::string())
             : "the refinement did not split any element");
     break;
   }
@@ -945,6 +960,16 @@ bool vtkLRSplineFitter::GatherData(const std::vector<vtkDataSet*>& leaves,
   std::vector<double>& positions, std::vector<double>& values, int& dim, std::string& fieldName)
 {
   vtkIdType total = 0;
+  for (vtkDataSet* leaf : leaves)
+  {
+    total += leaf->GetNumberOfPoints();
+  }
+  if (total == 0)
+  {
+    vtkErrorMacro(<< "no data to fit: the input has no points");
+    return false;
+  }
+  total = 0;
   int components = 0;
   struct Leaf
   {
@@ -1119,6 +1144,7 @@ void vtkLRSplineFitter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumRefinementLevels: " << this->MaximumRefinementLevels << "\n";
   os << indent << "MaximumNumberOfElements: " << this->MaximumNumberOfElements << "\n";
   os << indent << "Margin: " << this->Margin << "\n";
+  os << indent << "MinimumPointsPerElement: " << this->MinimumPointsPerElement << "\n";
   os << indent << "Regularization: " << this->Regularization << "\n";
   os << indent << "ExtractBoundary: " << this->ExtractBoundary << "\n";
   os << indent << "FieldName: " << (this->FieldName ? this->FieldName : "(input array's)") << "\n";

@@ -35,8 +35,9 @@
  * 3. stop when the maximum (ToleranceType MAXIMUM) or RMS (RMS) error is at
  *    most the tolerance (ABSOLUTE or RELATIVE to the data range); otherwise
  *    refine every element whose largest (or RMS) error exceeds it
- *    (vtkLRSplineFitCore::Refine, halvings), up to MaximumRefinementLevels
- *    halvings of the initial elements and MaximumNumberOfElements.
+ *    (vtkLRSplineFitCore::Refine, halvings) and holding at least
+ *    MinimumPointsPerElement points, up to MaximumRefinementLevels halvings
+ *    of the initial elements and MaximumNumberOfElements.
  * The final errors are those of the output's Bezier form.
  *
  * Output port 0: a vtkMultiBlockDataSet with one block in the format of
@@ -160,6 +161,15 @@ public:
   ///@}
 
   ///@{
+  /**
+   * An element is split only when it holds at least this many data points
+   * (finer functions would have no data to determine them). Default 2.
+   */
+  vtkSetClampMacro(MinimumPointsPerElement, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(MinimumPointsPerElement, vtkIdType);
+  ///@}
+
+  ///@{
   /// Each side of the data's bounding box is widened by Margin times its length. Default 0.
   vtkSetClampMacro(Margin, double, 0.0, 10.0);
   vtkGetMacro(Margin, double);
@@ -233,6 +243,7 @@ protected:
   int VectorMode = MAGNITUDE;
   int MaximumRefinementLevels = 10;
   vtkIdType MaximumNumberOfElements = 500000;
+  vtkIdType MinimumPointsPerElement = 2;
   double Margin = 0.0;
   double Regularization = 0.1;
   vtkTypeBool ExtractBoundary = 1;
