@@ -10,6 +10,7 @@
 #include "LRSplineFitTestImages.h"
 #include "SplineVizTestUtilities.h"
 
+#include "vtkCallbackCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPointData.h"
@@ -140,6 +141,44 @@ int TestLRSplineFitterBadInput(int, char*[])
     FitRun run;
     run.Fitter->SetMaximumRefinementLevels(30);
     SV_CHECK_MSG(status, run.Run(good), run.Error());
+  }
+  {
+    // Progress, and an abort from a progress observer: the loop stops after
+    // the first fit (negative control: without the abort it refines on).
+    for (int aborting = 1; aborting >= 0; --aborting)
+    {
+      FitRun run;
+      run.Fitter->SetTolerance(1e-6);
+      run.Fitter->SetMaximumRefinementLevels(2);
+      vtkNew<vtkCallbackCommand> progress;
+      int events = 0;
+      progress->SetClientData(&events);
+      progress->SetCallback(
+        [](vtkObject* caller, unsigned long, void* clientData, void*)
+        {
+          ++*static_cast<int*>(clientData);
+          vtkAlgorithm::SafeDownCast(caller)->SetAbortExecute(1);
+        });
+      vtkNew<vtkCallbackCommand> count;
+      count->SetClientData(&events);
+      count->SetCallback([](vtkObject*, unsigned long, void* clientData, void*)
+        { ++*static_cast<int*>(clientData); });
+      run.Fitter->AddObserver(vtkCommand::ProgressEvent, aborting ? progress : count);
+      auto data = Cloud(3000);
+      // a field the initial spline cannot meet
+      for (vtkIdType i = 0; i < 3000; ++i)
+      {
+        double x[3];
+        data->GetPoint(i, x);
+        data->GetPointData()->GetScalars()->SetTuple1(i, std::sin(9 * x[0]) * std::cos(7 * x[1]));
+      }
+      run.Run(data);
+      std::cout << (aborting ? "abort" : "no abort") << ": " << events << " progress events, "
+                << run.Fitter->GetNumberOfIterations() << " fits" << std::endl;
+      SV_CHECK(status, events >= 1);
+      SV_CHECK_MSG(status, (run.Fitter->GetNumberOfIterations() == 1) == (aborting == 1),
+        run.Fitter->GetNumberOfIterations() << " fits");
+    }
   }
   return status.Result();
 }
