@@ -14,7 +14,9 @@
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
 #include "vtkDataSetSurfaceFilter.h"
+#include "vtkDataSetTriangleFilter.h"
 #include "vtkDoubleArray.h"
+#include "vtkFeatureEdges.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -24,6 +26,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
@@ -478,6 +481,41 @@ public:
     this->Errors(residual);
   }
 };
+
+// The boundary surface of a data set as triangles without data arrays.
+vtkSmartPointer<vtkPolyData> BoundaryTriangles(vtkDataSet* data)
+{
+  vtkNew<vtkDataSetSurfaceFilter> surface;
+  surface->SetInputData(data);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(surface->GetOutputPort());
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  triangles->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(triangles->GetOutput());
+  out->GetPointData()->Initialize();
+  out->GetCellData()->Initialize();
+  return out;
+}
+
+// Edges of a surface used by one triangle or by more than two.
+vtkIdType OpenEdges(vtkPolyData* surface)
+{
+  if (surface->GetNumberOfPolys() == 0)
+  {
+    return 0;
+  }
+  vtkNew<vtkFeatureEdges> edges;
+  edges->SetInputData(surface);
+  edges->BoundaryEdgesOn();
+  edges->NonManifoldEdgesOn();
+  edges->FeatureEdgesOff();
+  edges->ManifoldEdgesOff();
+  edges->ColoringOff();
+  edges->Update();
+  return edges->GetOutput()->GetNumberOfLines();
+}
 
 // The fitted spline's Bezier form (the output), its errors at the points and
 // the .lr file.
@@ -1094,30 +1132,53 @@ bool vtkLRSplineFitter::BuildBoundary(const std::vector<vtkDataSet*>& leaves, vt
   }
   vtkNew<vtkAppendPolyData> append;
   int inputs = 0;
+  vtkIdType open = 0;
   for (vtkDataSet* leaf : leaves)
   {
     if (leaf->GetNumberOfCells() == 0)
     {
       continue;
     }
-    vtkNew<vtkDataSetSurfaceFilter> surface;
-    surface->SetInputData(leaf);
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputConnection(surface->GetOutputPort());
-    triangles->PassVertsOff();
-    triangles->PassLinesOff();
-    triangles->Update();
-    vtkNew<vtkPolyData> copy;
-    copy->ShallowCopy(triangles->GetOutput());
-    copy->GetPointData()->Initialize();
-    copy->GetCellData()->Initialize();
-    append->AddInputData(copy);
+    vtkSmartPointer<vtkPolyData> surface = BoundaryTriangles(leaf);
+    vtkIdType edges = OpenEdges(surface);
+    if (edges > 0 && leaf->GetMaxCellSize() > 4 && !vtkPolyData::SafeDownCast(leaf))
+    {
+      // Non-conforming faces (a quad against two triangles, as a clip leaves
+      // them) show up as surface: cut the cells into tetrahedra first, whose
+      // ordered triangulation makes shared faces match.
+      vtkNew<vtkDataSetTriangleFilter> tetrahedra;
+      tetrahedra->SetInputData(leaf);
+      tetrahedra->Update();
+      surface = BoundaryTriangles(tetrahedra->GetOutput());
+      edges = OpenEdges(surface);
+    }
+    if (!vtkPolyData::SafeDownCast(leaf))
+    {
+      open += edges; // (a surface data set is open by nature)
+    }
+    append->AddInputData(surface);
     ++inputs;
+  }
+  if (open > 0)
+  {
+    vtkWarningMacro(<< "the data's boundary surface is not closed (" << open
+                    << " open or non-manifold edges): trimming by it may let parts of the "
+                       "volume outside the data show");
   }
   if (inputs > 0)
   {
-    append->Update();
-    boundary->ShallowCopy(append->GetOutput());
+    // Consistent, outward winding: the volume mapper's trimming tells the
+    // surface's front faces from its back faces by it.
+    vtkNew<vtkPolyDataNormals> oriented;
+    oriented->SetInputConnection(append->GetOutputPort());
+    oriented->SplittingOff();
+    oriented->ConsistencyOn();
+    oriented->AutoOrientNormalsOn();
+    oriented->ComputeCellNormalsOff();
+    oriented->ComputePointNormalsOn();
+    oriented->Update();
+    boundary->ShallowCopy(oriented->GetOutput());
+    boundary->GetPointData()->Initialize();
   }
   return true;
 }
