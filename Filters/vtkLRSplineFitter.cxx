@@ -517,6 +517,166 @@ vtkIdType OpenEdges(vtkPolyData* surface)
   return edges->GetOutput()->GetNumberOfLines();
 }
 
+// The range of the values (of the vectors' lengths).
+void DataRange(const PointData& data, double range[2])
+{
+  range[0] = VTK_DOUBLE_MAX;
+  range[1] = -VTK_DOUBLE_MAX;
+  for (vtkIdType p = 0; p < data.Size(); ++p)
+  {
+    double v2 = 0.0;
+    for (int c = 0; c < data.Dim; ++c)
+    {
+      v2 += data.F[p * data.Dim + c] * data.F[p * data.Dim + c];
+    }
+    const double v = data.Dim > 1 ? std::sqrt(v2) : data.F[p];
+    range[0] = std::min(range[0], v);
+    range[1] = std::max(range[1], v);
+  }
+}
+
+// The initial tensor-product spline (parameters [0, m] per direction,
+// splits halvings down to `levels`), all coefficients the data mean.
+bool InitializeFit(
+  PointFit& fit, const int degree[3], const int elements[3], int levels, std::string* error)
+{
+  const PointData& data = *fit.Data;
+  std::vector<double> breaks[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    for (int k = 0; k <= elements[d]; ++k)
+    {
+      breaks[d].push_back(k);
+    }
+    fit.Top[d] = elements[d];
+    fit.Core.InitialSide[d] = 1.0;
+    fit.Core.Options.MinimumPart[d] = std::pow(2.0, -(levels + 0.5)) * (1.0 + 1e-9);
+  }
+  fit.Core.Options.Ratio = 0.5;
+  fit.Core.MinimumCell = 1e-9;
+  if (!fit.Core.Builder.InitializeTensorProduct(degree, breaks, data.Dim, error))
+  {
+    return false;
+  }
+  const vtkIdType np = data.Size();
+  std::vector<double> mean(data.Dim, 0.0);
+  for (vtkIdType p = 0; p < np; ++p)
+  {
+    for (int c = 0; c < data.Dim; ++c)
+    {
+      mean[c] += data.F[p * data.Dim + c] / np;
+    }
+  }
+  fit.Core.Builder.SetCoefficientsFromGreville(
+    [&mean](const double*, double* c) { std::copy(mean.begin(), mean.end(), c); });
+  return true;
+}
+
+// What the fit-and-refine loop needs of the filter's settings.
+struct LoopSettings
+{
+  int Method = vtkLRSplineFitter::LEAST_SQUARES;
+  int MaximumRefinementLevels = 10;
+  vtkIdType MaximumNumberOfElements = 500000;
+  vtkIdType MinimumPointsPerElement = 2;
+};
+
+// Fit, evaluate, refine until the tolerance is met or a limit is reached
+// (met false, stopReason says which); progress and abort via `algorithm`.
+// False with a message on failure.
+bool FitLoop(PointFit& fit, const LoopSettings& settings, double tolerance, vtkAlgorithm* algorithm,
+  std::vector<double>& residual, std::vector<double>& history, bool& met, int& iteration,
+  std::string& stopReason, std::string* error)
+{
+  const int rounds = std::min(MaximumRounds, 3 * (settings.MaximumRefinementLevels + 1));
+  const vtkIdType np = fit.Data->Size();
+  met = false;
+  iteration = 0;
+  for (;; ++iteration)
+  {
+    fit.Core.ComputeSupports();
+    if (!fit.Bin(error))
+    {
+      *error = "cannot sort the points into the elements: " + *error;
+      return false;
+    }
+    if (settings.Method != vtkLRSplineFitter::MBA)
+    {
+      fit.LeastSquares();
+    }
+    else
+    {
+      fit.SolverIterations = 0;
+    }
+    if (settings.Method != vtkLRSplineFitter::LEAST_SQUARES)
+    {
+      for (int sweep = 0; sweep < MBASweeps; ++sweep)
+      {
+        fit.Residuals(residual);
+        fit.MBASweep(residual);
+      }
+    }
+    fit.Residuals(residual);
+    const vtkLRSplinePatch& patch = fit.Core.Builder.GetPatch();
+    const double rms = std::sqrt(fit.SumSquares / np);
+    history.insert(history.end(),
+      { static_cast<double>(patch.GetNumberOfElements()),
+        static_cast<double>(patch.GetNumberOfBasisFunctions()), fit.MaxError, rms,
+        static_cast<double>(fit.SolverIterations) });
+    algorithm->UpdateProgress(std::min(1.0, (iteration + 1.0) / (rounds + 1.0)));
+    if ((fit.RMSMode ? rms : fit.MaxError) <= tolerance)
+    {
+      met = true;
+      break;
+    }
+    if (algorithm->CheckAbort())
+    {
+      stopReason = "the update was aborted";
+      break;
+    }
+    if (iteration + 1 >= rounds)
+    {
+      stopReason = "the limit of " + std::to_string(rounds) + " refinement rounds was reached";
+      break;
+    }
+    // Elements with too few points to determine finer functions are not split.
+    std::vector<double> marked = fit.ElementError;
+    bool sparse = false;
+    for (std::size_t e = 0; e < marked.size(); ++e)
+    {
+      if (fit.PointOffsets[e + 1] - fit.PointOffsets[e] < settings.MinimumPointsPerElement &&
+        marked[e] > tolerance)
+      {
+        marked[e] = 0.0;
+        sparse = true;
+      }
+    }
+    const vtkLRSplineFitCore::Outcome outcome =
+      fit.Core.Refine(marked, tolerance, settings.MaximumNumberOfElements, error);
+    if (outcome == vtkLRSplineFitCore::FAILED)
+    {
+      *error = "the refinement failed: " + *error;
+      return false;
+    }
+    if (outcome == vtkLRSplineFitCore::REFINED)
+    {
+      continue;
+    }
+    stopReason = outcome == vtkLRSplineFitCore::ELEMENT_LIMIT
+      ? "MaximumNumberOfElements (" + std::to_string(settings.MaximumNumberOfElements) +
+        ") was reached"
+      : (outcome == vtkLRSplineFitCore::NOTHING_REFINABLE
+            ? "the elements above the tolerance are at MaximumRefinementLevels (" +
+              std::to_string(settings.MaximumRefinementLevels) + ")" +
+              (sparse ? " or hold fewer than MinimumPointsPerElement (" +
+                    std::to_string(settings.MinimumPointsPerElement) + ") data points"
+                      : std::string())
+            : "the refinement did not split any element");
+    break;
+  }
+  return true;
+}
+
 // The fitted spline's Bezier form (the output), its errors at the points and
 // the .lr file.
 struct FitResult
@@ -653,36 +813,9 @@ int vtkLRSplineFitter::RequestData(
 
   // The domain: the bounding box (with the margin); a volume is needed.
   double lo[3], hi[3], scale[3];
-  for (int d = 0; d < 3; ++d)
+  if (!this->ComputeDomain(positions, lo, hi, scale))
   {
-    lo[d] = VTK_DOUBLE_MAX;
-    hi[d] = -VTK_DOUBLE_MAX;
-  }
-  for (vtkIdType p = 0; p < np; ++p)
-  {
-    for (int d = 0; d < 3; ++d)
-    {
-      lo[d] = std::min(lo[d], positions[3 * p + d]);
-      hi[d] = std::max(hi[d], positions[3 * p + d]);
-    }
-  }
-  const double largest = std::max(hi[0] - lo[0], std::max(hi[1] - lo[1], hi[2] - lo[2]));
-  for (int d = 0; d < 3; ++d)
-  {
-    if (!(hi[d] - lo[d] > 1e-9 * largest))
-    {
-      vtkErrorMacro(<< "the " << np << " data points have no volume: they all lie on a "
-                    << (largest > 0 ? "plane or line" : "point") << " (extent " << hi[0] - lo[0]
-                    << " x " << hi[1] - lo[1] << " x " << hi[2] - lo[2]
-                    << "); an LR-spline volume needs 3D data");
-      return 0;
-    }
-    const double m = (hi[d] - lo[d]) * this->Margin;
-    lo[d] -= m;
-    hi[d] += m;
-    scale[d] = (hi[d] - lo[d]) / this->InitialNumberOfElements[d];
-    this->Domain[2 * d] = lo[d];
-    this->Domain[2 * d + 1] = hi[d];
+    return 0;
   }
   data.U.resize(3 * np);
   vtkSMPTools::For(0, np,
@@ -701,22 +834,8 @@ int vtkLRSplineFitter::RequestData(
   positions = std::vector<double>();
 
   // The tolerance (relative: of the range of the fitted values or lengths).
-  double range[2] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (vtkIdType p = 0; p < np; ++p)
-  {
-    double v = data.F[p * data.Dim];
-    if (data.Dim > 1)
-    {
-      v = 0.0;
-      for (int c = 0; c < data.Dim; ++c)
-      {
-        v += data.F[p * data.Dim + c] * data.F[p * data.Dim + c];
-      }
-      v = std::sqrt(v);
-    }
-    range[0] = std::min(range[0], v);
-    range[1] = std::max(range[1], v);
-  }
+  double range[2];
+  DataRange(data, range);
   double tolerance = this->ToleranceMode == RELATIVE_TOLERANCE
     ? this->Tolerance * (range[1] - range[0])
     : this->Tolerance;
@@ -730,126 +849,29 @@ int vtkLRSplineFitter::RequestData(
   fit.Tolerance = tolerance;
   fit.RMSMode = this->ToleranceType == RMS_ERROR;
   std::string error;
+  if (!InitializeFit(
+        fit, this->Degree, this->InitialNumberOfElements, this->MaximumRefinementLevels, &error))
   {
-    std::vector<double> breaks[3];
-    for (int d = 0; d < 3; ++d)
-    {
-      for (int k = 0; k <= this->InitialNumberOfElements[d]; ++k)
-      {
-        breaks[d].push_back(k);
-      }
-      fit.Top[d] = this->InitialNumberOfElements[d];
-      fit.Core.InitialSide[d] = 1.0;
-      fit.Core.Options.MinimumPart[d] =
-        std::pow(2.0, -(this->MaximumRefinementLevels + 0.5)) * (1.0 + 1e-9);
-    }
-    fit.Core.Options.Ratio = 0.5;
-    fit.Core.MinimumCell = 1e-9;
-    if (!fit.Core.Builder.InitializeTensorProduct(this->Degree, breaks, data.Dim, &error))
-    {
-      vtkErrorMacro(<< "cannot make the initial spline: " << error);
-      return 0;
-    }
-    std::vector<double> mean(data.Dim, 0.0);
-    for (vtkIdType p = 0; p < np; ++p)
-    {
-      for (int c = 0; c < data.Dim; ++c)
-      {
-        mean[c] += data.F[p * data.Dim + c] / np;
-      }
-    }
-    fit.Core.Builder.SetCoefficientsFromGreville(
-      [&mean](const double*, double* c) { std::copy(mean.begin(), mean.end(), c); });
+    vtkErrorMacro(<< "cannot make the initial spline: " << error);
+    return 0;
   }
 
   // Fit, evaluate, refine.
-  const int rounds = std::min(MaximumRounds, 3 * (this->MaximumRefinementLevels + 1));
+  LoopSettings settings;
+  settings.Method = this->Method;
+  settings.MaximumRefinementLevels = this->MaximumRefinementLevels;
+  settings.MaximumNumberOfElements = this->MaximumNumberOfElements;
+  settings.MinimumPointsPerElement = this->MinimumPointsPerElement;
   std::vector<double> residual;
   vtkLRSplineFitCore::Report report;
   std::string stopReason;
   bool met = false;
   int iteration = 0;
-  for (;; ++iteration)
+  if (!FitLoop(fit, settings, tolerance, this, residual, report.History, met, iteration, stopReason,
+        &error))
   {
-    fit.Core.ComputeSupports();
-    if (!fit.Bin(&error))
-    {
-      vtkErrorMacro(<< "cannot sort the points into the elements: " << error);
-      return 0;
-    }
-    if (this->Method != MBA)
-    {
-      fit.LeastSquares();
-    }
-    else
-    {
-      fit.SolverIterations = 0;
-    }
-    if (this->Method != LEAST_SQUARES)
-    {
-      for (int sweep = 0; sweep < MBASweeps; ++sweep)
-      {
-        fit.Residuals(residual);
-        fit.MBASweep(residual);
-      }
-    }
-    fit.Residuals(residual);
-    const vtkLRSplinePatch& patch = fit.Core.Builder.GetPatch();
-    const double rms = std::sqrt(fit.SumSquares / np);
-    report.History.insert(report.History.end(),
-      { static_cast<double>(patch.GetNumberOfElements()),
-        static_cast<double>(patch.GetNumberOfBasisFunctions()), fit.MaxError, rms,
-        static_cast<double>(fit.SolverIterations) });
-    this->UpdateProgress(std::min(1.0, (iteration + 1.0) / (rounds + 1.0)));
-    if ((fit.RMSMode ? rms : fit.MaxError) <= tolerance)
-    {
-      met = true;
-      break;
-    }
-    if (this->CheckAbort())
-    {
-      stopReason = "the update was aborted";
-      break;
-    }
-    if (iteration + 1 >= rounds)
-    {
-      stopReason = "the limit of " + std::to_string(rounds) + " refinement rounds was reached";
-      break;
-    }
-    // Elements with too few points to determine finer functions are not split.
-    std::vector<double> marked = fit.ElementError;
-    bool sparse = false;
-    for (std::size_t e = 0; e < marked.size(); ++e)
-    {
-      if (fit.PointOffsets[e + 1] - fit.PointOffsets[e] < this->MinimumPointsPerElement &&
-        marked[e] > tolerance)
-      {
-        marked[e] = 0.0;
-        sparse = true;
-      }
-    }
-    const vtkLRSplineFitCore::Outcome outcome =
-      fit.Core.Refine(marked, tolerance, this->MaximumNumberOfElements, &error);
-    if (outcome == vtkLRSplineFitCore::FAILED)
-    {
-      vtkErrorMacro(<< "the refinement failed: " << error);
-      return 0;
-    }
-    if (outcome == vtkLRSplineFitCore::REFINED)
-    {
-      continue;
-    }
-    stopReason = outcome == vtkLRSplineFitCore::ELEMENT_LIMIT
-      ? "MaximumNumberOfElements (" + std::to_string(this->MaximumNumberOfElements) +
-        ") was reached"
-      : (outcome == vtkLRSplineFitCore::NOTHING_REFINABLE
-            ? "the elements above the tolerance are at MaximumRefinementLevels (" +
-              std::to_string(this->MaximumRefinementLevels) + ")" +
-              (sparse ? " or hold fewer than MinimumPointsPerElement (" +
-                    std::to_string(this->MinimumPointsPerElement) + ") data points"
-                      : std::string())
-            : "the refinement did not split any element");
-    break;
+    vtkErrorMacro(<< error);
+    return 0;
   }
   // The output's Bezier form, its errors at the points, the output.
   FitResult result;
@@ -928,6 +950,45 @@ int vtkLRSplineFitter::RequestData(
   seconds->InsertNextValue(this->FitTime);
   grid->GetFieldData()->AddArray(seconds);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineFitter::ComputeDomain(
+  const std::vector<double>& positions, double lo[3], double hi[3], double scale[3])
+{
+  const vtkIdType np = static_cast<vtkIdType>(positions.size() / 3);
+  for (int d = 0; d < 3; ++d)
+  {
+    lo[d] = VTK_DOUBLE_MAX;
+    hi[d] = -VTK_DOUBLE_MAX;
+  }
+  for (vtkIdType p = 0; p < np; ++p)
+  {
+    for (int d = 0; d < 3; ++d)
+    {
+      lo[d] = std::min(lo[d], positions[3 * p + d]);
+      hi[d] = std::max(hi[d], positions[3 * p + d]);
+    }
+  }
+  const double largest = std::max(hi[0] - lo[0], std::max(hi[1] - lo[1], hi[2] - lo[2]));
+  for (int d = 0; d < 3; ++d)
+  {
+    if (!(hi[d] - lo[d] > 1e-9 * largest))
+    {
+      vtkErrorMacro(<< "the " << np << " data points have no volume: they all lie on a "
+                    << (largest > 0 ? "plane or line" : "point") << " (extent " << hi[0] - lo[0]
+                    << " x " << hi[1] - lo[1] << " x " << hi[2] - lo[2]
+                    << "); an LR-spline volume needs 3D data");
+      return false;
+    }
+    const double m = (hi[d] - lo[d]) * this->Margin;
+    lo[d] -= m;
+    hi[d] += m;
+    scale[d] = (hi[d] - lo[d]) / this->InitialNumberOfElements[d];
+    this->Domain[2 * d] = lo[d];
+    this->Domain[2 * d + 1] = hi[d];
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

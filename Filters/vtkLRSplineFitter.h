@@ -1,59 +1,40 @@
 /**
  * @class   vtkLRSplineFitter
  * @brief   Fits an LR-spline volume to the point or cell data of any data set (scattered points,
- * unstructured meshes, images) by LR-MBA and/or least squares with local refinement until a
+ * unstructured meshes, images) by least squares and/or LR-MBA with local refinement until a
  * tolerance is met at every data point.
  *
  * Fuchs et al. render LR volumes that approximate simulation data on
- * unstructured meshes, trimmed by the mesh's boundary. This filter makes such
- * volumes from any vtkDataSet, or the leaves of a composite data set, whose
- * points are fitted together as one point cloud. Cell data is taken at the
- * cells' parametric centres (vtkCellCenters). A vector array is fitted as the
- * magnitude (VectorMode MAGNITUDE, default) or all its components as one
- * multi-component spline (COMPONENTS; the error at a point is then the length
- * of the error vector).
+ * unstructured meshes, trimmed by the mesh's boundary. Input: any vtkDataSet
+ * or the leaves of a composite data set, fitted together; cell data is taken
+ * at the cell centres (vtkCellCenters); a vector array as its magnitude
+ * (VectorMode MAGNITUDE) or all components in one spline (COMPONENTS; the
+ * error at a point is then the length of the error vector).
  *
  * Domain: the data's bounding box, each side widened by Margin times its
- * length; x = offset + scale * u maps the parameters u in [0, m_d]
- * (InitialNumberOfElements) to it, so that splits are exact halvings.
- * Method (the iteration of GoTools' LRVolApprox; Skytt, Barrowclough and
- * Dokken 2015 for LR-MBA): start from a tensor-product spline of tri-degree
- * Degree, coefficients the data mean, and repeat
- * 1. update the coefficients with the data (Method):
- *    - MBA: multilevel B-spline approximation on the LR basis, run twice:
- *      every point p proposes phi_i = w_i r_p / sum_j w_j^2 for the functions
- *      on its element (w_i = gamma_i B_i(x_p), r_p the residual) and each
- *      coefficient moves by sum_p w_i^2 phi_i / sum_p w_i^2 (local, cheap,
- *      not a projection: it approaches the data level by level);
- *    - LEAST_SQUARES: minimize sum_p (s(x_p) - f_p)^2 + sum_i delta_i
- *      (c_i - c_i^prev)^2, delta pulling functions that see little data
- *      (sum_p w_i < 1) towards the previous fit (Regularization), by
- *      conjugate gradients (vtkLRSplineFitCore, shared with
- *      vtkLRSplineImageFitter); reproduces a spline of the space exactly;
- *    - HYBRID: least squares, then the two MBA sweeps on its residual;
- * 2. the error at every point, per element (vtkSMPTools);
- * 3. stop when the maximum (ToleranceType MAXIMUM) or RMS (RMS) error is at
- *    most the tolerance (ABSOLUTE or RELATIVE to the data range); otherwise
- *    refine every element whose largest (or RMS) error exceeds it
- *    (vtkLRSplineFitCore::Refine, halvings) and holding at least
- *    MinimumPointsPerElement points, up to MaximumRefinementLevels halvings
- *    of the initial elements and MaximumNumberOfElements.
- * The final errors are those of the output's Bezier form.
+ * length; parameters u in [0, m_d] (InitialNumberOfElements), x = offset +
+ * scale * u. From a tensor-product spline of tri-degree Degree (coefficients
+ * the data mean) it repeats (the loop of GoTools' LRVolApprox): update the
+ * coefficients (Method: LEAST_SQUARES, regularized least squares shared with
+ * vtkLRSplineImageFitter in vtkLRSplineFitCore; MBA, two sweeps of LR
+ * multilevel B-spline approximation, Skytt, Barrowclough and Dokken 2015;
+ * HYBRID, both), measure the error at every point (vtkSMPTools), stop when
+ * the maximum or RMS error (ToleranceType) is within the tolerance (ABSOLUTE
+ * or RELATIVE to the data range), else refine the elements above it that
+ * hold at least MinimumPointsPerElement points (vtkLRSplineFitCore::Refine),
+ * up to MaximumRefinementLevels halvings and MaximumNumberOfElements.
  *
- * Output port 0: a vtkMultiBlockDataSet with one block in the format of
- * vtkLRSplineReader and vtkLRSplineImageFitter (the same cell and field data
- * "LRFit..."), which the volume mapper, probe and stream tracer take. Output
- * port 1: the data's boundary surface (vtkDataSetSurfaceFilter of every leaf,
- * triangulated; empty for point clouds), for the volume mapper's trimming
- * input. With FileName set the spline is also written as a .lr file whose
- * parameters are u (read it back with PhysicalBounds = the fitted domain,
- * field data "LRFitDomain").
+ * Output port 0: one block in the format of vtkLRSplineReader with the
+ * image fitter's "LRFit..." cell and field data (plus "LRFitDomain"), for the
+ * volume mapper, probe and stream tracer. Output port 1: the data's boundary
+ * surface (triangles, consistently oriented; empty for point clouds), for
+ * the volume mapper's trimming input. FileName: also write a .lr file (read
+ * it back with PhysicalBounds = LRFitDomain). Every piece fits all the data.
  *
- * Every piece fits all the data and outputs its share of the elements.
- * Refused before allocating: no points, no or a missing array, NaN or
- * infinite values or coordinates, all points on a plane or line (no volume),
- * Tolerance <= 0, degrees outside 1..5, MaximumRefinementLevels outside
- * 0..30, a MaximumNumberOfElements whose spline would not fit in memory.
+ * Refused before allocating: no points or array, NaN or infinite values or
+ * coordinates, points without volume (on a plane, line or point), Tolerance
+ * <= 0, degrees outside 1..5, MaximumRefinementLevels outside 0..30, limits
+ * whose spline would not fit in memory.
  */
 
 #ifndef vtkLRSplineFitter_h
@@ -231,6 +212,10 @@ protected:
   // The positions (3 per point) and values (dim per point) of every leaf.
   bool GatherData(const std::vector<vtkDataSet*>& leaves, std::vector<double>& positions,
     std::vector<double>& values, int& dim, std::string& fieldName);
+  // The data's bounding box with the margin (lo, hi), scale = side / elements;
+  // false with an error when the points have no volume.
+  bool ComputeDomain(
+    const std::vector<double>& positions, double lo[3], double hi[3], double scale[3]);
   // The boundary surface of the leaves (output port 1).
   bool BuildBoundary(const std::vector<vtkDataSet*>& leaves, vtkPolyData* boundary);
 
