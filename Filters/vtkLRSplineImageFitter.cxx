@@ -1,22 +1,20 @@
 #include "vtkLRSplineImageFitter.h"
 
-#include "vtkLRSplineBezierGrid.h"
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineFitCore.h"
 #include "vtkLRSplinePatch.h"
 
 #include "vtkArrayDispatch.h"
-#include "vtkCellData.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
@@ -31,9 +29,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <fstream>
-#include <functional>
-#include <initializer_list>
 #include <string>
 #include <unordered_map>
 #include <vector>
