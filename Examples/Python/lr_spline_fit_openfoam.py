@@ -128,8 +128,8 @@ def render(p_fit, u_fit, png, trimmed, size=(900, 420)):
     # first part runs along x at y in [0, 0.05]).
     bounds = p_fit.GetOutputDataObject(1).GetBounds()
     seeds = vtkLineSource()
-    seeds.SetPoint1(bounds[0] + 0.01, 0.01, 0.0)
-    seeds.SetPoint2(bounds[0] + 0.01, 0.04, 0.0)
+    seeds.SetPoint1(bounds[0] + 0.02, 0.015, 0.0)
+    seeds.SetPoint2(bounds[0] + 0.02, 0.035, 0.0)
     seeds.SetResolution(12)
     tracer = splineviz.vtkLRSplineStreamTracer()
     tracer.SetInputConnection(u_fit.GetOutputPort(0))
