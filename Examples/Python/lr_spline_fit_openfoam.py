@@ -134,6 +134,7 @@ def render(p_fit, u_fit, png, trimmed, size=(900, 420)):
     tracer = splineviz.vtkLRSplineStreamTracer()
     tracer.SetInputConnection(u_fit.GetOutputPort(0))
     tracer.SetSourceConnection(seeds.GetOutputPort())
+    tracer.SetIntegrationDirectionToForward()
     tracer.SetMaximumPropagation(10 * (bounds[1] - bounds[0]))
     tracer.Update()
     tubes = vtkTubeFilter()
