@@ -1,6 +1,7 @@
 # Filters/: VTK filters and sources of the SplineViz module, and the plain C++
 # numerical code they share (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineFitter"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineImageFitter"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineProbeFilter"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineResampleToImage"
@@ -18,6 +19,7 @@ list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineBuilder"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineElementLocator"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineEvaluator"
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineFitCore"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineGeometryMap"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineField"
   "${SPLINEVIZ_FOLDER}/vtkLRSplinePatch")

@@ -1,22 +1,20 @@
 #include "vtkLRSplineImageFitter.h"
 
-#include "vtkLRSplineBezierGrid.h"
 #include "vtkLRSplineBezierVolume.h"
-#include "vtkLRSplineBuilder.h"
+#include "vtkLRSplineFitCore.h"
 #include "vtkLRSplinePatch.h"
 
 #include "vtkArrayDispatch.h"
-#include "vtkCellData.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkIntArray.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
@@ -31,9 +29,6 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
-#include <fstream>
-#include <functional>
-#include <initializer_list>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -46,10 +41,6 @@ namespace
 constexpr vtkIdType MaximumVoxels = vtkIdType(1) << 27;
 // Basis functions that see fewer voxels than this are regularized.
 constexpr double LittleData = 1.0;
-// Always-on relative ridge (keeps the normal matrix definite).
-constexpr double Ridge = 1e-12;
-// Conjugate gradients: the accuracy of the voxel values relative to the
-// tolerance, the delay of the error estimate, the iteration limit.
 constexpr double SolverAccuracy = 1e-4;
 constexpr int SolverDelay = 10;
 constexpr int SolverMaximumIterations = 2000;
@@ -80,28 +71,6 @@ struct CopyWorker
   }
 };
 
-double Dot(const std::vector<double>& a, const std::vector<double>& b)
-{
-  const vtkIdType n = static_cast<vtkIdType>(a.size());
-  vtkSMPThreadLocal<double> partial(0.0);
-  vtkSMPTools::For(0, n,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      double s = 0.0;
-      for (vtkIdType i = begin; i < end; ++i)
-      {
-        s += a[i] * b[i];
-      }
-      partial.Local() += s;
-    });
-  double s = 0.0;
-  for (double v : partial)
-  {
-    s += v;
-  }
-  return s;
-}
-
 struct Statistics
 {
   double MaxError = 0.0;
@@ -119,7 +88,7 @@ public:
   double Regularization = 0.1;
   double Tolerance = 0.0; // absolute
 
-  vtkLRSplineBuilder Builder;
+  vtkLRSplineFitCore Core;
   // Per element of the current patch.
   std::vector<double> ElementError;
   Statistics Stats;
@@ -137,20 +106,20 @@ public:
       const bool faces = align && this->Degree[d] % 2 == 0;
       const int m = std::max(1, std::min(elements[d], this->N[d] - (faces ? 0 : 1)));
       const double length = this->N[d] - 1;
-      this->InitialSide[d] = length / m;
+      this->Core.InitialSide[d] = length / m;
       // Voxel-aligned knots: at voxel faces (half-integers) for even degrees,
       // at voxel centres (integers) for odd ones, where the sampling of the
       // B-splines at the voxels is best conditioned (at the finest level one
       // element per voxel, which can interpolate).
-      this->Options.GridStep[d] = align ? 1.0 : 0.0;
-      this->Options.GridOffset[d] = (this->Degree[d] % 2 == 0) ? 0.5 : 0.0;
+      this->Core.Options.GridStep[d] = align ? 1.0 : 0.0;
+      this->Core.Options.GridOffset[d] = (this->Degree[d] % 2 == 0) ? 0.5 : 0.0;
       breaks[d].push_back(0.0);
       for (int k = 1; k < m; ++k)
       {
         double z = length * k / m;
         if (align)
         {
-          const double o = this->Options.GridOffset[d];
+          const double o = this->Core.Options.GridOffset[d];
           z = std::min(length - o, std::max(o, o + std::round(z - o)));
         }
         if (z > breaks[d].back() && z < length)
@@ -162,98 +131,55 @@ public:
       // No part shorter than MinimumElementSize voxels, or finer than
       // MaximumRefinementLevels halvings of the initial elements.
       // (a side s is at level round(log2(InitialSide / s))).
-      this->Options.MinimumPart[d] = std::max(minimumSize * (1.0 - 1e-9),
-        this->InitialSide[d] * std::pow(2.0, -(maximumLevels + 0.5)) * (1.0 + 1e-9));
+      this->Core.Options.MinimumPart[d] = std::max(minimumSize * (1.0 - 1e-9),
+        this->Core.InitialSide[d] * std::pow(2.0, -(maximumLevels + 0.5)) * (1.0 + 1e-9));
     }
-    this->Options.Ratio = 0.5;
-    if (!this->Builder.InitializeTensorProduct(this->Degree, breaks, 1, error))
+    this->Core.Options.Ratio = 0.5;
+    if (!this->Core.Builder.InitializeTensorProduct(this->Degree, breaks, 1, error))
     {
       return false;
     }
     // The starting guess: the image sampled at the Greville points.
-    this->Builder.SetCoefficientsFromGreville(
+    this->Core.Builder.SetCoefficientsFromGreville(
       [this](const double g[3], double* c) { c[0] = this->Trilinear(g); });
     return true;
   }
 
-  vtkLRSplineBuilder::RefineOptions Options;
-  double InitialSide[3] = { 1, 1, 1 };
-
   // Least squares on the current mesh (coefficients in the builder).
-  bool Solve(std::string* error)
+  bool Solve()
   {
-    const vtkLRSplinePatch& patch = this->Builder.GetPatch();
+    const vtkLRSplinePatch& patch = this->Core.Builder.GetPatch();
     const vtkIdType nf = patch.GetNumberOfBasisFunctions();
-    this->ComputeSupports(patch);
+    this->Core.ComputeSupports();
     this->BuildTables(patch);
-
-    // Sparsity: functions overlap when they share an element.
-    // (the lists are kept between fits: their memory is reused)
-    std::vector<std::vector<int>>& rows = this->Rows;
-    rows.resize(nf);
-    vtkSMPThreadLocal<std::vector<vtkIdType>> tlMark;
-    vtkSMPTools::For(0, nf,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        std::vector<vtkIdType>& mark = tlMark.Local();
-        if (mark.size() != static_cast<std::size_t>(nf))
-        {
-          mark.assign(nf, -1);
-        }
-        for (vtkIdType f = begin; f < end; ++f)
-        {
-          std::vector<int>& row = rows[f];
-          row.clear();
-          for (vtkIdType k = this->FunctionElementOffsets[f];
-               k < this->FunctionElementOffsets[f + 1]; ++k)
-          {
-            const vtkIdType e = this->FunctionElements[k];
-            for (vtkIdType s = this->SupportOffsets[e]; s < this->SupportOffsets[e + 1]; ++s)
-            {
-              const vtkIdType g = this->SupportIds[s];
-              if (mark[g] != f)
-              {
-                mark[g] = f;
-                row.push_back(static_cast<int>(g));
-              }
-            }
-          }
-        }
-      });
-    this->RowOffsets.assign(nf + 1, 0);
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      this->RowOffsets[f + 1] = this->RowOffsets[f] + static_cast<vtkIdType>(rows[f].size());
-    }
-    this->Columns.resize(this->RowOffsets[nf]);
-    this->Entries.resize(this->RowOffsets[nf]);
+    this->Core.BuildPattern(false);
     std::vector<double> rhs(nf), diagonal(nf), weight(nf);
     const std::vector<double>& gamma = patch.Gamma;
     const std::vector<double>& values = *this->Values;
     const int nx = this->N[0], ny = this->N[1];
+    const std::vector<vtkIdType>& rowOffsets = this->Core.RowOffsets;
+    const std::vector<int>& columns = this->Core.Columns;
+    std::vector<double>& entries = this->Core.Entries;
     vtkSMPTools::For(0, nf,
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType f = begin; f < end; ++f)
         {
-          std::vector<int>& row = rows[f];
-          vtkIdType out = this->RowOffsets[f];
           const int* tf = &this->FunctionTable[3 * f];
-          for (int g : row)
+          for (vtkIdType k = rowOffsets[f]; k < rowOffsets[f + 1]; ++k)
           {
+            const int g = columns[k];
             const int* tg = &this->FunctionTable[3 * g];
             double v = gamma[f] * gamma[g];
             for (int d = 0; d < 3 && v != 0.0; ++d)
             {
               v *= this->Gram(d, tf[d], tg[d]);
             }
-            this->Columns[out] = g;
-            this->Entries[out] = v;
+            entries[k] = v;
             if (g == f)
             {
               diagonal[f] = v;
             }
-            ++out;
           }
           // Right-hand side and data weight: sums over the support's voxels.
           const Table& tu = this->Tables[0][tf[0]];
@@ -285,86 +211,13 @@ public:
     // Regularization towards the previous fit (c^prev) for functions with
     // little data; A_ii = 0 (no voxel at all) keeps c^prev.
     std::vector<double> prior(patch.Coefficients.begin(), patch.Coefficients.end());
-    std::vector<double> delta(nf);
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      const double little = std::max(0.0, 1.0 - weight[f] / LittleData);
-      delta[f] = diagonal[f] > 0 ? diagonal[f] * (Ridge + this->Regularization * little) : 1.0;
-      rhs[f] += delta[f] * prior[f];
-      diagonal[f] += delta[f];
-    }
-
-    // Preconditioned conjugate gradients from c^prev.
-    std::vector<double> x = prior, r(nf), z(nf), p(nf), q(nf);
-    this->Multiply(x, delta, q);
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      r[f] = rhs[f] - q[f];
-      z[f] = r[f] / diagonal[f];
-    }
-    p = z;
-    double rz = Dot(r, z);
-    // Stop when the error of the voxel values the solve leaves,
-    // ||Phi (c_k - c*)||_2 <= ||c_k - c*||_(A+D), is below SolverAccuracy *
-    // tolerance: the error in that norm is estimated from the last
-    // SolverDelay steps (Hestenes-Stiefel; Strakos and Tichy 2002:
-    // ||e_k||^2 = sum_{j>=k} alpha_j r_j.z_j). Or at the rounding level.
-    const double target = SolverAccuracy * this->Tolerance;
-    const double floor = 1e-14 * std::sqrt(Dot(rhs, rhs));
-    std::vector<double> terms;
-    int it = 0;
-    for (; it < SolverMaximumIterations; ++it)
-    {
-      if (terms.size() >= static_cast<std::size_t>(SolverDelay))
-      {
-        double estimate = 0.0;
-        for (std::size_t j = terms.size() - SolverDelay; j < terms.size(); ++j)
-        {
-          estimate += terms[j];
-        }
-        if (std::sqrt(estimate) <= target)
-        {
-          break;
-        }
-      }
-      if (std::sqrt(Dot(r, r)) <= floor)
-      {
-        break;
-      }
-      this->Multiply(p, delta, q);
-      const double pq = Dot(p, q);
-      if (!(pq > 0))
-      {
-        break;
-      }
-      const double alpha = rz / pq;
-      terms.push_back(alpha * rz);
-      vtkSMPTools::For(0, nf,
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          for (vtkIdType f = begin; f < end; ++f)
-          {
-            x[f] += alpha * p[f];
-            r[f] -= alpha * q[f];
-            z[f] = r[f] / diagonal[f];
-          }
-        });
-      const double rzNew = Dot(r, z);
-      const double beta = rzNew / rz;
-      rz = rzNew;
-      vtkSMPTools::For(0, nf,
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          for (vtkIdType f = begin; f < end; ++f)
-          {
-            p[f] = z[f] + beta * p[f];
-          }
-        });
-    }
-    this->SolverIterations = it;
-    this->Builder.SetCoefficients(x);
-    this->Columns.clear();
-    this->Entries.clear();
+    std::vector<double> delta, x;
+    vtkLRSplineFitCore::Regularize(weight, this->Regularization, LittleData, diagonal, delta);
+    this->SolverIterations =
+      this->Core.Solve(rhs, prior, delta, diagonal, SolverAccuracy * this->Tolerance, x);
+    this->Core.Builder.SetCoefficients(x);
+    this->Core.Columns.clear();
+    this->Core.Entries.clear();
     return true;
   }
 
@@ -372,7 +225,7 @@ public:
   // tables of the last Solve()): every round.
   void EvaluateFromBasis()
   {
-    const vtkLRSplinePatch& patch = this->Builder.GetPatch();
+    const vtkLRSplinePatch& patch = this->Core.Builder.GetPatch();
     const std::vector<double>& gamma = patch.Gamma;
     const std::vector<double>& coefficients = patch.Coefficients;
     this->ErrorPass(patch.ElementBoxes.data(), patch.GetNumberOfElements(),
@@ -380,9 +233,9 @@ public:
       {
         const int nu = hi[0] - lo[0] + 1, nv = hi[1] - lo[1] + 1, nw = hi[2] - lo[2] + 1;
         std::fill(v, v + static_cast<std::size_t>(nu) * nv * nw, 0.0);
-        for (vtkIdType s = this->SupportOffsets[e]; s < this->SupportOffsets[e + 1]; ++s)
+        for (vtkIdType s = this->Core.SupportOffsets[e]; s < this->Core.SupportOffsets[e + 1]; ++s)
         {
-          const vtkIdType f = this->SupportIds[s];
+          const vtkIdType f = this->Core.SupportIds[s];
           const double gc = gamma[f] * coefficients[f];
           const Table* t[3] = { &this->Tables[0][this->FunctionTable[3 * f]],
             &this->Tables[1][this->FunctionTable[3 * f + 1]],
@@ -437,162 +290,6 @@ public:
       });
   }
 
-  // Halvings of the initial element sides reached (largest over directions).
-  int Levels()
-  {
-    const vtkLRSplinePatch& patch = this->Builder.GetPatch();
-    int levels = 0;
-    const vtkIdType ne = patch.GetNumberOfElements();
-    for (vtkIdType e = 0; e < ne; ++e)
-    {
-      const double* b = patch.ElementBoxes.data() + 6 * e;
-      for (int d = 0; d < 3; ++d)
-      {
-        const double ratio = this->InitialSide[d] / (b[d + 3] - b[d]);
-        levels = std::max(levels, static_cast<int>(std::lround(std::log2(ratio))));
-      }
-    }
-    return levels;
-  }
-
-  enum Outcome
-  {
-    REFINED,
-    ELEMENT_LIMIT,
-    NOTHING_REFINABLE,
-    NO_PROGRESS,
-    FAILED
-  };
-
-  // Mark the elements above the tolerance and refine on each the basis
-  // function of smallest support that can still be refined (the element
-  // itself may be as small as allowed while larger functions on it are not).
-  Outcome Refine(double tolerance, vtkIdType maximumElements, std::string* error)
-  {
-    const vtkLRSplinePatch& patch = this->Builder.GetPatch();
-    const vtkIdType ne = patch.GetNumberOfElements();
-    const vtkIdType nf = patch.GetNumberOfBasisFunctions();
-    std::vector<vtkIdType> marked;
-    for (vtkIdType e = 0; e < ne; ++e)
-    {
-      if (this->ElementError[e] > tolerance)
-      {
-        marked.push_back(e);
-      }
-    }
-    std::stable_sort(marked.begin(), marked.end(),
-      [this](vtkIdType a, vtkIdType b) { return this->ElementError[a] > this->ElementError[b]; });
-    std::vector<signed char> splittable(nf, -1);
-    auto canSplit = [&](vtkIdType f)
-    {
-      if (splittable[f] < 0)
-      {
-        splittable[f] = 0;
-        for (int d = 0; d < 3 && !splittable[f]; ++d)
-        {
-          const double* t = patch.GetKnots(f, d);
-          for (int k = 0; k < patch.Order[d] && !splittable[f]; ++k)
-          {
-            double z;
-            splittable[f] = vtkLRSplineBuilder::SplitValue(t[k], t[k + 1], d, this->Options, &z);
-          }
-        }
-      }
-      return splittable[f] != 0;
-    };
-    std::vector<char> chosen(nf, 0);
-    std::vector<vtkIdType> functions;
-    vtkIdType estimate = ne;
-    bool limited = false;
-    std::vector<vtkIdType> picks;
-    for (vtkIdType e : marked)
-    {
-      // An element that can still be split: the smallest function on it that
-      // can be refined (local). One that cannot: every function on it that
-      // can (more freedom where the smallest elements are not enough).
-      const double* b = patch.ElementBoxes.data() + 6 * e;
-      bool small = true;
-      for (int d = 0; d < 3 && small; ++d)
-      {
-        double z;
-        small = !vtkLRSplineBuilder::SplitValue(b[d], b[d + 3], d, this->Options, &z);
-      }
-      picks.clear();
-      vtkIdType best = -1;
-      double bestVolume = 0.0, bestOffCentre = 0.0;
-      for (vtkIdType s = this->SupportOffsets[e]; s < this->SupportOffsets[e + 1]; ++s)
-      {
-        const vtkIdType f = this->SupportIds[s];
-        if (small)
-        {
-          if (canSplit(f))
-          {
-            picks.push_back(f);
-          }
-          continue;
-        }
-        // the smallest support; among equal ones the best centred on the
-        // element (a choice that does not depend on the functions' order)
-        double volume = 1.0, offCentre = 0.0;
-        for (int d = 0; d < 3; ++d)
-        {
-          const double* t = patch.GetKnots(f, d);
-          const double length = t[patch.Order[d]] - t[0];
-          volume *= length;
-          const double c = (0.5 * (t[0] + t[patch.Order[d]]) - 0.5 * (b[d] + b[d + 3])) / length;
-          offCentre += c * c;
-        }
-        const bool smaller = best < 0 || volume < bestVolume * (1 - 1e-12) ||
-          (volume <= bestVolume * (1 + 1e-12) && offCentre < bestOffCentre);
-        if (smaller && canSplit(f))
-        {
-          best = f;
-          bestVolume = volume;
-          bestOffCentre = offCentre;
-        }
-      }
-      if (best >= 0)
-      {
-        picks.push_back(best);
-      }
-      for (vtkIdType f : picks)
-      {
-        if (chosen[f])
-        {
-          continue;
-        }
-        // Each element of the support splits into at most 8.
-        const vtkIdType added =
-          7 * (this->FunctionElementOffsets[f + 1] - this->FunctionElementOffsets[f]);
-        if (estimate + added > maximumElements)
-        {
-          limited = true;
-          break;
-        }
-        estimate += added;
-        chosen[f] = 1;
-        functions.push_back(f);
-      }
-      if (limited)
-      {
-        break;
-      }
-    }
-    if (functions.empty())
-    {
-      return limited ? ELEMENT_LIMIT : NOTHING_REFINABLE;
-    }
-    if (!this->Builder.RefineFunctions(functions, this->Options, error))
-    {
-      return FAILED;
-    }
-    if (this->Builder.GetNumberOfElements() == ne)
-    {
-      return NO_PROGRESS;
-    }
-    return REFINED;
-  }
-
 private:
   struct Table
   {
@@ -603,12 +300,6 @@ private:
   };
   std::vector<Table> Tables[3];
   std::vector<int> FunctionTable; // 3 per function
-  std::vector<vtkIdType> SupportOffsets, SupportIds;
-  std::vector<vtkIdType> FunctionElementOffsets, FunctionElements;
-  std::vector<vtkIdType> RowOffsets;
-  std::vector<std::vector<int>> Rows, ElementLists;
-  std::vector<int> Columns;
-  std::vector<double> Entries;
 
   // Per element (in parallel): the spline at its voxels from `values`,
   // then the largest error, and the sum of squares over all voxels.
@@ -705,136 +396,6 @@ private:
     }
   }
 
-  // The functions on every element and the elements in every function's
-  // support (the builder's meshes are valid: every support is a union of
-  // elements). Each function is registered in the cells of a grid that its
-  // support overlaps; the functions containing an element are among those of
-  // the cell of its lower corner. The cells are as large as keeps the
-  // registrations to a few per function.
-  void ComputeSupports(const vtkLRSplinePatch& patch)
-  {
-    const vtkIdType ne = patch.GetNumberOfElements();
-    const vtkIdType nf = patch.GetNumberOfBasisFunctions();
-    double volume = 0.0;
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      double v = 1.0;
-      for (int d = 0; d < 3; ++d)
-      {
-        const double* t = patch.GetKnots(f, d);
-        v *= t[patch.Order[d]] - t[0] + 1.0;
-      }
-      volume += v;
-    }
-    const double cell = std::max(1.0, std::cbrt(volume / (8.0 * std::max<vtkIdType>(1, nf))));
-    int G[3];
-    for (int d = 0; d < 3; ++d)
-    {
-      G[d] = std::max(1, static_cast<int>(std::ceil((this->N[d] - 1) / cell)));
-    }
-    auto cellOf = [&](double x, int d)
-    { return std::min(G[d] - 1, std::max(0, static_cast<int>(std::floor(x / cell)))); };
-    auto cellRange = [&](const vtkIdType f, int c0[3], int c1[3])
-    {
-      for (int d = 0; d < 3; ++d)
-      {
-        const double* t = patch.GetKnots(f, d);
-        c0[d] = cellOf(t[0], d);
-        c1[d] = std::max(
-          c0[d], std::min(G[d] - 1, static_cast<int>(std::ceil(t[patch.Order[d]] / cell)) - 1));
-      }
-    };
-    auto forCells = [&](vtkIdType f, const std::function<void(vtkIdType)>& visit)
-    {
-      int c0[3], c1[3];
-      cellRange(f, c0, c1);
-      for (int k = c0[2]; k <= c1[2]; ++k)
-        for (int j = c0[1]; j <= c1[1]; ++j)
-          for (int i = c0[0]; i <= c1[0]; ++i)
-            visit((static_cast<vtkIdType>(k) * G[1] + j) * G[0] + i);
-    };
-    const vtkIdType cells = static_cast<vtkIdType>(G[0]) * G[1] * G[2];
-    std::vector<vtkIdType> cellOffsets(cells + 1, 0);
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      forCells(f, [&](vtkIdType c) { ++cellOffsets[c + 1]; });
-    }
-    for (vtkIdType c = 0; c < cells; ++c)
-    {
-      cellOffsets[c + 1] += cellOffsets[c];
-    }
-    std::vector<int> cellFunctions(cellOffsets[cells]);
-    {
-      std::vector<vtkIdType> fill(cellOffsets.begin(), cellOffsets.end() - 1);
-      for (vtkIdType f = 0; f < nf; ++f)
-      {
-        forCells(f, [&](vtkIdType c) { cellFunctions[fill[c]++] = static_cast<int>(f); });
-      }
-    }
-    // Functions per element (in increasing order, as registered).
-    std::vector<vtkIdType> counts(ne + 1, 0);
-    std::vector<std::vector<int>>& perElement = this->ElementLists;
-    perElement.resize(ne);
-    vtkSMPTools::For(0, ne,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType e = begin; e < end; ++e)
-        {
-          const double* b = patch.ElementBoxes.data() + 6 * e;
-          const vtkIdType c =
-            (static_cast<vtkIdType>(cellOf(b[2], 2)) * G[1] + cellOf(b[1], 1)) * G[0] +
-            cellOf(b[0], 0);
-          std::vector<int>& list = perElement[e];
-          list.clear();
-          for (vtkIdType s = cellOffsets[c]; s < cellOffsets[c + 1]; ++s)
-          {
-            const int f = cellFunctions[s];
-            bool inside = true;
-            for (int d = 0; d < 3 && inside; ++d)
-            {
-              const double* t = patch.GetKnots(f, d);
-              inside = t[0] <= b[d] && b[d + 3] <= t[patch.Order[d]];
-            }
-            if (inside)
-            {
-              list.push_back(f);
-            }
-          }
-          counts[e + 1] = static_cast<vtkIdType>(list.size());
-        }
-      });
-    this->SupportOffsets.assign(ne + 1, 0);
-    for (vtkIdType e = 0; e < ne; ++e)
-    {
-      this->SupportOffsets[e + 1] = this->SupportOffsets[e] + counts[e + 1];
-    }
-    this->SupportIds.resize(this->SupportOffsets[ne]);
-    this->FunctionElementOffsets.assign(nf + 1, 0);
-    for (vtkIdType e = 0; e < ne; ++e)
-    {
-      std::copy(perElement[e].begin(), perElement[e].end(),
-        this->SupportIds.begin() + this->SupportOffsets[e]);
-      for (int f : perElement[e])
-      {
-        ++this->FunctionElementOffsets[f + 1];
-      }
-    }
-    for (vtkIdType f = 0; f < nf; ++f)
-    {
-      this->FunctionElementOffsets[f + 1] += this->FunctionElementOffsets[f];
-    }
-    this->FunctionElements.resize(this->FunctionElementOffsets[nf]);
-    std::vector<vtkIdType> fill(
-      this->FunctionElementOffsets.begin(), this->FunctionElementOffsets.end() - 1);
-    for (vtkIdType e = 0; e < ne; ++e)
-    {
-      for (int f : perElement[e])
-      {
-        this->FunctionElements[fill[f]++] = e;
-      }
-    }
-  }
-
   // Values of every distinct local knot vector at the voxel coordinates.
   void BuildTables(const vtkLRSplinePatch& patch)
   {
@@ -902,26 +463,6 @@ private:
       s += ta.Values[c - ta.Start] * tb.Values[c - tb.Start];
     }
     return s;
-  }
-
-  // q = (A + D) x
-  void Multiply(
-    const std::vector<double>& x, const std::vector<double>& delta, std::vector<double>& q) const
-  {
-    const vtkIdType nf = static_cast<vtkIdType>(x.size());
-    vtkSMPTools::For(0, nf,
-      [&](vtkIdType begin, vtkIdType end)
-      {
-        for (vtkIdType f = begin; f < end; ++f)
-        {
-          double s = delta[f] * x[f];
-          for (vtkIdType k = this->RowOffsets[f]; k < this->RowOffsets[f + 1]; ++k)
-          {
-            s += this->Entries[k] * x[this->Columns[k]];
-          }
-          q[f] = s;
-        }
-      });
   }
 };
 }
@@ -1226,14 +767,9 @@ int vtkLRSplineImageFitter::RequestData(
     int iteration = 0;
     for (;; ++iteration)
     {
-      if (!fit.Solve(&error))
-      {
-        vtkErrorMacro(<< which << "the fit failed: " << error);
-        output->Initialize();
-        return 0;
-      }
+      fit.Solve();
       fit.EvaluateFromBasis();
-      const vtkLRSplinePatch& patch = fit.Builder.GetPatch();
+      const vtkLRSplinePatch& patch = fit.Core.Builder.GetPatch();
       const vtkIdType voxels = static_cast<vtkIdType>(values[b].size());
       history.insert(history.end(),
         { static_cast<double>(patch.GetNumberOfElements()),
@@ -1255,35 +791,35 @@ int vtkLRSplineImageFitter::RequestData(
         stopReason = "the limit of " + std::to_string(rounds) + " refinement rounds was reached";
         break;
       }
-      const ImageFit::Outcome outcome =
-        fit.Refine(tolerance, this->MaximumNumberOfElements, &error);
-      if (outcome == ImageFit::FAILED)
+      const vtkLRSplineFitCore::Outcome outcome =
+        fit.Core.Refine(fit.ElementError, tolerance, this->MaximumNumberOfElements, &error);
+      if (outcome == vtkLRSplineFitCore::FAILED)
       {
         vtkErrorMacro(<< which << "the refinement failed: " << error);
         output->Initialize();
         return 0;
       }
-      if (outcome == ImageFit::ELEMENT_LIMIT)
+      if (outcome == vtkLRSplineFitCore::ELEMENT_LIMIT)
       {
         stopReason = "MaximumNumberOfElements (" + std::to_string(this->MaximumNumberOfElements) +
           ") was reached";
         break;
       }
-      if (outcome == ImageFit::NOTHING_REFINABLE)
+      if (outcome == vtkLRSplineFitCore::NOTHING_REFINABLE)
       {
         stopReason = "the elements above the tolerance are at MinimumElementSize (" +
           std::to_string(this->MinimumElementSize) + " voxels) or MaximumRefinementLevels (" +
           std::to_string(this->MaximumRefinementLevels) + ")";
         break;
       }
-      if (outcome == ImageFit::NO_PROGRESS)
+      if (outcome == vtkLRSplineFitCore::NO_PROGRESS)
       {
         stopReason = "the refinement did not split any element";
         break;
       }
     }
     // The output's Bezier form, and the errors it has at the voxels.
-    const vtkLRSplinePatch& patch = fit.Builder.GetPatch();
+    const vtkLRSplinePatch& patch = fit.Core.Builder.GetPatch();
     if (!patch.ExtractBezier(volume, &error))
     {
       vtkErrorMacro(<< which << "the fitted spline is invalid: " << error);
@@ -1296,7 +832,7 @@ int vtkLRSplineImageFitter::RequestData(
       met = false;
       stopReason = "the Bezier form differs from the basis form by rounding";
     }
-    const int levels = fit.Levels();
+    const int levels = fit.Core.Levels();
     const double rms = std::sqrt(fit.Stats.SumSquares / static_cast<double>(values[b].size()));
     if (!met)
     {
@@ -1316,79 +852,29 @@ int vtkLRSplineImageFitter::RequestData(
     this->NumberOfIterations = std::max(this->NumberOfIterations, iteration + 1);
 
     // The output block: this piece's elements, in the reader's format.
-    vtkLRSplineBezierGrid::Options options;
-    options.PatchIndex = static_cast<int>(b);
-    const vtkIdType ne = patch.GetNumberOfElements();
-    options.FirstElement = ne * piece / numPieces;
-    options.LastElement = ne * (piece + 1) / numPieces;
-    std::copy(job.Scale, job.Scale + 3, options.Scale);
-    std::copy(job.Offset, job.Offset + 3, options.Offset);
+    vtkLRSplineFitCore::Report report;
+    report.MaximumError = fit.Stats.MaxError;
+    report.RMSError = rms;
+    report.Tolerance = tolerance;
+    report.ToleranceMet = met;
+    report.Iterations = iteration + 1;
+    report.Levels = levels;
+    report.DataRange[0] = range[0];
+    report.DataRange[1] = range[1];
+    report.History = std::move(history);
     const char* arrayName = job.Array->GetName();
-    options.FieldName = (this->FieldName && *this->FieldName)
+    const std::string fieldName = (this->FieldName && *this->FieldName)
       ? this->FieldName
       : ((arrayName && *arrayName) ? arrayName : "Field");
-    options.SourceFormat = "vtkLRSplineImageFitter (least squares, local refinement)";
-    vtkLRSplineBezierVolume pieceVolume;
-    pieceVolume.Degree[0] = volume.Degree[0];
-    pieceVolume.Degree[1] = volume.Degree[1];
-    pieceVolume.Degree[2] = volume.Degree[2];
-    pieceVolume.NumberOfComponents = volume.NumberOfComponents;
-    const std::size_t per =
-      static_cast<std::size_t>(volume.GetCoefficientsPerElement()) * volume.NumberOfComponents;
-    pieceVolume.Boxes.assign(volume.Boxes.begin() + 6 * options.FirstElement,
-      volume.Boxes.begin() + 6 * options.LastElement);
-    pieceVolume.Coefficients.assign(volume.Coefficients.begin() + per * options.FirstElement,
-      volume.Coefficients.begin() + per * options.LastElement);
-    vtkSmartPointer<vtkUnstructuredGrid> grid =
-      vtkLRSplineBezierGrid::Build(patch, pieceVolume, options, &error);
+    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkLRSplineFitCore::BuildBlock(patch, volume,
+      static_cast<int>(b), piece, numPieces, job.Scale, job.Offset, fieldName,
+      "vtkLRSplineImageFitter (least squares, local refinement)", fit.ElementError, report, &error);
     if (!grid)
     {
       vtkErrorMacro(<< which << "cannot build the output: " << error);
       output->Initialize();
       return 0;
     }
-    vtkNew<vtkDoubleArray> elementError;
-    elementError->SetName("LRFitElementMaxError");
-    elementError->SetNumberOfTuples(options.LastElement - options.FirstElement);
-    for (vtkIdType e = options.FirstElement; e < options.LastElement; ++e)
-    {
-      elementError->SetValue(e - options.FirstElement, fit.ElementError[e]);
-    }
-    grid->GetCellData()->AddArray(elementError);
-    vtkFieldData* fd = grid->GetFieldData();
-    auto addDouble = [fd](const char* name, std::initializer_list<double> v)
-    {
-      vtkNew<vtkDoubleArray> a;
-      a->SetName(name);
-      a->SetNumberOfComponents(static_cast<int>(v.size()));
-      a->InsertNextTuple(std::vector<double>(v).data());
-      fd->AddArray(a);
-    };
-    auto addInt = [fd](const char* name, int v)
-    {
-      vtkNew<vtkIntArray> a;
-      a->SetName(name);
-      a->InsertNextValue(v);
-      fd->AddArray(a);
-    };
-    addDouble("LRFitMaximumError", { fit.Stats.MaxError });
-    addDouble("LRFitRMSError", { rms });
-    addDouble("LRFitTolerance", { tolerance });
-    addInt("LRFitToleranceMet", met ? 1 : 0);
-    addInt("LRFitIterations", iteration + 1);
-    addInt("LRFitRefinementLevels", levels);
-    addDouble("LRFitDataRange", { range[0], range[1] });
-    vtkNew<vtkDoubleArray> hist;
-    hist->SetName("LRFitHistory");
-    hist->SetNumberOfComponents(5);
-    hist->SetComponentName(0, "Elements");
-    hist->SetComponentName(1, "BasisFunctions");
-    hist->SetComponentName(2, "MaximumError");
-    hist->SetComponentName(3, "RMSError");
-    hist->SetComponentName(4, "SolverIterations");
-    hist->SetNumberOfTuples(static_cast<vtkIdType>(history.size() / 5));
-    std::copy(history.begin(), history.end(), hist->GetPointer(0));
-    fd->AddArray(hist);
     output->SetBlock(static_cast<unsigned int>(b), grid);
     output->GetMetaData(static_cast<unsigned int>(b))
       ->Set(vtkCompositeDataSet::NAME(), ("Patch " + std::to_string(b)).c_str());
@@ -1402,15 +888,10 @@ int vtkLRSplineImageFitter::RequestData(
 
   if (!written.empty())
   {
-    std::ofstream out(this->FileName, std::ios::out | std::ios::binary);
-    for (const vtkLRSplinePatch& patch : written)
+    std::string error;
+    if (!vtkLRSplineFitCore::WritePatches(this->FileName, written, &error))
     {
-      patch.Write(out);
-    }
-    out.close();
-    if (!out)
-    {
-      vtkErrorMacro(<< "cannot write \"" << this->FileName << "\"");
+      vtkErrorMacro(<< error);
       output->Initialize();
       return 0;
     }

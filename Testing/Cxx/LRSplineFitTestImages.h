@@ -1,4 +1,4 @@
-// Images and checks for the vtkLRSplineImageFitter tests: analytic scalar
+// Images and checks for the vtkLRSplineImageFitter and vtkLRSplineFitter tests: analytic scalar
 // images, the fitter run with its errors and warnings observed, and the
 // fitted spline evaluated independently of the fitter (vtkLRSplineField on
 // its output grid, in physical coordinates).
@@ -6,6 +6,7 @@
 #define LRSplineFitTestImages_h
 
 #include "vtkLRSplineField.h"
+#include "vtkLRSplineFitter.h"
 #include "vtkLRSplineImageFitter.h"
 
 #include "vtkCommand.h"
@@ -49,13 +50,14 @@ inline vtkSmartPointer<vtkImageData> MakeImage(const int dims[3], const double s
   return image;
 }
 
-/// Runs the fitter with errors and warnings observed (they are test
-/// expectations, not failures of the test run).
-struct FitRun
+/// Runs a fitter (vtkLRSplineImageFitter, vtkLRSplineFitter) with errors and
+/// warnings observed (they are test expectations, not failures of the test run).
+template <typename FitterT>
+struct FitRunT
 {
-  vtkNew<vtkLRSplineImageFitter> Fitter;
+  vtkNew<FitterT> Fitter;
   vtkNew<vtkTest::ErrorObserver> Observer;
-  FitRun()
+  FitRunT()
   {
     this->Fitter->AddObserver(vtkCommand::ErrorEvent, this->Observer);
     this->Fitter->AddObserver(vtkCommand::WarningEvent, this->Observer);
@@ -75,6 +77,7 @@ struct FitRun
   std::string Warning() { return this->Observer->GetWarningMessage(); }
   bool Warned() { return this->Observer->GetWarning() != 0; }
 };
+using FitRun = FitRunT<vtkLRSplineImageFitter>;
 
 /// Largest |spline - voxel| over the voxels, the spline evaluated from the
 /// fitter's output at the voxels' physical positions moved by `shift`

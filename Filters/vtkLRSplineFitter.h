@@ -1,0 +1,255 @@
+/**
+ * @class   vtkLRSplineFitter
+ * @brief   Fits an LR-spline volume to the point or cell data of any data set (scattered points,
+ * unstructured meshes, images) by least squares and/or LR-MBA with local refinement until a
+ * tolerance is met at every data point.
+ *
+ * Fuchs et al. render LR volumes that approximate simulation data on
+ * unstructured meshes, trimmed by the mesh's boundary. Input: any vtkDataSet
+ * or the leaves of a composite data set, fitted together; cell data is taken
+ * at the cell centres (vtkCellCenters); a vector array as its magnitude
+ * (VectorMode MAGNITUDE) or all components in one spline (COMPONENTS; the
+ * error at a point is then the length of the error vector).
+ *
+ * Domain: the data's bounding box, each side widened by Margin times its
+ * length; parameters u in [0, m_d] (InitialNumberOfElements), x = offset +
+ * scale * u. From a tensor-product spline of tri-degree Degree (coefficients
+ * the data mean) it repeats (the loop of GoTools' LRVolApprox): update the
+ * coefficients (Method: LEAST_SQUARES, regularized least squares shared with
+ * vtkLRSplineImageFitter in vtkLRSplineFitCore; MBA, two sweeps of LR
+ * multilevel B-spline approximation, Skytt, Barrowclough and Dokken 2015;
+ * HYBRID, both), measure the error at every point (vtkSMPTools), stop when
+ * the maximum or RMS error (ToleranceType) is within the tolerance (ABSOLUTE
+ * or RELATIVE to the data range), else refine the elements above it that
+ * hold at least MinimumPointsPerElement points (vtkLRSplineFitCore::Refine),
+ * up to MaximumRefinementLevels halvings and MaximumNumberOfElements.
+ *
+ * Output port 0: one block in the format of vtkLRSplineReader with the
+ * image fitter's "LRFit..." cell and field data (plus "LRFitDomain"), for the
+ * volume mapper, probe and stream tracer. Output port 1: the data's boundary
+ * surface (triangles, consistently oriented; empty for point clouds), for
+ * the volume mapper's trimming input. FileName: also write a .lr file (read
+ * it back with PhysicalBounds = LRFitDomain). Every piece fits all the data.
+ *
+ * Refused before allocating: no points or array, NaN or infinite values or
+ * coordinates, points without volume (on a plane, line or point), Tolerance
+ * <= 0, degrees outside 1..5, MaximumRefinementLevels outside 0..30, limits
+ * whose spline would not fit in memory.
+ */
+
+#ifndef vtkLRSplineFitter_h
+#define vtkLRSplineFitter_h
+
+#include "SplineVizModule.h" // for export macro
+#include "vtkMultiBlockDataSetAlgorithm.h"
+
+#include <string> // for std::string
+#include <vector> // for std::vector
+
+class vtkDataSet;
+class vtkPolyData;
+
+class SPLINEVIZ_EXPORT vtkLRSplineFitter : public vtkMultiBlockDataSetAlgorithm
+{
+public:
+  static vtkLRSplineFitter* New();
+  vtkTypeMacro(vtkLRSplineFitter, vtkMultiBlockDataSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Methods
+  {
+    MBA = 0,           ///< LR multilevel B-spline approximation, two sweeps per level
+    LEAST_SQUARES = 1, ///< regularized least squares (conjugate gradients)
+    HYBRID = 2         ///< least squares, then two MBA sweeps on its residual
+  };
+  enum ToleranceModes
+  {
+    ABSOLUTE_TOLERANCE = 0, ///< in the data's units
+    RELATIVE_TOLERANCE = 1  ///< a fraction of the data range
+  };
+  enum ToleranceTypes
+  {
+    MAXIMUM_ERROR = 0, ///< every point within the tolerance
+    RMS_ERROR = 1      ///< the root mean square error within the tolerance
+  };
+  enum VectorModes
+  {
+    MAGNITUDE = 0, ///< fit the length of a vector array
+    COMPONENTS = 1 ///< fit every component (one spline with as many components)
+  };
+
+  ///@{
+  /// Polynomial degree per direction, 1 to 5. Default 2 2 2.
+  vtkSetVector3Macro(Degree, int);
+  vtkGetVector3Macro(Degree, int);
+  ///@}
+
+  ///@{
+  /// Elements per direction of the initial tensor-product spline. Default 4 4 4.
+  vtkSetVector3Macro(InitialNumberOfElements, int);
+  vtkGetVector3Macro(InitialNumberOfElements, int);
+  ///@}
+
+  ///@{
+  /// How the coefficients are updated on every level. Default LEAST_SQUARES.
+  vtkSetClampMacro(Method, int, MBA, HYBRID);
+  vtkGetMacro(Method, int);
+  void SetMethodToMBA() { this->SetMethod(MBA); }
+  void SetMethodToLeastSquares() { this->SetMethod(LEAST_SQUARES); }
+  void SetMethodToHybrid() { this->SetMethod(HYBRID); }
+  ///@}
+
+  ///@{
+  /// The tolerance. Default 0.02 (relative: 2 % of the data range).
+  vtkSetMacro(Tolerance, double);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
+  /// How Tolerance is meant. Default RELATIVE_TOLERANCE.
+  vtkSetClampMacro(ToleranceMode, int, ABSOLUTE_TOLERANCE, RELATIVE_TOLERANCE);
+  vtkGetMacro(ToleranceMode, int);
+  void SetToleranceModeToAbsolute() { this->SetToleranceMode(ABSOLUTE_TOLERANCE); }
+  void SetToleranceModeToRelative() { this->SetToleranceMode(RELATIVE_TOLERANCE); }
+  ///@}
+
+  ///@{
+  /// Which error the tolerance bounds. Default MAXIMUM_ERROR.
+  vtkSetClampMacro(ToleranceType, int, MAXIMUM_ERROR, RMS_ERROR);
+  vtkGetMacro(ToleranceType, int);
+  void SetToleranceTypeToMaximum() { this->SetToleranceType(MAXIMUM_ERROR); }
+  void SetToleranceTypeToRMS() { this->SetToleranceType(RMS_ERROR); }
+  ///@}
+
+  ///@{
+  /// Vector arrays: the magnitude or every component. Default MAGNITUDE.
+  vtkSetClampMacro(VectorMode, int, MAGNITUDE, COMPONENTS);
+  vtkGetMacro(VectorMode, int);
+  void SetVectorModeToMagnitude() { this->SetVectorMode(MAGNITUDE); }
+  void SetVectorModeToComponents() { this->SetVectorMode(COMPONENTS); }
+  ///@}
+
+  ///@{
+  /// Most halvings of an initial element side, 0 to 30 (more is refused). Default 10.
+  vtkSetMacro(MaximumRefinementLevels, int);
+  vtkGetMacro(MaximumRefinementLevels, int);
+  ///@}
+
+  ///@{
+  /// Refinement stops when the spline has this many elements. Default 500000.
+  vtkSetMacro(MaximumNumberOfElements, vtkIdType);
+  vtkGetMacro(MaximumNumberOfElements, vtkIdType);
+  ///@}
+
+  ///@{
+  /**
+   * An element is split only when it holds at least this many data points
+   * (finer functions would have no data to determine them). Default 2.
+   */
+  vtkSetClampMacro(MinimumPointsPerElement, vtkIdType, 1, VTK_ID_MAX);
+  vtkGetMacro(MinimumPointsPerElement, vtkIdType);
+  ///@}
+
+  ///@{
+  /// Each side of the data's bounding box is widened by Margin times its length. Default 0.
+  vtkSetClampMacro(Margin, double, 0.0, 10.0);
+  vtkGetMacro(Margin, double);
+  ///@}
+
+  ///@{
+  /// Least squares: pull of functions with little data towards the previous fit. Default 0.1.
+  vtkSetClampMacro(Regularization, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Regularization, double);
+  ///@}
+
+  ///@{
+  /// Output port 1 gets the data's boundary surface (default on).
+  vtkSetMacro(ExtractBoundary, vtkTypeBool);
+  vtkGetMacro(ExtractBoundary, vtkTypeBool);
+  vtkBooleanMacro(ExtractBoundary, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// Name of the output's point array; empty (default): the input array's name.
+  vtkSetStringMacro(FieldName);
+  vtkGetStringMacro(FieldName);
+  ///@}
+
+  ///@{
+  /// If set, the fitted spline is also written to this .lr file.
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /// Results of the last update.
+  double GetMaximumError() const { return this->MaximumError; }
+  double GetRMSError() const { return this->RMSError; }
+  double GetAbsoluteTolerance() const { return this->AbsoluteTolerance; }
+  bool GetToleranceMet() const { return this->ToleranceMet; }
+  vtkIdType GetNumberOfElements() const { return this->NumberOfElements; }
+  vtkIdType GetNumberOfBasisFunctions() const { return this->NumberOfBasisFunctions; }
+  vtkIdType GetNumberOfDataPoints() const { return this->NumberOfDataPoints; }
+  int GetNumberOfRefinementLevels() const { return this->NumberOfRefinementLevels; }
+  int GetNumberOfIterations() const { return this->NumberOfIterations; }
+  double GetFitTime() const { return this->FitTime; }
+  /// The fitted domain (xmin, xmax, ymin, ymax, zmin, zmax).
+  const double* GetDomain() const { return this->Domain; }
+  ///@}
+
+protected:
+  vtkLRSplineFitter();
+  ~vtkLRSplineFitter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  // Refuse bad settings (false with an error).
+  bool CheckSettings();
+  // The positions (3 per point) and values (dim per point) of every leaf.
+  bool GatherData(const std::vector<vtkDataSet*>& leaves, std::vector<double>& positions,
+    std::vector<double>& values, int& dim, std::string& fieldName);
+  // The data's bounding box with the margin (lo, hi), scale = side / elements;
+  // false with an error when the points have no volume.
+  bool ComputeDomain(
+    const std::vector<double>& positions, double lo[3], double hi[3], double scale[3]);
+  // The boundary surface of the leaves (output port 1).
+  bool BuildBoundary(const std::vector<vtkDataSet*>& leaves, vtkPolyData* boundary);
+
+  int Degree[3] = { 2, 2, 2 };
+  int InitialNumberOfElements[3] = { 4, 4, 4 };
+  int Method = LEAST_SQUARES;
+  double Tolerance = 0.02;
+  int ToleranceMode = RELATIVE_TOLERANCE;
+  int ToleranceType = MAXIMUM_ERROR;
+  int VectorMode = MAGNITUDE;
+  int MaximumRefinementLevels = 10;
+  vtkIdType MaximumNumberOfElements = 500000;
+  vtkIdType MinimumPointsPerElement = 2;
+  double Margin = 0.0;
+  double Regularization = 0.1;
+  vtkTypeBool ExtractBoundary = 1;
+  char* FieldName = nullptr;
+  char* FileName = nullptr;
+
+  double MaximumError = 0.0;
+  double RMSError = 0.0;
+  double AbsoluteTolerance = 0.0;
+  bool ToleranceMet = false;
+  vtkIdType NumberOfElements = 0;
+  vtkIdType NumberOfBasisFunctions = 0;
+  vtkIdType NumberOfDataPoints = 0;
+  int NumberOfRefinementLevels = 0;
+  int NumberOfIterations = 0;
+  double FitTime = 0.0;
+  double Domain[6] = { 0, 0, 0, 0, 0, 0 };
+
+private:
+  vtkLRSplineFitter(const vtkLRSplineFitter&) = delete;
+  void operator=(const vtkLRSplineFitter&) = delete;
+};
+
+#endif
