@@ -148,6 +148,9 @@ bool vtkLineAmbientOcclusionPass::RenderComposite(
   program->SetUniformf("aoPixelScale", static_cast<float>(2.0 / (p11 * h)));
   const float texel[2] = { 1.0f / static_cast<float>(w), 1.0f / static_cast<float>(h) };
   program->SetUniform2f("aoTexel", texel);
+  const int size[2] = { w, h };
+  program->SetUniform2i("aoSize", size);
+
   program->SetUniformi("aoWorldUnits", this->LengthUnits == UNITS_WORLD ? 1 : 0);
   program->SetUniformi("aoEnabled", this->AmbientOcclusion ? 1 : 0);
   program->SetUniformi("aoLevels", this->Levels);

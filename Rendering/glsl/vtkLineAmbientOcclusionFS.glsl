@@ -29,6 +29,7 @@ uniform mat4 aoInverseProjection; // normalized device to view coordinates
 uniform vec2 aoClipW;             // clip w = aoClipW.x * z_view + aoClipW.y
 uniform float aoPixelScale;       // one pixel in view units = aoPixelScale x clip w
 uniform vec2 aoTexel;             // one pixel in texture coordinates
+uniform ivec2 aoSize;             // the window's size in pixels
 uniform int aoWorldUnits;         // radius and depth gaps: 1 view units, 0 pixels
 uniform int aoEnabled;
 uniform int aoLevels;
@@ -42,15 +43,18 @@ uniform float aoHaloOffset;
 uniform float aoHaloRange;
 uniform vec3 aoHaloColor;
 
-// The view point at a texture coordinate; w = 0 marks the background.
-vec4 aoViewPoint(vec2 uv)
+// The view point at a pixel (outside the window: the nearest edge pixel);
+// w = 0 marks the background. Integer fetches: no filtering to pay for.
+vec4 aoViewPoint(ivec2 pixel)
 {
-  float d = texture(aoDepth, uv).r;
+  ivec2 q = clamp(pixel, ivec2(0), aoSize - 1);
+  float d = texelFetch(aoDepth, q, 0).r;
   if (d >= 1.0)
   {
     return vec4(0.0);
   }
-  vec4 p = aoInverseProjection * vec4(2.0 * uv - 1.0, 2.0 * d - 1.0, 1.0);
+  vec2 ndc = (vec2(q) + 0.5) * (2.0 * aoTexel) - 1.0;
+  vec4 p = aoInverseProjection * vec4(ndc, 2.0 * d - 1.0, 1.0);
   return vec4(p.xyz / p.w, 1.0);
 }
 
@@ -63,12 +67,12 @@ float aoPixelSize(float z)
 // The surface normal at P from the depth buffer: along each axis the
 // neighbour nearer in depth (so that silhouettes do not bend it), facing the
 // eye.
-vec3 aoNormal(vec2 uv, vec3 p)
+vec3 aoNormal(ivec2 uv, vec3 p)
 {
-  vec4 r = aoViewPoint(uv + vec2(aoTexel.x, 0.0));
-  vec4 l = aoViewPoint(uv - vec2(aoTexel.x, 0.0));
-  vec4 u = aoViewPoint(uv + vec2(0.0, aoTexel.y));
-  vec4 d = aoViewPoint(uv - vec2(0.0, aoTexel.y));
+  vec4 r = aoViewPoint(uv + ivec2(1, 0));
+  vec4 l = aoViewPoint(uv - ivec2(1, 0));
+  vec4 u = aoViewPoint(uv + ivec2(0, 1));
+  vec4 d = aoViewPoint(uv - ivec2(0, 1));
   vec3 dx = vec3(1.0, 0.0, 0.0);
   vec3 dy = vec3(0.0, 1.0, 0.0);
   bool rl = r.w > 0.0 && (l.w == 0.0 || abs(r.z - p.z) <= abs(l.z - p.z));
@@ -95,7 +99,7 @@ float aoNoise()
 }
 
 // Occlusion in [0, 1] at P (normal n), the mean over the levels.
-float aoOcclusion(vec2 uv, vec3 p, vec3 n)
+float aoOcclusion(ivec2 uv, vec3 p, vec3 n)
 {
   float pixel = aoPixelSize(p.z);
   float radius = aoWorldUnits != 0 ? aoRadius / pixel : aoRadius; // pixels
@@ -110,7 +114,7 @@ float aoOcclusion(vec2 uv, vec3 p, vec3 n)
     {
       float a = turn + 2.399963229728653 * float(k + 7 * level); // golden angle
       float t = rl * sqrt((float(k) + 0.5) / float(aoSamples));
-      vec4 q = aoViewPoint(uv + t * vec2(cos(a), sin(a)) * aoTexel);
+      vec4 q = aoViewPoint(uv + ivec2(floor(t * vec2(cos(a), sin(a)) + 0.5)));
       if (q.w == 0.0)
       {
         continue;
@@ -130,7 +134,7 @@ float aoOcclusion(vec2 uv, vec3 p, vec3 n)
 }
 
 // Halo coverage in [0, 1] of the pixel (P, or the background when p.w = 0).
-float aoHaloCoverage(vec2 uv, vec4 p)
+float aoHaloCoverage(ivec2 uv, vec4 p)
 {
   const int directions = 8;
   const int rings = 3;
@@ -142,7 +146,7 @@ float aoHaloCoverage(vec2 uv, vec4 p)
     for (int i = 0; i < directions; ++i)
     {
       float a = turn + 0.785398163 * (float(i) + 0.5 * float(j));
-      vec4 q = aoViewPoint(uv + s * vec2(cos(a), sin(a)) * aoTexel);
+      vec4 q = aoViewPoint(uv + ivec2(floor(s * vec2(cos(a), sin(a)) + 0.5)));
       if (q.w == 0.0)
       {
         continue;
@@ -159,17 +163,18 @@ float aoHaloCoverage(vec2 uv, vec4 p)
 
 void lineAOMain()
 {
-  vec4 color = texture(aoColor, texCoord);
-  float depth = texture(aoDepth, texCoord).r;
-  vec4 p = aoViewPoint(texCoord);
+  ivec2 pixel = ivec2(texCoord * vec2(aoSize));
+  vec4 color = texelFetch(aoColor, pixel, 0);
+  float depth = texelFetch(aoDepth, pixel, 0).r;
+  vec4 p = aoViewPoint(pixel);
   if (p.w > 0.0 && aoEnabled != 0 && aoStrength > 0.0)
   {
-    float occlusion = aoOcclusion(texCoord, p.xyz, aoNormal(texCoord, p.xyz));
+    float occlusion = aoOcclusion(pixel, p.xyz, aoNormal(pixel, p.xyz));
     color.rgb *= clamp(1.0 - aoStrength * occlusion, 0.0, 1.0);
   }
   if (aoHalo != 0 && aoHaloWidth > 0.0)
   {
-    color.rgb = mix(color.rgb, aoHaloColor, aoHaloCoverage(texCoord, p));
+    color.rgb = mix(color.rgb, aoHaloColor, aoHaloCoverage(pixel, p));
   }
   gl_FragData[0] = color;
   gl_FragDepth = depth;
