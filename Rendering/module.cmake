@@ -6,6 +6,12 @@ list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineTubeMapper"
   "${SPLINEVIZ_FOLDER}/vtkRayCastTubeMapper"
   "${SPLINEVIZ_FOLDER}/vtkTessellatedTubeMapper")
+# Depth cues for all of them (and any opaque geometry): screen-space ambient
+# occlusion and depth-dependent halos from the depth buffer.
+list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkLineAmbientOcclusionPass")
+list(APPEND splineviz_shaders
+  "${SPLINEVIZ_FOLDER}/glsl/vtkLineAmbientOcclusionFS.glsl")
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineVizGPUBuffer"
   "${SPLINEVIZ_FOLDER}/vtkSplineTubeVisibility"

@@ -893,6 +893,8 @@ void vtkStylizedLineMapper::SetMapperShaderParameters(
   program->SetUniformf("lineWiden", static_cast<float>(1.0 + this->HaloWidth));
   program->SetUniformi("lineDepthCorrection", this->DepthCorrection ? 1 : 0);
   program->SetUniformf("lineHaloDepth", static_cast<float>(this->HaloDepthOffset));
+  program->SetUniformf("lineHaloDepthRange",
+    static_cast<float>(this->DepthDependentHalo ? this->HaloDepthRange : 0.0));
   double* halo = this->HaloColorFromBackground ? ren->GetBackground() : this->HaloColor;
   const float haloColor[3] = { static_cast<float>(halo[0]), static_cast<float>(halo[1]),
     static_cast<float>(halo[2]) };
@@ -1074,6 +1076,8 @@ void vtkStylizedLineMapper::PrintSelf(ostream& os, vtkIndent indent)
      << this->HaloColor[2] << "\n";
   os << indent << "HaloColorFromBackground: " << this->HaloColorFromBackground << "\n";
   os << indent << "HaloDepthOffset: " << this->HaloDepthOffset << "\n";
+  os << indent << "DepthDependentHalo: " << this->DepthDependentHalo << "\n";
+  os << indent << "HaloDepthRange: " << this->HaloDepthRange << "\n";
   os << indent << "ExactSilhouette: " << this->ExactSilhouette << "\n";
   os << indent << "DepthCorrection: " << this->DepthCorrection << "\n";
   os << indent << "FixUp: " << this->FixUp << "\n";

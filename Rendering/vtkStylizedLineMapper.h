@@ -34,7 +34,9 @@
  *   the extra band is drawn in HaloColor (or the renderer's background) at a
  *   depth pushed back by HaloDepthOffset radii, so that it hides lines
  *   further behind and never its own line. The halo is defined in object
- *   space: it scales with the line. The caps have one too; the fix-up's
+ *   space: it scales with the line. DepthDependentHalo tilts the halo away
+ *   from the eye (Everts et al. 2009), so that its visible width follows the
+ *   depth gap to the lines behind it. The caps have one too; the fix-up's
  *   geometry has none (around a line seen down its length a halo ring
  *   would cut the line's own parts further back).
  * - **Textures along the line** (§4.2, §6, Figs. 10-13): built-in stripes,
@@ -147,6 +149,30 @@ public:
    */
   vtkSetClampMacro(HaloDepthOffset, double, 0.0, 1e6);
   vtkGetMacro(HaloDepthOffset, double);
+  ///@}
+
+  ///@{
+  /**
+   * Depth-dependent halos (Everts et al. 2009), default off: the halo's depth
+   * behind its line grows across the halo, from HaloDepthOffset radii at the
+   * line's edge to HaloDepthOffset + HaloDepthRange radii at its outer edge.
+   * A line lying a gap g behind is then hidden over the fraction
+   * clamp((g - HaloDepthOffset) / HaloDepthRange, 0, 1) of the halo's width:
+   * lines of a tight bundle merge, lines far apart in depth get the whole
+   * halo between them.
+   */
+  vtkSetMacro(DepthDependentHalo, bool);
+  vtkGetMacro(DepthDependentHalo, bool);
+  vtkBooleanMacro(DepthDependentHalo, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Depth gap, in radii beyond HaloDepthOffset, at which a depth-dependent
+   * halo reaches its full width. Default 10.
+   */
+  vtkSetClampMacro(HaloDepthRange, double, 0.0, 1e6);
+  vtkGetMacro(HaloDepthRange, double);
   ///@}
 
   ///@{
@@ -353,6 +379,8 @@ protected:
   double HaloColor[3] = { 1.0, 1.0, 1.0 };
   bool HaloColorFromBackground = true;
   double HaloDepthOffset = 2.0;
+  bool DepthDependentHalo = false;
+  double HaloDepthRange = 10.0;
   bool ExactSilhouette = true;
   bool DepthCorrection = true;
   bool FixUp = true;

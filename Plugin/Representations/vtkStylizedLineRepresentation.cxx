@@ -40,6 +40,8 @@ vtkStylizedLineRepresentation::~vtkStylizedLineRepresentation() = default;
 vtkStylizedLineForward(SetHaloWidth, double)
 vtkStylizedLineForward(SetHaloColorFromBackground, bool)
 vtkStylizedLineForward(SetHaloDepthOffset, double)
+vtkStylizedLineForward(SetDepthDependentHalo, bool)
+vtkStylizedLineForward(SetHaloDepthRange, double)
 vtkStylizedLineForward(SetExactSilhouette, bool)
 vtkStylizedLineForward(SetDepthCorrection, bool)
 vtkStylizedLineForward(SetFixUp, bool)

@@ -31,6 +31,8 @@ public:
   void SetHaloColor(double r, double g, double b);
   void SetHaloColorFromBackground(bool on);
   void SetHaloDepthOffset(double radii);
+  void SetDepthDependentHalo(bool on);
+  void SetHaloDepthRange(double radii);
   void SetExactSilhouette(bool on);
   void SetDepthCorrection(bool on);
   void SetFixUp(bool on);

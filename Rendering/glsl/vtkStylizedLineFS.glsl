@@ -39,6 +39,8 @@ uniform mat4 VCDCMatrix;
 uniform int lineDepthCorrection;
 uniform vec3 lineHaloColor;
 uniform float lineHaloDepth; // in radii
+uniform float lineHaloDepthRange; // depth-dependent halos: the extra depth at the outer edge, in radii
+uniform float lineWiden;          // 1 + halo width
 
 //VTK::SplineTubeMath::Dec
 
@@ -122,7 +124,11 @@ void lineFragment(inout vec4 vertexVC, out vec3 normal)
   if (lineHalo)
   {
     vec3 dir = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(vertexVC.xyz);
-    vertexVC.xyz += (lineHaloDepth * lineRadiusVSOutput) * dir;
+    // Depth-dependent halos (Everts et al. 2009): deeper toward the outer
+    // edge (h from 0 at the line's edge to 1), so that a line behind is
+    // hidden only over the part of the halo nearer than it.
+    float h = clamp((abs(lineTexVSOutput.y) - 1.0) / max(lineWiden - 1.0, 1.0e-6), 0.0, 1.0);
+    vertexVC.xyz += ((lineHaloDepth + lineHaloDepthRange * h) * lineRadiusVSOutput) * dir;
   }
   else if (kind == 0 && lineDepthCorrection != 0)
   {

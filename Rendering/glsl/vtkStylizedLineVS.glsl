@@ -247,7 +247,8 @@ void main()
     }
     lineXVSOutput = outward;
     lineYVSOutput = a;
-    lineTexVSOutput = vec2(0.0);
+    // The rim at the halo's outer edge (for depth-dependent halos).
+    lineTexVSOutput = vec2(0.0, gl_VertexID > 0 && lineHaloPass != 0 ? lineWiden : 0.0);
     lineFrontVSOutput = vec3(0.0);
     lineRadiusVSOutput = r;
   }

@@ -10,7 +10,13 @@
 //  - it does not hide lines nearer behind it than HaloDepthOffset: the same
 //    crossing at 3 radii with an offset of 4 radii leaves the back line intact
 //    except where the front line itself covers it;
-//  - it follows the background by default, and the bounds grow by the halo.
+//  - it follows the background by default, and the bounds grow by the halo;
+//  - depth-dependent (Everts et al. 2009; offset 2 r, range 10 r): still never
+//    over its own line; behind a crossing at a gap of g radii the hidden part
+//    of the band, relative to a crossing far behind (full band), lies within
+//    0.1 of clamp((g - 2 - b) / 10, 0, 1) for some b in [0, 1] (b: where on
+//    the back line's profile, whose depth spans one radius); small gaps hide
+//    less than large ones; a gap below the offset hides nothing.
 // SPLINEVIZ_TEST_IMAGES=<dir> writes the renderings as PNG files.
 #include "vtkStylizedLineMapper.h"
 
@@ -59,7 +65,7 @@ Kind Classify(const SplineVizTest::Frame& f, size_t pixel)
 }
 
 SplineVizTest::Frame Render(vtkRenderWindow* window, vtkPolyData* lines, double halo, double offset,
-  const std::string& name, double background = 0.0)
+  const std::string& name, double background = 0.0, double depthRange = -1.0)
 {
   vtkNew<vtkStylizedLineMapper> mapper;
   mapper->SetInputData(lines);
@@ -69,6 +75,11 @@ SplineVizTest::Frame Render(vtkRenderWindow* window, vtkPolyData* lines, double 
   mapper->SetHaloDepthOffset(offset);
   mapper->HaloColorFromBackgroundOff();
   mapper->SetHaloColor(1.0, 0.0, 0.0);
+  if (depthRange >= 0.0)
+  {
+    mapper->DepthDependentHaloOn();
+    mapper->SetHaloDepthRange(depthRange);
+  }
   if (background > 0.0)
   {
     mapper->HaloColorFromBackgroundOn();
@@ -170,6 +181,48 @@ int TestStylizedLineHalo(int, char*[])
   const long nearHidden = crossing(3.0 * Radius, 4.0, "halo-cross-near");
   std::cout << "crossing 3 r behind, offset 4 r: " << nearHidden << " pixels hidden" << std::endl;
   SV_CHECK_MSG(status, nearHidden == 0, "the halo hid a line nearer than its offset");
+
+  // 4. Depth-dependent halos.
+  const SplineVizTest::Frame dependent =
+    Render(window, waveLines, 0.6, 2.0, "halo-wave-dependent", 0.0, 10.0);
+  long dependentChanged = 0;
+  for (size_t i = 0; i < pixels; ++i)
+  {
+    dependentChanged += (Classify(plain, i) == LINE && Classify(dependent, i) != LINE) ? 1 : 0;
+  }
+  SV_CHECK_MSG(status, dependentChanged == 0,
+    dependentChanged << " pixels of the line are covered by its own depth-dependent halo");
+  auto dependentHidden = [&](double gap)
+  {
+    auto lines = Cross(gap * Radius);
+    const std::string name = "halo-dependent-" + std::to_string(static_cast<int>(gap));
+    const SplineVizTest::Frame off = Render(window, lines, 0.0, 2.0, name + "-off");
+    const SplineVizTest::Frame on = Render(window, lines, 0.6, 2.0, name + "-on", 0.0, 10.0);
+    long hidden = 0;
+    for (size_t i = 0; i < pixels; ++i)
+    {
+      hidden += (Classify(off, i) == LINE && Classify(on, i) == HALO) ? 1 : 0;
+    }
+    return hidden;
+  };
+  const long full = dependentHidden(30.0);
+  SV_CHECK_MSG(status, full > 0.6 * band && full < 1.6 * band,
+    "a depth-dependent halo 30 r in front: " << full << " pixels, band " << band);
+  long previous = -1;
+  for (double gap : { 1.5, 4.0, 7.0, 10.0 })
+  {
+    const long hidden = dependentHidden(gap);
+    const double fraction = static_cast<double>(hidden) / std::max<long>(1, full);
+    const double lo = std::min(1.0, std::max(0.0, (gap - 3.0) / 10.0)) - 0.1;
+    const double hi = std::min(1.0, std::max(0.0, (gap - 2.0) / 10.0)) + 0.1;
+    std::cout << "depth-dependent halo, gap " << gap << " r: " << hidden << " pixels hidden, "
+              << fraction << " of the full band (expected " << lo + 0.1 << " to " << hi - 0.1 << ")"
+              << std::endl;
+    SV_CHECK_MSG(status, fraction >= lo && fraction <= hi,
+      "gap " << gap << ": hidden fraction " << fraction << " outside [" << lo << ", " << hi << "]");
+    SV_CHECK_MSG(status, hidden > previous || hidden == 0, "the halo does not grow with the gap");
+    previous = hidden;
+  }
 
   // 3. The background color by default; bounds with the halo.
   const SplineVizTest::Frame grayOff =
