@@ -14,6 +14,7 @@ list(APPEND splineviz_private_classes
 # Neuroimaging: NIfTI diffusion tensor volumes and scalar / vector volumes,
 # MRtrix .tck / TrackVis .trk tractograms, read and written.
 list(APPEND splineviz_classes
+  "${SPLINEVIZ_FOLDER}/vtkNIfTIReaderBase"
   "${SPLINEVIZ_FOLDER}/vtkNIfTITensorReader"
   "${SPLINEVIZ_FOLDER}/vtkNIfTIVolumeReader"
   "${SPLINEVIZ_FOLDER}/vtkTractogramReader"

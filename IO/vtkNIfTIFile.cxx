@@ -1034,6 +1034,33 @@ void vtkNIfTIFile::AddFieldData(vtkFieldData* fieldData, const double a[4][4], b
 }
 
 //------------------------------------------------------------------------------
+void vtkNIfTIImage::ComputePlacement()
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    this->Size[i] = this->File.GetSize(i);
+  }
+  vtkNIfTIFile::ComputePlacement(this->A, this->Size[2], this->Place);
+}
+
+void vtkNIfTIImage::FileSlices(const int extent[6], int& k0, int& k1) const
+{
+  k0 = std::min(this->FileSlice(extent[4]), this->FileSlice(extent[5]));
+  k1 = std::max(this->FileSlice(extent[4]), this->FileSlice(extent[5]));
+}
+
+bool vtkNIfTIImage::ReadPiece(const std::vector<std::int64_t>& volumes, const int extent[6],
+  std::function<bool(double)> progress, vtkNIfTIFile::Voxels& voxels, std::string& error)
+{
+  int k0, k1;
+  this->FileSlices(extent, k0, k1);
+  this->File.Progress = std::move(progress);
+  const bool read = this->File.ReadSlices(volumes, k0, k1, voxels, error);
+  this->File.Progress = nullptr;
+  return read;
+}
+
+//------------------------------------------------------------------------------
 double vtkNIfTIFile::Voxels::Value(std::int64_t index) const
 {
   const unsigned char* b = this->Bytes.data();

@@ -266,5 +266,28 @@ private:
   std::string VerifiedIdentity; // the file version it passed for
 };
 
+/**
+ * An open file placed as an output image: what the NIfTI readers
+ * (vtkNIfTIReaderBase) keep from RequestInformation to RequestData.
+ */
+struct SPLINEVIZ_EXPORT vtkNIfTIImage
+{
+  vtkNIfTIFile File;
+  double A[4][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 }, { 0, 0, 0, 1 } };
+  int Size[3] = { 0, 0, 0 };
+  vtkNIfTIFile::Placement Place;
+
+  /// Size and Place from the open file and A.
+  void ComputePlacement();
+  /// The file slice of output slice k.
+  int FileSlice(int k) const { return vtkNIfTIFile::FileSlice(this->Place, this->Size[2], k); }
+  /// The file slices [k0, k1] holding the output extent's slices.
+  void FileSlices(const int extent[6], int& k0, int& k1) const;
+  /// Reads the given volumes' file slices of the output extent (vtkNIfTIFile::ReadSlices),
+  /// calling `progress` meanwhile.
+  bool ReadPiece(const std::vector<std::int64_t>& volumes, const int extent[6],
+    std::function<bool(double)> progress, vtkNIfTIFile::Voxels& voxels, std::string& error);
+};
+
 #endif
 // VTK-HeaderTest-Exclude: vtkNIfTIFile.h

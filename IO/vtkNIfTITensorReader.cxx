@@ -18,7 +18,6 @@
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -139,18 +138,17 @@ bool OpenCompanion(
 //------------------------------------------------------------------------------
 struct vtkNIfTITensorReader::Internals
 {
+  explicit Internals(const vtkNIfTIImage& image)
+    : Image(image)
+  {
+  }
+  const vtkNIfTIImage& Image; // the tensor file and its placement (vtkNIfTIReaderBase)
   vtkSplineVizNameList Companions;
   std::vector<std::unique_ptr<Companion>> CompanionFiles; // opened by RequestInformation
-  vtkNIfTIFile File;
-  std::vector<std::int64_t> Volumes; // the volumes of the tensor components
-  int Size[3] = { 0, 0, 0 };
+  std::vector<std::int64_t> Volumes;                      // the volumes of the tensor components
   int Layout = -1;
-  double A[4][4];
-  vtkNIfTIFile::Placement Place;
   double R[3][3]; // tensor frame -> world
 
-  /// The file slice of output slice k.
-  int FileSlice(int k) const { return vtkNIfTIFile::FileSlice(this->Place, this->Size[2], k); }
   void ComputeTensorRotation(int frame);
   vtkSmartPointer<vtkDataArray> ComputeTensors(
     const vtkNIfTIFile::Voxels& raw, const int ext[6], const char* name);
@@ -160,15 +158,13 @@ struct vtkNIfTITensorReader::Internals
 
 //------------------------------------------------------------------------------
 vtkNIfTITensorReader::vtkNIfTITensorReader()
-  : Internal(new Internals)
+  : Internal(new Internals(*this->Image))
 {
-  this->SetNumberOfInputPorts(0);
   this->SetTensorArrayName("Tensors");
 }
 
 vtkNIfTITensorReader::~vtkNIfTITensorReader()
 {
-  this->SetFileName(nullptr);
   this->SetTensorArrayName(nullptr);
 }
 
@@ -223,34 +219,24 @@ int vtkNIfTITensorReader::CanReadFile(const char* fileName)
 int vtkNIfTITensorReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  this->LastError.clear();
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  auto fail = [this, outInfo](const std::string& msg)
+  auto fail = [this, outInfo](const std::string& msg) { return this->Fail(outInfo, msg); };
+  if (!this->OpenFile(outInfo))
   {
-    vtkNIfTIFile::SetEmptyOutputInformation(outInfo);
-    this->LastError = msg;
-    vtkErrorMacro(<< msg);
     return 0;
-  };
-  if (!this->FileName || !*this->FileName)
-  {
-    return fail("no file name was given");
   }
   Internals& in = *this->Internal;
+  vtkNIfTIFile& nifti = this->Image->File;
   const std::string file = this->FileName;
   std::string error;
-  if (!in.File.Open(file, error))
-  {
-    return fail(error);
-  }
-  const vtkNIfTIFile::Header& h = in.File.GetHeader();
+  const vtkNIfTIFile::Header& h = nifti.GetHeader();
   if (!HoldsTensors(h.DataType))
   {
     return fail("\"" + file + "\": complex or RGB voxels (NIfTI datatype " +
       std::to_string(h.DataType) + ") cannot hold tensor components");
   }
   bool fourD = false;
-  in.Volumes = TensorVolumes(in.File, fourD);
+  in.Volumes = TensorVolumes(nifti, fourD);
   if (in.Volumes.empty())
   {
     const std::int64_t comps = h.Dim[5] > 1 ? h.Dim[5] : h.Dim[4];
@@ -276,22 +262,22 @@ int vtkNIfTITensorReader::RequestInformation(
   {
     vtkWarningMacro(<< file << " holds " << h.Dim[4] << " tensor volumes; the first is read");
   }
-  if (!in.File.ComputeAffine(this->AffineSource, in.A, error))
+  if (!this->ComputeAffine(outInfo))
   {
-    return fail("\"" + file + "\": " + error);
+    return 0;
   }
   // Everything that can go wrong is found here, not in RequestData (see
   // vtkNIfTIFile::VerifyData): the memory of the whole image (the voxels
   // read and the tensors), the voxels being there, the companions.
   const bool doubles = h.DataType == vtkNIfTIFile::FLOAT64;
-  const double points = static_cast<double>(in.File.GetNumberOfVoxels());
+  const double points = static_cast<double>(nifti.GetNumberOfVoxels());
   if (!vtkSplineVizProgress::CheckOutputSize(points,
         nc * vtkNIfTIFile::GetValueSize(h.DataType) + (doubles ? 48.0 : 24.0), "the tensors",
         &error))
   {
     return fail("\"" + file + "\": " + error);
   }
-  if (!in.File.VerifyData(error))
+  if (!nifti.VerifyData(error))
   {
     return fail(error);
   }
@@ -309,26 +295,8 @@ int vtkNIfTITensorReader::RequestInformation(
       return fail("companion volume: " + error);
     }
   }
-  for (int i = 0; i < 3; ++i)
-  {
-    in.Size[i] = in.File.GetSize(i);
-  }
-  vtkNIfTIFile::ComputePlacement(in.A, in.Size[2], in.Place);
-  if (in.Place.Shear > 1e-4)
-  {
-    vtkWarningMacro(<< file
-                    << ": the voxel to world transform has shear; the image's direction "
-                       "matrix is not orthonormal");
-  }
-  for (int i = 0; i < 4; ++i)
-  {
-    for (int j = 0; j < 4; ++j)
-    {
-      this->Affine[4 * i + j] = in.A[i][j];
-    }
-  }
+  this->PlaceImage(outInfo);
   in.ComputeTensorRotation(this->TensorFrame);
-  vtkNIfTIFile::SetOutputInformation(outInfo, in.Size, in.Place);
   return 1;
 }
 
@@ -338,7 +306,7 @@ void vtkNIfTITensorReader::Internals::ComputeTensorRotation(int frame)
   // The orthogonal polar factor of A's 3x3 part, M (M^T M)^(-1/2), through
   // the eigen-decomposition of M^T M.
   Internals& in = *this;
-  const double(*a)[4] = in.A;
+  const double(*a)[4] = in.Image.A;
   double full[3][3];
   for (int p = 0; p < 3; ++p)
   {
@@ -393,54 +361,24 @@ void vtkNIfTITensorReader::Internals::ComputeTensorRotation(int frame)
 }
 
 //------------------------------------------------------------------------------
-int vtkNIfTITensorReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkNIfTITensorReader::RequestPiece(
+  vtkInformation* outInfo, vtkImageData* output, const int ext[6])
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkImageData* output = vtkImageData::GetData(outInfo);
-  output->Initialize();
-  auto fail = [this, outInfo](const std::string& msg)
-  {
-    vtkNIfTIFile::SetEmptyOutputInformation(outInfo);
-    this->LastError = msg;
-    vtkErrorMacro(<< msg);
-    return 0;
-  };
-  if (!this->LastError.empty())
-  {
-    return fail(this->LastError); // RequestInformation failed
-  }
   Internals& in = *this->Internal;
-  int ext[6];
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), ext);
-  if (!vtkNIfTIFile::ClampExtent(ext, in.Size))
-  {
-    return 1; // an empty piece
-  }
-  // The file slices of this piece (in reverse order when flipped).
-  const int k0 = std::min(in.FileSlice(ext[4]), in.FileSlice(ext[5]));
-  const int k1 = std::max(in.FileSlice(ext[4]), in.FileSlice(ext[5]));
-  in.File.Progress = [this](double f)
-  {
-    this->UpdateProgress(0.4 * f);
-    return !this->CheckAbort();
-  };
   vtkNIfTIFile::Voxels raw;
   std::string error;
-  const bool read = in.File.ReadSlices(in.Volumes, k0, k1, raw, error);
-  in.File.Progress = nullptr;
-  if (!read)
+  if (!this->Image->ReadPiece(in.Volumes, ext, this->ReadProgress(0.4), raw, error))
   {
-    return error == "aborted" ? (output->Initialize(), 1) : fail(error);
+    return this->FailRead(outInfo, error);
   }
   this->UpdateProgress(0.4);
-  vtkNIfTIFile::SetOutputGeometry(output, ext, in.Place);
   vtkSmartPointer<vtkDataArray> tensors = in.ComputeTensors(raw, ext, this->TensorArrayName);
   if (!tensors)
   {
-    return fail("\"" + std::string(this->FileName) +
-      "\": the tensors would not fit in this "
-      "machine's memory");
+    return this->Fail(outInfo,
+      "\"" + std::string(this->FileName) +
+        "\": the tensors would not fit in this "
+        "machine's memory");
   }
   raw = vtkNIfTIFile::Voxels();
   output->GetPointData()->SetTensors(tensors);
@@ -458,7 +396,8 @@ int vtkNIfTITensorReader::RequestData(
     vtkSmartPointer<vtkDataArray> array = in.ReadCompanion(*in.CompanionFiles[f], ext, this, error);
     if (!array)
     {
-      return error == "aborted" ? (output->Initialize(), 1) : fail("companion volume: " + error);
+      return error == "aborted" ? this->FailRead(outInfo, error)
+                                : this->Fail(outInfo, "companion volume: " + error);
     }
     output->GetPointData()->AddArray(array);
     this->UpdateProgress(0.7 + 0.3 * (f + 1) / nCompanions);
@@ -468,7 +407,7 @@ int vtkNIfTITensorReader::RequestData(
       return 1;
     }
   }
-  vtkNIfTIFile::AddFieldData(output->GetFieldData(), in.A, in.Place.Flip);
+  this->FinishPiece(output, ext);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -480,7 +419,7 @@ vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ComputeTensors(
   Internals& in = *this;
   const int nx = ext[1] - ext[0] + 1, ny = ext[3] - ext[2] + 1, nz = ext[5] - ext[4] + 1;
   const vtkIdType n = vtkIdType(nx) * ny * nz;
-  const bool doubles = in.File.GetHeader().DataType == vtkNIfTIFile::FLOAT64;
+  const bool doubles = in.Image.File.GetHeader().DataType == vtkNIfTIFile::FLOAT64;
   std::string error;
   if (!vtkSplineVizProgress::CheckOutputSize(
         static_cast<double>(n), doubles ? 48.0 : 24.0, "the tensors", &error))
@@ -501,9 +440,9 @@ vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ComputeTensors(
   tensors->SetNumberOfTuples(n);
   const int layout = in.Layout;
   const double(*R)[3] = in.R;
-  const double slope = in.File.GetSlope(), intercept = in.File.GetIntercept();
+  const double slope = in.Image.File.GetSlope(), intercept = in.Image.File.GetIntercept();
   const int nc = static_cast<int>(in.Volumes.size());
-  const int fileNX = in.Size[0];
+  const int fileNX = in.Image.Size[0];
   vtkSMPTools::For(0, n,
     [&](vtkIdType b, vtkIdType e)
     {
@@ -513,7 +452,7 @@ vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ComputeTensors(
       {
         const int i = ext[0] + static_cast<int>(id % nx);
         const int j = ext[2] + static_cast<int>((id / nx) % ny);
-        const int k = in.FileSlice(ext[4] + static_cast<int>(id / (vtkIdType(nx) * ny)));
+        const int k = in.Image.FileSlice(ext[4] + static_cast<int>(id / (vtkIdType(nx) * ny)));
         for (int q = 0; q < nc; ++q)
         {
           c[q] = slope * raw.Get(q, i, j, k, 0, fileNX) + intercept;
@@ -553,7 +492,7 @@ vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ComputeTensors(
 vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ReadCompanion(
   Companion& cv, const int ext[6], vtkAlgorithm* algorithm, std::string& error)
 {
-  Internals& in = *this;
+  const vtkNIfTIImage& in = this->Image;
   const std::string& name = cv.Name;
   const vtkNIfTIFile::Header& ch = cv.File.GetHeader();
   int size[3];
@@ -572,8 +511,11 @@ vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ReadCompanion(
     }
   }
   // The same grid: this piece's slices; another grid: all of them (resampled).
-  const int k0 = sameGrid ? std::min(in.FileSlice(ext[4]), in.FileSlice(ext[5])) : 0;
-  const int k1 = sameGrid ? std::max(in.FileSlice(ext[4]), in.FileSlice(ext[5])) : size[2] - 1;
+  int k0 = 0, k1 = size[2] - 1;
+  if (sameGrid)
+  {
+    in.FileSlices(ext, k0, k1);
+  }
   vtkNIfTIFile::Voxels values;
   cv.File.Progress = [algorithm](double) { return !algorithm->CheckAbort(); };
   if (!cv.File.ReadSlices(cv.Volumes, k0, k1, values, error))
@@ -696,13 +638,11 @@ vtkSmartPointer<vtkDataArray> vtkNIfTITensorReader::Internals::ReadCompanion(
 void vtkNIfTITensorReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "TensorLayout: " << this->TensorLayout << " ("
      << (this->TensorLayout == LAYOUT_AUTOMATIC ? "automatic"
                                                 : TM::GetLayoutName(this->TensorLayout))
      << ")\n";
   os << indent << "TensorFrame: " << this->TensorFrame << "\n";
-  os << indent << "AffineSource: " << this->AffineSource << "\n";
   os << indent << "TensorArrayName: " << (this->TensorArrayName ? this->TensorArrayName : "(none)")
      << "\n";
   os << indent << "CompanionFileNames:";

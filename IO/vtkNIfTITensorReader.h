@@ -14,7 +14,7 @@
  * YY XZ YZ ZZ and 4D files in FSL's XX XY XZ YY YZ ZZ; a wrong layout gives
  * wrong tensors without an error. scl_slope / scl_inter are applied.
  *
- * **Geometry** (shared with vtkNIfTIVolumeReader): the affine A chosen by
+ * **Geometry** (vtkNIfTIReaderBase, shared with vtkNIfTIVolumeReader): the affine A chosen by
  * AffineSource (sform, else qform, else pixdim; mm) becomes origin, spacing
  * and the **direction matrix**, slices reversed when det A < 0, so that
  * GetPoint() is where A puts each voxel (no resampling: the tensors keep the
@@ -43,23 +43,17 @@
 #define vtkNIfTITensorReader_h
 
 #include "SplineVizModule.h" // for export macro
-#include "vtkImageAlgorithm.h"
+#include "vtkNIfTIReaderBase.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-class SPLINEVIZ_EXPORT vtkNIfTITensorReader : public vtkImageAlgorithm
+class SPLINEVIZ_EXPORT vtkNIfTITensorReader : public vtkNIfTIReaderBase
 {
 public:
   static vtkNIfTITensorReader* New();
-  vtkTypeMacro(vtkNIfTITensorReader, vtkImageAlgorithm);
+  vtkTypeMacro(vtkNIfTITensorReader, vtkNIfTIReaderBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// The NIfTI file (.nii, .nii.gz, or either file of a .hdr/.img pair).
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
 
   enum
   {
@@ -97,23 +91,6 @@ public:
   void SetTensorFrameToWorld() { this->SetTensorFrame(FRAME_WORLD); }
   ///@}
 
-  enum AffineSources
-  {
-    AFFINE_AUTOMATIC = 0, ///< sform if sform_code > 0, else qform if qform_code > 0, else pixdim
-    AFFINE_SFORM = 1,
-    AFFINE_QFORM = 2,
-    AFFINE_PIXDIM = 3 ///< voxel index times pixdim: no rotation, origin 0
-  };
-  ///@{
-  /// Which of the file's transforms places the voxels. Default AFFINE_AUTOMATIC.
-  vtkSetClampMacro(AffineSource, int, AFFINE_AUTOMATIC, AFFINE_PIXDIM);
-  vtkGetMacro(AffineSource, int);
-  void SetAffineSourceToAutomatic() { this->SetAffineSource(AFFINE_AUTOMATIC); }
-  void SetAffineSourceToSForm() { this->SetAffineSource(AFFINE_SFORM); }
-  void SetAffineSourceToQForm() { this->SetAffineSource(AFFINE_QFORM); }
-  void SetAffineSourceToPixDim() { this->SetAffineSource(AFFINE_PIXDIM); }
-  ///@}
-
   ///@{
   /// Name of the output tensor array. Default "Tensors".
   vtkSetStringMacro(TensorArrayName);
@@ -134,26 +111,16 @@ public:
   /// Is this a valid NIfTI-1/2 file with 6 or 9 tensor components in its 4th or 5th dimension?
   static int CanReadFile(const char* fileName);
 
-  /// The message of the last error (empty when the last read succeeded).
-  const char* GetLastErrorMessage() const { return this->LastError.c_str(); }
-
-  /// The voxel to world affine used by the last read (row-major 4x4, NIfTI voxel indices).
-  vtkGetVectorMacro(Affine, double, 16);
-
 protected:
   vtkNIfTITensorReader();
   ~vtkNIfTITensorReader() override;
 
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestPiece(vtkInformation* outInfo, vtkImageData* output, const int ext[6]) override;
 
-  char* FileName = nullptr;
   int TensorLayout = LAYOUT_AUTOMATIC;
   int TensorFrame = FRAME_VOXEL;
-  int AffineSource = AFFINE_AUTOMATIC;
   char* TensorArrayName = nullptr;
-  std::string LastError;
-  double Affine[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
 
 private:
   vtkNIfTITensorReader(const vtkNIfTITensorReader&) = delete;

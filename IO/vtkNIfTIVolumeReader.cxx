@@ -11,7 +11,6 @@
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTypeTraits.h"
 
 #include <algorithm>
@@ -132,11 +131,7 @@ void Fill(const vtkNIfTIFile::Voxels& raw, D* out, const int ext[6], int fileNX,
 //------------------------------------------------------------------------------
 struct vtkNIfTIVolumeReader::Internals
 {
-  vtkNIfTIFile File;
   std::vector<std::int64_t> Volumes; // the file volumes read, in component order
-  int Size[3] = { 0, 0, 0 };
-  double A[4][4];
-  vtkNIfTIFile::Placement Place;
   int OutputType = VTK_VOID;
   int Components = 1;
   bool Scaled = false;
@@ -147,12 +142,10 @@ struct vtkNIfTIVolumeReader::Internals
 vtkNIfTIVolumeReader::vtkNIfTIVolumeReader()
   : Internal(new Internals)
 {
-  this->SetNumberOfInputPorts(0);
 }
 
 vtkNIfTIVolumeReader::~vtkNIfTIVolumeReader()
 {
-  this->SetFileName(nullptr);
   this->SetArrayName(nullptr);
 }
 
@@ -165,32 +158,18 @@ int vtkNIfTIVolumeReader::CanReadFile(const char* fileName)
 int vtkNIfTIVolumeReader::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  this->LastError.clear();
   this->VolumeRange[0] = this->VolumeRange[1] = 0;
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  auto fail = [this, outInfo](const std::string& msg)
+  auto fail = [this, outInfo](const std::string& msg) { return this->Fail(outInfo, msg); };
+  if (!this->OpenFile(outInfo) || !this->ComputeAffine(outInfo))
   {
-    vtkNIfTIFile::SetEmptyOutputInformation(outInfo);
-    this->LastError = msg;
-    vtkErrorMacro(<< msg);
     return 0;
-  };
-  if (!this->FileName || !*this->FileName)
-  {
-    return fail("no file name was given");
   }
   Internals& in = *this->Internal;
+  vtkNIfTIFile& nifti = this->Image->File;
   const std::string file = this->FileName;
   std::string error;
-  if (!in.File.Open(file, error))
-  {
-    return fail(error);
-  }
-  if (!in.File.ComputeAffine(this->AffineSource, in.A, error))
-  {
-    return fail("\"" + file + "\": " + error);
-  }
-  const vtkNIfTIFile::Header& h = in.File.GetHeader();
+  const vtkNIfTIFile::Header& h = nifti.GetHeader();
 
   // The volumes: the 5th dimension's as components; the 4th (6th, 7th) as
   // components or one of them chosen.
@@ -233,7 +212,7 @@ int vtkNIfTIVolumeReader::RequestInformation(
     }
   }
   in.Components = static_cast<int>(components);
-  in.Scaled = in.File.HasScaling();
+  in.Scaled = nifti.HasScaling();
   in.OutputType = OutputType(h.DataType, in.Scaled);
   in.Name = this->ArrayName && *this->ArrayName ? this->ArrayName : vtkNIfTIFile::BaseName(file);
   if (in.Name.empty())
@@ -248,93 +227,45 @@ int vtkNIfTIVolumeReader::RequestInformation(
     static_cast<double>(in.Volumes.size()) * vtkNIfTIFile::GetValueSize(h.DataType) +
     static_cast<double>(in.Components) * vtkDataArray::GetDataTypeSize(in.OutputType);
   if (!vtkSplineVizProgress::CheckOutputSize(
-        static_cast<double>(in.File.GetNumberOfVoxels()), perVoxel, "the volume", &error))
+        static_cast<double>(nifti.GetNumberOfVoxels()), perVoxel, "the volume", &error))
   {
     return fail("\"" + file + "\": " + error);
   }
-  if (!in.File.VerifyData(error))
+  if (!nifti.VerifyData(error))
   {
     return fail(error);
   }
-  for (int i = 0; i < 3; ++i)
-  {
-    in.Size[i] = in.File.GetSize(i);
-  }
-  vtkNIfTIFile::ComputePlacement(in.A, in.Size[2], in.Place);
-  if (in.Place.Shear > 1e-4)
-  {
-    vtkWarningMacro(<< file
-                    << ": the voxel to world transform has shear; the image's direction "
-                       "matrix is not orthonormal");
-  }
-  for (int i = 0; i < 4; ++i)
-  {
-    for (int j = 0; j < 4; ++j)
-    {
-      this->Affine[4 * i + j] = in.A[i][j];
-    }
-  }
-  vtkNIfTIFile::SetOutputInformation(outInfo, in.Size, in.Place);
+  this->PlaceImage(outInfo);
   vtkDataObject::SetPointDataActiveScalarInfo(outInfo, in.OutputType, in.Components);
   return 1;
 }
 
 //------------------------------------------------------------------------------
-int vtkNIfTIVolumeReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkNIfTIVolumeReader::RequestPiece(
+  vtkInformation* outInfo, vtkImageData* output, const int ext[6])
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkImageData* output = vtkImageData::GetData(outInfo);
-  output->Initialize();
-  auto fail = [this, output](const std::string& msg)
-  {
-    output->Initialize();
-    this->LastError = msg;
-    vtkErrorMacro(<< msg);
-    return 0;
-  };
-  if (!this->LastError.empty())
-  {
-    return fail(this->LastError); // RequestInformation failed
-  }
   Internals& in = *this->Internal;
-  int ext[6];
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), ext);
-  if (!vtkNIfTIFile::ClampExtent(ext, in.Size))
-  {
-    return 1; // an empty piece
-  }
-  const int nz = in.Size[2];
-  const int k0 = std::min(
-    vtkNIfTIFile::FileSlice(in.Place, nz, ext[4]), vtkNIfTIFile::FileSlice(in.Place, nz, ext[5]));
-  const int k1 = std::max(
-    vtkNIfTIFile::FileSlice(in.Place, nz, ext[4]), vtkNIfTIFile::FileSlice(in.Place, nz, ext[5]));
+  vtkNIfTIImage& image = *this->Image;
+  const int nz = image.Size[2];
   const vtkIdType n =
     vtkIdType(ext[1] - ext[0] + 1) * (ext[3] - ext[2] + 1) * (ext[5] - ext[4] + 1);
   std::string error;
   if (!vtkSplineVizProgress::CheckOutputSize(static_cast<double>(n) * in.Components,
         vtkDataArray::GetDataTypeSize(in.OutputType), "the volume", &error))
   {
-    return fail("\"" + std::string(this->FileName) + "\": " + error);
+    return this->Fail(outInfo, "\"" + std::string(this->FileName) + "\": " + error);
   }
-  in.File.Progress = [this](double f)
-  {
-    this->UpdateProgress(0.6 * f);
-    return !this->CheckAbort();
-  };
   vtkNIfTIFile::Voxels raw;
-  const bool read = in.File.ReadSlices(in.Volumes, k0, k1, raw, error);
-  in.File.Progress = nullptr;
-  if (!read)
+  if (!image.ReadPiece(in.Volumes, ext, this->ReadProgress(0.6), raw, error))
   {
-    return error == "aborted" ? (output->Initialize(), 1) : fail(error);
+    return this->FailRead(outInfo, error);
   }
   vtkSmartPointer<vtkDataArray> array;
   array.TakeReference(vtkDataArray::CreateDataArray(in.OutputType));
   array->SetName(in.Name.c_str());
   array->SetNumberOfComponents(in.Components);
   array->SetNumberOfTuples(n);
-  const double slope = in.File.GetSlope(), intercept = in.File.GetIntercept();
+  const double slope = image.File.GetSlope(), intercept = image.File.GetIntercept();
   WithElementType(raw.DataType,
     [&](auto v)
     {
@@ -342,18 +273,18 @@ int vtkNIfTIVolumeReader::RequestData(
       void* target = array->GetVoidPointer(0);
       if (in.OutputType == VTK_DOUBLE && !std::is_same<S, double>::value)
       {
-        Fill<S, double>(raw, static_cast<double*>(target), ext, in.Size[0], in.Place, nz, in.Scaled,
-          slope, intercept);
+        Fill<S, double>(raw, static_cast<double*>(target), ext, image.Size[0], image.Place, nz,
+          in.Scaled, slope, intercept);
       }
       else if (in.OutputType == VTK_FLOAT && !std::is_same<S, float>::value)
       {
-        Fill<S, float>(raw, static_cast<float*>(target), ext, in.Size[0], in.Place, nz, in.Scaled,
-          slope, intercept);
+        Fill<S, float>(raw, static_cast<float*>(target), ext, image.Size[0], image.Place, nz,
+          in.Scaled, slope, intercept);
       }
       else
       {
-        Fill<S, S>(
-          raw, static_cast<S*>(target), ext, in.Size[0], in.Place, nz, in.Scaled, slope, intercept);
+        Fill<S, S>(raw, static_cast<S*>(target), ext, image.Size[0], image.Place, nz, in.Scaled,
+          slope, intercept);
       }
     });
   this->UpdateProgress(0.9);
@@ -362,9 +293,8 @@ int vtkNIfTIVolumeReader::RequestData(
     output->Initialize();
     return 1;
   }
-  vtkNIfTIFile::SetOutputGeometry(output, ext, in.Place);
   output->GetPointData()->SetScalars(array);
-  vtkNIfTIFile::AddFieldData(output->GetFieldData(), in.A, in.Place.Flip);
+  this->FinishPiece(output, ext);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -373,8 +303,6 @@ int vtkNIfTIVolumeReader::RequestData(
 void vtkNIfTIVolumeReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
-  os << indent << "AffineSource: " << this->AffineSource << "\n";
   os << indent << "FourthDimension: " << this->FourthDimension << "\n";
   os << indent << "VolumeIndex: " << this->VolumeIndex << "\n";
   os << indent << "VolumeRange: " << this->VolumeRange[0] << " " << this->VolumeRange[1] << "\n";

@@ -6,12 +6,12 @@
  *
  * The file is read by SplineViz's NIfTI layer (vtkNIfTIFile: NIfTI-1 and -2,
  * either byte order, .nii, .nii.gz and .hdr/.img pairs, each part optionally
- * gzip-compressed; every header field validated before use). **Geometry**:
- * the affine chosen by AffineSource (sform, else qform, else pixdim), its
- * rotation as the image's direction matrix, the slices stored in reverse order
- * when the affine flips (det < 0): the same placement code as the tensor
- * reader, so a volume and tensors of the same grid coincide point by point.
- * Field data: "NIfTIAffine", "NIfTISlicesReversed".
+ * gzip-compressed; every header field validated before use). **Geometry**
+ * (vtkNIfTIReaderBase): the affine chosen by AffineSource (sform, else qform,
+ * else pixdim), its rotation as the image's direction matrix, the slices
+ * stored in reverse order when the affine flips (det < 0): the placement of
+ * the tensor reader, so a volume and tensors of the same grid coincide point
+ * by point. Field data: "NIfTIAffine", "NIfTISlicesReversed".
  *
  * **Values**: the voxels' own type (uint8 ... uint64, float32, float64) when
  * the file has no scaling, so label volumes stay integers; when it scales
@@ -44,40 +44,16 @@
 #define vtkNIfTIVolumeReader_h
 
 #include "SplineVizModule.h" // for export macro
-#include "vtkImageAlgorithm.h"
+#include "vtkNIfTIReaderBase.h"
 
 #include <memory> // for std::unique_ptr
-#include <string> // for std::string
 
-class SPLINEVIZ_EXPORT vtkNIfTIVolumeReader : public vtkImageAlgorithm
+class SPLINEVIZ_EXPORT vtkNIfTIVolumeReader : public vtkNIfTIReaderBase
 {
 public:
   static vtkNIfTIVolumeReader* New();
-  vtkTypeMacro(vtkNIfTIVolumeReader, vtkImageAlgorithm);
+  vtkTypeMacro(vtkNIfTIVolumeReader, vtkNIfTIReaderBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// The NIfTI file (.nii, .nii.gz, or either file of a .hdr/.img pair).
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
-
-  enum AffineSources
-  {
-    AFFINE_AUTOMATIC = 0, ///< sform if sform_code > 0, else qform if qform_code > 0, else pixdim
-    AFFINE_SFORM = 1,
-    AFFINE_QFORM = 2,
-    AFFINE_PIXDIM = 3 ///< voxel index times pixdim: no rotation, origin 0
-  };
-  ///@{
-  /// Which of the file's transforms places the voxels. Default AFFINE_AUTOMATIC.
-  vtkSetClampMacro(AffineSource, int, AFFINE_AUTOMATIC, AFFINE_PIXDIM);
-  vtkGetMacro(AffineSource, int);
-  void SetAffineSourceToAutomatic() { this->SetAffineSource(AFFINE_AUTOMATIC); }
-  void SetAffineSourceToSForm() { this->SetAffineSource(AFFINE_SFORM); }
-  void SetAffineSourceToQForm() { this->SetAffineSource(AFFINE_QFORM); }
-  void SetAffineSourceToPixDim() { this->SetAffineSource(AFFINE_PIXDIM); }
-  ///@}
 
   enum FourthDimensionModes
   {
@@ -113,27 +89,17 @@ public:
   /// Does the file start with a NIfTI-1/2 header (the reader reports what is wrong with it)?
   static int CanReadFile(const char* fileName);
 
-  /// The message of the last error (empty when the last read succeeded).
-  const char* GetLastErrorMessage() const { return this->LastError.c_str(); }
-
-  /// The voxel to world affine used by the last read (row-major 4x4, NIfTI voxel indices).
-  vtkGetVectorMacro(Affine, double, 16);
-
 protected:
   vtkNIfTIVolumeReader();
   ~vtkNIfTIVolumeReader() override;
 
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestPiece(vtkInformation* outInfo, vtkImageData* output, const int ext[6]) override;
 
-  char* FileName = nullptr;
-  int AffineSource = AFFINE_AUTOMATIC;
   int FourthDimension = FOURTH_DIMENSION_AUTOMATIC;
   int VolumeIndex = 0;
   int VolumeRange[2] = { 0, 0 };
   char* ArrayName = nullptr;
-  std::string LastError;
-  double Affine[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
 
 private:
   vtkNIfTIVolumeReader(const vtkNIfTIVolumeReader&) = delete;
