@@ -32,5 +32,6 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkTensorMathShared.glsl")
 # Progress, abort and output-size checks shared by the filters and readers.
 list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizPolyLines.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizProgress.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizRandom.h")

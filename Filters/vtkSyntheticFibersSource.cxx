@@ -1,20 +1,16 @@
 #include "vtkSyntheticFibersSource.h"
 
+#include "vtkSplineVizPolyLines.h"
 #include "vtkSplineVizProgress.h"
 #include "vtkSplineVizRandom.h"
 
-#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkFloatArray.h"
-#include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSMPTools.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -167,16 +163,8 @@ int vtkSyntheticFibersSource::RequestData(
     return 0;
   }
 
-  int piece = 0;
-  int numPieces = 1;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
-  {
-    piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-    numPieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
-  }
-  numPieces = std::max(numPieces, 1);
-  const vtkIdType firstTube = nTubes * piece / numPieces;
-  const vtkIdType endTube = nTubes * (piece + 1) / numPieces;
+  vtkIdType firstTube, endTube;
+  vtkSplineVizPolyLines::PieceRange(outInfo, nTubes, firstTube, endTube);
 
   // Segments per tube: one each, plus a share of the rest proportional to a
   // per-tube weight; the cumulative rounding makes the total exact.
@@ -197,18 +185,15 @@ int vtkSyntheticFibersSource::RequestData(
   };
 
   const vtkIdType localTubes = endTube - firstTube;
-  std::vector<vtkIdType> pointOffset(static_cast<size_t>(localTubes) + 1, 0);
-  for (vtkIdType i = 0; i < localTubes; ++i)
-  {
-    const vtkIdType t = firstTube + i;
-    const vtkIdType segments = 1 + extraBefore(t + 1) - extraBefore(t);
-    pointOffset[i + 1] = pointOffset[i] + segments + 1;
-  }
-  const vtkIdType nPoints = pointOffset[localTubes];
+  vtkSplineVizPolyLines lines; // a tube's points: 1 + its segments
+  lines.Allocate(localTubes,
+    [&](vtkIdType i)
+    {
+      const vtkIdType t = firstTube + i;
+      return 2 + extraBefore(t + 1) - extraBefore(t);
+    });
+  const vtkIdType nPoints = lines.GetNumberOfPoints();
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(nPoints);
   vtkNew<vtkFloatArray> radius;
   radius->SetName("Radius");
   radius->SetNumberOfTuples(nPoints);
@@ -219,7 +204,6 @@ int vtkSyntheticFibersSource::RequestData(
   tubeIds->SetName("TubeId");
   tubeIds->SetNumberOfTuples(localTubes);
 
-  float* pts = static_cast<float*>(points->GetVoidPointer(0));
   float* rad = radius->GetPointer(0);
   float* sca = scalar->GetPointer(0);
   const double half = 0.5 * this->BoxSize;
@@ -251,11 +235,9 @@ int vtkSyntheticFibersSource::RequestData(
         const double scalarPhase = rng.Uniform(0.0, twoPi);
         double arc = 0.0;
 
-        for (vtkIdType k = pointOffset[i]; k < pointOffset[i + 1]; ++k)
+        for (vtkIdType k = lines.GetOffset(i); k < lines.GetOffset(i + 1); ++k)
         {
-          pts[3 * k + 0] = static_cast<float>(p[0]);
-          pts[3 * k + 1] = static_cast<float>(p[1]);
-          pts[3 * k + 2] = static_cast<float>(p[2]);
+          lines.SetPoint(k, p[0], p[1], p[2]);
           rad[k] = static_cast<float>(
             rmin + (rmax - rmin) * (0.5 + 0.5 * std::sin(twoPi * arc / radiusWave + radiusPhase)));
           sca[k] = static_cast<float>(0.5 + 0.5 * std::sin(twoPi * arc / scalarWave + scalarPhase));
@@ -313,27 +295,7 @@ int vtkSyntheticFibersSource::RequestData(
     return 1;
   }
 
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfTuples(localTubes + 1);
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfTuples(nPoints);
-  for (vtkIdType i = 0; i <= localTubes; ++i)
-  {
-    offsets->SetValue(i, pointOffset[i]);
-  }
-  vtkSMPTools::For(0, nPoints,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType k = begin; k < end; ++k)
-      {
-        connectivity->SetValue(k, k);
-      }
-    });
-  lines->SetData(offsets, connectivity);
-
-  output->SetPoints(points);
-  output->SetLines(lines);
+  lines.SetOutput(output);
   output->GetPointData()->AddArray(radius);
   output->GetPointData()->SetScalars(scalar);
   output->GetCellData()->AddArray(tubeIds);

@@ -1,9 +1,9 @@
 #include "vtkSyntheticTractogramSource.h"
 
+#include "vtkSplineVizPolyLines.h"
 #include "vtkSplineVizProgress.h"
 #include "vtkSplineVizRandom.h"
 
-#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
@@ -11,10 +11,8 @@
 #include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
-#include "vtkStreamingDemandDrivenPipeline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -174,16 +172,9 @@ int vtkSyntheticTractogramSource::RequestData(
     vtkErrorMacro(<< sizeError);
     return 0;
   }
-  int piece = 0;
-  int numPieces = 1;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
-  {
-    piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-    numPieces =
-      std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-  }
-  const vtkIdType first = total * piece / numPieces;
-  const vtkIdType local = total * (piece + 1) / numPieces - first;
+  vtkIdType first, end;
+  vtkSplineVizPolyLines::PieceRange(outInfo, total, first, end);
+  const vtkIdType local = end - first;
 
   // The bundles' centre lines (long enough for the longest streamline).
   const int samples = 2 * this->MaximumPoints + 1;
@@ -198,33 +189,20 @@ int vtkSyntheticTractogramSource::RequestData(
       }
     });
 
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfTuples(local + 1);
-  vtkIdType* offset = offsets->GetPointer(0);
-  offset[0] = 0;
-  for (vtkIdType i = 0; i < local; ++i)
-  {
-    offset[i + 1] =
-      offset[i] + StreamlinePoints(this->Seed, first + i, this->MinimumPoints, this->MaximumPoints);
-  }
-  const vtkIdType nPoints = offset[local];
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(nPoints);
+  vtkSplineVizPolyLines lines;
+  lines.Allocate(local,
+    [&](vtkIdType i)
+    { return StreamlinePoints(this->Seed, first + i, this->MinimumPoints, this->MaximumPoints); });
   vtkNew<vtkFloatArray> fa;
   fa->SetName("FA");
-  fa->SetNumberOfTuples(nPoints);
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfTuples(nPoints);
+  fa->SetNumberOfTuples(lines.GetNumberOfPoints());
   vtkNew<vtkIdTypeArray> streamlineIds;
   streamlineIds->SetName("StreamlineId");
   streamlineIds->SetNumberOfTuples(local);
   vtkNew<vtkIdTypeArray> bundleIds;
   bundleIds->SetName("BundleId");
   bundleIds->SetNumberOfTuples(local);
-  float* xyz = static_cast<vtkFloatArray*>(points->GetData())->GetPointer(0);
   float* faValues = fa->GetPointer(0);
-  vtkIdType* conn = connectivity->GetPointer(0);
 
   const bool done = vtkSplineVizProgress::For(
     this, 0, local, 0, 1024,
@@ -236,7 +214,8 @@ int vtkSyntheticTractogramSource::RequestData(
         const int b = static_cast<int>(s % this->NumberOfBundles);
         const Bundle& bundle = bundles[b];
         vtkSplineVizRandom rng(this->Seed, s);
-        const vtkIdType n = offset[i + 1] - offset[i];
+        const vtkIdType offset = lines.GetOffset(i);
+        const vtkIdType n = lines.GetOffset(i + 1) - offset;
         const int start = static_cast<int>(rng.Uniform() * (samples - n));
         // The offset in the bundle's cross-section: a point of the disk that
         // wanders slowly (amplitude a quarter of the radius).
@@ -254,12 +233,9 @@ int vtkSyntheticTractogramSource::RequestData(
           const double u = rho * std::cos(theta) + wobble * std::sin(w1 * k + p1);
           const double v = rho * std::sin(theta) + wobble * std::sin(w2 * k + p2);
           const Vec p = bundle.Center[c] + u * bundle.N[c] + v * bundle.B[c];
-          const vtkIdType id = offset[i] + k;
-          xyz[3 * id] = static_cast<float>(p.x);
-          xyz[3 * id + 1] = static_cast<float>(p.y);
-          xyz[3 * id + 2] = static_cast<float>(p.z);
+          const vtkIdType id = offset + k;
+          lines.SetPoint(id, p.x, p.y, p.z);
           faValues[id] = static_cast<float>(0.55 + 0.35 * std::sin(0.05 * k + faPhase));
-          conn[id] = id;
         }
         streamlineIds->SetValue(i, s);
         bundleIds->SetValue(i, b);
@@ -271,10 +247,7 @@ int vtkSyntheticTractogramSource::RequestData(
     output->Initialize(); // aborted: a clean, empty output
     return 1;
   }
-  vtkNew<vtkCellArray> lines;
-  lines->SetData(offsets, connectivity);
-  output->SetPoints(points);
-  output->SetLines(lines);
+  lines.SetOutput(output);
   output->GetPointData()->SetScalars(fa);
   output->GetCellData()->AddArray(streamlineIds);
   output->GetCellData()->AddArray(bundleIds);
