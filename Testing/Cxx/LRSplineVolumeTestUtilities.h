@@ -10,7 +10,8 @@
 // themselves (not a table), VTK's opacity correction 1 - (1 - a)^(step /
 // unit distance) and front-to-back compositing; isosurfaces by bracketing at
 // the fine steps and 60 bisections. Shared by the volume tests and the
-// volume benchmark (image error of every method).
+// volume benchmark (image error of every method), with the tests' scene
+// (Scene) and their curved geometry (Bend, RewriteCoefficients).
 #ifndef LRSplineVolumeTestUtilities_h
 #define LRSplineVolumeTestUtilities_h
 
@@ -44,6 +45,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -682,6 +684,126 @@ inline vtkSmartPointer<vtkMultiBlockDataSet> RefinedScalarVolume(
   reader->SetFieldName("density");
   reader->Update();
   return reader->GetOutput();
+}
+
+/// A window of width x height (no multisampling) whose renderer, of the given
+/// background, shows `mapper` with `property` as Volume.
+struct Scene
+{
+  vtkNew<vtkVolume> Volume;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+
+  Scene(vtkAbstractVolumeMapper* mapper, vtkVolumeProperty* property, int width, int height,
+    const double background[3])
+  {
+    this->Volume->SetMapper(mapper);
+    this->Volume->SetProperty(property);
+    this->Renderer->SetBackground(background[0], background[1], background[2]);
+    this->Renderer->AddVolume(this->Volume);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(width, height);
+    this->Window->AddRenderer(this->Renderer);
+  }
+
+  /// The camera: reset to `bounds` (nullptr: the visible props'), turned by
+  /// `azimuth` and `elevation` (degrees), reset again and zoomed by `zoom`.
+  void SetCamera(const double* bounds, double azimuth, double elevation, double zoom)
+  {
+    auto reset = [&]()
+    {
+      if (bounds)
+      {
+        this->Renderer->ResetCamera(bounds);
+      }
+      else
+      {
+        this->Renderer->ResetCamera();
+      }
+    };
+    reset();
+    this->Renderer->GetActiveCamera()->Azimuth(azimuth);
+    this->Renderer->GetActiveCamera()->Elevation(elevation);
+    reset();
+    this->Renderer->GetActiveCamera()->Zoom(zoom);
+  }
+};
+
+/// A smooth bend of the unit cube (not affine; injective for these
+/// amplitudes): the curved geometry of the tests.
+inline void Bend(const double x[3], double y[3])
+{
+  const double pi = 3.14159265358979323846;
+  y[0] = x[0] + 0.12 * std::sin(pi * x[1]) * std::sin(pi * x[2]);
+  y[1] = x[1] + 0.10 * std::sin(pi * x[0]) + 0.05 * x[2] * x[2];
+  y[2] = x[2] + 0.08 * std::sin(2 * pi * x[0]) * x[1];
+}
+
+/// The LRSplines volume text `text` with every basis function's coefficient
+/// c (3 values) replaced by the `dimension` values v that `coefficient(c, v)`
+/// gives; with `weight` (a rational spline), by the homogeneous coefficients
+/// (w v, w), w = weight() per basis function. The spline's own coefficients
+/// are changed, so that multi-patch volumes stay conforming.
+inline std::string RewriteCoefficients(const std::string& text, int dimension,
+  const std::function<void(const double c[3], double* v)>& coefficient,
+  const std::function<double()>& weight = nullptr)
+{
+  std::istringstream in(text);
+  std::ostringstream out;
+  out.precision(17);
+  std::string line;
+  bool header = false;
+  while (std::getline(in, line))
+  {
+    if (line.find("# LRSPLINE") == 0)
+    {
+      header = true;
+      out << line << "\n";
+      continue;
+    }
+    if (header && !line.empty() && line[0] != '#')
+    {
+      // p1 p2 p3 Nbasis Nline Nel dim rat
+      std::istringstream h(line);
+      int v[8];
+      for (int& x : v)
+      {
+        h >> x;
+      }
+      v[6] = dimension + (weight ? 1 : 0);
+      for (int i = 0; i < 8; ++i)
+      {
+        out << v[i] << (i < 7 ? " " : "\n");
+      }
+      header = false;
+      continue;
+    }
+    const auto close = line.rfind(']');
+    const auto paren = line.rfind('(');
+    if (line.find(": [") != std::string::npos && close != std::string::npos &&
+      paren != std::string::npos && paren > close)
+    {
+      std::istringstream c(line.substr(close + 1, paren - close - 1));
+      double x[3];
+      c >> x[0] >> x[1] >> x[2];
+      std::vector<double> v(static_cast<std::size_t>(dimension));
+      coefficient(x, v.data());
+      const double w = weight ? weight() : 1.0;
+      out << line.substr(0, close + 1);
+      for (double y : v)
+      {
+        out << " " << w * y;
+      }
+      if (weight)
+      {
+        out << " " << w;
+      }
+      out << " " << line.substr(paren) << "\n";
+      continue;
+    }
+    out << line << "\n";
+  }
+  return out.str();
 }
 
 /// The smallest element side (data units) of a field.

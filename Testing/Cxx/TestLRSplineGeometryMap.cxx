@@ -11,6 +11,7 @@
 #include "vtkLRSplineGeometryMap.h"
 #include "vtkLRSplineReader.h"
 
+#include "LRSplineVolumeTestUtilities.h"
 #include "SplineVizTestUtilities.h"
 
 #include "vtkCell.h"
@@ -31,78 +32,15 @@
 
 namespace
 {
-const double Pi = 3.14159265358979323846;
-
-// A smooth bend of the unit cube (not affine; injective for these amplitudes).
-void Bend(const double x[3], double y[3])
-{
-  y[0] = x[0] + 0.12 * std::sin(Pi * x[1]) * std::sin(Pi * x[2]);
-  y[1] = x[1] + 0.10 * std::sin(Pi * x[0]) + 0.05 * x[2] * x[2];
-  y[2] = x[2] + 0.08 * std::sin(2 * Pi * x[0]) * x[1];
-}
-
-// The LRSplines text with every coefficient c bent (Bend(c)); rational: with
-// homogeneous coefficients (w Bend(c), w), random positive weights w. The
-// spline's own coefficients are changed, so the patches stay conforming.
+// The LRSplines text with every coefficient c bent (lrvolume::Bend(c));
+// rational: with homogeneous coefficients (w Bend(c), w), random positive
+// weights w.
 std::string BentText(const std::string& text, bool rational, unsigned seed)
 {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> weight(0.6, 1.6);
-  std::istringstream in(text);
-  std::ostringstream out;
-  out.precision(17);
-  std::string line;
-  bool header = false;
-  while (std::getline(in, line))
-  {
-    if (line.find("# LRSPLINE") == 0)
-    {
-      header = true;
-      out << line << "\n";
-      continue;
-    }
-    if (header && !line.empty() && line[0] != '#')
-    {
-      // p1 p2 p3 Nbasis Nline Nel dim rat
-      std::istringstream h(line);
-      int v[8];
-      for (int& x : v)
-      {
-        h >> x;
-      }
-      v[6] = rational ? 4 : 3;
-      for (int i = 0; i < 8; ++i)
-      {
-        out << v[i] << (i < 7 ? " " : "\n");
-      }
-      header = false;
-      continue;
-    }
-    const auto close = line.rfind(']');
-    const auto paren = line.rfind('(');
-    if (line.find(": [") != std::string::npos && close != std::string::npos &&
-      paren != std::string::npos && paren > close && line.find(" x ") != std::string::npos)
-    {
-      std::istringstream c(line.substr(close + 1, paren - close - 1));
-      double x[3], y[3];
-      c >> x[0] >> x[1] >> x[2];
-      Bend(x, y);
-      out << line.substr(0, close + 1);
-      const double w = rational ? weight(rng) : 1.0;
-      for (double v : y)
-      {
-        out << " " << w * v;
-      }
-      if (rational)
-      {
-        out << " " << w;
-      }
-      out << " " << line.substr(paren) << "\n";
-      continue;
-    }
-    out << line << "\n";
-  }
-  return out.str();
+  return lrvolume::RewriteCoefficients(text, 3, lrvolume::Bend,
+    rational ? std::function<double()>([&]() { return weight(rng); }) : nullptr);
 }
 
 std::vector<vtkSmartPointer<vtkUnstructuredGrid>> ReadPatches(

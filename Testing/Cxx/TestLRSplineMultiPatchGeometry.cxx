@@ -201,22 +201,12 @@ double Render(vtkMultiBlockDataSet* data, const std::string& tag)
   property->SetColor(ctf);
   property->SetScalarOpacity(otf);
   property->SetScalarOpacityUnitDistance(0.3);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(background[0], background[1], background[2]);
-  ren->AddVolume(volume);
-  vtkNew<vtkRenderWindow> win;
-  win->SetMultiSamples(0);
-  win->SetSize(width, height);
-  win->AddRenderer(ren);
+  lrvolume::Scene scene(mapper, property, width, height, background);
   double bounds[6] = { -2.1, 1.1, -0.1, 1.1, -0.1, 1.1 };
-  ren->ResetCamera(bounds);
-  ren->GetActiveCamera()->Azimuth(25);
-  ren->GetActiveCamera()->Elevation(20);
-  ren->ResetCamera(bounds);
-  ren->GetActiveCamera()->Zoom(1.8);
+  scene.SetCamera(bounds, 25, 20, 1.8);
+  vtkVolume* volume = scene.Volume;
+  vtkRenderer* ren = scene.Renderer;
+  vtkRenderWindow* win = scene.Window;
   win->Render();
   win->Render();
   if (std::string(mapper->GetLastErrorMessage()) != "")

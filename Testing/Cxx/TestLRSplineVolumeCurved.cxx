@@ -54,86 +54,30 @@ namespace
 {
 const double Pi = 3.14159265358979323846;
 
-void Bend(const double x[3], double y[3])
-{
-  y[0] = x[0] + 0.12 * std::sin(Pi * x[1]) * std::sin(Pi * x[2]);
-  y[1] = x[1] + 0.10 * std::sin(Pi * x[0]) + 0.05 * x[2] * x[2];
-  y[2] = x[2] + 0.08 * std::sin(2 * Pi * x[0]) * x[1];
-}
-
 // The LRSplines text with bent coefficients (field false) or with the
 // scalar coefficients f (field true): sin(pi x) sin(pi y) sin(pi z) at the
 // unbent coefficient, or `values` (one per basis function, in the text's
-// order).
+// order). Rational: homogeneous coefficients (w c, w) with random weights,
+// the same sequence for the geometry and the field.
 std::string BentOrField(
   const std::string& text, bool field, bool rational, const std::vector<double>* values = nullptr)
 {
-  // Rational: homogeneous coefficients (w c, w) with random weights, the
-  // same sequence for the geometry and the field.
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> weight(0.5, 2.0);
-  std::istringstream in(text);
-  std::ostringstream out;
-  out.precision(17);
-  std::string line;
-  bool header = false;
   std::size_t next = 0;
-  while (std::getline(in, line))
+  auto coefficient = [&](const double x[3], double* v)
   {
-    if (line.find("# LRSPLINE") == 0)
+    if (!field)
     {
-      header = true;
-      out << line << "\n";
-      continue;
+      lrvolume::Bend(x, v);
+      return;
     }
-    if (header && !line.empty() && line[0] != '#')
-    {
-      std::istringstream h(line);
-      int v[8];
-      for (int& x : v)
-      {
-        h >> x;
-      }
-      v[6] = (field ? 1 : 3) + (rational ? 1 : 0);
-      for (int i = 0; i < 8; ++i)
-      {
-        out << v[i] << (i < 7 ? " " : "\n");
-      }
-      header = false;
-      continue;
-    }
-    const auto close = line.rfind(']');
-    const auto paren = line.rfind('(');
-    if (line.find(": [") != std::string::npos && close != std::string::npos &&
-      paren != std::string::npos && paren > close)
-    {
-      std::istringstream c(line.substr(close + 1, paren - close - 1));
-      double x[3], y[3];
-      c >> x[0] >> x[1] >> x[2];
-      Bend(x, y);
-      const double f = values && next < values->size()
-        ? (*values)[next++]
-        : std::sin(Pi * x[0]) * std::sin(Pi * x[1]) * std::sin(Pi * x[2]);
-      const double w = rational ? weight(rng) : 1.0;
-      out << line.substr(0, close + 1) << " ";
-      if (field)
-      {
-        out << w * f;
-      }
-      else
-      {
-        out << w * y[0] << " " << w * y[1] << " " << w * y[2];
-      }
-      if (rational)
-      {
-        out << " " << w;
-      }
-      out << " " << line.substr(paren) << "\n";
-      continue;
-    }
-    out << line << "\n";
-  }
-  return out.str();
+    v[0] = values && next < values->size()
+      ? (*values)[next++]
+      : std::sin(Pi * x[0]) * std::sin(Pi * x[1]) * std::sin(Pi * x[2]);
+  };
+  return lrvolume::RewriteCoefficients(text, field ? 1 : 3, coefficient,
+    rational ? std::function<double()>([&]() { return weight(rng); }) : nullptr);
 }
 
 // The bent patches with the scalar "f" (the fourth component) as active
@@ -266,23 +210,13 @@ Result Compare(vtkMultiBlockDataSet* data, const Reference& reference, const std
       property->GetIsoSurfaceValues()->SetValue(static_cast<int>(i), isoValues[i]);
     }
   }
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(background[0], background[1], background[2]);
-  ren->AddVolume(volume);
-  vtkNew<vtkRenderWindow> win;
-  win->SetMultiSamples(0);
-  win->SetSize(width, height);
-  win->AddRenderer(ren);
+  lrvolume::Scene scene(mapper, property, width, height, background);
   // The same camera for every variant: the physical data's box.
   double bounds[6] = { -1.1, 1.2, -0.1, 1.2, -0.1, 1.2 };
-  ren->ResetCamera(bounds);
-  ren->GetActiveCamera()->Azimuth(35);
-  ren->GetActiveCamera()->Elevation(25);
-  ren->ResetCamera(bounds);
-  ren->GetActiveCamera()->Zoom(1.2);
+  scene.SetCamera(bounds, 35, 25, 1.2);
+  vtkVolume* volume = scene.Volume;
+  vtkRenderer* ren = scene.Renderer;
+  vtkRenderWindow* win = scene.Window;
   win->Render();
   Result result;
   if (!mapper->UpdateSpline() || std::string(mapper->GetLastErrorMessage()) != "")

@@ -124,21 +124,11 @@ double Compare(const Scene& s, vtkLRSplineVolumeMapper* mapper, const std::strin
     s.Fuchs ? vtkLRSplineVolumeMapper::FUCHS : vtkLRSplineVolumeMapper::PHONG);
   vtkNew<vtkVolumeProperty> property;
   Configure(property, s);
-  vtkNew<vtkVolume> volume;
-  volume->SetMapper(mapper);
-  volume->SetProperty(property);
-  vtkNew<vtkRenderer> ren;
-  ren->SetBackground(background[0], background[1], background[2]);
-  ren->AddVolume(volume);
-  vtkNew<vtkRenderWindow> win;
-  win->SetMultiSamples(0);
-  win->SetSize(width, height);
-  win->AddRenderer(ren);
-  ren->ResetCamera();
-  ren->GetActiveCamera()->Azimuth(35);
-  ren->GetActiveCamera()->Elevation(25);
-  ren->ResetCamera();
-  ren->GetActiveCamera()->Zoom(1.25);
+  lrvolume::Scene scene(mapper, property, width, height, background);
+  scene.SetCamera(nullptr, 35, 25, 1.25);
+  vtkVolume* volume = scene.Volume;
+  vtkRenderer* ren = scene.Renderer;
+  vtkRenderWindow* win = scene.Window;
   win->Render();
   if (!mapper->UpdateSpline() || std::string(mapper->GetLastErrorMessage()) != "")
   {
