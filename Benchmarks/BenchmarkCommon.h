@@ -1,7 +1,7 @@
 // What the benchmark programs share: command-line help (each program passes
 // its usage text; `-h` or `--help` anywhere on the command line prints it and
-// ends the program before any work starts), "--key value" checks and
-// comma-separated lists, wall and process CPU clocks, and the bytes
+// ends the program before any work starts), "--key value" options (Options)
+// and comma-separated lists, wall and process CPU clocks, and the bytes
 // vtkOpenGLPolyDataMapper keeps on the GPU for a polygonal data set (the
 // VTK paths the SplineViz renderers are compared with), and the polyline data
 // sets more than one benchmark draws (LongCurves()).
@@ -21,13 +21,18 @@
 #include <malloc.h>
 #endif
 
+#include <algorithm>
 #include <array>
 #include <chrono>
+#include <climits>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
+#include <functional>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace splineviz_benchmark
@@ -122,6 +127,103 @@ inline bool ValidSizes(const std::vector<std::string>& sizes, const char* usage)
   }
   return true;
 }
+
+/// The names (keys) of a map of renderer factories.
+template <typename Map>
+std::vector<std::string> Names(const Map& map)
+{
+  std::vector<std::string> names;
+  for (const auto& item : map)
+  {
+    names.push_back(item.first);
+  }
+  return names;
+}
+
+/**
+ * The "--key value" options of a program: each option names where its value
+ * goes; Parse() prints the usage for -h / --help and refuses an option
+ * without its value, an unknown option and a bad window size.
+ */
+class Options
+{
+public:
+  explicit Options(const char* usage)
+    : Usage(usage)
+  {
+  }
+
+  /// Any option: `set` receives its value.
+  Options& Add(const char* key, std::function<void(const std::string&)> set)
+  {
+    this->Keys.emplace_back(key, std::move(set));
+    return *this;
+  }
+  /// A comma-separated list.
+  Options& List(const char* key, std::vector<std::string>& values)
+  {
+    return this->Add(key, [&values](const std::string& v) { values = Split(v); });
+  }
+  /// A comma-separated list of "WxH" window sizes.
+  Options& Sizes(const char* key, std::vector<std::string>& sizes)
+  {
+    this->SizeLists.push_back(&sizes);
+    return this->List(key, sizes);
+  }
+  /// An integer, at least `minimum`.
+  Options& Int(const char* key, int& value, int minimum = INT_MIN)
+  {
+    return this->Add(key,
+      [&value, minimum](const std::string& v) { value = std::max(minimum, std::atoi(v.c_str())); });
+  }
+  Options& Double(const char* key, double& value)
+  {
+    return this->Add(key, [&value](const std::string& v) { value = std::atof(v.c_str()); });
+  }
+  Options& Text(const char* key, std::string& value)
+  {
+    return this->Add(key, [&value](const std::string& v) { value = v; });
+  }
+
+  /// -1 when the program goes on; else its exit code (0 after the help, 2 after an error).
+  int Parse(int argc, char* argv[]) const
+  {
+    if (HelpRequested(argc, argv, this->Usage))
+    {
+      return 0;
+    }
+    if (MissingOptionValue(argc, argv, this->Usage))
+    {
+      return 2;
+    }
+    for (int i = 1; i + 1 < argc; i += 2)
+    {
+      const std::string key = argv[i];
+      auto option = std::find_if(this->Keys.begin(), this->Keys.end(),
+        [&key](const std::pair<std::string, std::function<void(const std::string&)>>& k)
+        { return k.first == key; });
+      if (option == this->Keys.end())
+      {
+        std::fprintf(stderr, "unknown option %s\n%s", key.c_str(), this->Usage);
+        return 2;
+      }
+      option->second(argv[i + 1]);
+    }
+    for (const auto* sizes : this->SizeLists)
+    {
+      if (!ValidSizes(*sizes, this->Usage))
+      {
+        return 2;
+      }
+    }
+    return -1;
+  }
+
+private:
+  const char* Usage;
+  std::vector<std::pair<std::string, std::function<void(const std::string&)>>> Keys;
+  std::vector<const std::vector<std::string>*> SizeLists;
+};
 
 /// Wall-clock seconds (monotonic).
 inline double Now()

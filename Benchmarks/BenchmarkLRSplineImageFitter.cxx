@@ -96,37 +96,20 @@ Result Fit(vtkImageData* image, double tolerance, int uniform)
 
 int main(int argc, char* argv[])
 {
-  if (splineviz_benchmark::HelpRequested(argc, argv, Usage) ||
-    splineviz_benchmark::MissingOptionValue(argc, argv, Usage))
-  {
-    return 0;
-  }
   std::vector<std::string> tolerances = { "0.02", "0.05", "0.1" };
   std::vector<std::string> scans = {
     "/usr/lib/python3/dist-packages/dipy/data/files/aniso_vox.nii.gz",
     "/usr/lib/python3/dist-packages/dipy/data/files/S0_10slices.nii.gz"
   };
   bool uniform = true;
-  for (int i = 1; i + 1 < argc; i += 2)
+  splineviz_benchmark::Options options(Usage);
+  options.List("--tolerances", tolerances)
+    .List("--scans", scans)
+    .Add("--uniform", [&](const std::string& v) { uniform = std::atoi(v.c_str()) != 0; });
+  const int exitCode = options.Parse(argc, argv);
+  if (exitCode >= 0)
   {
-    const std::string key = argv[i];
-    if (key == "--tolerances")
-    {
-      tolerances = splineviz_benchmark::Split(argv[i + 1]);
-    }
-    else if (key == "--scans")
-    {
-      scans = splineviz_benchmark::Split(argv[i + 1]);
-    }
-    else if (key == "--uniform")
-    {
-      uniform = std::atoi(argv[i + 1]) != 0;
-    }
-    else
-    {
-      std::fprintf(stderr, "unknown option %s\n%s", argv[i], Usage);
-      return 1;
-    }
+    return exitCode;
   }
   std::printf("vtkSMPTools backend %s, %d threads\n", vtkSMPTools::GetBackend(),
     vtkSMPTools::GetEstimatedNumberOfThreads());

@@ -352,51 +352,27 @@ vtkSmartPointer<vtkDataObject> FitScan(
 // Scene set-up shared by every method.
 void ConfigureProperty(vtkVolumeProperty* property, const Volume& v, bool shade)
 {
-  vtkNew<vtkColorTransferFunction> ctf;
-  vtkNew<vtkPiecewiseFunction> otf;
-  const double a = v.Range[0], b = v.Range[1], w = b - a;
+  const double a = v.Range[0], b = v.Range[1];
   if (v.DataRange[1] > v.DataRange[0])
   {
     // A scan: the background (below 8 % of the range) clear, tissue from
     // a haze to opaque.
-    ctf->AddRGBPoint(a, 0.05, 0.15, 0.9);
-    ctf->AddRGBPoint(a + 0.25 * w, 0.1, 0.8, 0.9);
-    ctf->AddRGBPoint(a + 0.5 * w, 0.95, 0.9, 0.2);
-    ctf->AddRGBPoint(b, 0.9, 0.1, 0.05);
-    otf->AddPoint(a, 0.0);
-    otf->AddPoint(a + 0.08 * w, 0.0);
-    otf->AddPoint(a + 0.25 * w, 0.1);
-    otf->AddPoint(a + 0.5 * w, 0.6);
-    otf->AddPoint(b, 0.9);
+    lrvolume::SetTransferFunctions(property, a, b, 0.25, 0.5,
+      { { 0.0, 0.0 }, { 0.08, 0.0 }, { 0.25, 0.1 }, { 0.5, 0.6 }, { 1.0, 0.9 } });
   }
   else if (v.Foci.empty())
   {
     // The transfer functions of the volume tests (TestLRSplineVolumeReference).
-    ctf->AddRGBPoint(a, 0.05, 0.15, 0.9);
-    ctf->AddRGBPoint(a + 0.35 * w, 0.1, 0.8, 0.9);
-    ctf->AddRGBPoint(a + 0.65 * w, 0.95, 0.9, 0.2);
-    ctf->AddRGBPoint(b, 0.9, 0.1, 0.05);
-    otf->AddPoint(a, 0.0);
-    otf->AddPoint(a + 0.3 * w, 0.05);
-    otf->AddPoint(a + 0.6 * w, 0.5);
-    otf->AddPoint(b, 0.9);
+    lrvolume::SetTransferFunctions(property, a, b);
   }
   else
   {
     // The generated volumes: the swirl (|v| < 0.4 of the largest value) a
     // faint haze, the cores at the foci (the detail the refinement is for)
     // opaque shells.
-    ctf->AddRGBPoint(a, 0.05, 0.15, 0.9);
-    ctf->AddRGBPoint(a + 0.4 * w, 0.1, 0.8, 0.9);
-    ctf->AddRGBPoint(a + 0.55 * w, 0.95, 0.9, 0.2);
-    ctf->AddRGBPoint(b, 0.9, 0.1, 0.05);
-    otf->AddPoint(a, 0.0);
-    otf->AddPoint(a + 0.4 * w, 0.005);
-    otf->AddPoint(a + 0.5 * w, 0.5);
-    otf->AddPoint(b, 0.95);
+    lrvolume::SetTransferFunctions(
+      property, a, b, 0.4, 0.55, { { 0.0, 0.0 }, { 0.4, 0.005 }, { 0.5, 0.5 }, { 1.0, 0.95 } });
   }
-  property->SetColor(ctf);
-  property->SetScalarOpacity(otf);
   property->SetScalarOpacityUnitDistance(v.Unit);
   property->SetInterpolationTypeToLinear();
   property->SetShade(shade ? 1 : 0);
@@ -1475,8 +1451,8 @@ void RunVolume(Volume& v, const Options& o, bool profile, Findings& found)
 
 void PrintTargets(const std::vector<Findings>& all, const Options& o)
 {
-  std::printf("\n== Targets; times at %s, wall clock (CPU time in brackets)\n",
-    o.Sizes.front().c_str());
+  std::printf(
+    "\n== Targets; times at %s, wall clock (CPU time in brackets)\n", o.Sizes.front().c_str());
   // 1. The strongly refined volume at equal image error.
   for (const Findings& f : all)
   {

@@ -122,6 +122,22 @@ struct Built
 };
 using Factory = std::function<Built(vtkPolyData*, vtkRenderer*)>;
 
+/// The spline tubes drawn by a tube mapper (vtkRayCastTubeMapper, vtkTessellatedTubeMapper).
+template <typename Mapper>
+Built Tubes(vtkPolyData* data)
+{
+  auto mapper = vtkSmartPointer<Mapper>::New();
+  mapper->SetInputData(data);
+  mapper->SetRadiusArray("Radius");
+  mapper->SetScalarRange(0.0, 1.0);
+  Built b;
+  b.Actors.push_back(vtkSmartPointer<vtkActor>::New());
+  b.Actors[0]->SetMapper(mapper);
+  b.GPUBytes = [mapper]() { return static_cast<double>(mapper->GetGPUMemorySize()); };
+  b.Update = [] {};
+  return b;
+}
+
 std::map<std::string, Factory> Renderers()
 {
   std::map<std::string, Factory> r;
@@ -226,32 +242,9 @@ std::map<std::string, Factory> Renderers()
     b.Update = [] {};
     return b;
   };
-  r["raycast"] = [](vtkPolyData* data, vtkRenderer*)
-  {
-    auto mapper = vtkSmartPointer<vtkRayCastTubeMapper>::New();
-    mapper->SetInputData(data);
-    mapper->SetRadiusArray("Radius");
-    mapper->SetScalarRange(0.0, 1.0);
-    Built b;
-    b.Actors.push_back(vtkSmartPointer<vtkActor>::New());
-    b.Actors[0]->SetMapper(mapper);
-    b.GPUBytes = [mapper]() { return static_cast<double>(mapper->GetGPUMemorySize()); };
-    b.Update = [] {};
-    return b;
-  };
+  r["raycast"] = [](vtkPolyData* data, vtkRenderer*) { return Tubes<vtkRayCastTubeMapper>(data); };
   r["tessellated"] = [](vtkPolyData* data, vtkRenderer*)
-  {
-    auto mapper = vtkSmartPointer<vtkTessellatedTubeMapper>::New();
-    mapper->SetInputData(data);
-    mapper->SetRadiusArray("Radius");
-    mapper->SetScalarRange(0.0, 1.0);
-    Built b;
-    b.Actors.push_back(vtkSmartPointer<vtkActor>::New());
-    b.Actors[0]->SetMapper(mapper);
-    b.GPUBytes = [mapper]() { return static_cast<double>(mapper->GetGPUMemorySize()); };
-    b.Update = [] {};
-    return b;
-  };
+  { return Tubes<vtkTessellatedTubeMapper>(data); };
   return r;
 }
 
@@ -398,14 +391,6 @@ const char* const Usage =
 
 int main(int argc, char* argv[])
 {
-  if (splineviz_benchmark::HelpRequested(argc, argv, Usage))
-  {
-    return 0;
-  }
-  if (splineviz_benchmark::MissingOptionValue(argc, argv, Usage))
-  {
-    return 2;
-  }
   vtkSMPTools::SetBackend("STDThread");
   std::vector<std::string> datasets = { "torus", "stoll", "fibers2" };
   std::vector<std::string> sizes = { "800x600", "1200x768" };
@@ -414,41 +399,27 @@ int main(int argc, char* argv[])
   int frames = 36;
   double seconds = 20.0;
   int dynamicFrames = 10;
-  for (int i = 1; i + 1 < argc; i += 2)
+  splineviz_benchmark::Options options(Usage);
+  options.List("--data", datasets)
+    .Sizes("--size", sizes)
+    .List("--renderers", renderers)
+    .Int("--frames", frames)
+    .Double("--seconds", seconds)
+    .Int("--dynamic-frames", dynamicFrames);
+  const int exitCode = options.Parse(argc, argv);
+  if (exitCode >= 0)
   {
-    const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--data")
-      datasets = Split(value);
-    else if (key == "--size")
-      sizes = Split(value);
-    else if (key == "--renderers")
-      renderers = Split(value);
-    else if (key == "--frames")
-      frames = std::atoi(value.c_str());
-    else if (key == "--seconds")
-      seconds = std::atof(value.c_str());
-    else if (key == "--dynamic-frames")
-      dynamicFrames = std::atoi(value.c_str());
-    else
-    {
-      std::fprintf(stderr, "unknown option %s\n%s", key.c_str(), Usage);
-      return 2;
-    }
+    return exitCode;
   }
   const auto factories = Renderers();
-  std::vector<std::string> known;
-  for (const auto& f : factories)
-  {
-    known.push_back(f.first);
-  }
   if (frames < 5 || seconds <= 0.0 || dynamicFrames < 0)
   {
     std::fprintf(stderr, "--frames must be at least 5, --seconds positive\n%s", Usage);
     return 2;
   }
-  if (!splineviz_benchmark::AllKnown(renderers, known, "renderer") ||
-    !splineviz_benchmark::AllKnown(datasets, { "torus", "stoll", "fibers2", "long" }, "data set") ||
-    !splineviz_benchmark::ValidSizes(sizes, Usage))
+  if (!splineviz_benchmark::AllKnown(
+        renderers, splineviz_benchmark::Names(factories), "renderer") ||
+    !splineviz_benchmark::AllKnown(datasets, { "torus", "stoll", "fibers2", "long" }, "data set"))
   {
     return 2;
   }

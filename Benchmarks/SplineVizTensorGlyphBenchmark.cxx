@@ -147,42 +147,31 @@ struct Built
 
 using Factory = std::function<Built(vtkImageData*)>;
 
+/// The superquadric glyphs, with or without occlusion culling (without: one
+/// pass, as before culling existed).
+Built Superquadrics(vtkImageData* data, bool culling)
+{
+  auto mapper = vtkSmartPointer<vtkSuperquadricGlyphMapper>::New();
+  mapper->SetInputData(data);
+  mapper->SetScaleFactor(GlyphScale);
+  mapper->SetGamma(3.0);
+  mapper->SetCulling(culling);
+  Built b;
+  b.Actor = vtkSmartPointer<vtkActor>::New();
+  b.Actor->SetMapper(mapper);
+  b.GPUBytes = [mapper]()
+  { return static_cast<double>(mapper->GetGPUBytesPerGlyph()) * mapper->GetNumberOfGlyphs(); };
+  b.SetGamma = [mapper](double g) { mapper->SetGamma(g); };
+  b.Uploads = [mapper]() { return mapper->GetUploadCount(); };
+  b.Note = culling ? "" : "culling off";
+  return b;
+}
+
 std::map<std::string, Factory> Renderers()
 {
   std::map<std::string, Factory> r;
-  r["superquadric"] = [](vtkImageData* data)
-  {
-    auto mapper = vtkSmartPointer<vtkSuperquadricGlyphMapper>::New();
-    mapper->SetInputData(data);
-    mapper->SetScaleFactor(GlyphScale);
-    mapper->SetGamma(3.0);
-    Built b;
-    b.Actor = vtkSmartPointer<vtkActor>::New();
-    b.Actor->SetMapper(mapper);
-    b.GPUBytes = [mapper]()
-    { return static_cast<double>(mapper->GetGPUBytesPerGlyph()) * mapper->GetNumberOfGlyphs(); };
-    b.SetGamma = [mapper](double g) { mapper->SetGamma(g); };
-    b.Uploads = [mapper]() { return mapper->GetUploadCount(); };
-    return b;
-  };
-  // the same without occlusion culling (one pass, as before culling existed)
-  r["superquadric-noculling"] = [](vtkImageData* data)
-  {
-    auto mapper = vtkSmartPointer<vtkSuperquadricGlyphMapper>::New();
-    mapper->SetInputData(data);
-    mapper->SetScaleFactor(GlyphScale);
-    mapper->SetGamma(3.0);
-    mapper->CullingOff();
-    Built b;
-    b.Actor = vtkSmartPointer<vtkActor>::New();
-    b.Actor->SetMapper(mapper);
-    b.GPUBytes = [mapper]()
-    { return static_cast<double>(mapper->GetGPUBytesPerGlyph()) * mapper->GetNumberOfGlyphs(); };
-    b.SetGamma = [mapper](double g) { mapper->SetGamma(g); };
-    b.Uploads = [mapper]() { return mapper->GetUploadCount(); };
-    b.Note = "culling off";
-    return b;
-  };
+  r["superquadric"] = [](vtkImageData* data) { return Superquadrics(data, true); };
+  r["superquadric-noculling"] = [](vtkImageData* data) { return Superquadrics(data, false); };
   r["tensorglyph"] = [](vtkImageData* data)
   {
     auto source = MakeSource(0.3);
@@ -411,14 +400,6 @@ const char* const Usage =
 
 int main(int argc, char* argv[])
 {
-  if (splineviz_benchmark::HelpRequested(argc, argv, Usage))
-  {
-    return 0;
-  }
-  if (splineviz_benchmark::MissingOptionValue(argc, argv, Usage))
-  {
-    return 2;
-  }
   std::vector<std::string> counts = { "100k", "1m" };
   std::vector<std::string> sizes = { "800x600", "1200x768" };
   std::vector<std::string> renderers = { "superquadric", "superquadric-noculling", "tensorglyph",
@@ -426,36 +407,22 @@ int main(int argc, char* argv[])
   int frames = 24;
   double seconds = 20.0;
   double memoryGB = 16.0;
-  for (int i = 1; i + 1 < argc; i += 2)
+  splineviz_benchmark::Options options(Usage);
+  options.List("--glyphs", counts)
+    .Sizes("--size", sizes)
+    .List("--renderers", renderers)
+    .Int("--frames", frames, 3)
+    .Double("--seconds", seconds)
+    .Double("--memory", memoryGB);
+  const int exitCode = options.Parse(argc, argv);
+  if (exitCode >= 0)
   {
-    const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--glyphs")
-      counts = Split(value);
-    else if (key == "--size")
-      sizes = Split(value);
-    else if (key == "--renderers")
-      renderers = Split(value);
-    else if (key == "--frames")
-      frames = std::max(3, std::atoi(value.c_str()));
-    else if (key == "--seconds")
-      seconds = std::atof(value.c_str());
-    else if (key == "--memory")
-      memoryGB = std::atof(value.c_str());
-    else
-    {
-      std::fprintf(stderr, "unknown option %s\n", key.c_str());
-      return 2;
-    }
+    return exitCode;
   }
   const auto factories = Renderers();
-  std::vector<std::string> known;
-  for (const auto& factory : factories)
-  {
-    known.push_back(factory.first);
-  }
-  if (!splineviz_benchmark::AllKnown(renderers, known, "renderer") ||
-    !splineviz_benchmark::AllKnown(counts, { "10k", "100k", "1m" }, "glyph count") ||
-    !splineviz_benchmark::ValidSizes(sizes, Usage))
+  if (!splineviz_benchmark::AllKnown(
+        renderers, splineviz_benchmark::Names(factories), "renderer") ||
+    !splineviz_benchmark::AllKnown(counts, { "10k", "100k", "1m" }, "glyph count"))
   {
     return 2;
   }

@@ -302,14 +302,6 @@ const char* const Usage =
 
 int main(int argc, char* argv[])
 {
-  if (splineviz_benchmark::HelpRequested(argc, argv, Usage))
-  {
-    return 0;
-  }
-  if (splineviz_benchmark::MissingOptionValue(argc, argv, Usage))
-  {
-    return 2;
-  }
   // Both cores for the CPU work (VTK's default SMP backend is sequential).
   vtkSMPTools::SetBackend("STDThread");
   std::vector<std::string> datasets = { "fibers2" };
@@ -322,34 +314,21 @@ int main(int argc, char* argv[])
   std::string snapshots;
   bool trace = false;
   bool steadyAllocator = true;
-  for (int i = 1; i + 1 < argc; i += 2)
+  splineviz_benchmark::Options options(Usage);
+  options.List("--data", datasets)
+    .Sizes("--size", sizes)
+    .List("--renderers", renderers)
+    .Int("--frames", frames, 5)
+    .Double("--seconds", seconds)
+    .Add("--distance", [&](const std::string& v) { close = v == "close"; })
+    .Add("--trace", [&](const std::string& v) { trace = v != "0"; })
+    .Add("--allocator", [&](const std::string& v) { steadyAllocator = v != "default"; })
+    .Int("--samples", samples, 0)
+    .Text("--snapshots", snapshots);
+  const int exitCode = options.Parse(argc, argv);
+  if (exitCode >= 0)
   {
-    const std::string key = argv[i], value = argv[i + 1];
-    if (key == "--data")
-      datasets = Split(value);
-    else if (key == "--size")
-      sizes = Split(value);
-    else if (key == "--renderers")
-      renderers = Split(value);
-    else if (key == "--frames")
-      frames = std::max(5, std::atoi(value.c_str()));
-    else if (key == "--seconds")
-      seconds = std::atof(value.c_str());
-    else if (key == "--distance")
-      close = (value == "close");
-    else if (key == "--trace")
-      trace = value != "0";
-    else if (key == "--allocator")
-      steadyAllocator = value != "default";
-    else if (key == "--samples")
-      samples = std::max(0, std::atoi(value.c_str()));
-    else if (key == "--snapshots")
-      snapshots = value;
-    else
-    {
-      std::fprintf(stderr, "unknown option %s\n", key.c_str());
-      return 2;
-    }
+    return exitCode;
   }
   // The same allocator for every renderer (see SteadyAllocator()).
   const bool steady = steadyAllocator && splineviz_benchmark::SteadyAllocator();
@@ -357,15 +336,10 @@ int main(int argc, char* argv[])
     steady ? "steady (freed heap memory stays in the process; --allocator default: glibc's)"
            : "the C library's default");
   const auto factories = Renderers();
-  std::vector<std::string> known;
-  for (const auto& factory : factories)
-  {
-    known.push_back(factory.first);
-  }
-  if (!splineviz_benchmark::AllKnown(renderers, known, "renderer") ||
+  if (!splineviz_benchmark::AllKnown(
+        renderers, splineviz_benchmark::Names(factories), "renderer") ||
     !splineviz_benchmark::AllKnown(
-      datasets, { "fibers", "fibers2", "million", "long" }, "data set") ||
-    !splineviz_benchmark::ValidSizes(sizes, Usage))
+      datasets, { "fibers", "fibers2", "million", "long" }, "data set"))
   {
     return 2;
   }

@@ -72,19 +72,7 @@ struct Scene
 
 void Configure(vtkVolumeProperty* property, const Scene& s)
 {
-  vtkNew<vtkColorTransferFunction> ctf;
-  const double a = s.Range[0], b = s.Range[1], w = b - a;
-  ctf->AddRGBPoint(a, 0.05, 0.15, 0.9);
-  ctf->AddRGBPoint(a + 0.35 * w, 0.1, 0.8, 0.9);
-  ctf->AddRGBPoint(a + 0.65 * w, 0.95, 0.9, 0.2);
-  ctf->AddRGBPoint(b, 0.9, 0.1, 0.05);
-  vtkNew<vtkPiecewiseFunction> otf;
-  otf->AddPoint(a, 0.0);
-  otf->AddPoint(a + 0.3 * w, 0.05);
-  otf->AddPoint(a + 0.6 * w, 0.5);
-  otf->AddPoint(b, 0.9);
-  property->SetColor(ctf);
-  property->SetScalarOpacity(otf);
+  lrvolume::SetTransferFunctions(property, s.Range[0], s.Range[1]);
   property->SetScalarOpacityUnitDistance(s.Unit);
   property->SetShade(s.Shade ? 1 : 0);
   property->SetAmbient(0.25);

@@ -686,6 +686,31 @@ inline vtkSmartPointer<vtkMultiBlockDataSet> RefinedScalarVolume(
   return reader->GetOutput();
 }
 
+/// The volume tests' transfer functions over the scalar range [a, b]: blue,
+/// cyan, yellow and red, the middle two at the fractions `cyan` and `yellow`
+/// of the range, and the opacity linear between `opacity`'s (fraction,
+/// opacity) points (fraction 0 is a, 1 is b).
+inline void SetTransferFunctions(vtkVolumeProperty* property, double a, double b,
+  double cyan = 0.35, double yellow = 0.65,
+  const std::vector<std::array<double, 2>>& opacity = {
+    { 0.0, 0.0 }, { 0.3, 0.05 }, { 0.6, 0.5 }, { 1.0, 0.9 } })
+{
+  const double w = b - a;
+  auto at = [a, b, w](double fraction) { return fraction == 1.0 ? b : a + fraction * w; };
+  vtkNew<vtkColorTransferFunction> ctf;
+  ctf->AddRGBPoint(a, 0.05, 0.15, 0.9);
+  ctf->AddRGBPoint(at(cyan), 0.1, 0.8, 0.9);
+  ctf->AddRGBPoint(at(yellow), 0.95, 0.9, 0.2);
+  ctf->AddRGBPoint(b, 0.9, 0.1, 0.05);
+  vtkNew<vtkPiecewiseFunction> otf;
+  for (const auto& point : opacity)
+  {
+    otf->AddPoint(at(point[0]), point[1]);
+  }
+  property->SetColor(ctf);
+  property->SetScalarOpacity(otf);
+}
+
 /// A window of width x height (no multisampling) whose renderer, of the given
 /// background, shows `mapper` with `property` as Volume.
 struct Scene
