@@ -19,7 +19,6 @@ controls: the colors of the polyline's chords, of
 tangents a twentieth of a period further along, or with the channels
 permuted, fail the same bound.
 """
-import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
@@ -33,13 +32,12 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory)
 import splineviz
 from splineviz_testing import output_dir
 
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(condition, message):
-    print(("ok: " if condition else "ERROR: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker.check
 
 
 A, K, TILT = 0.35, 2.0 * np.pi / 1.5, np.radians(35.0)
@@ -179,5 +177,4 @@ for name, cls in renderers.items():
               "%s: control (%s) fails the bound: 99th percentile %.1f/255"
               % (name, what, np.percentile(control, 99)))
 
-if failures:
-    sys.exit(1)
+checker.finish()

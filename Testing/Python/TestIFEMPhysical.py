@@ -37,12 +37,12 @@ from vtkmodules.vtkCommonDataModel import vtkPolyData  # noqa: E402
 
 OUT = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
 RNG = np.random.default_rng(27)
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def fail(msg):
-    print("ERROR: " + msg)
-    failures.append(msg)
+fail = checker.fail
 
 
 def probe(reader, X, name):
@@ -195,6 +195,5 @@ if result:
     if not err > 1e-2:
         fail("the negative control did not fail")
 
-if failures:
-    sys.exit(1)
+checker.finish()
 print("TestIFEMPhysical passed")

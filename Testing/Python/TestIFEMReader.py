@@ -37,14 +37,14 @@ DATA = os.path.join(SOURCE, "Testing", "Data", "External")
 OUT = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
 TOL = 1e-12
 RNG = np.random.default_rng(27)
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 worst = {"geometry": 0.0, "field": 0.0}
 counts = {"geometry": 0, "field": 0}
 
 
-def fail(msg):
-    print("ERROR: " + msg)
-    failures.append(msg)
+fail = checker.fail
 
 
 def text_of(dataset):
@@ -415,9 +415,7 @@ def main():
                               counts["field"], TOL))
     if counts["geometry"] < 1000 or counts["field"] < 5000:
         fail("too few comparisons: the test would not detect much")
-    if failures:
-        print("ERROR: %d checks failed" % len(failures))
-        sys.exit(1)
+    checker.finish()
 
 
 if __name__ == "__main__":

@@ -15,7 +15,9 @@ from splineviz import vtkIFEMReader  # noqa: E402
 from splineviz_testing import Observed, output_dir  # noqa: E402
 
 OUT = output_dir()
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 G2 = """700 1 0 0
 3 0
@@ -44,9 +46,7 @@ LR_SURFACE = """# LRSPLINE SURFACE
 """
 
 
-def fail(msg):
-    print("ERROR: " + msg)
-    failures.append(msg)
+fail = checker.fail
 
 
 def chars(text):
@@ -190,6 +190,4 @@ if not seen.warnings:
     fail("a NaN field value is not warned about")
 print("NaN field value: read, %d warning(s)" % len(seen.warnings))
 
-if failures:
-    print("ERROR: %d checks failed" % len(failures))
-    sys.exit(1)
+checker.finish()

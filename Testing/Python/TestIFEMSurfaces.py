@@ -54,12 +54,12 @@ DATA = os.path.join(SOURCE, "Testing", "Data", "External")
 OUT = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
 RNG = np.random.default_rng(2027)
 TOL = 1e-10
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def fail(msg):
-    print("ERROR: " + msg)
-    failures.append(msg)
+fail = checker.fail
 
 
 def ifem_path(name):
@@ -444,6 +444,5 @@ t.SetSourceData(points([[0.5, 0.5, 0]]))
 t.SetArrayName("q")
 expect_error("NaN control point (tracer)", t, ["non-finite"])
 
-if failures:
-    sys.exit(1)
+checker.finish()
 print("TestIFEMSurfaces passed")

@@ -39,13 +39,12 @@ from vtkmodules.vtkIOImage import vtkNIFTIImageReader
 import splineviz
 from splineviz_testing import Observed
 
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
+check = checker.check
 
 
 def fit(name, tolerance, levels=10):
@@ -147,6 +146,4 @@ def run(name, tolerance):
 
 run("aniso_vox.nii.gz", 0.02)
 run("S0_10slices.nii.gz", 0.05)
-if failures:
-    print("ERROR: %d checks failed" % len(failures))
-    sys.exit(1)
+checker.finish()

@@ -17,7 +17,6 @@ Two tiny anchor lines far outside the view are in both polydata, so that the
 mappers place the uploaded coordinates around the same centre (float rounding
 is then the same on both sides).
 """
-import sys
 import time
 
 import numpy as np
@@ -32,13 +31,12 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory)
 import splineviz
 from splineviz_testing import Observed, output_dir
 
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(condition, message):
-    print(("ok: " if condition else "ERROR: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker.check
 
 
 def make_tractogram():
@@ -216,5 +214,4 @@ for name, cls in renderers.items():
     check(differing(missing, everything) == 0, "%s: ... and all lines are drawn" % name)
     del win
 
-if failures:
-    sys.exit(1)
+checker.finish()

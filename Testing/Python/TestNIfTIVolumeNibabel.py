@@ -35,14 +35,13 @@ import splineviz
 from splineviz_testing import output_dir
 
 out = output_dir()
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 rng = np.random.default_rng(29)
 
 
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
+check = checker.check
 
 
 class Errors:
@@ -242,7 +241,5 @@ position, once, err = compare(part, flipped, volume, "sub-extent")
 check(part.GetNumberOfPoints() == 5 * 3 * 3 and position < 1e-4 and err == 0.0,
       "a sub-extent: nibabel's values at its points")
 
-if failures:
-    print("ERROR: %d check(s) failed:\n  " % len(failures) + "\n  ".join(failures))
-    sys.exit(1)
+checker.finish()
 print("vtkNIfTIVolumeReader agrees with nibabel")

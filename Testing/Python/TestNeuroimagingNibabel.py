@@ -47,13 +47,12 @@ import splineviz
 
 out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
 os.makedirs(out, exist_ok=True)
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
+check = checker.check
 
 
 class Errors:
@@ -398,7 +397,5 @@ check(image.GetNumberOfPoints() == 0 and "6 (symmetric) or 9" in reader.GetLastE
       "5 components: a clear error, an empty output")
 print("error message:", reader.GetLastErrorMessage())
 
-if failures:
-    print("ERROR: %d check(s) failed:\n  " % len(failures) + "\n  ".join(failures))
-    sys.exit(1)
+checker.finish()
 print("neuroimaging IO agrees with nibabel")

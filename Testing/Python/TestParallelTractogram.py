@@ -41,13 +41,12 @@ if sys.argv[1] == "make":
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
 
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
+check = checker.check
 
 
 def read(path):
@@ -101,7 +100,5 @@ wrong = int((abs(a - b).max(axis=1) > 24).sum())
 check(wrong > 10 * (int((a.min(axis=1) < 250).sum()) // 1000),
       "negative control: the random half's image differs from all streamlines' (%d pixels)" % wrong)
 
-if failures:
-    print("ERROR: %d check(s) failed" % len(failures))
-    sys.exit(1)
+checker.finish()
 print("parallel tractogram reading OK")

@@ -36,13 +36,12 @@ from splineviz_testing import output_dir, png_rgb, white_view
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 source_dir = os.environ["SPLINEVIZ_SOURCE_DIR"]
 out = output_dir()
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(ok, what):
-    print(("ok    " if ok else "ERROR: ") + what)
-    if not ok:
-        failures.append(what)
+check = checker.check
 
 
 def write_cb2_tck():
@@ -176,7 +175,5 @@ tracer.TensorLayout = "XX XY YY XZ YZ ZZ (NIfTI, DIPY)"
 tracer.UpdatePipeline()
 examine("tensor-lines", tracer)
 
-if failures:
-    print("ERROR: %d checks failed" % len(failures))
-    sys.exit(1)
+checker.finish()
 print("all checks passed")

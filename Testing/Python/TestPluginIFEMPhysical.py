@@ -27,12 +27,12 @@ from splineviz_testing import output_dir, white_view  # noqa: E402
 
 plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())  # noqa: F405
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def fail(msg):
-    print("ERROR: " + msg)
-    failures.append(msg)
+fail = checker.fail
 
 
 path = os.path.join(output_dir(), "TestPluginIFEMPhysical.hdf5")
@@ -130,6 +130,5 @@ print("LR-Spline Volume: %.3f of the view reddish (u > 0), %.3f bluish (u < 0) (
 if red < 0.02 or blue < 0.02:
     fail("the volume is not drawn with both signs of u")
 
-if failures:
-    sys.exit(1)
+checker.finish()
 print("TestPluginIFEMPhysical passed")

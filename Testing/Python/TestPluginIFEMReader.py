@@ -28,12 +28,12 @@ LoadPlugin(plugin, remote=False, ns=globals())
 
 data = os.path.join(os.environ["SPLINEVIZ_SOURCE_DIR"], "Testing", "Data", "External", "ifem")
 out_dir = output_dir()
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def fail(msg):
-    print("ERROR: " + msg)
-    failures.append(msg)
+fail = checker.fail
 
 
 def leaves(obj):
@@ -194,6 +194,4 @@ picture(square, "u", "Square-LR-u")
 shell = IFEMHDF5Results(FileName=os.path.join(data, "ScordelisPoint-NURBS.hdf5"))  # noqa: F405
 picture(shell, "displacement_z", "Scordelis-shell")
 
-if failures:
-    print("ERROR: %d checks failed" % len(failures))
-    sys.exit(1)
+checker.finish()

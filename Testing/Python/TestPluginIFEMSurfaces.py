@@ -28,12 +28,12 @@ LoadPlugin(plugin, remote=False, ns=globals())  # noqa: F405
 SOURCE = os.environ.get("SPLINEVIZ_SOURCE_DIR",
                         os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 path = os.path.join(SOURCE, "Testing", "Data", "External", "ifem", "Cyl2D-VMSFSI-weak.hdf5")
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def fail(msg):
-    print("ERROR: " + msg)
-    failures.append(msg)
+fail = checker.fail
 
 
 reader = OpenDataFile(path)  # noqa: F405
@@ -130,6 +130,5 @@ print("picture: %.3f dark (streamlines), %.3f red (fast, beside the cylinder), %
 if dark < 0.01 or red < 0.01 or blue < 0.002 or drawn < 0.9:
     fail("the picture does not show the streamlines over the coloured flow")
 
-if failures:
-    sys.exit(1)
+checker.finish()
 print("TestPluginIFEMSurfaces passed")

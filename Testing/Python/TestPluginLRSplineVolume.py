@@ -62,12 +62,12 @@ SIZE = [256, 200]
 TOLERANCE = 1.0  # RMS, 0-255 scale
 TAG = "TestPluginLRSplineVolume" + ("-2ranks" if PARALLEL else "")
 SPHERE = dict(Center=[0.5, 0.45, 0.5], Radius=0.38, ThetaResolution=48, PhiResolution=48)
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def fail(message):
-    print("ERROR: " + message)
-    failures.append(message)
+fail = checker.fail
 
 
 def rms(a, b):
@@ -543,6 +543,5 @@ if PARALLEL:
         fail("the parallel test runs on %d rank(s)" % ranks)
 else:
     serial_checks()
-if failures:
-    sys.exit(1)
+checker.finish()
 print("all checks passed")

@@ -21,12 +21,12 @@ plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())
 path = os.path.join(os.environ["SPLINEVIZ_SOURCE_DIR"], "Testing", "Data", "External",
                     "cube-3patch-refined.lr")
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def fail(msg):
-    print("ERROR: " + msg)
-    failures.append(msg)
+fail = checker.fail
 
 
 def picture(view, name):
@@ -88,6 +88,4 @@ png3, grey = picture(view, "grey")
 if coloured("grey color map (negative control)", grey):
     fail("the colour check takes a grey picture for a coloured one")
 
-if failures:
-    print("ERROR: %d checks failed" % len(failures))
-    sys.exit(1)
+checker.finish()

@@ -24,13 +24,12 @@ from splineviz_testing import output_dir, png_rgb, white_view
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 out = output_dir()
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(ok, what):
-    print(("ok    " if ok else "ERROR: ") + what)
-    if not ok:
-        failures.append(what)
+check = checker.check
 
 
 fibers = SyntheticFibers(Preset=1)
@@ -132,5 +131,4 @@ whole = int(np.count_nonzero(np.any(png_rgb(png_whole) != 255, axis=2)))
 slab = int(np.count_nonzero(np.any(png_rgb(png_slab) != 255, axis=2)))
 check(0 < slab < 0.5 * whole, "Slab Thickness 0.1: %d of %d pixels drawn" % (slab, whole))
 
-if failures:
-    sys.exit(1)
+checker.finish()

@@ -43,13 +43,12 @@ from splineviz_testing import coverage, output_dir, white_view
 
 out = output_dir()
 source = os.environ["SPLINEVIZ_SOURCE_DIR"]
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
+check = checker.check
 
 
 def write(name, data):
@@ -180,7 +179,5 @@ finally:
             server.kill()
         log.close()
 
-if failures:
-    print("ERROR: %d check(s) failed:\n  " % len(failures) + "\n  ".join(failures))
-    sys.exit(1)
+checker.finish()
 print("ParaView survives every damaged file")

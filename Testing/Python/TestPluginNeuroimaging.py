@@ -39,13 +39,12 @@ from splineviz_testing import coverage, output_dir, white_view
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 out = output_dir()
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
+check = checker.check
 
 
 # DIPY's fit of a real scan, saved by nibabel.
@@ -236,7 +235,5 @@ print("subsets: every 3rd %d, random half %d of %d" % (every3, half, len(fibres)
 check(every3 == (len(fibres) + 2) // 3 and 0.3 * len(fibres) < half < 0.7 * len(fibres),
       "Tractogram Reader subsets: every 3rd streamline, a random half")
 
-if failures:
-    print("ERROR: %d check(s) failed:\n  " % len(failures) + "\n  ".join(failures))
-    sys.exit(1)
+checker.finish()
 print("neuroimaging IO in ParaView OK")

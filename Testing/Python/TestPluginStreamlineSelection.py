@@ -20,13 +20,12 @@ from vtkmodules.vtkCommonCore import vtkCommand
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
+check = checker.check
 
 
 source_dir = os.environ.get("SPLINEVIZ_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
@@ -191,9 +190,5 @@ check(any("radius <= 0" in m for m in errors.messages)
       and any("returned failure" in m for m in errors.messages) and out.GetNumberOfPoints() == 0,
       "radius 0: an error naming it, RequestData failed, an empty output")
 
-if failures:
-    print("%d FAILED:" % len(failures))
-    for what in failures:
-        print("  " + what)
-    sys.exit(1)
+checker.finish()
 print("all passed")

@@ -15,7 +15,6 @@ here with numpy). Checks:
 - negative control: at least 30 % of the whole drawing lies outside the slab;
 - a zero normal is an error and draws the whole lines.
 """
-import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
@@ -26,13 +25,12 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory)
 import splineviz
 from splineviz_testing import Observed, output_dir
 
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(condition, message):
-    print(("ok: " if condition else "ERROR: ") + message)
-    if not condition:
-        failures.append(message)
+check = checker.check
 
 
 W, H = 500, 400
@@ -112,5 +110,4 @@ for name, cls in (("raycast", splineviz.vtkRayCastTubeMapper),
     check(len(observed.errors) > 0 and (~np.isnan(zero)).sum() == drawn_whole.sum(),
           "%s: a zero normal is an error and draws the whole lines" % name)
 
-if failures:
-    sys.exit(1)
+checker.finish()

@@ -41,15 +41,14 @@ from vtkmodules.vtkCommonTransforms import vtkTransform
 
 import splineviz
 
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 rng = np.random.default_rng(2929)
 S = splineviz.vtkStreamlineSelection
 
 
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
+check = checker.check
 
 
 class Errors:
@@ -495,9 +494,5 @@ check(not errors.errors and any("No regions" in w for w in errors.warnings)
       and f.GetOutput().GetNumberOfLines() == len(streamlines),
       "no regions: every streamline, with a warning")
 
-if failures:
-    print("%d FAILED:" % len(failures))
-    for what in failures:
-        print("  " + what)
-    sys.exit(1)
+checker.finish()
 print("all passed")

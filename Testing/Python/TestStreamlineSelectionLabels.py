@@ -34,15 +34,14 @@ import splineviz
 from splineviz_testing import output_dir
 
 out_dir = output_dir()
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 rng = np.random.default_rng(4242)
 S = splineviz.vtkStreamlineSelection
 
 
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
+check = checker.check
 
 
 class Errors:
@@ -326,9 +325,5 @@ f.AddRegionLabel(0, 3)
 check(any("not a label-image region" in e for e in errors.errors),
       "AddRegionLabel on a sphere: an error")
 
-if failures:
-    print("%d FAILED:" % len(failures))
-    for what in failures:
-        print("  " + what)
-    sys.exit(1)
+checker.finish()
 print("all passed")

@@ -4,7 +4,6 @@ seeding) against DIPY's own FA at the seeds, the stopping contract, and a
 numpy-made circle field (T = a I + t t^T, t = (-y, x, 0)) whose lines must
 stay on their circles."""
 import os
-import sys
 
 import numpy as np
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
@@ -14,13 +13,12 @@ from vtkmodules.vtkIOXML import vtkXMLImageDataReader
 
 import splineviz
 
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 
 
-def check(ok, what):
-    if not ok:
-        failures.append(what)
-        print("ERROR: " + what)
+check = checker.check
 
 
 # Real data.
@@ -98,4 +96,4 @@ for line, seed in enumerate(cids):
     worst = max(worst, np.abs(np.hypot(p[:, 0], p[:, 1]) - r0).max())
 print("circle field: largest radius error %.2e" % worst)
 check(worst < 2e-3, "the lines stay on their circles")
-sys.exit(1 if failures else 0)
+checker.finish()

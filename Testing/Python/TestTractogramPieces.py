@@ -43,14 +43,13 @@ import splineviz
 from splineviz_testing import output_dir
 
 out = output_dir()
-failures = []
+from splineviz_testing import Checker  # noqa: E402
+
+checker = Checker()
 PIECES = (1, 2, 3, 7)
 
 
-def check(condition, what):
-    print(("ok   " if condition else "FAIL ") + what)
-    if not condition:
-        failures.append(what)
+check = checker.check
 
 
 class Errors:
@@ -427,7 +426,5 @@ check([p.ok for p in parts] == [1, 1, 0] and "piece 2 of 3: streamline 200 has N
 check_bad(".trk truncated", damaged("truncated.trk", open(trk, "rb").read()[:-5000]), 3,
           [2])
 
-if failures:
-    print("ERROR: %d check(s) failed" % len(failures))
-    sys.exit(1)
+checker.finish()
 print("all checks passed")

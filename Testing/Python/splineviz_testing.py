@@ -1,6 +1,38 @@
-"""Shared by the Python and plugin tests: the synthetic-fibers scene the
-plugin tests draw, and measures of how much of a rendered image is drawn."""
+"""Shared by the Python and plugin tests: the checks and their report
+(Checker), the synthetic-fibers scene the plugin tests draw, and measures of
+how much of a rendered image is drawn."""
 import os
+import sys
+
+
+class Checker:
+    """The checks of a test. check() prints one line per check, "ok: " or
+    "ERROR: " (what ctest's FAIL_REGULAR_EXPRESSION looks for) and what was
+    checked, and keeps the failures; finish() ends a failed test with their
+    list and exit status 1 (a passed test goes on)."""
+
+    def __init__(self):
+        self.failures = []
+
+    def check(self, condition, what):
+        """Report `what` as passed when `condition` is true, else as failed.
+        Returns the condition as a bool."""
+        condition = bool(condition)
+        print(("ok: " if condition else "ERROR: ") + what)
+        if not condition:
+            self.failures.append(what)
+        return condition
+
+    def fail(self, what):
+        """Report `what` as failed."""
+        self.check(False, what)
+
+    def finish(self):
+        """Exit with status 1 after listing the failures, if any."""
+        if self.failures:
+            print("ERROR: %d check(s) failed:\n  " % len(self.failures) + "\n  ".join(self.failures))
+            sys.stdout.flush()
+            sys.exit(1)
 
 
 class Observed:
