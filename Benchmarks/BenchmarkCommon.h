@@ -4,7 +4,8 @@
 // and comma-separated lists, wall and process CPU clocks, and the bytes
 // vtkOpenGLPolyDataMapper keeps on the GPU for a polygonal data set (the
 // VTK paths the SplineViz renderers are compared with), and the polyline data
-// sets more than one benchmark draws (LongCurves()).
+// sets more than one benchmark draws (LongCurves()), and the timing of
+// rendered frames (AddWarmRenderer(), RenderFrame(), FrameTimes).
 #ifndef BenchmarkCommon_h
 #define BenchmarkCommon_h
 
@@ -14,6 +15,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 
 #include <sys/resource.h>
@@ -273,6 +276,53 @@ inline long MinorFaults()
   getrusage(RUSAGE_SELF, &usage);
   return usage.ru_minflt;
 }
+
+/// Renders one frame of `window` and waits until the GPU has finished it.
+inline void RenderFrame(vtkRenderWindow* window)
+{
+  window->Render();
+  window->WaitForCompletion();
+}
+
+/// A renderer with the benchmarks' background added to `window`, whose
+/// context is warmed up by one frame (not part of any measured frame).
+inline vtkSmartPointer<vtkRenderer> AddWarmRenderer(vtkRenderWindow* window)
+{
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetBackground(0.1, 0.1, 0.12);
+  window->AddRenderer(renderer);
+  RenderFrame(window);
+  return renderer;
+}
+
+/// The wall and process CPU seconds of rendered frames.
+struct FrameTimes
+{
+  std::vector<double> Wall, CPU;
+
+  /// Renders one frame (RenderFrame()) and records its times.
+  void Render(vtkRenderWindow* window)
+  {
+    const double t0 = Now();
+    const double c0 = CPUTime();
+    RenderFrame(window);
+    this->Wall.push_back(Now() - t0);
+    this->CPU.push_back(CPUTime() - c0);
+  }
+  int Count() const { return static_cast<int>(this->Wall.size()); }
+  /// Sorts the times, for the medians and the best.
+  void Sort()
+  {
+    std::sort(this->Wall.begin(), this->Wall.end());
+    std::sort(this->CPU.begin(), this->CPU.end());
+  }
+  ///@{
+  /// After Sort() (at least one frame).
+  double MedianWall() const { return this->Wall[this->Wall.size() / 2]; }
+  double MedianCPU() const { return this->CPU[this->CPU.size() / 2]; }
+  double BestCPU() const { return this->CPU.front(); }
+  ///@}
+};
 
 /// What vtkOpenGLPolyDataMapper uploads for a polygonal data set: float
 /// positions and normals, RGBA colors when scalars are colored, 3 indices

@@ -273,11 +273,7 @@ Result Run(const Factory& factory, vtkPolyData* data, double extent, int width, 
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
   window->SetSize(width, height);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.1, 0.1, 0.12);
-  window->AddRenderer(renderer);
-  window->Render(); // the context, not part of the first frame
-  window->WaitForCompletion();
+  vtkSmartPointer<vtkRenderer> renderer = splineviz_benchmark::AddWarmRenderer(window);
 
   Result r;
   vtkCamera* camera = renderer->GetActiveCamera();

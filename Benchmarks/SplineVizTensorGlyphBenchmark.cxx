@@ -281,12 +281,7 @@ Result Run(const Factory& factory, vtkImageData* data, vtkRenderWindow* window, 
   double maxSeconds)
 {
   const int n = data->GetDimensions()[0];
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.1, 0.1, 0.12);
-  window->AddRenderer(renderer);
-  // Warm the context up (not part of the renderer's first frame).
-  window->Render();
-  window->WaitForCompletion();
+  vtkSmartPointer<vtkRenderer> renderer = splineviz_benchmark::AddWarmRenderer(window);
 
   Result r;
   const double start = Now();
@@ -300,33 +295,26 @@ Result Run(const Factory& factory, vtkImageData* data, vtkRenderWindow* window, 
   camera->SetViewUp(0, 0, 1);
   camera->SetViewAngle(30);
   camera->SetClippingRange(0.2 * n, 4.0 * n);
-  window->Render();
-  window->WaitForCompletion();
+  splineviz_benchmark::RenderFrame(window);
   r.FirstFrame = Now() - start;
   r.BytesPerGlyph = built.GPUBytes() / static_cast<double>(data->GetNumberOfPoints());
   r.Note = built.Note;
 
-  std::vector<double> times, cpuTimes;
+  splineviz_benchmark::FrameTimes times;
   const double orbitStart = Now();
   for (int i = 0; i < frames; ++i)
   {
     camera->Azimuth(360.0 / frames);
-    const double t0 = Now();
-    const double c0 = CPUTime();
-    window->Render();
-    window->WaitForCompletion();
-    times.push_back(Now() - t0);
-    cpuTimes.push_back(CPUTime() - c0);
-    if (Now() - orbitStart > maxSeconds && times.size() >= 3)
+    times.Render(window);
+    if (Now() - orbitStart > maxSeconds && times.Count() >= 3)
     {
       break;
     }
   }
-  std::sort(times.begin(), times.end());
-  std::sort(cpuTimes.begin(), cpuTimes.end());
-  r.Frames = static_cast<int>(times.size());
-  r.MedianFrame = times[times.size() / 2];
-  r.MedianFrameCPU = cpuTimes[cpuTimes.size() / 2];
+  times.Sort();
+  r.Frames = times.Count();
+  r.MedianFrame = times.MedianWall();
+  r.MedianFrameCPU = times.MedianCPU();
 
   // Gamma change to the next finished frame (median of 3 changes).
   std::vector<double> changes;

@@ -214,12 +214,7 @@ Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderW
   int frames, double maxSeconds, bool close, const std::string& snapshot, bool trace)
 {
   const vtkIdType segments = data->GetNumberOfPoints() - data->GetNumberOfLines();
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.1, 0.1, 0.12);
-  window->AddRenderer(renderer);
-  // Warm the context up (not part of the renderer's first frame).
-  window->Render();
-  window->WaitForCompletion();
+  vtkSmartPointer<vtkRenderer> renderer = splineviz_benchmark::AddWarmRenderer(window);
 
   Result r;
   const double start = Now();
@@ -235,8 +230,7 @@ Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderW
   camera->SetViewUp(0, 1, 0);
   camera->SetViewAngle(30);
   camera->SetClippingRange(nearPlane, farPlane);
-  window->Render();
-  window->WaitForCompletion();
+  splineviz_benchmark::RenderFrame(window);
   r.FirstFrame = Now() - start;
   r.BytesPerSegment = built.GPUBytes() / static_cast<double>(segments);
   if (trace && built.Summary)
@@ -254,36 +248,30 @@ Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderW
     writer->Write();
   }
 
-  std::vector<double> times;
-  std::vector<double> cpuTimes;
+  splineviz_benchmark::FrameTimes times;
   const double orbitStart = Now();
   for (int i = 0; i < frames; ++i)
   {
     camera->Azimuth(360.0 / frames);
     camera->SetClippingRange(nearPlane, farPlane);
-    const double t0 = Now();
-    const double c0 = CPUTime();
     const long f0 = splineviz_benchmark::MinorFaults();
-    window->Render();
-    window->WaitForCompletion();
-    times.push_back(Now() - t0);
-    cpuTimes.push_back(CPUTime() - c0);
+    times.Render(window);
     if (trace)
     {
       std::printf("    frame %3d: %7.1f ms, CPU %7.1f ms, %6ld minor page faults\n", i,
-        1000.0 * times.back(), 1000.0 * cpuTimes.back(), splineviz_benchmark::MinorFaults() - f0);
+        1000.0 * times.Wall.back(), 1000.0 * times.CPU.back(),
+        splineviz_benchmark::MinorFaults() - f0);
     }
-    if (Now() - orbitStart > maxSeconds && times.size() >= 5)
+    if (Now() - orbitStart > maxSeconds && times.Count() >= 5)
     {
       break;
     }
   }
-  std::sort(times.begin(), times.end());
-  std::sort(cpuTimes.begin(), cpuTimes.end());
-  r.Frames = static_cast<int>(times.size());
-  r.MedianFrame = times[times.size() / 2];
-  r.MedianFrameCPU = cpuTimes[cpuTimes.size() / 2];
-  r.BestFrameCPU = cpuTimes.front();
+  times.Sort();
+  r.Frames = times.Count();
+  r.MedianFrame = times.MedianWall();
+  r.MedianFrameCPU = times.MedianCPU();
+  r.BestFrameCPU = times.BestCPU();
   renderer->RemoveAllViewProps();
   window->RemoveRenderer(renderer);
   built.Actor->ReleaseGraphicsResources(window);
