@@ -9,6 +9,7 @@
 #ifndef BenchmarkCommon_h
 #define BenchmarkCommon_h
 
+#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
@@ -308,6 +309,36 @@ struct FrameTimes
     RenderFrame(window);
     this->Wall.push_back(Now() - t0);
     this->CPU.push_back(CPUTime() - c0);
+  }
+  /**
+   * An orbit: up to `frames` frames, the camera turned by 360 / frames
+   * degrees (Azimuth) before each, ended after `maxSeconds` once
+   * `minimumFrames` are done; `before(i)` and `after(i)` (if given) run
+   * around frame i. The times are sorted afterwards.
+   */
+  void Orbit(vtkRenderWindow* window, vtkCamera* camera, int frames, double maxSeconds,
+    int minimumFrames, const std::function<void(int)>& before = nullptr,
+    const std::function<void(int)>& after = nullptr)
+  {
+    const double start = Now();
+    for (int i = 0; i < frames; ++i)
+    {
+      camera->Azimuth(360.0 / frames);
+      if (before)
+      {
+        before(i);
+      }
+      this->Render(window);
+      if (after)
+      {
+        after(i);
+      }
+      if (Now() - start > maxSeconds && this->Count() >= minimumFrames)
+      {
+        break;
+      }
+    }
+    this->Sort();
   }
   int Count() const { return static_cast<int>(this->Wall.size()); }
   /// Sorts the times, for the medians and the best.

@@ -292,28 +292,15 @@ Result Run(const Factory& factory, vtkPolyData* data, double extent, int width, 
     renderer->AddActor(actor);
   }
   placeCamera();
-  window->Render();
-  window->WaitForCompletion();
+  splineviz_benchmark::RenderFrame(window);
   r.FirstFrame = Now() - start;
   r.BytesPerSegment = built.GPUBytes() / static_cast<double>(segments);
 
-  std::vector<double> times;
-  const double orbitStart = Now();
-  for (int i = 0; i < frames; ++i)
-  {
-    camera->Azimuth(360.0 / frames);
-    camera->SetClippingRange(0.1 * extent, 5.0 * extent);
-    const double t0 = Now();
-    window->Render();
-    window->WaitForCompletion();
-    times.push_back(Now() - t0);
-    if (Now() - orbitStart > maxSeconds && times.size() >= 5)
-    {
-      break;
-    }
-  }
-  r.Frames = static_cast<int>(times.size());
-  r.MedianFrame = Median(times);
+  splineviz_benchmark::FrameTimes times;
+  times.Orbit(window, camera, frames, maxSeconds, 5,
+    [&](int) { camera->SetClippingRange(0.1 * extent, 5.0 * extent); });
+  r.Frames = times.Count();
+  r.MedianFrame = Median(times.Wall);
 
   // Throughput: the same frames on a 2x2 viewport (vertex work only).
   window->SetSize(2, 2);

@@ -301,17 +301,7 @@ Result Run(const Factory& factory, vtkImageData* data, vtkRenderWindow* window, 
   r.Note = built.Note;
 
   splineviz_benchmark::FrameTimes times;
-  const double orbitStart = Now();
-  for (int i = 0; i < frames; ++i)
-  {
-    camera->Azimuth(360.0 / frames);
-    times.Render(window);
-    if (Now() - orbitStart > maxSeconds && times.Count() >= 3)
-    {
-      break;
-    }
-  }
-  times.Sort();
+  times.Orbit(window, camera, frames, maxSeconds, 3);
   r.Frames = times.Count();
   r.MedianFrame = times.MedianWall();
   r.MedianFrameCPU = times.MedianCPU();

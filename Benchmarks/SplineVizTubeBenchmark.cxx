@@ -249,25 +249,23 @@ Result Run(const Factory& factory, vtkPolyData* data, double boxSize, vtkRenderW
   }
 
   splineviz_benchmark::FrameTimes times;
-  const double orbitStart = Now();
-  for (int i = 0; i < frames; ++i)
-  {
-    camera->Azimuth(360.0 / frames);
-    camera->SetClippingRange(nearPlane, farPlane);
-    const long f0 = splineviz_benchmark::MinorFaults();
-    times.Render(window);
-    if (trace)
+  long f0 = 0;
+  times.Orbit(
+    window, camera, frames, maxSeconds, 5,
+    [&](int)
     {
-      std::printf("    frame %3d: %7.1f ms, CPU %7.1f ms, %6ld minor page faults\n", i,
-        1000.0 * times.Wall.back(), 1000.0 * times.CPU.back(),
-        splineviz_benchmark::MinorFaults() - f0);
-    }
-    if (Now() - orbitStart > maxSeconds && times.Count() >= 5)
+      camera->SetClippingRange(nearPlane, farPlane);
+      f0 = splineviz_benchmark::MinorFaults();
+    },
+    [&](int i)
     {
-      break;
-    }
-  }
-  times.Sort();
+      if (trace)
+      {
+        std::printf("    frame %3d: %7.1f ms, CPU %7.1f ms, %6ld minor page faults\n", i,
+          1000.0 * times.Wall.back(), 1000.0 * times.CPU.back(),
+          splineviz_benchmark::MinorFaults() - f0);
+      }
+    });
   r.Frames = times.Count();
   r.MedianFrame = times.MedianWall();
   r.MedianFrameCPU = times.MedianCPU();
