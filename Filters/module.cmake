@@ -34,4 +34,5 @@ list(APPEND splineviz_shaders
 list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkSplineVizPolyLines.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizProgress.h"
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizSeeds.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizRandom.h")

@@ -2,6 +2,7 @@
 
 #include "vtkLRSplineField.h"
 #include "vtkSplineVizProgress.h"
+#include "vtkSplineVizSeeds.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -668,50 +669,6 @@ vtkIdType TraceAll(const vtkLRSplineField& field, const Params& P, const std::ve
   return total;
 }
 
-double CountSeeds(vtkDataObject* obj)
-{
-  if (auto* ds = vtkDataSet::SafeDownCast(obj))
-  {
-    return static_cast<double>(ds->GetNumberOfPoints());
-  }
-  double count = 0;
-  if (auto* cds = vtkCompositeDataSet::SafeDownCast(obj))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(cds->NewIterator());
-    it->SkipEmptyNodesOn();
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      count += CountSeeds(it->GetCurrentDataObject());
-    }
-  }
-  return count;
-}
-
-void CollectSeeds(vtkDataObject* obj, std::vector<double>& seeds)
-{
-  if (auto* ds = vtkDataSet::SafeDownCast(obj))
-  {
-    const vtkIdType n = ds->GetNumberOfPoints();
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      double x[3];
-      ds->GetPoint(i, x);
-      seeds.insert(seeds.end(), x, x + 3);
-    }
-    return;
-  }
-  if (auto* cds = vtkCompositeDataSet::SafeDownCast(obj))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(cds->NewIterator());
-    it->SkipEmptyNodesOn();
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      CollectSeeds(it->GetCurrentDataObject(), seeds);
-    }
-  }
-}
 }
 
 //------------------------------------------------------------------------------
@@ -777,11 +734,12 @@ void vtkLRSplineStreamTracer::SetSourceData(vtkDataObject* source)
 //------------------------------------------------------------------------------
 int vtkLRSplineStreamTracer::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   if (port == 1)
   {
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    vtkSplineVizSeeds::FillPortInformation(info);
+    return 1;
   }
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   return 1;
 }
 
@@ -789,24 +747,7 @@ int vtkLRSplineStreamTracer::FillInputPortInformation(int port, vtkInformation* 
 int vtkLRSplineStreamTracer::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkInformation* splineInfo = inputVector[0]->GetInformationObject(0);
-  if (splineInfo)
-  {
-    // The whole spline everywhere.
-    splineInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-    splineInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-    splineInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-  }
-  vtkInformation* seedInfo = inputVector[1]->GetInformationObject(0);
-  if (seedInfo)
-  {
-    seedInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
-      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
-    seedInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
-      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-    seedInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-  }
+  vtkSplineVizSeeds::RequestUpdateExtent(inputVector, outputVector); // the whole spline everywhere
   return 1;
 }
 
@@ -881,7 +822,7 @@ int vtkLRSplineStreamTracer::RequestData(
   // Absurd seed counts (e.g. an implicit image of 10^9 points) are refused
   // before anything is allocated: per seed its coordinates, two lines and at
   // least two points in each.
-  const double seedCount = CountSeeds(source);
+  const double seedCount = vtkSplineVizSeeds::Count(source);
   if (!vtkSplineVizProgress::CheckOutputSize(seedCount, 3 * 8.0 + 2 * (sizeof(Line) + 2 * 80.0),
         "the streamlines of all seeds (source port)", &error))
   {
@@ -889,7 +830,7 @@ int vtkLRSplineStreamTracer::RequestData(
     return 0;
   }
   std::vector<double> seeds;
-  CollectSeeds(source, seeds);
+  vtkSplineVizSeeds::Collect(source, seeds);
   const vtkIdType numSeeds = static_cast<vtkIdType>(seeds.size() / 3);
   for (vtkIdType s = 0; s < numSeeds; ++s)
   {

@@ -1,6 +1,7 @@
 #include "vtkTensorLineTracer.h"
 
 #include "vtkSplineVizProgress.h"
+#include "vtkSplineVizSeeds.h"
 #include "vtkSplineVizTensorMath.h"
 
 #include "vtkAOSDataArrayTemplate.h"
@@ -862,8 +863,7 @@ int vtkTensorLineTracer::FillInputPortInformation(int port, vtkInformation* info
   }
   else
   {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+    vtkSplineVizSeeds::FillPortInformation(info);
   }
   return 1;
 }
@@ -880,29 +880,8 @@ int vtkTensorLineTracer::RequestInformation(
 int vtkTensorLineTracer::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkInformation* fieldInfo = inputVector[0]->GetInformationObject(0);
-  if (fieldInfo)
-  {
-    // The whole field in every piece; the pieces split the seeds.
-    fieldInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-    fieldInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-    fieldInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-    if (fieldInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
-    {
-      fieldInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
-        fieldInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
-    }
-  }
-  if (inputVector[1]->GetNumberOfInformationObjects() > 0)
-  {
-    vtkInformation* seedInfo = inputVector[1]->GetInformationObject(0);
-    seedInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(),
-      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()));
-    seedInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(),
-      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-    seedInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-  }
+  // The whole field in every piece; the pieces split the seeds.
+  vtkSplineVizSeeds::RequestUpdateExtent(inputVector, outputVector);
   return 1;
 }
 
@@ -1229,11 +1208,7 @@ int vtkTensorLineTracer::RequestData(
     // Absurd seed counts (e.g. an implicit image of 10^9 points) are refused
     // before anything is allocated: per seed its coordinates, a line and at
     // least two points of output.
-    double seedCount = 0;
-    for (vtkDataSet* ds : vtkCompositeDataSet::GetDataSets(source))
-    {
-      seedCount += static_cast<double>(ds->GetNumberOfPoints());
-    }
+    const double seedCount = vtkSplineVizSeeds::Count(source);
     std::string sizeError;
     if (!vtkSplineVizProgress::CheckOutputSize(seedCount, 3 * 8.0 + sizeof(Line) + 2 * 100.0,
           "the tensor lines of all seeds", &sizeError))
@@ -1241,16 +1216,7 @@ int vtkTensorLineTracer::RequestData(
       vtkErrorMacro(<< sizeError);
       return 0;
     }
-    for (vtkDataSet* ds : vtkCompositeDataSet::GetDataSets(source))
-    {
-      const vtkIdType n = ds->GetNumberOfPoints();
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        double x[3];
-        ds->GetPoint(i, x);
-        seeds.insert(seeds.end(), x, x + 3);
-      }
-    }
+    vtkSplineVizSeeds::Collect(source, seeds);
   }
   else
   {
