@@ -98,46 +98,22 @@ std::vector<double> TimeVariants(vtkRenderWindow* window, vtkRenderer* ren, int 
 
 int main(int argc, char* argv[])
 {
-  if (splineviz_benchmark::HelpRequested(argc, argv, Usage) ||
-    splineviz_benchmark::MissingOptionValue(argc, argv, Usage))
-  {
-    return 0;
-  }
   long streamlines = 20000;
   int width = 1200;
   int height = 768;
   int frames = 7;
   double radius = 0.3;
   std::vector<std::string> renderers = { "raycast", "tessellated", "stylized" };
-  for (int i = 1; i + 1 < argc; i += 2)
+  splineviz_benchmark::Options options(Usage);
+  options.Add("--streamlines", [&](const std::string& v) { streamlines = std::atol(v.c_str()); })
+    .Add("--size", [&](const std::string& v) { std::sscanf(v.c_str(), "%dx%d", &width, &height); })
+    .Int("--frames", frames, 1)
+    .Double("--radius", radius)
+    .List("--renderers", renderers);
+  const int exitCode = options.Parse(argc, argv);
+  if (exitCode >= 0)
   {
-    const std::string key = argv[i];
-    const std::string value = argv[i + 1];
-    if (key == "--streamlines")
-    {
-      streamlines = std::atol(value.c_str());
-    }
-    else if (key == "--size")
-    {
-      std::sscanf(value.c_str(), "%dx%d", &width, &height);
-    }
-    else if (key == "--frames")
-    {
-      frames = std::max(1, std::atoi(value.c_str()));
-    }
-    else if (key == "--radius")
-    {
-      radius = std::atof(value.c_str());
-    }
-    else if (key == "--renderers")
-    {
-      renderers = Split(value);
-    }
-    else
-    {
-      std::fprintf(stderr, "unknown option %s\n%s", key.c_str(), Usage);
-      return 1;
-    }
+    return exitCode;
   }
   if (!splineviz_benchmark::AllKnown(
         renderers, { "raycast", "tessellated", "stylized" }, "renderer"))

@@ -43,15 +43,10 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkImageSlice, vtkImageSliceM
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory)
 
 import splineviz
-from splineviz_testing import output_dir
+from splineviz_testing import Checker, output_dir
 
-failures = []
-
-
-def check(condition, message):
-    print(("ok: " if condition else "ERROR: ") + message)
-    if not condition:
-        failures.append(message)
+checker = Checker()
+check = checker.check
 
 
 def rotation(axis, degrees):
@@ -220,5 +215,4 @@ for name, a in cases.items():
           "%s: control, moved a voxel: %.1f %% of the tube's pixels on the marked voxel"
           % (name, 100 * moved_inside))
 
-if failures:
-    sys.exit(1)
+checker.finish()
