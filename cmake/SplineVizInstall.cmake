@@ -61,3 +61,7 @@ install(
         "${CMAKE_BINARY_DIR}/${splineviz_cmake_destination}/SplineVizConfigVersion.cmake"
   DESTINATION "${splineviz_cmake_destination}"
   COMPONENT   development)
+install(
+  FILES       "${PROJECT_SOURCE_DIR}/LICENSE"
+  DESTINATION "${CMAKE_INSTALL_DOCDIR}"
+  COMPONENT   development)
