@@ -27,6 +27,14 @@ class Observed:
         self.warnings.append(event)
 
 
+def set_translation(display, translation):
+    """Sets a display's translation (the actor's position): the property's
+    Python name is Position up to ParaView 5.11 and Translation (its label)
+    from 5.12 on."""
+    name = "Translation" if "Translation" in display.ListProperties() else "Position"
+    setattr(display, name, list(translation))
+
+
 def output_dir():
     """Where the tests write their images (ctest: build/Testing/Temporary)."""
     out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
