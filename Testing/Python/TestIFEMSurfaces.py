@@ -141,7 +141,7 @@ def bent_square(path):
             head, rest = line[:line.rindex("]") + 1], line[line.rindex("]") + 1:]
             coords, gamma = rest[:rest.index("(")].split(), rest[rest.index("("):]
             x, y = float(coords[0]), float(coords[1])
-            line = "%s %r %r %r %s" % (head, x, y, 0.3 * np.sin(np.pi * x) * np.cos(np.pi * y),
+            line = "%s %r %r %r %s" % (head, x, y, float(0.3 * np.sin(np.pi * x) * np.cos(np.pi * y)),
                                       gamma)
         lines.append(line)
     bent = "\n".join(lines) + "\n"
