@@ -56,9 +56,14 @@ write_basic_package_version_file(
   "${CMAKE_BINARY_DIR}/${splineviz_cmake_destination}/SplineVizConfigVersion.cmake"
   VERSION       "${PROJECT_VERSION}"
   COMPATIBILITY SameMinorVersion)
+# Users of the installed package on Debian 13 meet its ParaView's export
+# fault too: the config file applies the same correction.
+configure_file("${CMAKE_CURRENT_LIST_DIR}/SplineVizPythonImports.cmake"
+  "${CMAKE_BINARY_DIR}/${splineviz_cmake_destination}/SplineVizPythonImports.cmake" COPYONLY)
 install(
   FILES "${CMAKE_BINARY_DIR}/${splineviz_cmake_destination}/SplineVizConfig.cmake"
         "${CMAKE_BINARY_DIR}/${splineviz_cmake_destination}/SplineVizConfigVersion.cmake"
+        "${CMAKE_BINARY_DIR}/${splineviz_cmake_destination}/SplineVizPythonImports.cmake"
   DESTINATION "${splineviz_cmake_destination}"
   COMPONENT   development)
 install(

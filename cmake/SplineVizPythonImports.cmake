@@ -68,8 +68,10 @@ function (_splineviz_fix_python_imports targets_file)
   include("${out}/${name}.cmake")
 endfunction ()
 
-# The ParaView (or VTK) packages find_package() may use.
-set(_splineviz_package_dirs)
+# The ParaView (or VTK) packages find_package() may use (and those named in
+# SPLINEVIZ_PYTHON_IMPORTS_DIRS: SplineVizConfig.cmake passes the ones
+# SplineViz was built against).
+set(_splineviz_package_dirs ${SPLINEVIZ_PYTHON_IMPORTS_DIRS})
 foreach (_splineviz_var IN ITEMS ParaView_DIR VTK_DIR)
   if (${_splineviz_var})
     list(APPEND _splineviz_package_dirs "${${_splineviz_var}}")
@@ -80,6 +82,7 @@ file(GLOB _splineviz_globbed
   "/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/cmake/vtk-*"
   "/usr/lib/cmake/paraview-*" "/usr/local/lib/cmake/paraview-*")
 list(APPEND _splineviz_package_dirs ${_splineviz_globbed})
+list(REMOVE_DUPLICATES _splineviz_package_dirs)
 foreach (_splineviz_dir IN LISTS _splineviz_package_dirs)
   # VTK's first: ParaView's Python targets refer to VTK::vtkpythonmodules.
   file(GLOB _splineviz_vtk_targets_files "${_splineviz_dir}/vtk/*Python*-targets.cmake")
