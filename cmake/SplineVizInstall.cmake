@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Installation of the CMake package: SplineVizConfig.cmake and its version
 # file, so that another project can use the installed SplineViz with
 #

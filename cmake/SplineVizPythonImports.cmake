@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Corrects the imported Python extension modules of a ParaView/VTK CMake
 # package whose export names files that are not there: Debian 13's ParaView
 # 5.13 exports `vtkmodules/vtkCommonCore.so` (and the same for

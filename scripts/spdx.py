@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: BSD-3-Clause
 """Every source file of SplineViz starts with its licence identifier,
 ``SPDX-License-Identifier: BSD-3-Clause`` (see LICENSE), in the file's own
 comment syntax: first line, or right after a ``#!`` line or an ``<?xml ?>``

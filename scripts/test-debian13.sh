@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Build SplineViz and run its test suite on Debian 13 ("trixie": ParaView
 # 5.13.2 with VTK 9.3, Python 3.13, a newer Mesa) inside a debootstrap root,
 # beside the Debian 12 host (ParaView 5.11). Needs root (debootstrap, chroot,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Hardware picking of ray-cast tubes: a multiblock of two polydata blocks,
 // each with polylines at known places. Selecting a rectangle around each
 // tube must report that tube's polyline (cell id) and block (composite

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The installed SplineViz, as another project and a ParaView user see it.
 #
 #   TestInstall.sh install    CMAKE BUILD PREFIX

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch with the installed SplineViz (TestInstall.sh plugin).
 
     pvbatch TestInstalledPlugin.py PREFIX FILE.tck COUNT startup|by-path

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes a small MRtrix .tck file by hand (header, float32 triplets, a NaN
 triplet after each streamline, an Inf triplet at the end), independently of
 SplineViz's writer:  write_tck.py OUT.tck N  -> N streamlines, streamline i

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkIFEMReader and vtkLRSplineReader against an independent evaluation.
 
 Every IFEM result file of Testing/Data/External/ifem (LR volumes and surfaces

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Probing and tracing IFEM surface results (LR and g2 surfaces) in physical space.
 
 The real IFEM files of Testing/Data/External/ifem that hold surfaces are read

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the "LR-Spline Volume" representation of the SplineViz plugin on the
 real 3-patch LR-spline file, read by the plugin's reader.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the SplineViz plugin loads and shows data of every kind without a
 warning or an error (ctest fails on any WARN|/ERR| line), and its ParaView
 XML is complete:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """An independent reference for the spline tests: parsers of the LRSplines text,
 GoTools g2 (classes 200, 700) and IFEM Lagrange patch formats, and a direct
 evaluation of the splines they hold, written from the formats' definitions

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Shared by the Python and plugin tests: the synthetic-fibers scene the
 plugin tests draw, and measures of how much of a rendered image is drawn."""
 import os

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Prints the number of streamlines and points of a .tck/.trk file read with
 // the installed SplineViz (vtkTractogramReader); exit status 1 when the file
 // cannot be read.
