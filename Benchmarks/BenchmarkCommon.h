@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // What the benchmark programs share: command-line help (each program passes
 // its usage text; `-h` or `--help` anywhere on the command line prints it and
 // ends the program before any work starts), "--key value" options (Options)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Benchmark of LR-spline element look-up and evaluation (Fuchs et al. §3.2;
 // issue: "LR-spline volumes: reader, Bezier blocks, k-d forest").
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Benchmark of vtkLRSplineImageFitter (a real data path) on the
 // real MR scans Debian's python3-dipy ships, read by VTK's
 // vtkNIFTIImageReader: aniso_vox.nii.gz (58 x 58 x 24) and S0_10slices.nii.gz

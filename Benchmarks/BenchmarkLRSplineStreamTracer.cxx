@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Benchmark of vtkLRSplineStreamTracer (Fuchs et al. §5; the paper's
 // fluidized-bed setting: 250 seeds, up to 2,000 steps) against
 // vtkStreamTracer on the same field resampled to a 128^3 vtkImageData, in the

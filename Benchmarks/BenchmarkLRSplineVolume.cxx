@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Benchmark of direct volume rendering of LR-spline volumes (Fuchs et al.
 // §4): vtkLRSplineVolumeMapper against VTK's way
 // (vtkLRSplineResampleToImage, the "LR-Spline Resample To Image" filter, to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The cost of vtkLineAmbientOcclusionPass: frames of a dense synthetic
 // tractogram (vtkSyntheticTractogramSource) drawn by each line renderer
 // without the pass, with ambient occlusion, and with ambient occlusion and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Stylized-line benchmark (Stoll et al. §5's measures, side by side in one
 // process): for each data set and window size, each renderer draws the lines
 // with the camera orbiting the data; reported are

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Benchmark of vtkTensorLineTracer: whole-brain-style seeding on a 128^3
 // synthetic tensor field, against VTK's vtkHyperStreamline on a subset of
 // the seeds, in the same run.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Benchmark of vtkTractogramReader / vtkTractogramWriter on a whole-brain-
 // sized tractogram (10 M points by default), against the VTK way of storing
 // the same polylines (vtkXMLPolyDataWriter/Reader, binary, raw appended data,

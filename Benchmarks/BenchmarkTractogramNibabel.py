@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """nibabel's load time for the files BenchmarkTractogramIO writes (run that with
 --keep 1 first): the Python tool neuroimaging users read tractograms with,
 for the README's comparison. Prints the median of 3 loads per file.

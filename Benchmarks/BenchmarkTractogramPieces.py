@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Peak memory of reading a tractogram in one pvbatch process and in MPI
 ranks (each reading only its piece). Writes a synthetic .tck
 (vtkSyntheticTractogramSource: dense bundles, 50-200 points, 1 mm steps) if

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Generated LR-spline volumes for the LR-spline benchmarks: locally refined
 // quadratic volumes with several refinement levels around focus points on a
 // helix, with non-dyadic knots (irrational breakpoints and golden-section

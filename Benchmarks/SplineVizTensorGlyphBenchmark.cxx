@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Superquadric tensor glyph benchmark (Hlawitschka et al. §5's questions on
 // this machine): a synthetic DTI-like tensor volume (9-component tensors on
 // a vtkImageData, every voxel drawn) rendered offscreen with the camera

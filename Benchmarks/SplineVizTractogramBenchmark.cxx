@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Whole-brain tractograms: the SplineViz line renderers against VTK's ways of
 // drawing lines, at tractography's real sizes, side by side in one run.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tube rendering benchmark (Salm §3.3's protocol): renders a synthetic fiber
 // data set offscreen with the camera orbiting at a fixed distance, for each
 // renderer side by side in one process, and reports

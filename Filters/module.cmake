@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Filters/: VTK filters and sources of the SplineViz module, and the plain C++
 # numerical code they share (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineBezierGrid
  * @brief   The VTK form of one LR-spline patch: a vtkUnstructuredGrid of VTK_BEZIER_HEXAHEDRON

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineBezierVolume
  * @brief   One LR-spline patch as Bezier blocks: a box and (p+1)(q+1)(r+1) Bernstein coefficients

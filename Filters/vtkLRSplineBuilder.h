@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineBuilder
  * @brief   Generates LR-spline volumes by genuine local refinement (for tests, benchmarks and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineElementLocator
  * @brief   Finds the LR-spline element (axis-aligned box) containing a parameter point: k-d forest,

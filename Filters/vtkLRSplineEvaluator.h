@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineEvaluator
  * @brief   Fast exact evaluation of one LR-spline patch: element look-up plus Bezier evaluation of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineField
  * @brief   The LR-spline field of a reader output (one or several patches) ready for evaluation.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineFitCore
  * @brief   The fitting idea shared by the LR-spline fitters: an LR spline refined where the data

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineFitter
  * @brief   Fits an LR-spline volume to the point or cell data of any data set (scattered points,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineGeometryMap.h"
 
 #include "vtkDataArray.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineGeometryMap
  * @brief   The geometry map x(u) of an isoparametric LR-spline patch (volume or surface) and its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineImageFitter
  * @brief   Fits an LR-spline volume to a scalar image by least squares and local refinement

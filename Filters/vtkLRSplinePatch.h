@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplinePatch
  * @brief   One LR-spline patch (volume or surface, polynomial or rational) in LR B-spline form,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineProbeFilter
  * @brief   Evaluates an LR-spline field (vtkLRSplineReader output) exactly at the points of any

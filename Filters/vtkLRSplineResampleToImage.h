@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineResampleToImage
  * @brief   Samples an LR-spline field (vtkLRSplineReader output) exactly on a regular grid

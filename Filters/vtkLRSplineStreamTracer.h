@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineStreamTracer
  * @brief   Streamlines through LR-spline vector fields, integrated on the exact spline (Fuchs et

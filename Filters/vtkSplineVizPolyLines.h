@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * vtkSplineVizPolyLines: the output the synthetic sources share: the items
  * (tubes, streamlines) of the requested piece, and one polyline per item

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * Progress, abort and size checks shared by the SplineViz filters and readers.
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * vtkSplineVizRandom: a small counter-based random generator (splitmix64) for
  * the synthetic sources. Every item (tube, streamline, bundle) gets its own

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * vtkSplineVizSeeds: the seed port the tracers (vtkLRSplineStreamTracer,
  * vtkTensorLineTracer) share, vtkStreamTracer's "Source": port 1, optional,

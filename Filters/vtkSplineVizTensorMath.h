@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSplineVizTensorMath.h
  * @brief  Symmetric second-order tensor math of SplineViz (plain C++, double).

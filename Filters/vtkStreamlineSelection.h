@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkStreamlineSelection
  * @brief   Virtual dissection of a tractogram: keeps the streamlines that pass

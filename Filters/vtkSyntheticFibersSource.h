@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSyntheticFibersSource
  * @brief   Generates smooth random polylines ("fibers") with radius and scalar arrays.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSyntheticTractogramSource
  * @brief   Generates a synthetic whole-brain tractogram: bundles of smooth, densely

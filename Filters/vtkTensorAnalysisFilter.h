@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTensorAnalysisFilter
  * @brief   Eigenvalues, eigenvectors and anisotropy measures of a symmetric tensor field.

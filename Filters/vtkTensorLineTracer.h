@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTensorLineTracer
  * @brief   Deterministic fiber tracking (hyperstreamlines, tensorlines) along the principal

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # IO/: readers and writers of the SplineViz module (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkIFEMReader"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIFEMBlockBuilder
  * @brief   Turns one patch of an IFEM basis and the fields on it into a VTK block: exact Bezier

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkIFEMFile.h"
 
 #include "vtkSplineVizProgress.h"
@@ -233,9 +234,16 @@ bool vtkIFEMFile::ListChildren(const std::string& path, std::vector<std::string>
     }
     // The basic information only (the type): the less of a damaged object
     // header HDF5 parses, the fewer of its error paths run.
+    // (HDF5 1.12 replaced the 1.10 call and its struct by versions 3 and 2.)
+#if H5_VERSION_GE(1, 12, 0)
+    H5O_info2_t objectInfo;
+    if (H5Oget_info_by_name3(group.Get(), name.c_str(), &objectInfo, H5O_INFO_BASIC, H5P_DEFAULT) <
+      0)
+#else
     H5O_info_t objectInfo;
     if (H5Oget_info_by_name2(group.Get(), name.c_str(), &objectInfo, H5O_INFO_BASIC, H5P_DEFAULT) <
       0)
+#endif
     {
       return Fail(error, "cannot inspect \"" + (path == "/" ? "" : path) + "/" + name + "\"");
     }

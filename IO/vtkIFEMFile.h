@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIFEMFile
  * @brief   Read access to IFEM's HDF5 result files: the layout of levels, bases, fields and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIFEMLagrangePatch
  * @brief   An IFEM Lagrange patch ("# LAGRANGIAN" text of its HDF5 results) and its VTK grid

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkIFEMReader
  * @brief   Reads IFEM's HDF5 simulation results (isogeometric and Lagrange patches, fields,

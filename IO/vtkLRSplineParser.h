@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineParser
  * @brief   Parses LRSplines text patches (.lr, volumes and surfaces, several patches) and GoTools

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineReader
  * @brief   Reads LR-spline volumes and surfaces (.lr, LRSplines text format, several patches) and

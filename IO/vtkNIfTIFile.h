@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNIfTIFile
  * @brief   NIfTI-1 and NIfTI-2 files read by SplineViz's own code: the header parsed and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNIfTIReaderBase
  * @brief   What the NIfTI readers share: the file, the choice of its voxel to world

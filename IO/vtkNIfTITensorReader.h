@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNIfTITensorReader
  * @brief   Reads a diffusion tensor volume from a NIfTI-1/2 file into vtkImageData with point

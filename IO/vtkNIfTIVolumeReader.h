@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkNIfTIVolumeReader
  * @brief   Reads a scalar or vector volume (a T1, FA, a label map, FSL's V1) from a

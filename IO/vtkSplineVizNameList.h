@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSplineVizNameList.h
  * @brief  An ordered list of names (files, arrays) behind the Add.../RemoveAll.../

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkTractogramFormats.h"
 
 #include "vtkMatrix4x4.h"

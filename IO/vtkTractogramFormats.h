@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTractogramFormats
  * @brief   The MRtrix (.tck, .tsf) and TrackVis (.trk) tractogram formats: headers, byte

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTractogramReader
  * @brief   Reads tractograms (fibre tracts) in MRtrix .tck (with .tsf per-point scalars) and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkTractogramWriter.h"
 
 #include "vtkSplineVizNameList.h"

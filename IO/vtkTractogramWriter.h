@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTractogramWriter
  * @brief   Writes polylines (fibre tracts, e.g. from vtkTensorLineTracer) as an MRtrix .tck

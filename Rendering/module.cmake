@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Rendering/: mappers, their shared CPU-side preparation and their shaders
 # (included from cmake/module/CMakeLists.txt).
 list(APPEND splineviz_classes

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineVolumeMapper
  * @brief   Direct volume rendering of LR-spline volumes on the GPU, exact to the spline: no

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkLRSplineVolumeMath.h
  * @brief  The element search and Bezier evaluation of glsl/vtkLRSplineVolumeShared.glsl,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLineAmbientOcclusionPass
  * @brief   Screen-space ambient occlusion and depth-dependent halos for dense

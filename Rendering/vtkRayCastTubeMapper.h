@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkRayCastTubeMapper
  * @brief   Renders polylines as exact, smooth spline tubes by GPU ray casting.

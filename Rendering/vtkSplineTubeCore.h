@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSplineTubeCore
  * @brief   CPU side of the spline tubes: the tubes of polylines, their nodes' splines,

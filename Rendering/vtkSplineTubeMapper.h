@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSplineTubeMapper
  * @brief   Base class of the SplineViz spline-tube mappers.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSplineTubeMath.h
  * @brief  The spline-tube math of glsl/vtkSplineTubeMathShared.glsl, compiled as C++.

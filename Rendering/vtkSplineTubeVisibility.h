@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSplineTubeVisibility
  * @brief   Per-view visibility of a line renderer's chunks: frustum culling,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkSplineVizGPUBuffer.h"
 
 #include "vtkDataArray.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSplineVizGPUBuffer
  * @brief   A GPU buffer read by shaders as a buffer texture (texelFetch).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkStylizedLineFixUp
  * @brief   The CPU part of the hybrid rendering of stylized lines (Stoll et al. §4.4): batches

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkStylizedLineMapper
  * @brief   Renders polylines as stylized line primitives: lit generalized cylinders splatted as

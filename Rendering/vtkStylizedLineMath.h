@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkStylizedLineMath.h
  * @brief  The stylized-line math of glsl/vtkStylizedLineMathShared.glsl, compiled as C++.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSuperquadricGlyphMapper
  * @brief   Ray-cast superquadric tensor glyphs on the GPU, one per point.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkSuperquadricGlyphMath.h
  * @brief  The superquadric glyph math of glsl/vtkSuperquadricGlyphShared.glsl, compiled as C++.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 #include "vtkSuperquadricGlyphPreparer.h"
 
 #include "vtkSplineVizTensorMath.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSuperquadricGlyphPreparer
  * @brief   CPU data preparation of vtkSuperquadricGlyphMapper (internal).

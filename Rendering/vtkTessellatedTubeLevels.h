@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTessellatedTubeLevels
  * @brief   The level of detail of vtkTessellatedTubeMapper, on the CPU: base meshes, per-view

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTessellatedTubeMapper
  * @brief   Renders polylines as smooth spline tubes with the GPU tessellation unit.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Sanitizer and fuzzing build of SplineViz (off by default: the normal build's
 # flags are not touched when both options are OFF).
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Set up (packages, configure, build), then run the demonstration: render the
 # built-in synthetic data sets with the SplineViz renderers to PNG files.
 set -euo pipefail

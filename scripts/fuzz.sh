@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Run the libFuzzer targets of the sanitizer build (scripts/test.sh --sanitize
 # builds them in build-sanitize/), one after the other. The targets, their
 # seeds and input size limits are listed in Testing/Fuzz/targets.txt.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Run a small 3D OpenFOAM tutorial for the LR-spline fitting demo
 # (Examples/Python/lr_spline_fit_openfoam.py): the porous angled duct of
 # porousSimpleFoam (22,000 hexahedra, 200 steady iterations; about 15 s on

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Install what SplineViz needs (Debian 12 packages; idempotent, non-interactive),
 # then configure and build it in ./build (or $SPLINEVIZ_BUILD_DIR).
 #

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Set up (packages, configure, build), then run every test with ctest
 # (C++ image and unit tests, Python tests, the ParaView plugin tests) on an
 # X display of its own when there is none.

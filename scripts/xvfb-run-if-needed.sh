@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # Run a command with an X display: the current one if it answers, otherwise a
 # private Xvfb (24-bit, large enough for 1200x768 renderings; Mesa llvmpipe
 # gives OpenGL 4.5 with tessellation shaders). -noreset: by default an X

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """SplineViz demonstration: renders the built-in synthetic data sets with the
 SplineViz renderers to PNG files.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A real MR scan as an LR spline: DIPY's aniso_vox.nii.gz fitted by local refinement.
 
     source build/splineviz-env.sh

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """A real CFD result as LR splines: OpenFOAM's porous angled duct fitted and volume rendered.
 
     source build/splineviz-env.sh

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """ParaView demo state: streamlines traced on an LR-spline vector field and
 shown as tubes.
 

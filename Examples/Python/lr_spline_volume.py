@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Direct volume rendering of an LR spline (Fuchs et al. §4) with
 vtkLRSplineVolumeMapper: no resampling, the spline is evaluated exactly on the
 GPU at every sample.

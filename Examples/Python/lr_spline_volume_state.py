@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """ParaView demo state: an LR-spline vector field volume rendered as it is
 (no resampling) with streamlines of the same field as tubes inside it.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Diffusion MRI in and out: NIfTI tensors from DIPY, glyphs, fibres, .tck back to nibabel.
 
     source build/splineviz-env.sh

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Progress, abort and hostile sizes from Python (README, "Reliability").
 
 Reads a real LR-spline file, resamples it with a progress bar on the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Ray-cast spline tubes in an ordinary VTK pipeline (pvpython or any Python
 with ParaView's vtkmodules):
 

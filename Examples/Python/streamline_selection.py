@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Virtual dissection of a real bundle with vtkStreamlineSelection.
 
     source build/splineviz-env.sh

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Stylized line primitives on streamlines (SplineViz's vtkStylizedLineMapper;
 Stoll, Gumhold and Seidel, "Visualization with stylized line primitives",
 section 6 and Fig. 11): the encodings of the paper, on streamlines that VTK's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Superquadric tensor glyphs of a real diffusion MRI scan, in VTK and ParaView.
 
     source build/splineviz-env.sh

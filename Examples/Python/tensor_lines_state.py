@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """ParaView demo state: fiber tracking on a real diffusion scan, the fibers
 as tubes and the tensors as superquadric glyphs on a slice.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Spline tubes drawn with the GPU's tessellation unit (SplineViz's
 vtkTessellatedTubeMapper, Salm, "Interactive Rendering of Spline Tubes",
 section 3.1), in an ordinary VTK pipeline from Python.

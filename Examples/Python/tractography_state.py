@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """ParaView demo state: the tractography workflow on a real diffusion scan.
 Fibers are traced, dissected with two regions, colored by direction and
 drawn over an FA slice.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Symmetric 3x3 tensor math shared, as one source, by the glyph shaders and
 // the CPU code (vtkSplineVizTensorMath.cxx compiles this very text as C++ in
 // double precision with GLM; the superquadric glyph shaders embed it in float).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkLRSplineVolumeRepresentation
  * @brief   ParaView representation "LR-Spline Volume": direct volume rendering of LR-spline

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPVStreamlineSelection
  * @brief   vtkStreamlineSelection with one sphere and one box region given as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkRayCastTubeRepresentation
  * @brief   ParaView representation "Ray-Cast Tubes": polylines as ray-cast spline tubes.

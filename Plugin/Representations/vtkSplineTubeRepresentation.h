@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSplineTubeRepresentation
  * @brief   ParaView geometry representation drawing polylines with a spline-tube mapper.

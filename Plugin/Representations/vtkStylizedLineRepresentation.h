@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkStylizedLineRepresentation
  * @brief   ParaView representation "Stylized Lines": polylines as stylized line primitives.

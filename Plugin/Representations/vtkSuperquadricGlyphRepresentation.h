@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkSuperquadricGlyphRepresentation
  * @brief   ParaView representation "Superquadric Glyphs": a tensor glyph at every point.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkTessellatedTubeRepresentation
  * @brief   ParaView representation "Tessellated Tubes": polylines as tessellated spline tubes.

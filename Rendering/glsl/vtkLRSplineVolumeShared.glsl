@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // LR-spline element look-up and Bezier evaluation, shared, as one source, by
 // the fragment stage of vtkLRSplineVolumeMapper and its CPU check
 // (vtkLRSplineVolumeMath.h compiles this text as C++).

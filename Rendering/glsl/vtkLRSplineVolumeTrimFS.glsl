@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 
 // LR-spline volume trimming (Fuchs et al. §4.1), depth pre-pass: the faces of

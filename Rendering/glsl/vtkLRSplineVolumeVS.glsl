@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 
 // LR-spline volume ray casting (Fuchs et al. §4), vertex stage: the faces of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Screen-space ambient occlusion and depth-dependent halos for lines
 // (vtkLineAmbientOcclusionPass), one full-screen fragment stage.
 //

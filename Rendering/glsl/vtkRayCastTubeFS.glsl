@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Ray-cast spline tubes (Salm §3.2), fragment-stage declarations.
 //
 // Inserted into VTK's polydata fragment shader (at //VTK::Normal::Dec); the

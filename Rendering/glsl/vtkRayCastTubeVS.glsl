@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 
 // Ray-cast spline tubes (Salm §3.2 'Rendering'), vertex stage.

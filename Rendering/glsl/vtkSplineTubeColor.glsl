@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Scalar coloring of spline tubes (vtkSplineTubeMapper), shared by every
 // stage that evaluates the color spline. Needs the spline-tube math
 // (vtkSplineTubeMathShared.glsl) and the tubes buffer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Prelude that lets glsl/vtkSplineTubeMathShared.glsl (written in the common subset
 // of GLSL and C++) compile as GLSL.
 #define real float

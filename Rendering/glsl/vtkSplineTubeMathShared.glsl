@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Spline-tube math shared, as one source, by the shaders and the CPU code.
 //
 // This file is written in the common subset of GLSL and C++ (with GLM):

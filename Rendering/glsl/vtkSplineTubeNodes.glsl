@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The tubes buffer of the spline-tube mappers (vtkSplineTubeMapper), read by
 // every stage that needs a tube's nodes. Needs the spline-tube math
 // (vtkSplineTubeMathShared.glsl) before it.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Stylized lines (Stoll, Gumhold and Seidel 2005), fragment-stage declarations.
 //
 // Inserted into VTK's polydata fragment shader (at //VTK::Normal::Dec); the

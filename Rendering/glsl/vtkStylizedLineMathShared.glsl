@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Stylized-line math shared, as one source, by the shaders and the CPU code.
 //
 // Stoll, Gumhold and Seidel, "Visualization with stylized line primitives"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 
 // Stylized lines (Stoll, Gumhold and Seidel 2005), vertex stage.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 
 // The ray-cast surface is never in front of the rasterized sprite, so the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 
 // Geometry shader of vtkSuperquadricGlyphMapper: the sprite of one glyph

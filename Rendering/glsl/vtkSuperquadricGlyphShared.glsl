@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Superquadric glyph math shared, as one source, by the glyph shaders and the
 // CPU code (vtkSuperquadricGlyphMath.h compiles this text as C++ in double
 // precision for the unit tests). Same GLSL/C++ subset rules as

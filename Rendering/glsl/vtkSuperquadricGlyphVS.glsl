@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 
 // Vertex shader of vtkSuperquadricGlyphMapper: one vertex per glyph, carrying

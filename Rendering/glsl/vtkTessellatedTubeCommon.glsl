@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tessellated spline tubes (Salm §3.1): what the vertex, tessellation-control
 // and tessellation-evaluation stages share. Needs the spline-tube math
 // (vtkSplineTubeMathShared.glsl) and the tubes buffer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tessellated spline tubes (Salm §3.1), fragment-stage declarations, inserted
 // into VTK's polydata fragment shader (at //VTK::Normal::Dec); lighting,
 // coloring, depth peeling and picking are VTK's. Per pixel: the interpolated

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tessellated spline tubes (Salm §3.1 'Tessellation refinement and shading'),
 // tessellation-control stage. One invocation per quad patch of the base mesh.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tessellated spline tubes (Salm §3.1), tessellation-evaluation stage: every
 // vertex of the refined patch is bent onto the tube again, from its patch
 // coordinates: angle parameter s along u, curve parameter t along v (wall) or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tessellated spline tubes (Salm §3.1), thin tubes drawn without the
 // tessellator (vtkTessellatedTubeThinVS.glsl): fragment-stage declarations,
 // inserted into VTK's polydata fragment shader (at //VTK::Normal::Dec);

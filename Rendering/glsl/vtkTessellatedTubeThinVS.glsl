@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
 
 // Tessellated spline tubes (Salm §3.1), thin tubes without the tessellator.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Images and checks for the vtkLRSplineImageFitter and vtkLRSplineFitter tests: analytic scalar
 // images, the fitter run with its errors and warnings observed, and the
 // fitted spline evaluated independently of the fitter (vtkLRSplineField on

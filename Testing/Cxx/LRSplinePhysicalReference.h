@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Independent reference for fields on curved (isoparametric) LR-spline
 // geometry, for the tests of physical-space evaluation and rendering. The
 // geometry map x(u) and the field f(u) come from the LRSplines text alone

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // LR-spline vector fields with known streamlines for the tracer tests: a
 // linear field v(p) = A p + b is represented exactly by any spline of degree
 // >= 1 (Greville coefficients on the tensor-product start, kept exact by LR

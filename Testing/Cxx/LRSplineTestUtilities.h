@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Independent reference code for the LR-spline tests: a minimal parser of the
 // .lr and .g2 formats and the brute-force evaluation of an LR spline as the
 // sum over ALL its basis functions of gamma * c * B_u * B_v * B_w, each B the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers of the neuroimaging IO tests: files written byte by byte here,
 // independently of the readers and writers under test (a minimal NIfTI-1
 // writer, raw MRtrix .tck/.tsf and TrackVis .trk builders), and a harness

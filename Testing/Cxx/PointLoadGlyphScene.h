@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The scene of the vtkPointLoad glyph image tests: the Boussinesq stress
 // field (7^3 samples, effective stress as scalars), a 640x320 window, a
 // lookup table and the color range up to the effective stress's 90th

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Test scenes and image helpers shared by the tube-renderer tests.
 //
 // - MakeTestTubes(): polylines with coarse nodes (so that the splines bend a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers for the rendering tests: independent reference geometry for spline
 // tubes and image/depth comparisons.
 // - Curls(): helices of different radii, pitches and orientations, a loop

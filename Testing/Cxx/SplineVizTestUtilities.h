@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Small helpers shared by the SplineViz C++ tests.
 #ifndef SplineVizTestUtilities_h
 #define SplineVizTestUtilities_h

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Test scenes and measures shared by the stylized-line tests.
 //
 // - Curls(), Measure(), Save(): see SplineVizRenderingTestUtilities.h;

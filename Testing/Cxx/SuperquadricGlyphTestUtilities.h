@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers of the superquadric glyph tests: hand-made tensors with known
 // eigen-systems, and an INDEPENDENT CPU reference of the glyphs: eigenvectors
 // from vtkMath::Jacobi, Kindlmann's rule and the scale rule written out here

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers of the tensor-math tests: a seeded random sequence, random
 // rotations and symmetric tensors composed from a known eigen-system,
 // R diag(l) R^T, written out here independently of vtkSplineVizTensorMath.

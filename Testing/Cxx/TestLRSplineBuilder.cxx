@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineBuilder's refinement, against independent code (the brute-force
 // Cox-de Boor sums of LRSplineTestUtilities.h on the written .lr files):
 //  - RefineFunction gives exactly the patch that inserting its rectangles one

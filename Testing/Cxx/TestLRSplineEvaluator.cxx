@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Evaluation of LR splines in Bezier form:
 // - Bernstein values against the closed form, derivatives against finite
 //   differences;

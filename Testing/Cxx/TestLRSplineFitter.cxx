@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineFitter on scattered and unstructured data, checked independently
 // of the fitter (the output evaluated with vtkLRSplineField, the written .lr
 // file summed over its basis functions with the tests' own Cox-de Boor code,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineFitter refuses bad input and settings with an error that names
 // the problem, a failed update and an empty output, without crashing,
 // hanging or allocating: empty data, a missing array, NaN values and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineFitter on the data sets a simulation gives, checked against
 // analytic fields (a linear field is in every spline space, so it must be
 // reproduced to rounding wherever the data sits):

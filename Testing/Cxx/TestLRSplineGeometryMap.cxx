@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineGeometryMap: inversion of curved (non-affine), also rational,
 // isoparametric geometry. The two patches of cube-2patch.lr (geometry mode)
 // are bent by a smooth map of their control points; random points of random

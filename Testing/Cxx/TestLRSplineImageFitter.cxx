@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineImageFitter on analytic images, checked independently of the
 // fitter:
 //  - exactness: a polynomial of the spline's tri-degree (2,2,2, and mixed

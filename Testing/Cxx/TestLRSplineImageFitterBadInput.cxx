@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineImageFitter on bad input and at its limits. Every bad case must
 // fail with a clear message (RequestData returns 0, an error names the
 // problem) and an empty output, never crash or hang: Tolerance <= 0 or NaN,

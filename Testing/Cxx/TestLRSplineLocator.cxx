@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineElementLocator: the k-d forest (several resolutions, also not
 // dividing the element grid), the single k-d tree, the octree and the lookup
 // texture (dyadic knots only) and the linear search all return the element

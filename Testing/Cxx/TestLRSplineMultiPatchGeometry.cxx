@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The real three-patch cube-3patch-refined.lr placed by its geometry
 // (geometry mode): its patches are the unit cubes at x in [0, 1], [-1, 0]
 // and [-2, -1], and its coefficients are the control points themselves, so

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineProbeFilter and vtkLRSplineResampleToImage: values at the probe
 // points equal the brute-force sum over the basis functions (independent
 // Cox-de Boor code) for points, a line and a multiblock input; gradients

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineReader on the real files: counts of patches, basis functions and
 // elements; the Bezier form (evaluated by the SplineViz evaluator AND by VTK's
 // own Bezier hexahedron interpolation of the point data) equals the

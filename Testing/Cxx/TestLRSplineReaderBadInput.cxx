@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineReader on bad input: each case must give an error (RequestData
 // fails, the output is empty) whose message names the right line, never a
 // crash, a hang or silent garbage. Cases: truncated files, wrong counts,

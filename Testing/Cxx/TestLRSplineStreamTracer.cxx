@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineStreamTracer on fields with known streamlines, represented
 // exactly by locally refined LR splines with non-dyadic knots (linear fields
 // v = A p + b): rotations (circles) and diagonal A (exponentials).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test: streamlines of a real LR spline rendered as tubes.
 // Patch 1 of cube-3patch-refined.lr (a real, locally refined quadratic LR
 // volume) read in field mode is the linear field v(x, y, z) = (-y, x, z):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Bad input for vtkLRSplineVolumeMapper: a clear error through vtkErrorMacro
 // naming the problem, nothing drawn (the window keeps its background), no
 // crash; and a mapper given good input again renders again.

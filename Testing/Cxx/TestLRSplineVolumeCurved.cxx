@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineVolumeMapper on curved (non-affine) multi-patch geometry: the
 // two patches of cube-2patch.lr with every coefficient bent by a smooth map
 // and a scalar field (a quasi-interpolant of sin(pi x) sin(pi y) sin(pi z))

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The depth vtkLRSplineVolumeMapper writes for an isosurface agrees with an
 // exact root of the spline along the same rays: the CPU reference
 // (LRSplineVolumeTestUtilities.h) brackets the first crossing at uniform

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The element search and Bezier evaluation that vtkLRSplineVolumeMapper's
 // fragment stage runs (glsl/vtkLRSplineVolumeShared.glsl, compiled as C++ in
 // single precision by vtkLRSplineVolumeMath.h) against the double-precision

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineVolumeMapper's multi-pass continuation: fixed steps so fine
 // that a ray needs about 8,000 samples (far beyond the 65,535 loop
 // iterations Mesa's llvmpipe runs per shader invocation) must render

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineVolumeMapper against an independent CPU ray caster
 // (LRSplineVolumeTestUtilities.h: exact double-precision evaluation with
 // vtkLRSplineField, uniform steps ten times finer than the mapper's finest

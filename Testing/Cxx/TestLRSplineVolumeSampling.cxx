@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Adaptive stepping (Fuchs et al. Eq. 4: the current element's shortest side
 // over 2^degree) against uniform stepping at the smallest element's step, on
 // a strongly locally refined volume: both pictures within the reference

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLRSplineVolumeMapper in a scene, against the CPU reference of
 // LRSplineVolumeTestUtilities.h (RMS <= 2/255 each), then an image
 // regression test of the three together:

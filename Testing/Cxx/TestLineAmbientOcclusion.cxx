@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkLineAmbientOcclusionPass: ambient occlusion and depth-dependent halos
 // from the depth buffer, for the three line mappers and plain polygons.
 //  1. Against an independent expectation: a flat floor with a step (a plane

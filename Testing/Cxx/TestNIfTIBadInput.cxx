@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkNIfTIVolumeReader and vtkNIfTITensorReader (their shared NIfTI layer,
 // vtkNIfTIFile) on bad input: every case must fail with a clear message
 // (an error is reported, the update fails) and leave an empty output, in well

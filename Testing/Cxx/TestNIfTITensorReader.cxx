@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkNIfTITensorReader against an analytic tensor field: NIfTI files written
 // byte by byte here (NeuroimagingTestFiles.h) hold T_file = Rf^T T(x) Rf at
 // every voxel centre x = A (i, j, k), for affines with rotations and flips

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Bad input for the ray-cast tube mapper: every case renders without a
 // crash, gives a clear message, and still draws whatever is valid.
 //  - no polylines (only triangles), an empty polydata, a non-polydata block

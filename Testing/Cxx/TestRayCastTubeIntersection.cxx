@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The ray / quadratic sub-segment intersection of the ray-cast tubes (Salm
 // §3.2), run on the CPU from the very source the fragment shader uses
 // (vtkSplineTubeMath.h), checked against brute force: the first entry into

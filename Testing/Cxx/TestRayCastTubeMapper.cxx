@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test of vtkRayCastTubeMapper (VTK regression-image
 // framework), four views of one scene:
 //  top left:     tubes with varying radius, colored by a scalar through a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Hardware picking of ray-cast tubes: a multiblock of two polydata blocks,
 // each with polylines at known places. Selecting a rectangle around each
 // tube must report that tube's polyline (cell id) and block (composite
@@ -8,7 +9,6 @@
 #include "SplineVizRenderingTestUtilities.h"
 #include "SplineVizTestUtilities.h"
 
-#include "vtkCompositePolyDataMapper2.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -16,6 +16,17 @@
 #include "vtkProperty.h"
 #include "vtkSelection.h"
 #include "vtkSelectionNode.h"
+#include "vtkVersionMacros.h"
+
+// VTK's OpenGL composite mapper: vtkCompositePolyDataMapper from VTK 9.3 on
+// (vtkCompositePolyDataMapper2 is deprecated there).
+#if VTK_VERSION_NUMBER >= VTK_VERSION_CHECK(9, 3, 0)
+#include "vtkCompositePolyDataMapper.h"
+using vtkOpenGLCompositeMapper = vtkCompositePolyDataMapper;
+#else
+#include "vtkCompositePolyDataMapper2.h"
+using vtkOpenGLCompositeMapper = vtkCompositePolyDataMapper2;
+#endif
 
 #include <map>
 #include <set>
@@ -97,7 +108,7 @@ int TestRayCastTubePicking(int, char*[])
     { 220, 260, 360, 380 }, { 220, 20, 360, 140 } };
 
   // VTK's own composite mapper, the tubes as wide lines: the conventions.
-  vtkNew<vtkCompositePolyDataMapper2> vtkMapper;
+  vtkNew<vtkOpenGLCompositeMapper> vtkMapper;
   vtkMapper->SetInputDataObject(blocks);
   vtkNew<vtkActor> lines;
   lines->SetMapper(vtkMapper);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Independent reference for vtkRayCastTubeMapper: the same tubes (the same
 // spline, evaluated densely by independent code in the test, with the same
 // radius function) built by vtkTubeFilter with 64 sides plus sphere caps and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the shared tube core (vtkSplineTubeCore) and of the spline
 // math shared with the shaders (vtkSplineTubeMath.h):
 //  - the Hermite splines reproduce the nodes and the documented tangents;

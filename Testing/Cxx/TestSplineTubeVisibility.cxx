@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkSplineTubeVisibility (the line renderers' culling, on the CPU) against
 // brute force:
 // - the encoded part spheres contain the parts;

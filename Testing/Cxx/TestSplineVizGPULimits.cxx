@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Hostile sizes on the GPU: data larger than the GPU's buffer
 // limits must give one clear error (vtkErrorMacro, naming the limit) and
 // draw nothing, never crash or draw stale or partial data. The limit is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Progress, abort, hostile sizes and vtkStreamTracer API parity of the
 // SplineViz filters and readers:
 //  - progress: every long-running filter and reader (LR-spline resample and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the tensor logarithm and exponential of the shared tensor math
 // (vtkSplineVizTensorMath::FromEigenSystem, Log, Exp), the basis of the
 // log-Euclidean interpolation of vtkTensorLineTracer:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the shared tensor math (vtkSplineVizTensorMath.h):
 //  - every component layout converts a known tensor to the canonical order,
 //    NaN/inf components and unknown layouts are rejected;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkSplineVizTensorMath::PrincipalEigen (eigenvalues and principal
 // eigenvector only, for fiber tracking):
 //  - against vtkMath::Jacobi (independent code) on random symmetric tensors

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of the Schultz-Kindlmann glyph shapes of the shared tensor math
 // (vtkSplineVizTensorMath::SchultzKindlmannSquare / SchultzKindlmannShape,
 // from glsl/vtkTensorMathShared.glsl):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test of the hybrid fix-up of vtkStylizedLineMapper (Stoll
 // §4.3-4.4): the bundle of StylizedLineTestScenes.h seen down its lines,
 // left with the fix-up (the lines' ends and the turns toward the eye closed

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The halo of vtkStylizedLineMapper (Stoll §4.2) does what it is for: the
 // lines are flat white, the halo red (HaloColorFromBackground off), the
 // background black.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test of vtkStylizedLineMapper (VTK regression-image
 // framework), four views of the curls of StylizedLineTestScenes.h colored by
 // a scalar through a lookup table:

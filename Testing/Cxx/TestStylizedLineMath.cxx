@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the stylized-line math shared with the shaders
 // (vtkStylizedLineMath.h, Stoll et al. §4.1-4.4) and of the fix-up's CPU
 // classification (vtkStylizedLineFixUp):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkStylizedLineMapper against an independent polygonal reference: the same
 // polylines through vtkTubeFilter (64 sides, flat caps), both rendered with
 // multisampling off in the same window and camera (StylizedLineTestScenes.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Shadows of vtkStylizedLineMapper (Stoll §4.2), both ways:
 //  - its own shadow map (Shadows on): three lines along x, A above B, C
 //    beside B, and a directional scene light from above; B is darkened (its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test of the textures of vtkStylizedLineMapper (Stoll
 // §4.2, §6, Figs. 10-13), four views of wavy lines whose orientation array
 // turns once every 30 radii:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Per-block display attributes of composite inputs
 // (vtkSuperquadricGlyphMapper::SetCompositeDataDisplayAttributes, as
 // vtkCompositePolyDataMapper2 takes them): a three-block vtkMultiBlockDataSet,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Clipping planes of vtkSuperquadricGlyphMapper: the glyphs are solids cut
 // by the planes, checked pixel by pixel against an independent CPU
 // evaluation (the glyph solids of SuperquadricGlyphTestUtilities.h: Jacobi

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test: a close-up of one superquadric glyph (gamma 3,
 // between linear and planar) filling the view, cut by a polygonal plane and
 // pierced by a second glyph: the ray-cast surfaces write their exact depth,

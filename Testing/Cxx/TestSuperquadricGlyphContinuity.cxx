@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Continuity of the Schultz-Kindlmann glyphs along tensor paths that cross
 // from definite to indefinite (the smallest eigenvalue through 0) and on to
 // negative-dominant (through l1 = -l3, where the glyph of -T takes over):

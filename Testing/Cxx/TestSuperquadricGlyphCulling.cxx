@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Occlusion culling of vtkSuperquadricGlyphMapper is exact: a dense volume of
 // overlapping glyphs (32^3 points, glyphs overlapping 20-40 deep along the
 // view) in two viewports of one window (a perspective camera in the left

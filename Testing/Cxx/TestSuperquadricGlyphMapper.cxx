@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test of vtkSuperquadricGlyphMapper: the hand-made tensors
 // (linear, planar, spherical, cl == cp, repeated eigenvalues, mixed signs with
 // absolute values, thin plate, needle, ...) at gamma 0, 3 and 20 colored by

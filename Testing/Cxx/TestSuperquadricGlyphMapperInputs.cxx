@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkSuperquadricGlyphMapper with every kind of input, bad input, parameter
 // changes, thresholds, masks, scale modes and picking:
 //  - the same tensors in vtkImageData, vtkUnstructuredGrid (points only),

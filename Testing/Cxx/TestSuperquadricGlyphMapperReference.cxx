@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The GPU superquadric glyphs against an independent polygonal reference
 // (SuperquadricGlyphTestUtilities.h: vtkMath::Jacobi, Kindlmann's rule written
 // out in the test, vtkSuperquadricSource at 256 x 128, vtkPolyDataMapper):

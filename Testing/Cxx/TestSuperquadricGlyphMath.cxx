@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Unit tests of the superquadric glyph math shared with the shaders
 // (vtkSuperquadricGlyphMath.h, compiled from glsl/vtkSuperquadricGlyphShared.glsl):
 //  - q against the implicit formula written out here, its gradient against

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test of vtkSuperquadricGlyphMapper on an indefinite
 // tensor field: the Boussinesq stress tensors of vtkPointLoad (9 components,
 // mixed-sign eigenvalues), left with the default policy (tensors with a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test of the Schultz-Kindlmann glyphs
 // (NegativeEigenvaluePolicy SCHULTZ_KINDLMANN) on the indefinite stress field
 // of vtkPointLoad (the Boussinesq solution, 9 components, mixed-sign

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The Schultz-Kindlmann glyphs of vtkSuperquadricGlyphMapper
 // (NegativeEigenvaluePolicy SCHULTZ_KINDLMANN) against an independent
 // polygonal reference (SuperquadricGlyphTestUtilities.h: eigen-systems from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkSyntheticFibersSource: exact counts of the presets, arrays and
 // their ranges, smoothness (turn angle bound), box containment, determinism,
 // pieces that partition the whole, and bad settings.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkTensorAnalysisFilter:
 //  - outputs on an image of tensors R diag(l) R^T with known eigen-systems
 //    (eigenvalues, principal eigenvector up to sign, FA, MD, cl, cp, cs from

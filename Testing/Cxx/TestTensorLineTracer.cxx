@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Accuracy tests of vtkTensorLineTracer against analytic curves
 // (TensorLineTestFields.h):
 //  - convergence at the integrator's order: the field T = a I + t t^T,

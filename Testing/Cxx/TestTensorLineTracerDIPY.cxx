@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkTensorLineTracer on a real diffusion data set: DIPY's small_64D DWI
 // volume with tensors fitted by DIPY (Testing/Data/DIPY/small_64D_dti.vti,
 // see its PROVENANCE.md; DIPY's lower-triangular layout), seeded at every

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkTensorLineTracer against VTK's own vtkHyperStreamline (FiltersGeneral)
 // on the same field and seeds: a twisting helical bundle like Teem's
 // `tend helix` sampled on an image, seeds on and around the bundle's core,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Inputs of vtkTensorLineTracer:
 //  - the same tensors in every component layout (9 components with a skew
 //    part that the symmetrization removes, VTK's 6, DIPY's lower and MFEM's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Stopping criteria and bad input of vtkTensorLineTracer, each triggered by
 // a constructed field whose stopping place is known:
 //  - FA: l1 linear in x (trilinear interpolation exact), the line ends

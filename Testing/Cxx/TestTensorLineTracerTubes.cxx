@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test: tensor lines rendered as ray-cast spline tubes
 // (vtkRayCastTubeMapper, radius from the fractional anisotropy, the usual
 // DTI direction colors RGB = |e1| from the "DirectionColors" array).

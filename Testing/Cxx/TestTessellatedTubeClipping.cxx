@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkTessellatedTubeMapper with VTK's per-fragment features:
 //  - a clipping plane (data coordinates) removes exactly the tubes' part on
 //    its negative side: compared with the unclipped image, no pixel of the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkTessellatedTubeMapper in an OpenGL context without tessellation shaders
 // (ctest runs this with Mesa's MESA_GL_VERSION_OVERRIDE=3.3 and
 // MESA_EXTENSION_OVERRIDE=-GL_ARB_tessellation_shader): the mapper warns

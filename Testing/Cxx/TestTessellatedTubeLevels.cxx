@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The tessellation levels of vtkTessellatedTubeMapper respond to the view:
 // the triangles the GPU generates (a GL_PRIMITIVES_GENERATED query,
 // CountPrimitives) are counted for the same tubes seen from a sequence of

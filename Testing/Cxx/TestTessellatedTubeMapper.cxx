@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test of vtkTessellatedTubeMapper: tubes with strongly
 // varying radii (per-point "Radius" array), colored by a point scalar
 // through the mapper's lookup table (the color spline), flat end caps, a

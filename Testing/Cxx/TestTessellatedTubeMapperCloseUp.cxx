@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test of vtkTessellatedTubeMapper close up: left the
 // shaded tube (smooth silhouettes from the silhouette criterion), right the
 // same view in wireframe, which shows the tessellation: the base mesh

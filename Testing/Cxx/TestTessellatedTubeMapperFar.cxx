@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Image regression test of vtkTessellatedTubeMapper far away: the synthetic
 // "Fibers" data set (241 tubes, 3,530 segments) in a small window, where the
 // level of detail draws thin tubes without the tessellator: the view-facing

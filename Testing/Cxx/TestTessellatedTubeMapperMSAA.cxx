@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkTessellatedTubeMapper with multisampling: the colored test scene in a
 // window with 8 samples (image regression), and a check that the samples
 // are used: flat white tubes on black have only pure pixels without

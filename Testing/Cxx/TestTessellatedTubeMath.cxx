@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The tube-surface math of the tessellated tubes (Salm §3.1), run on the CPU
 // from the very source the shaders use (vtkSplineTubeMath.h), checked against
 // independent computations:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkTessellatedTubeMapper against an independent reference rendering: the
 // same tubes built by vtkTubeFilter (64 sides, flat caps) around the spline
 // centerline resampled 64 times per segment by this test's own Hermite code,

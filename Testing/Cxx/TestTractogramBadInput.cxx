@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkTractogramReader and vtkTractogramWriter on bad input: every case must
 // fail with a clear message (RequestData returns 0, an error is reported)
 // and leave an empty output, never crash, hang or fill part of the output.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkTractogramReader and vtkTractogramWriter: round trips through .tck
 // (+ .tsf) and .trk with point and cell arrays, the .trk voxel-mm bytes
 // against the voxel-mm formula written out here, a .trk read and written back

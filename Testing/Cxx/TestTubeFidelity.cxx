@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // One fidelity test for every tube renderer: vtkRayCastTubeMapper,
 // vtkTessellatedTubeMapper and vtkStylizedLineMapper against vtkTubeFilter
 // (64 sides), both sides rendered with multisampling off in the same window

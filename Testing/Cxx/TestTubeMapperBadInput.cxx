@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Bad input for the tube mappers (vtkTessellatedTubeMapper,
 // vtkRayCastTubeMapper and vtkStylizedLineMapper): clear errors or warnings,
 // no crash, and the good tubes still drawn. The stylized lines also with a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Hardware picking with the tube mappers (vtkTessellatedTubeMapper,
 // vtkRayCastTubeMapper and vtkStylizedLineMapper share the picking code of
 // vtkSplineTubeMapper; the stylized lines with their halo on, which is not

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Occlusion culling of the line renderers (vtkSplineTubeMapper: chunks drawn
 // front to back in groups, hidden ones never drawn, vtkSplineTubeVisibility)
 // must not change the picture: the ray-cast tubes, the tessellated tubes and

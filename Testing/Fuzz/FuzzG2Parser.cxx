@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the GoTools g2 parser (.g2: classes 200, 700, 293, 793) on arbitrary bytes,
 // and the Bezier extraction of whatever it accepts (see FuzzLRSplineParser).
 #include "SplineVizFuzzCommon.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: vtkIFEMReader on an in-memory HDF5 file (ReadFromInputString:
 // HDF5's core driver with a file image), every time step of it (at most 4).
 // The reader must either succeed with finite points or fail (RequestData

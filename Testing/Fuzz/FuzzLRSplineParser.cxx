@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: the LRSplines text parser (.lr) on arbitrary bytes
 // (vtkLRSplineParser::Parse, which validates what it read), and the Bezier
 // extraction of whatever it accepts. Every input must either parse

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: vtkLRSplineReader's whole RequestData (format detection,
 // parsing, Bezier extraction, point merging, the output grids) on in-memory
 // input (ReadFromInputString). The reader must either succeed with finite

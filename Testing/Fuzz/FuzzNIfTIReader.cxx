@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: vtkNIfTIVolumeReader and vtkNIfTITensorReader (and the
 // NIfTI file layer under them, vtkNIfTIFile) on files made from the input.
 // The first byte chooses how, the rest is the file:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // A main() for the fuzz targets when they are built without libFuzzer (the
 // normal build, GCC): runs LLVMFuzzerTestOneInput once on every file named on
 // the command line (or every file in a named folder), as libFuzzer does when

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target: vtkTractogramReader on .tck, .trk and .tck + .tsf files
 // made from the input. The first byte chooses how, the rest is the file:
 //   bits 0-1  0: a .tck; 1: a .trk; 2: a .tck and a .tsf (the .tsf starts at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Shared by the SplineViz libFuzzer targets (Testing/Fuzz): failure reports,
 // the checks every reader target makes, input files written for readers that
 // read from files, and a structure-aware mutator of typed binary header fields.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Writes the seeds and the hand-made regression inputs of the neuroimaging
 fuzz targets (FuzzNIfTIReader, FuzzTractogramReader): small files written by
 nibabel (the independent implementation) from DIPY's real data (its

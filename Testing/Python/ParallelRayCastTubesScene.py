@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Scene of TestParallelRayCastTubes (run by pvbatch, serially or under
 mpiexec): the synthetic fibers, split into pieces across the ranks, drawn as
 ray-cast tubes and composited by IceT; saves a screenshot.

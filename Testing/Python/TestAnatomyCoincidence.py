@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Anatomy under streamlines: a T1-like volume and a tractogram written by
 nibabel in the same world space coincide in SplineViz, in the data and on
 the screen, under affines that rotate and flip.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The README's main command renders Examples/Python/demo.py: run it into a
 fresh directory and check every picture it promises is written and shows
 something (not a blank or single-color image)."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Direction coloring (DirectionColoring) in the three line renderers against
 the analytic curve.
 

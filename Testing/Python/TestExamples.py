@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The example scripts run and draw something (they are documentation: a
 broken example is a bug)."""
 import os

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Probing and tracing IFEM results in physical space, on curved multi-patch geometry.
 
 cube-2patch.lr (two LR patches, [-1, 0] x [0, 1]^2 and [0, 1]^3, the geometry

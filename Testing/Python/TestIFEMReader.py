@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkIFEMReader and vtkLRSplineReader against an independent evaluation.
 
 Every IFEM result file of Testing/Data/External/ifem (LR volumes and surfaces
@@ -378,7 +379,7 @@ def lagrange_quads():
     elements = [[(2 * ey + b) * n + 2 * ex + a for b in range(3) for a in range(3)]
                 for ey in range(2) for ex in range(2)]
     text = "# LAGRANGIAN nodes=%d elements=4 type=quad\n" % len(nodes) + \
-        "".join("%r %r %r\n" % tuple(x) for x in nodes) + \
+        "".join("%r %r %r\n" % tuple(float(v) for v in x) for x in nodes) + \
         "".join(" ".join(str(k) for k in e) + "\n" for e in elements)
     temperature = np.cos(nodes[:, 0] * 3) + nodes[:, 1] ** 2
     with h5py.File(path, "w") as out:

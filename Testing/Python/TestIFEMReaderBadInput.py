@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkIFEMReader on bad input: each case must fail with a clear message (naming
 the dataset where there is one) and an empty output, never crash, hang or
 allocate what the file cannot hold. The files are made here with h5py from a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Probing and tracing IFEM surface results (LR and g2 surfaces) in physical space.
 
 The real IFEM files of Testing/Data/External/ifem that hold surfaces are read
@@ -141,7 +142,7 @@ def bent_square(path):
             head, rest = line[:line.rindex("]") + 1], line[line.rindex("]") + 1:]
             coords, gamma = rest[:rest.index("(")].split(), rest[rest.index("("):]
             x, y = float(coords[0]), float(coords[1])
-            line = "%s %r %r %r %s" % (head, x, y, 0.3 * np.sin(np.pi * x) * np.cos(np.pi * y),
+            line = "%s %r %r %r %s" % (head, x, y, float(0.3 * np.sin(np.pi * x) * np.cos(np.pi * y)),
                                       gamma)
         lines.append(line)
     bent = "\n".join(lines) + "\n"

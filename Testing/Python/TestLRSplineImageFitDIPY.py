@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkLRSplineImageFitter on the real MR scans that python3-dipy ships, checked
 against independent code.
 

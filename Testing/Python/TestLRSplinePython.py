@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The LR-spline classes from Python (`splineviz`): read the real file, probe
 it, resample it, and check the values against the identity map that the
 first patch of cube-3patch-refined.lr represents."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Per-streamline visibility in the three line renderers (VisibilityArray).
 
 For the ray-cast tubes, the tessellated tubes and the stylized lines, on a

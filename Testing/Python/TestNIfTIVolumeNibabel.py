@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkNIfTIVolumeReader against nibabel, the independent implementation.
 
 Files written by nibabel (random values, and DIPY's real aniso_vox brain, an

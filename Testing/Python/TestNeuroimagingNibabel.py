@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The neuroimaging readers and writer against an independent implementation,
 nibabel (and DIPY for the tensors), on real data shipped by python3-dipy.
 

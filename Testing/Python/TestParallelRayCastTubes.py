@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """ParaView's parallel pipeline with ray-cast tubes: the same scene rendered
 by one pvbatch process and by two MPI ranks (each drawing half of the tubes,
 IceT compositing their images by depth) must give the same picture. The

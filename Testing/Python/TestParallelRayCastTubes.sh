@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # ParaView's parallel pipeline with ray-cast tubes: renders the scene with
 # one pvbatch process and with two MPI ranks (IceT compositing), then
 # compares the images (TestParallelRayCastTubes.py).

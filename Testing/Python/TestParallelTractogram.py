@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The tractogram reader under MPI (TestParallelTractogram.sh runs it):
 
     pvpython TestParallelTractogram.py make OUTPUT_DIR

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: BSD-3-Clause
 # The tractogram reader under MPI: a small .tck (written by nibabel) drawn as
 # ray-cast tubes by one pvbatch process and by two MPI ranks that each read
 # only their half of the file; compares the images and the ranks' shares

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Scene of TestParallelTractogram (run by pvbatch, serially or under
 mpiexec): the test's .tck drawn as ray-cast tubes (all streamlines, then a
 random half), composited by IceT; saves the screenshots, and each rank writes

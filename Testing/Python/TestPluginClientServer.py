@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Client/server: pvpython connects to a pvserver of its own (started here on
 a free port, without PV_PLUGIN_PATH), loads SplineVizPlugin on both sides
 with splineviz.plugin.load_plugin, and renders the synthetic fibers with the

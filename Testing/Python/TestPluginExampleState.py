@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: run one of the ParaView state examples (Examples/Python/*_state.py)
 the way the README tells users to: with build/splineviz-env.sh's
 PV_PLUGIN_PATH, so ParaView loads the plugin at start-up and the example's

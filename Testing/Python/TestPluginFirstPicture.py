@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: real tractograms opened with the defaults show lines, not dots.
 
 DIPY's real cb_2 bundle (Testing/Data/DIPY/cb_2.vtp), written as a .tck by

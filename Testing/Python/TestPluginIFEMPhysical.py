@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: SplineViz's filters and the LR-Spline Volume representation on an
 IFEM result with curved two-patch geometry, in physical space.
 

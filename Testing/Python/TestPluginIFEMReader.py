@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: IFEM results in ParaView ("IFEM HDF5 Results").
 
 - The reader factory opens IFEM .hdf5 files with the IFEM reader and does

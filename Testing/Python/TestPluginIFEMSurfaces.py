@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: LR-Spline Probe and LR-Spline Stream Tracer on an IFEM surface
 result, the flow around a cylinder of Cyl2D-VMSFSI-weak.hdf5 (five curved g2
 patches in the plane), opened by file name at its last time step.

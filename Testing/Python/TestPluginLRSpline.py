@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the SplineViz plugin's LR-spline proxies in a ParaView pipeline:
 open a .lr file through the reader factory, probe it along a line, resample
 it to an image, render the spline's surface and check the picture."""

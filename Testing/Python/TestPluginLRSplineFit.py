@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the SplineViz plugin's "LR-Spline Fit Image" in a ParaView pipeline:
 fit ParaView's Wavelet (an analytic scalar image) to 2 % of its range, check
 at every voxel with "LR-Spline Probe" that the tolerance holds, check the

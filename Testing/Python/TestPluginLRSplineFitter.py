@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the SplineViz plugin's "LR-Spline Fit" on an unstructured mesh in a
 ParaView pipeline: ParaView's Wavelet clipped by a sphere (an unstructured
 grid whose boundary is not its bounding box) is fitted to 2 % of its range;

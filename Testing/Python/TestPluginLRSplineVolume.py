@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the "LR-Spline Volume" representation of the SplineViz plugin on the
 real 3-patch LR-spline file, read by the plugin's reader.
 
@@ -31,7 +32,7 @@ import numpy as np
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz
-from splineviz_testing import output_dir, png_rgb, white_view
+from splineviz_testing import output_dir, png_rgb, set_translation, white_view
 
 PARALLEL = len(sys.argv) > 1 and sys.argv[1] == "parallel"
 if PARALLEL:
@@ -401,13 +402,13 @@ def serial_checks():
     display.Ambient = 0.0
 
     # The actor's transform.
-    display.Position = [0.15, -0.1, 0.0]
+    set_translation(display, [0.15, -0.1, 0.0])
     display.Scale = [1.0, 0.8, 1.2]
     moved = paraview_image("transformed")
     compare("transformed", moved, position=(0.15, -0.1, 0.0), scale=(1.0, 0.8, 1.2))
     if changed(moved, composite) < 0.1:
         fail("Position and Scale do not move the volume")
-    display.Position = [0.0, 0.0, 0.0]
+    set_translation(display, [0.0, 0.0, 0.0])
     display.Scale = [1.0, 1.0, 1.0]
 
     # Patch 0 holds (x, y, z), patch 1 (-y, x, z): the same magnitude, other components.

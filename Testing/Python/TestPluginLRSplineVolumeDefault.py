@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the first picture of a new user. cube-3patch-refined.lr opened
 with defaults and shown as "LR-Spline Volume" must be coloured like
 ParaView's own "Volume" representation colours a new data set: the first

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the line representations' Visibility Array.
 
 SyntheticFibers with a cell array "Selected" made by ParaView's Calculator

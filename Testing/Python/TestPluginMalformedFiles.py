@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """ParaView survives malformed files: every kind of file the plugin reads,
 damaged, is opened through the plugin's readers as a user would (File > Open
 picks the reader; the NIfTI files also through both NIfTI readers by name),

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the plugin's neuroimaging readers and writer in ParaView, as a user
 gets them. DIPY fits its real small_64D scan (an oblique, permuted affine);
 nibabel saves the tensors (5D NIfTI) and DIPY's FA. Then, in ParaView:

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: load the SplineViz plugin and use its sources in a ParaView
 pipeline, render and check the image shows them."""
 import sys

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the plugin's Select Streamlines filter on DIPY's real cb_2 bundle.
 
 The default sphere (centre of the bounds, a tenth of the extent) selects

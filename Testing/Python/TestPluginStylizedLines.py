@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the "Stylized Lines" representation of the SplineViz plugin on a
 ParaView pipeline (the synthetic fibers source), with the tube radius
 properties it shares with the tube representations and its own properties.

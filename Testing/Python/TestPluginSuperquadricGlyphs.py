@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the "Superquadric Glyphs" representation of the SplineViz plugin
 on a tensor volume (vtkImageData from a Programmable Source, DIPY-ordered
 tensors): a glyph at EVERY voxel (not only the surface, which is what

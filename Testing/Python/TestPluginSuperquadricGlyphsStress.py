@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the "Superquadric Glyphs" representation on an indefinite stress
 field (VTK's vtkPointLoad, the Boussinesq solution, from a Programmable
 Source): with Negative Eigenvalues "Schultz-Kindlmann" every tensor gets a

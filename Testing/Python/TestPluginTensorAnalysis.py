@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the plugin's Tensor Analysis filter on a DIPY-ordered tensor
 volume (made by a Programmable Source), checked against numpy's eigvalsh;
 a wrong layout choice changes the results; a 3-component array is refused."""

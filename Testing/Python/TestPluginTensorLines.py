@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the SplineViz plugin's "Tensor Line Tracer" proxy on the real
 DIPY tensors (read through ParaView's reader factory): voxel seeding and a
 point-cloud seed source, documented properties reaching the filter, and the

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the "Tessellated Tubes" representation of the SplineViz plugin on
 a ParaView pipeline (the synthetic fibers source), with a radius array,
 scalar coloring and the tessellation properties. Checks that the tubes are

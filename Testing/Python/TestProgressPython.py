@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Progress, abort and a refused hostile size seen from Python, through the
 example Examples/Python/progress_and_abort.py: the progress values increase
 to 1 (at least 5 events), the cancelled run is empty, the 100000^3 request

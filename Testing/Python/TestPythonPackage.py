@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The `splineviz` Python package: every public class imports and works in an
 ordinary VTK pipeline."""
 import sys

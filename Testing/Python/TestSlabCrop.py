@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The slab crop (SlabOrigin, SlabNormal, SlabThickness) of the three line
 renderers, checked through the depth buffer.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkStreamlineSelection against a brute-force numpy reference.
 
 DIPY's real cb_2 bundle (116 streamlines, float32, mm) with random spheres,

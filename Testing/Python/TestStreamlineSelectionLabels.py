@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkStreamlineSelection's label-image regions against a numpy reference.
 
 Label volumes written by nibabel around DIPY's real cb_2 bundle under

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The tensor analysis on real diffusion MRI data against DIPY (an
 independent implementation): DIPY fits tensors to its small_64D scan and
 computes FA, MD and eigenvalues; vtkTensorAnalysisFilter reads DIPY's

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """pvpython: vtkTensorLineTracer from the `splineviz` package in a plain VTK
 pipeline with numpy: the real DIPY tensors (SYMMETRIC_LOWER layout, voxel
 seeding) against DIPY's own FA at the seeds, the stopping contract, and a

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """The tessellated tubes from Python: runs the example script
 Examples/Python/tessellated_tubes.py (plain VTK pipeline with the `splineviz`
 package) with and without the level of detail, and checks what it reports

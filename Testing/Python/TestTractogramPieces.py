@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """vtkTractogramReader's piece requests and read-time subsets against nibabel.
 
 Files written by nibabel (.tck, .trk with per-point scalars and per-streamline

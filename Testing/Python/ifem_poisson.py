@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """IFEM-Poisson's cube-2patch problem as an IFEM HDF5 result, for the tests.
 
 cube-2patch.lr (two LR patches, [-1, 0] x [0, 1]^2 and [0, 1]^3: the geometry

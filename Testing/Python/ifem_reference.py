@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """An independent reference for the spline tests: parsers of the LRSplines text,
 GoTools g2 (classes 200, 700) and IFEM Lagrange patch formats, and a direct
 evaluation of the splines they hold, written from the formats' definitions
@@ -333,7 +334,7 @@ def gotools_lr(text, rational=False):
     knots = [np.unique(np.r_[patch.lo[:, d], patch.hi[:, d]]) for d in range(pd)]
     out = ["%d 1 0 0" % (293 if pd == 2 else 793), "%d 1e-12" % (1 if rational else 0)]
     for d in range(pd):
-        out.append("%d %s" % (len(knots[d]), " ".join(repr(v) for v in knots[d])))
+        out.append("%d %s" % (len(knots[d]), " ".join(repr(float(v)) for v in knots[d])))
     index = [{v: i for i, v in enumerate(k)} for k in knots]
     for d in range(pd):
         planes = []
@@ -360,8 +361,8 @@ def gotools_lr(text, rational=False):
         weight = c[-1] if rational else 1.0
         cart = c[:dim] / weight
         out.append("%d %d\n%s %r %r" % (dim, 1 if rational else 0,
-                                          " ".join(repr(v * patch.gamma[i]) for v in cart),
-                                          patch.gamma[i], weight))
+                                          " ".join(repr(float(v * patch.gamma[i])) for v in cart),
+                                          float(patch.gamma[i]), float(weight)))
         for d in range(pd):
             kv = patch.knots[d][i]
             out.append("%d %s" % (len(kv), " ".join(str(index[d][v]) for v in kv)))

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 # Sourced by the MPI tests' scripts (TestParallel*.sh): attempt COMMAND...
 # runs a pvbatch or mpiexec command, retried once when it cannot start or
 # finish (an MPI start-up hang, or an X connection reset because an X server

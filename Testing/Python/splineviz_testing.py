@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Shared by the Python and plugin tests: the checks and their report
 (Checker), the synthetic-fibers scene the plugin tests draw, and measures of
 how much of a rendered image is drawn."""
@@ -57,6 +58,14 @@ class Observed:
 
     def _warning(self, caller, event):
         self.warnings.append(event)
+
+
+def set_translation(display, translation):
+    """Sets a display's translation (the actor's position): the property's
+    Python name is Position up to ParaView 5.11 and Translation (its label)
+    from 5.12 on."""
+    name = "Translation" if "Translation" in display.ListProperties() else "Position"
+    setattr(display, name, list(translation))
 
 
 def output_dir():

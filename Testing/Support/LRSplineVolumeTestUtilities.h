@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // The independent reference for vtkLRSplineVolumeMapper: a CPU ray caster
 // that evaluates the LR spline exactly in double precision with
 // vtkLRSplineField (the CPU element search and Bezier evaluation, tested on

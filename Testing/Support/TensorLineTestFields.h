@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: BSD-3-Clause
 // Tensor fields with known principal-direction curves for the tests and the
 // benchmark of vtkTensorLineTracer (written here, independently of the
 // filter), and helpers to read its output.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """SplineViz for Python: spline tubes, superquadric tensor glyphs and
 LR-spline volumes as ordinary VTK classes.
 

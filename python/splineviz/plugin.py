@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: BSD-3-Clause
 """Load the SplineViz ParaView plugin from a pvpython/pvbatch script, once.
 
     from paraview.simple import *
