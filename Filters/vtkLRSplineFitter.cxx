@@ -539,10 +539,23 @@ void DataRange(const PointData& data, double range[2])
   }
 }
 
-// The initial tensor-product spline (parameters [0, m] per direction,
-// splits halvings down to `levels`), all coefficients the data mean.
-bool InitializeFit(
-  PointFit& fit, const int degree[3], const int elements[3], int levels, std::string* error)
+// The parameter domain [0, m] per direction and the refinement limits
+// (halvings of the initial elements down to `levels`).
+void ConfigureFit(PointFit& fit, const int elements[3], int levels)
+{
+  for (int d = 0; d < 3; ++d)
+  {
+    fit.Top[d] = elements[d];
+    fit.Core.InitialSide[d] = 1.0;
+    fit.Core.Options.MinimumPart[d] = std::pow(2.0, -(levels + 0.5)) * (1.0 + 1e-9);
+  }
+  fit.Core.Options.Ratio = 0.5;
+  fit.Core.MinimumCell = 1e-9;
+}
+
+// The initial tensor-product spline (unit knot intervals on the domain of
+// ConfigureFit()), all coefficients the data mean.
+bool InitializeFit(PointFit& fit, const int degree[3], const int elements[3], std::string* error)
 {
   const PointData& data = *fit.Data;
   std::vector<double> breaks[3];
@@ -552,12 +565,7 @@ bool InitializeFit(
     {
       breaks[d].push_back(k);
     }
-    fit.Top[d] = elements[d];
-    fit.Core.InitialSide[d] = 1.0;
-    fit.Core.Options.MinimumPart[d] = std::pow(2.0, -(levels + 0.5)) * (1.0 + 1e-9);
   }
-  fit.Core.Options.Ratio = 0.5;
-  fit.Core.MinimumCell = 1e-9;
   if (!fit.Core.Builder.InitializeTensorProduct(degree, breaks, data.Dim, error))
   {
     return false;
@@ -704,6 +712,51 @@ bool FinishFit(PointFit& fit, std::vector<double>& residual, const char* fileNam
   }
   return true;
 }
+
+// The time of a data object's time step (false: it has none).
+bool DataTime(vtkDataObject* object, double* time)
+{
+  vtkInformation* info = object ? object->GetInformation() : nullptr;
+  if (!info || !info->Has(vtkDataObject::DATA_TIME_STEP()))
+  {
+    return false;
+  }
+  *time = info->Get(vtkDataObject::DATA_TIME_STEP());
+  return true;
+}
+}
+
+// What ReusePreviousMesh keeps of an update: the fitted spline and what it
+// was fitted under.
+struct vtkLRSplineFitter::PreviousFit
+{
+  vtkLRSplineBuilder Builder;
+  vtkMTimeType Settings = 0; // the filter's MTime
+  double Time = 0.0;
+  double Lo[3] = { 0, 0, 0 }, Hi[3] = { 0, 0, 0 };
+  int Dim = 0;
+};
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineFitter::CanReusePreviousFit(
+  bool hasTime, double time, const double lo[3], const double hi[3], int dim)
+{
+  const PreviousFit* previous = this->Previous.get();
+  if (!this->ReusePreviousMesh || !previous || !hasTime || previous->Settings != this->GetMTime() ||
+    previous->Dim != dim || previous->Time == time)
+  {
+    return false;
+  }
+  for (int d = 0; d < 3; ++d)
+  {
+    const double tolerance = 1e-9 * (hi[d] - lo[d]);
+    if (std::abs(previous->Lo[d] - lo[d]) > tolerance ||
+      std::abs(previous->Hi[d] - hi[d]) > tolerance)
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -777,6 +830,7 @@ int vtkLRSplineFitter::RequestData(
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
   this->MaximumError = this->RMSError = this->AbsoluteTolerance = this->FitTime = 0.0;
   this->ToleranceMet = false;
+  this->ReusedPreviousMesh = false;
   this->NumberOfElements = this->NumberOfBasisFunctions = this->NumberOfDataPoints = 0;
   this->NumberOfRefinementLevels = this->NumberOfIterations = 0;
   std::fill(this->Domain, this->Domain + 6, 0.0);
@@ -853,12 +907,20 @@ int vtkLRSplineFitter::RequestData(
   fit.Tolerance = tolerance;
   fit.RMSMode = this->ToleranceType == RMS_ERROR;
   std::string error;
-  if (!InitializeFit(
-        fit, this->Degree, this->InitialNumberOfElements, this->MaximumRefinementLevels, &error))
+  ConfigureFit(fit, this->InitialNumberOfElements, this->MaximumRefinementLevels);
+  double time = 0.0;
+  const bool hasTime = DataTime(input, &time);
+  this->ReusedPreviousMesh = this->CanReusePreviousFit(hasTime, time, lo, hi, data.Dim);
+  if (this->ReusedPreviousMesh)
+  {
+    fit.Core.Builder = this->Previous->Builder;
+  }
+  else if (!InitializeFit(fit, this->Degree, this->InitialNumberOfElements, &error))
   {
     vtkErrorMacro(<< "cannot make the initial spline: " << error);
     return 0;
   }
+  this->Previous.reset();
 
   // Fit, evaluate, refine.
   LoopSettings settings;
@@ -916,6 +978,16 @@ int vtkLRSplineFitter::RequestData(
     output->Initialize();
     return 0;
   }
+  if (this->ReusePreviousMesh && hasTime)
+  {
+    this->Previous.reset(new PreviousFit);
+    this->Previous->Builder = fit.Core.Builder;
+    this->Previous->Settings = this->GetMTime();
+    this->Previous->Time = time;
+    this->Previous->Dim = data.Dim;
+    std::copy(lo, lo + 3, this->Previous->Lo);
+    std::copy(hi, hi + 3, this->Previous->Hi);
+  }
   this->MaximumError = report.MaximumError;
   this->RMSError = report.RMSError;
   this->ToleranceMet = report.ToleranceMet;
@@ -936,6 +1008,10 @@ int vtkLRSplineFitter::RequestData(
   domain->SetNumberOfComponents(6);
   domain->InsertNextTuple(this->Domain);
   grid->GetFieldData()->AddArray(domain);
+  vtkNew<vtkIdTypeArray> reused;
+  reused->SetName("LRFitReusedPreviousMesh");
+  reused->InsertNextValue(this->ReusedPreviousMesh ? 1 : 0);
+  grid->GetFieldData()->AddArray(reused);
   vtkNew<vtkIdTypeArray> count;
   count->SetName("LRFitDataPoints");
   count->InsertNextValue(np);
@@ -1273,6 +1349,8 @@ void vtkLRSplineFitter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumPointsPerElement: " << this->MinimumPointsPerElement << "\n";
   os << indent << "Regularization: " << this->Regularization << "\n";
   os << indent << "ExtractBoundary: " << this->ExtractBoundary << "\n";
+  os << indent << "ReusePreviousMesh: " << this->ReusePreviousMesh << "\n";
+  os << indent << "ReusedPreviousMesh: " << this->ReusedPreviousMesh << "\n";
   os << indent << "FieldName: " << (this->FieldName ? this->FieldName : "(input array's)") << "\n";
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";

@@ -32,6 +32,15 @@
  * the volume mapper's trimming input. FileName: also write a .lr file (read
  * it back with PhysicalBounds = LRFitDomain). Every piece fits all the data.
  *
+ * Time (issue 30): the filter fits the time step the pipeline asks for and
+ * passes the input's time steps on, so ParaView animates the fitted series.
+ * With ReusePreviousMesh (default on), a step whose data has the same
+ * domain as the previous update's, with no setting changed in between,
+ * starts from the previous step's refined mesh and coefficients instead of
+ * the coarse tensor-product spline (GoTools' LRVolApprox likewise continues
+ * from a given spline): fewer fit-and-refine rounds per step, and meshes
+ * that only ever gain elements along the series.
+ *
  * Refused before allocating: no points or array, NaN or infinite values or
  * coordinates, points without volume (on a plane, line or point), Tolerance
  * <= 0, degrees outside 1..5, MaximumRefinementLevels outside 0..30, limits
@@ -44,6 +53,7 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkMultiBlockDataSetAlgorithm.h"
 
+#include <memory> // for std::unique_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
 
@@ -177,6 +187,19 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Start each update whose input is a different time step of data on the
+   * same domain, with no setting changed since the previous update, from
+   * the previous update's refined mesh and coefficients (see the class
+   * documentation). Default on. Off: every update starts from the coarse
+   * tensor-product spline.
+   */
+  vtkSetMacro(ReusePreviousMesh, vtkTypeBool);
+  vtkGetMacro(ReusePreviousMesh, vtkTypeBool);
+  vtkBooleanMacro(ReusePreviousMesh, vtkTypeBool);
+  ///@}
+
+  ///@{
   /// If set, the fitted spline is also written to this .lr file.
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
@@ -194,6 +217,8 @@ public:
   int GetNumberOfRefinementLevels() const { return this->NumberOfRefinementLevels; }
   int GetNumberOfIterations() const { return this->NumberOfIterations; }
   double GetFitTime() const { return this->FitTime; }
+  /// Whether the last update started from the previous update's mesh (ReusePreviousMesh).
+  bool GetReusedPreviousMesh() const { return this->ReusedPreviousMesh; }
   /// The fitted domain (xmin, xmax, ymin, ymax, zmin, zmax).
   const double* GetDomain() const { return this->Domain; }
   ///@}
@@ -217,6 +242,11 @@ protected:
   // false with an error when the points have no volume.
   bool ComputeDomain(
     const std::vector<double>& positions, double lo[3], double hi[3], double scale[3]);
+  // Whether a fit of data on [lo, hi] (dim components, at `time`) may start
+  // from the previous update's spline: ReusePreviousMesh, another time step,
+  // the same domain (to rounding), no setting changed, the same components.
+  bool CanReusePreviousFit(
+    bool hasTime, double time, const double lo[3], const double hi[3], int dim);
   // The boundary surface of the leaves (output port 1).
   bool BuildBoundary(const std::vector<vtkDataSet*>& leaves, vtkPolyData* boundary);
 
@@ -235,6 +265,7 @@ protected:
   vtkTypeBool ExtractBoundary = 1;
   char* FieldName = nullptr;
   char* FileName = nullptr;
+  vtkTypeBool ReusePreviousMesh = 1;
 
   double MaximumError = 0.0;
   double RMSError = 0.0;
@@ -247,8 +278,13 @@ protected:
   int NumberOfIterations = 0;
   double FitTime = 0.0;
   double Domain[6] = { 0, 0, 0, 0, 0, 0 };
+  bool ReusedPreviousMesh = false;
 
 private:
+  // The previous update's spline and what it was fitted under (ReusePreviousMesh).
+  struct PreviousFit;
+  std::unique_ptr<PreviousFit> Previous;
+
   vtkLRSplineFitter(const vtkLRSplineFitter&) = delete;
   void operator=(const vtkLRSplineFitter&) = delete;
 };
