@@ -44,7 +44,13 @@ size_t vtkSplineVizGPUBuffer::GetMaximumNumberOfTexels(vtkOpenGLRenderWindow*)
 {
   GLint glLimit = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &glLimit);
-  size_t limit = glLimit > 0 ? static_cast<size_t>(glLimit) : std::numeric_limits<size_t>::max();
+  return ApplyTestLimit(
+    glLimit > 0 ? static_cast<size_t>(glLimit) : std::numeric_limits<size_t>::max());
+}
+
+//------------------------------------------------------------------------------
+size_t vtkSplineVizGPUBuffer::ApplyTestLimit(size_t limit)
+{
   if (const char* forced = std::getenv("SPLINEVIZ_GPU_BUFFER_LIMIT"))
   {
     char* end = nullptr;
@@ -55,6 +61,12 @@ size_t vtkSplineVizGPUBuffer::GetMaximumNumberOfTexels(vtkOpenGLRenderWindow*)
     }
   }
   return limit;
+}
+
+//------------------------------------------------------------------------------
+const char* vtkSplineVizGPUBuffer::TestLimitNote()
+{
+  return std::getenv("SPLINEVIZ_GPU_BUFFER_LIMIT") ? ", lowered by SPLINEVIZ_GPU_BUFFER_LIMIT" : "";
 }
 
 //------------------------------------------------------------------------------
@@ -85,8 +97,7 @@ bool vtkSplineVizGPUBuffer::UploadInPieces(vtkOpenGLRenderWindow* window, size_t
     msg << "the data needs a GPU buffer of " << texels << " texels (" << texels * texelBytes
         << " bytes); this GPU allows at most " << limit
         << " texels per buffer (GL_MAX_TEXTURE_BUFFER_SIZE"
-        << (std::getenv("SPLINEVIZ_GPU_BUFFER_LIMIT") ? ", lowered by SPLINEVIZ_GPU_BUFFER_LIMIT"
-                                                      : "")
+        << TestLimitNote()
         << "): nothing is drawn";
     LastUploadError() = msg.str();
     this->ReleaseGraphicsResources(window);

@@ -81,6 +81,16 @@ public:
    */
   static size_t GetMaximumNumberOfTexels(vtkOpenGLRenderWindow* window);
 
+  /**
+   * `limit` lowered to SPLINEVIZ_GPU_BUFFER_LIMIT when that environment
+   * variable holds a smaller number (the one place it is read; every mapper's
+   * size limit goes through here, so tests can reach the refusal paths).
+   */
+  static size_t ApplyTestLimit(size_t limit);
+
+  /// ", lowered by SPLINEVIZ_GPU_BUFFER_LIMIT" when that is set, else "" (for error messages).
+  static const char* TestLimitNote();
+
   /// Why the last failed Upload() failed (for the mapper's error message; kept after later
   /// successes).
   static const std::string& GetLastUploadError();

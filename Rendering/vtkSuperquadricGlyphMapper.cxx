@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkSuperquadricGlyphMapper.h"
 
+#include "vtkSplineVizGPUBuffer.h"
 #include "vtkSplineVizTensorMath.h"
 #include "vtkSuperquadricGlyphPreparer.h"
 
@@ -949,19 +950,14 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
   // a buffer the driver cannot allocate (GL_OUT_OF_MEMORY) is caught below.
   // Either way nothing is drawn and the data is not retried until it changes.
   const vtkIdType numGlyphs = poly->GetNumberOfPoints();
-  vtkIdType limit = VTK_INT_MAX;
-  if (const char* forced = std::getenv("SPLINEVIZ_GPU_BUFFER_LIMIT"))
-  {
-    limit = std::min<vtkIdType>(limit, std::strtoll(forced, nullptr, 10));
-  }
+  const vtkIdType limit =
+    static_cast<vtkIdType>(vtkSplineVizGPUBuffer::ApplyTestLimit(VTK_INT_MAX));
   in.TooLarge = numGlyphs > limit;
   in.HaveBlockColors = false;
   if (in.TooLarge)
   {
     vtkErrorMacro(<< numGlyphs << " glyphs are more than one GPU draw can hold (at most " << limit
-                  << (std::getenv("SPLINEVIZ_GPU_BUFFER_LIMIT")
-                         ? ", lowered by SPLINEVIZ_GPU_BUFFER_LIMIT"
-                         : "")
+                  << vtkSplineVizGPUBuffer::TestLimitNote()
                   << "): nothing is drawn");
   }
   else
