@@ -95,14 +95,24 @@ tracer.SetIntegratorTypeToRungeKutta45()
 tracer.SetMaximumPropagation(20.0)
 tracer.SetInitialIntegrationStep(0.1)
 tracer.SetComputeVorticity(True)  # gives "Rotation": integrated rotation about the flow direction
+# One thread: the same streamlines on every run (VTK 9.2 traces seeds in
+# parallel; once, in CI, the output's arrays did not match its lines).
+tracer.SetForceSerialExecution(True)
 tracer.Update()
 
 # Integrated divergence -> radius, per streamline (trapezoidal rule over time).
 lines = dsa.WrapDataObject(tracer.GetOutput())
 div = np.asarray(lines.PointData["Divergence"])
 time = np.asarray(lines.PointData["IntegrationTime"])
+print("DBG", tracer.GetOutput().GetNumberOfPoints(), len(div), len(time), tracer.GetOutput().GetNumberOfLines(), tracer.GetOutput().GetLines().GetNumberOfConnectivityIds(), [tracer.GetOutput().GetPointData().GetArray(i).GetNumberOfTuples() for i in range(tracer.GetOutput().GetPointData().GetNumberOfArrays())], file=sys.stderr)
 radius = np.zeros(len(time))
 cells = tracer.GetOutput().GetLines()
+if not (len(div) == len(time) == tracer.GetOutput().GetNumberOfPoints()
+        and cells.GetNumberOfConnectivityIds() <= len(time)):
+    raise RuntimeError("vtkStreamTracer's output is inconsistent: %d points, %d Divergence and "
+                       "%d IntegrationTime values, %d line point ids"
+                       % (tracer.GetOutput().GetNumberOfPoints(), len(div), len(time),
+                          cells.GetNumberOfConnectivityIds()))
 cells.InitTraversal()
 from vtkmodules.vtkCommonCore import vtkIdList  # noqa: E402
 
