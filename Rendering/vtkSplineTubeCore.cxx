@@ -836,57 +836,74 @@ void vtkSplineTubeCore::PropagateFrames(vtkIdType t, vtkIdType n,
   std::vector<double> p(static_cast<size_t>(4 * n));
   std::vector<double> m(static_cast<size_t>(4 * n));
   in.Nodes(t, 0, n, p.data(), m.data());
-  auto node = [&](vtkIdType i) { return vec4(p[4 * i], p[4 * i + 1], p[4 * i + 2], 0.0); };
-  auto deriv = [&](vtkIdType i) { return vec4(m[4 * i], m[4 * i + 1], m[4 * i + 2], 0.0); };
-  // Unit tangent of the cubic of segment s at parameter u; the chord where
-  // the derivative vanishes (a cusp of the spline).
-  auto unitTangent = [&](vtkIdType s, double u)
-  {
-    vec3 d =
-      vec3(vtkSplineTubeMath::svHermiteDerivative(node(s), deriv(s), node(s + 1), deriv(s + 1), u));
-    double len = glm::length(d);
-    if (len < 1e-12)
-    {
-      d = vec3(node(s + 1) - node(s));
-      len = glm::length(d);
-    }
-    return len > 0.0 ? d / len : vec3(1.0, 0.0, 0.0);
-  };
+  auto node = [&](vtkIdType i) { return vec3(p[4 * i], p[4 * i + 1], p[4 * i + 2]); };
+  auto deriv = [&](vtkIdType i) { return vec3(m[4 * i], m[4 * i + 1], m[4 * i + 2]); };
   auto emit = [&](vtkIdType k, const vec3& r)
   {
     const double frame[3] = { r.x, r.y, r.z };
     write(k, frame);
   };
   const double maxAngle = this->MaximumFrameStepAngle;
-  vec3 tangent = unitTangent(0, 0.0);
+  // The cubic Hermite segment s in power form, set once per segment:
+  // position c0 + u c1 + u^2 c2 + u^3 c3, derivative c1 + 2u c2 + 3u^2 c3
+  // (the same curve as vtkSplineTubeMath::svHermite; evaluating the basis
+  // functions per sample was most of the first frame's frame propagation).
+  vec3 c0, c1, c2, c3, chord;
+  auto setSegment = [&](vtkIdType s)
+  {
+    const vec3 p0 = node(s), p1 = node(s + 1), m0 = deriv(s), m1 = deriv(s + 1);
+    chord = p1 - p0;
+    c0 = p0;
+    c1 = m0;
+    c2 = 3.0 * chord - 2.0 * m0 - m1;
+    c3 = -2.0 * chord + m0 + m1;
+  };
+  auto position = [&](double u) { return c0 + u * (c1 + u * (c2 + u * c3)); };
+  // Unit tangent at parameter u; the chord where the derivative vanishes (a
+  // cusp of the spline).
+  auto unitTangent = [&](double u)
+  {
+    vec3 d = c1 + u * (2.0 * c2 + u * (3.0 * c3));
+    double len = glm::length(d);
+    if (len < 1e-12)
+    {
+      d = chord;
+      len = glm::length(d);
+    }
+    return len > 0.0 ? d / len : vec3(1.0, 0.0, 0.0);
+  };
+  setSegment(0);
+  vec3 tangent = unitTangent(0.0);
   vec3 r = vtkSplineTubeMath::svAnyOrthogonal(tangent);
   emit(0, r);
   for (vtkIdType s = 0; s + 1 < n; ++s)
   {
+    setSegment(s);
     // Sub-steps: sample the tangent densely enough that no step turns it by
     // more than maxAngle (the total turning is estimated on 8 samples).
     double turning = 0.0;
     vec3 prev = tangent;
     for (int k = 1; k <= 8; ++k)
     {
-      const vec3 cur = unitTangent(s, k / 8.0);
+      const vec3 cur = unitTangent(k / 8.0);
       // The angle between unit vectors from their distance c: 2 asin(c / 2),
       // by its series below c = 1 (relative error under 1e-3; acos was a
       // fifth of the first frame's CPU time on whole-brain tractograms).
       const double c = glm::length(cur - prev);
-      const double c2 = c * c;
-      turning += c < 1.0 ? c * (1.0 + c2 * (1.0 / 24.0 + c2 * (3.0 / 640.0)))
+      const double cc = c * c;
+      turning += c < 1.0 ? c * (1.0 + cc * (1.0 / 24.0 + cc * (3.0 / 640.0)))
                          : 2.0 * std::asin(std::min(1.0, 0.5 * c));
       prev = cur;
     }
     const int steps = std::max(1, std::min(256, static_cast<int>(std::ceil(turning / maxAngle))));
-    vec3 x = vec3(node(s));
+    vec3 x = c0;
     for (int k = 1; k <= steps; ++k)
     {
+      // The segment's end exactly at its node; its tangent there is the
+      // last turning sample.
       const double u = static_cast<double>(k) / steps;
-      const vec3 x1 =
-        vec3(vtkSplineTubeMath::svHermite(node(s), deriv(s), node(s + 1), deriv(s + 1), u));
-      const vec3 t1 = unitTangent(s, u);
+      const vec3 x1 = k == steps ? node(s + 1) : position(u);
+      const vec3 t1 = k == steps ? prev : unitTangent(u);
       r = DoubleReflection(x, tangent, r, x1, t1);
       x = x1;
       tangent = t1;
