@@ -876,28 +876,52 @@ void vtkSplineTubeCore::PropagateFrames(vtkIdType t, vtkIdType n,
   vec3 tangent = unitTangent(0.0);
   vec3 r = vtkSplineTubeMath::svAnyOrthogonal(tangent);
   emit(0, r);
+  // A segment turns by less than maxAngle when the two angles of its
+  // hodograph's control polygon (m0, 3 chord - m0 - m1, m1: the derivative
+  // is the quadratic Bezier curve of these) are each below maxAngle / 2: the
+  // tangents' directions then lie on a convex spherical arc inside that
+  // polygon's, which is no longer. Tested with dot products only (cos^2 of
+  // the angles), no square root: most segments of smooth lines pass and take
+  // one step without sampling their tangent.
+  const double cosHalf = std::cos(0.5 * std::min(maxAngle, 1.0));
+  const double cosHalf2 = cosHalf * cosHalf;
+  auto within = [&](const vec3& a, const vec3& b)
+  {
+    const double ab = glm::dot(a, b);
+    return ab > 0.0 && ab * ab > cosHalf2 * glm::dot(a, a) * glm::dot(b, b);
+  };
   for (vtkIdType s = 0; s + 1 < n; ++s)
   {
     setSegment(s);
-    // Sub-steps: sample the tangent densely enough that no step turns it by
-    // more than maxAngle (the total turning is estimated on 4 samples; it
-    // only sets the step count: TestSplineTubeCore's frames agree with the
-    // reference as closely as with 8 samples).
-    double turning = 0.0;
-    vec3 prev = tangent;
-    for (int k = 1; k <= 4; ++k)
+    const vec3 h1 = c2 + c1; // 3 chord - m0 - m1
+    int steps = 1;
+    vec3 prev;
+    if (within(c1, h1) && within(h1, deriv(s + 1)))
     {
-      const vec3 cur = unitTangent(k / 4.0);
-      // The angle between unit vectors from their distance c: 2 asin(c / 2),
-      // by its series below c = 1 (relative error under 1e-3; acos was a
-      // fifth of the first frame's CPU time on whole-brain tractograms).
-      const double c = glm::length(cur - prev);
-      const double cc = c * c;
-      turning += c < 1.0 ? c * (1.0 + cc * (1.0 / 24.0 + cc * (3.0 / 640.0)))
-                         : 2.0 * std::asin(std::min(1.0, 0.5 * c));
-      prev = cur;
+      prev = glm::normalize(deriv(s + 1));
     }
-    const int steps = std::max(1, std::min(256, static_cast<int>(std::ceil(turning / maxAngle))));
+    else
+    {
+      // Sub-steps: sample the tangent densely enough that no step turns it
+      // by more than maxAngle (the total turning is estimated on 4 samples;
+      // it only sets the step count: TestSplineTubeCore's frames agree with
+      // the reference as closely as with 8 samples).
+      double turning = 0.0;
+      prev = tangent;
+      for (int k = 1; k <= 4; ++k)
+      {
+        const vec3 cur = unitTangent(k / 4.0);
+        // The angle between unit vectors from their distance c: 2 asin(c / 2),
+        // by its series below c = 1 (relative error under 1e-3; acos was a
+        // fifth of the first frame's CPU time on whole-brain tractograms).
+        const double c = glm::length(cur - prev);
+        const double cc = c * c;
+        turning += c < 1.0 ? c * (1.0 + cc * (1.0 / 24.0 + cc * (3.0 / 640.0)))
+                           : 2.0 * std::asin(std::min(1.0, 0.5 * c));
+        prev = cur;
+      }
+      steps = std::max(1, std::min(256, static_cast<int>(std::ceil(turning / maxAngle))));
+    }
     vec3 x = c0;
     for (int k = 1; k <= steps; ++k)
     {
@@ -936,11 +960,8 @@ void vtkSplineTubeCore::FillFrames(vtkIdType first, vtkIdType count, short* octa
           const vtkIdType node = firstNode + k;
           if (node >= b && node < e)
           {
-            const vtkSplineTubeMath::vec2 o =
-              vtkSplineTubeMath::svOctEncode(vec3(frame[0], frame[1], frame[2]));
-            short* out = octahedral + 2 * (node - first);
-            out[0] = static_cast<short>(std::lround(32767.0 * o.x));
-            out[1] = static_cast<short>(std::lround(32767.0 * o.y));
+            vtkSplineTubeMath::svOctEncodeInt16(
+              vec3(frame[0], frame[1], frame[2]), octahedral + 2 * (node - first));
           }
         });
     });

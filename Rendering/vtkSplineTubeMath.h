@@ -35,6 +35,16 @@ namespace
 }
 #undef SV_OUT
 #undef SV_INOUT
+
+/// A unit vector in the GPU buffers' octahedral format (RG16I, decoded by
+/// svOctDecode from the components / 32767): svOctEncode rounded half away
+/// from zero, without a library call (frames of every node per upload).
+inline void svOctEncodeInt16(const vec3& v, short out[2])
+{
+  const vec2 o = 32767.0 * svOctEncode(v);
+  out[0] = static_cast<short>(o.x + (o.x >= 0.0 ? 0.5 : -0.5));
+  out[1] = static_cast<short>(o.y + (o.y >= 0.0 ? 0.5 : -0.5));
+}
 }
 
 #endif

@@ -86,9 +86,7 @@ void vtkStylizedLineFixUp::FillTangents(vtkIdType first, vtkIdType count, short*
         this->Nodes(t, b - tubeFirst, stop - 1 - tubeFirst, nullptr, tangents.data());
         for (vtkIdType i = b; i < stop; ++i)
         {
-          const vtkSplineTubeMath::vec2 o = vtkSplineTubeMath::svOctEncode(tangents[i - b]);
-          octahedral[2 * (i - first)] = static_cast<short>(std::lround(32767.0 * o.x));
-          octahedral[2 * (i - first) + 1] = static_cast<short>(std::lround(32767.0 * o.y));
+          vtkSplineTubeMath::svOctEncodeInt16(tangents[i - b], octahedral + 2 * (i - first));
         }
         b = stop;
       }
