@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <vector>
 
 vtkStandardNewMacro(vtkSplineTubeCore);
@@ -72,6 +73,30 @@ vec3 DoubleReflection(
     return vtkSplineTubeMath::svAnyOrthogonal(t1);
   }
   return r1 / len;
+}
+
+/// The box of segment k of a tube (nodes k, k + 1 of its positions and
+/// radii p and their derivatives m, 4 each): its cubic Bezier control points
+/// (the curve lies in their convex hull) padded by the largest of the radius
+/// spline's (the radius lies below their maximum), that radius r, and the
+/// control points.
+void SegmentBox(const double* p, const double* m, vtkIdType k, double box[6], double control[4][3],
+  double& r)
+{
+  const double* a = p + 4 * k;
+  const double* b = p + 4 * (k + 1);
+  const double* da = m + 4 * k;
+  const double* db = m + 4 * (k + 1);
+  r = std::max({ a[3], b[3], a[3] + da[3] / 3.0, b[3] - db[3] / 3.0 });
+  for (int c = 0; c < 3; ++c)
+  {
+    control[0][c] = a[c];
+    control[1][c] = a[c] + da[c] / 3.0;
+    control[2][c] = b[c] - db[c] / 3.0;
+    control[3][c] = b[c];
+    box[2 * c] = std::min({ control[0][c], control[1][c], control[2][c], control[3][c] }) - r;
+    box[2 * c + 1] = std::max({ control[0][c], control[1][c], control[2][c], control[3][c] }) + r;
+  }
 }
 }
 
@@ -630,7 +655,14 @@ bool vtkSplineTubeCore::AddPolyData(
 //------------------------------------------------------------------------------
 void vtkSplineTubeCore::Build()
 {
-  this->BuildChunks();
+  if (this->ChunkTables)
+  {
+    this->BuildChunks();
+  }
+  else
+  {
+    this->BuildBounds();
+  }
   this->Modified();
 }
 
@@ -999,27 +1031,6 @@ void vtkSplineTubeCore::BuildChunks()
   float* sizes = this->ChunkSizes->GetPointer(0);
   vtkTypeUInt32* segmentSpheres = this->SegmentSpheres->GetPointer(0);
 
-  // The box of segment k (nodes k, k + 1 of p, m): its cubic Bezier control
-  // points (the curve lies in their convex hull) padded by the largest of
-  // the radius spline's (the radius lies below their maximum).
-  auto segmentBox = [](const double* p, const double* m, vtkIdType k, double box[6],
-                      double control[4][3], double& r)
-  {
-    const double* a = p + 4 * k;
-    const double* b = p + 4 * (k + 1);
-    const double* da = m + 4 * k;
-    const double* db = m + 4 * (k + 1);
-    r = std::max({ a[3], b[3], a[3] + da[3] / 3.0, b[3] - db[3] / 3.0 });
-    for (int c = 0; c < 3; ++c)
-    {
-      control[0][c] = a[c];
-      control[1][c] = a[c] + da[c] / 3.0;
-      control[2][c] = b[c] - db[c] / 3.0;
-      control[3][c] = b[c];
-      box[2 * c] = std::min({ control[0][c], control[1][c], control[2][c], control[3][c] }) - r;
-      box[2 * c + 1] = std::max({ control[0][c], control[1][c], control[2][c], control[3][c] }) + r;
-    }
-  };
   struct Scratch
   {
     std::vector<double> P;
@@ -1067,7 +1078,7 @@ void vtkSplineTubeCore::BuildChunks()
             double segmentBounds[6];
             double control[4][3];
             double r = 0.0;
-            segmentBox(s.P.data(), s.M.data(), k, segmentBounds, control, r);
+            SegmentBox(s.P.data(), s.M.data(), k, segmentBounds, control, r);
             for (int q = 0; q < 6; q += 2)
             {
               box[q] = std::min(box[q], segmentBounds[q]);
@@ -1142,7 +1153,7 @@ void vtkSplineTubeCore::BuildChunks()
             double segmentBounds[6];
             double control[4][3];
             double r = 0.0;
-            segmentBox(s.P.data(), s.M.data(), segment - firstSegment, segmentBounds, control, r);
+            SegmentBox(s.P.data(), s.M.data(), segment - firstSegment, segmentBounds, control, r);
             double part[4];
             double partRadius2 = 0.0;
             for (int k = 0; k < 3; ++k)
@@ -1157,6 +1168,71 @@ void vtkSplineTubeCore::BuildChunks()
         }
       }
     });
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeCore::BuildBounds()
+{
+  const Internals& in = *this->Internal;
+  for (vtkDataArray* table : std::initializer_list<vtkDataArray*>{ this->TubeFirstChunks,
+         this->ChunkTubes, this->ChunkSpheres, this->ChunkSizes, this->SegmentSpheres })
+  {
+    table->Initialize();
+  }
+  this->ChunkFirstSegments->SetNumberOfTuples(1);
+  this->ChunkFirstSegments->SetValue(0, 0);
+  vtkMath::UninitializeBounds(this->Bounds);
+  const vtkIdType numTubes = this->GetNumberOfTubes();
+  if (numTubes == 0)
+  {
+    return;
+  }
+  // The same boxes as the chunk table's spheres contain, by thread.
+  struct Local
+  {
+    double B[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
+      VTK_DOUBLE_MIN };
+    std::vector<double> P;
+    std::vector<double> M;
+  };
+  vtkSMPThreadLocal<Local> locals;
+  vtkSMPTools::For(0, numTubes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      Local& local = locals.Local();
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const vtkIdType n = in.TubeFirst[t + 1] - in.TubeFirst[t];
+        local.P.resize(static_cast<size_t>(4 * n));
+        local.M.resize(static_cast<size_t>(4 * n));
+        in.Nodes(t, 0, n, local.P.data(), local.M.data());
+        for (vtkIdType k = 0; k + 1 < n; ++k)
+        {
+          double box[6];
+          double control[4][3];
+          double r = 0.0;
+          SegmentBox(local.P.data(), local.M.data(), k, box, control, r);
+          for (int q = 0; q < 6; q += 2)
+          {
+            local.B[q] = std::min(local.B[q], box[q]);
+            local.B[q + 1] = std::max(local.B[q + 1], box[q + 1]);
+          }
+        }
+      }
+    });
+  for (int k = 0; k < 6; k += 2)
+  {
+    this->Bounds[k] = VTK_DOUBLE_MAX;
+    this->Bounds[k + 1] = VTK_DOUBLE_MIN;
+  }
+  for (auto& local : locals)
+  {
+    for (int k = 0; k < 6; k += 2)
+    {
+      this->Bounds[k] = std::min(this->Bounds[k], local.B[k]);
+      this->Bounds[k + 1] = std::max(this->Bounds[k + 1], local.B[k + 1]);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1198,6 +1274,7 @@ void vtkSplineTubeCore::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "RadiusScale: " << this->RadiusScale << "\n";
   os << indent << "MaximumFrameStepAngle: " << this->MaximumFrameStepAngle << "\n";
+  os << indent << "ChunkTables: " << (this->ChunkTables ? "On" : "Off") << "\n";
   os << indent << "NumberOfTubes: " << this->GetNumberOfTubes() << "\n";
   os << indent << "NumberOfNodes: " << this->GetNumberOfNodes() << "\n";
   os << indent << "NumberOfSegments: " << this->GetNumberOfSegments() << "\n";

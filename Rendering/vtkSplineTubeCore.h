@@ -136,6 +136,20 @@ public:
   vtkGetMacro(MaximumFrameStepAngle, double);
   ///@}
 
+  ///@{
+  /**
+   * Whether Build() makes the chunk table (GetChunkSpheres() and the rest),
+   * which the ray-cast and tessellated tubes cull and draw by. Off, Build()
+   * computes the bounds only and the table is empty: the stylized lines cull
+   * their own batches, and the table is 36 bytes per chunk and 4 per segment
+   * (200 MB for a whole-brain tractogram of 25 M segments) plus the time to
+   * make it. Default on.
+   */
+  vtkSetMacro(ChunkTables, bool);
+  vtkGetMacro(ChunkTables, bool);
+  vtkBooleanMacro(ChunkTables, bool);
+  ///@}
+
   /// Forget all tubes and inputs (the settings are kept).
   void Initialize();
 
@@ -241,7 +255,7 @@ public:
 
   ///@{
   /**
-   * Chunk table (made by Build()): per chunk its first segment (one more
+   * Chunk table (made by Build() when ChunkTables is on): per chunk its first segment (one more
    * tuple than chunks: the last is the number of segments), its tube, its
    * bounding sphere (x, y, z relative to GetCenter(), radius) and its sizes
    * (the length of its segments' Bezier control polygons, the longest such
@@ -299,6 +313,7 @@ protected:
   char* NodeScalarRole = nullptr;
   char* CellIdArrayName = nullptr;
   double MaximumFrameStepAngle = 0.1;
+  bool ChunkTables = true;
 
   vtkNew<vtkIdTypeArray> TubeFirstChunks;
   vtkNew<vtkTypeUInt32Array> ChunkFirstSegments;
@@ -321,6 +336,8 @@ private:
 
   /// The chunk table, the bounds and the centre.
   void BuildChunks();
+  /// The bounds and the centre only (ChunkTables off); the chunk table emptied.
+  void BuildBounds();
   /// The rotation-minimizing frames of tube t's first n nodes (at least 2), node by node.
   void PropagateFrames(vtkIdType t, vtkIdType n,
     const std::function<void(vtkIdType k, const double frame[3])>& write) const;

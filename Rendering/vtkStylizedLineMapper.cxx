@@ -134,6 +134,8 @@ void vtkStylizedLineMapper::ConfigureTubeCore(vtkSplineTubeCore* core)
 {
   const bool texture = this->NeedsTextureData();
   core->SetNodeScalarRole("orientation");
+  // The fix-up's batches are what the visibility culls (SetVisibilityChunks()).
+  core->ChunkTablesOff();
   core->SetNodeScalarArrayName(texture && this->OrientationArray && this->OrientationArray[0]
       ? this->OrientationArray
       : nullptr);

@@ -674,6 +674,50 @@ void TestSegmentTable(SplineVizTestStatus& status)
 }
 
 //------------------------------------------------------------------------------
+// ChunkTables off (the stylized lines): no chunk table, the same bounds.
+void TestBoundsOnly(SplineVizTestStatus& status)
+{
+  vtkNew<vtkSyntheticFibersSource> source;
+  source->SetNumberOfTubes(40);
+  source->SetNumberOfSegments(300);
+  source->Update();
+  vtkNew<vtkSplineTubeCore> full;
+  vtkNew<vtkSplineTubeCore> bounds;
+  bounds->ChunkTablesOff();
+  for (vtkSplineTubeCore* core : { full.GetPointer(), bounds.GetPointer() })
+  {
+    core->SetRadius(0.05);
+    core->AddPolyData(source->GetOutput(), nullptr);
+    core->Build();
+  }
+  SV_CHECK(status, full->GetNumberOfChunks() > 0);
+  SV_CHECK(status, bounds->GetNumberOfChunks() == 0);
+  SV_CHECK(status, bounds->GetChunkSpheres()->GetNumberOfTuples() == 0);
+  SV_CHECK(status, bounds->GetSegmentSpheres()->GetNumberOfTuples() == 0);
+  SV_CHECK(status, bounds->GetNumberOfSegments() == full->GetNumberOfSegments());
+  double a[6];
+  double b[6];
+  full->GetBounds(a);
+  bounds->GetBounds(b);
+  double pb[6];
+  source->GetOutput()->GetBounds(pb);
+  for (int k = 0; k < 6; ++k)
+  {
+    SV_CHECK_MSG(status, a[k] == b[k], "bound " << k << ": " << a[k] << " with the chunk table, "
+                                                << b[k] << " without");
+    // Every point's sphere of radius 0.05 lies inside (independently of the core).
+    const double point = k % 2 == 0 ? pb[k] - 0.05 : pb[k] + 0.05;
+    SV_CHECK(status, k % 2 == 0 ? b[k] <= point + 1e-12 : b[k] >= point - 1e-12);
+  }
+  // Back on: the table again.
+  bounds->ChunkTablesOn();
+  bounds->Initialize();
+  bounds->AddPolyData(source->GetOutput(), nullptr);
+  bounds->Build();
+  SV_CHECK(status, bounds->GetNumberOfChunks() == full->GetNumberOfChunks());
+}
+
+//------------------------------------------------------------------------------
 void TestDegenerateInput(SplineVizTestStatus& status)
 {
   vtkNew<vtkTest::ErrorObserver> observer;
@@ -842,6 +886,7 @@ int TestSplineTubeCore(int, char*[])
   TestSplit(status);
   TestBoxes(status);
   TestSegmentTable(status);
+  TestBoundsOnly(status);
   TestDegenerateInput(status);
   TestNodeScalars(status);
   return status.Result();
