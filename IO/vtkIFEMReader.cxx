@@ -32,6 +32,20 @@
 vtkStandardNewMacro(vtkIFEMReader);
 
 //------------------------------------------------------------------------------
+namespace
+{
+// What RequestData needs for one basis at the level shown.
+struct BasisPlan
+{
+  std::string Name;
+  int BasisLevel = -1;
+  int Patches = 0;
+  // Fields and element fields: name -> (group, level) to read them from.
+  std::map<std::string, std::pair<std::string, int>> Fields, Knotspans;
+};
+
+}
+
 struct vtkIFEMReader::vtkInternals
 {
   vtkIFEMFile File;
@@ -44,6 +58,20 @@ struct vtkIFEMReader::vtkInternals
   using PatchKey = std::tuple<std::string, int, int, int>;
   std::map<PatchKey, std::shared_ptr<vtkIFEMBlockBuilder::Patch>> Patches;
   std::set<PatchKey> Used;
+
+  bool GetPatch(const std::string& basis, int basisLevel, int patch, int rationalMode,
+    std::shared_ptr<vtkIFEMBlockBuilder::Patch>& out, std::string& error,
+    std::vector<std::string>& warnings);
+  std::vector<BasisPlan> PlanBases(int level) const;
+  void AttachOrphans(
+    int level, int rationalMode, std::vector<BasisPlan>& plans, std::vector<std::string>& warnings);
+  bool ReadPatchValues(const BasisPlan& plan, int p, vtkDataArraySelection* pointSelection,
+    vtkDataArraySelection* cellSelection, std::vector<vtkIFEMBlockBuilder::Values>& fields,
+    std::vector<vtkIFEMBlockBuilder::Values>& knotspans, std::string& error);
+  void AddGeometryDeviation(const std::string& reference, int referenceLevel, int p,
+    int rationalMode, const vtkIFEMBlockBuilder::Patch& patch, const std::string& what,
+    vtkUnstructuredGrid* grid, std::vector<std::string>& warnings);
+  void WarnUnreadGroups(int level, std::vector<std::string>& warnings) const;
 
   // The last level <= `level` where `group` wrote its basis, -1 if none.
   int BasisLevel(const std::string& group, int level) const
@@ -331,130 +359,113 @@ int vtkIFEMReader::RequestInformation(
 //------------------------------------------------------------------------------
 namespace
 {
-// What RequestData needs for one basis at the level shown.
-struct BasisPlan
+// The level shown: the last one whose time is not after the requested time.
+int RequestedLevel(vtkInformation* outInfo, const std::vector<double>& times)
 {
-  std::string Name;
-  int BasisLevel = -1;
-  int Patches = 0;
-  // Fields and element fields: name -> (group, level) to read them from.
-  std::map<std::string, std::pair<std::string, int>> Fields, Knotspans;
-};
-}
-
-int vtkIFEMReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outInfo);
-  this->LastError.clear();
-  vtkInternals& in = *this->Internals;
-  const std::string name = this->ReadFromInputString
-    ? std::string("the input string")
-    : std::string(this->FileName ? this->FileName : "(none)");
-  const std::string where = "cannot read \"" + name + "\": ";
-  std::string error;
-  if (!this->UpdateLayout(&error))
-  {
-    return this->Fail(where + error);
-  }
-
-  // The level shown: the last one whose time is not after the requested time.
   int level = 0;
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
   {
     const double t = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    for (std::size_t l = 0; l < in.Times.size(); ++l)
+    for (std::size_t l = 0; l < times.size(); ++l)
     {
-      const double tol = 1e-12 * std::max(1.0, std::abs(in.Times[l]));
-      if (in.Times[l] <= t + tol)
+      const double tol = 1e-12 * std::max(1.0, std::abs(times[l]));
+      if (times[l] <= t + tol)
       {
         level = static_cast<int>(l);
       }
     }
   }
-  int piece = 0, numPieces = 1;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
-  {
-    piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-    numPieces =
-      std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-    piece = std::max(0, std::min(piece, numPieces - 1));
-  }
+  return level;
+}
+}
 
-  // Plans: each selected basis with its fields (own and attached).
+//------------------------------------------------------------------------------
+// The parsed basis patch (cached per basis, level of the basis, patch and
+// rational mode; marked used for this request). On failure `error` says why.
+bool vtkIFEMReader::vtkInternals::GetPatch(const std::string& basis, int basisLevel, int patch,
+  int rationalMode, std::shared_ptr<vtkIFEMBlockBuilder::Patch>& out, std::string& error,
+  std::vector<std::string>& warnings)
+{
+  const PatchKey key(basis, basisLevel, patch, rationalMode);
+  this->Used.insert(key);
+  auto it = this->Patches.find(key);
+  if (it != this->Patches.end())
+  {
+    out = it->second;
+    return true;
+  }
+  const std::string path =
+    "/" + std::to_string(basisLevel) + "/" + basis + "/basis/" + std::to_string(patch);
+  std::string text, warning;
+  auto parsed = std::make_shared<vtkIFEMBlockBuilder::Patch>();
+  if (!this->File.ReadText(path, text, &error) ||
+    !vtkIFEMBlockBuilder::ParsePatch(text, rationalMode, *parsed, &error, &warning))
+  {
+    error = Quote(path) + ": " + error;
+    return false;
+  }
+  if (!warning.empty())
+  {
+    warnings.push_back(Quote(path) + ": " + warning);
+  }
+  this->Patches[key] = parsed;
+  out = parsed;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+// Each basis written at or before `level`, with its fields (own, not yet
+// the orphans').
+std::vector<BasisPlan> vtkIFEMReader::vtkInternals::PlanBases(int level) const
+{
   std::vector<BasisPlan> plans;
-  for (const std::string& b : in.Bases)
+  for (const std::string& b : this->Bases)
   {
     BasisPlan plan;
     plan.Name = b;
-    plan.BasisLevel = in.BasisLevel(b, level);
+    plan.BasisLevel = this->BasisLevel(b, level);
     if (plan.BasisLevel < 0)
     {
       continue; // written first at a later level
     }
-    plan.Patches = in.Levels[plan.BasisLevel].Groups.at(b).NumberOfBasisPatches;
-    for (const auto& f : in.FieldLevels(b, plan.BasisLevel, level, false))
+    plan.Patches = this->Levels[plan.BasisLevel].Groups.at(b).NumberOfBasisPatches;
+    for (const auto& f : this->FieldLevels(b, plan.BasisLevel, level, false))
     {
       plan.Fields[f.first] = { b, f.second };
     }
-    for (const auto& f : in.FieldLevels(b, plan.BasisLevel, level, true))
+    for (const auto& f : this->FieldLevels(b, plan.BasisLevel, level, true))
     {
       plan.Knotspans[f.first] = { b, f.second };
     }
     plans.push_back(plan);
   }
-  std::vector<std::string> warnings;
-  auto getPatch = [&](const std::string& basis, int basisLevel, int patch,
-                    std::shared_ptr<vtkIFEMBlockBuilder::Patch>& out) -> bool
+  return plans;
+}
+
+// Groups without a basis of their own: their fields go to the one basis
+// their sizes fit (one dataset per patch, sizes multiples of the patch's
+// nodes or elements); none or several: a warning, not read.
+void vtkIFEMReader::vtkInternals::AttachOrphans(
+  int level, int rationalMode, std::vector<BasisPlan>& plans, std::vector<std::string>& warnings)
+{
+  for (const std::string& orphan : this->Orphans)
   {
-    const vtkInternals::PatchKey key(basis, basisLevel, patch, this->RationalMode);
-    in.Used.insert(key);
-    auto it = in.Patches.find(key);
-    if (it != in.Patches.end())
-    {
-      out = it->second;
-      return true;
-    }
-    const std::string path =
-      "/" + std::to_string(basisLevel) + "/" + basis + "/basis/" + std::to_string(patch);
-    std::string text, warning;
-    auto parsed = std::make_shared<vtkIFEMBlockBuilder::Patch>();
-    if (!in.File.ReadText(path, text, &error) ||
-      !vtkIFEMBlockBuilder::ParsePatch(text, this->RationalMode, *parsed, &error, &warning))
-    {
-      error = Quote(path) + ": " + error;
-      return false;
-    }
-    if (!warning.empty())
-    {
-      warnings.push_back(Quote(path) + ": " + warning);
-    }
-    in.Patches[key] = parsed;
-    out = parsed;
-    return true;
-  };
-  // Groups without a basis of their own: to the one basis their sizes fit.
-  in.Used.clear();
-  for (const std::string& orphan : in.Orphans)
-  {
-    const auto fields = in.FieldLevels(orphan, 0, level, false);
-    const auto knotspans = in.FieldLevels(orphan, 0, level, true);
+    const auto fields = this->FieldLevels(orphan, 0, level, false);
+    const auto knotspans = this->FieldLevels(orphan, 0, level, true);
     if (fields.empty() && knotspans.empty())
     {
       continue;
     }
-    // Does every field of the orphan have one dataset per patch of `plan`, of
-    // a size that is a multiple of the patch's nodes (elements)?
     auto fits = [&](const BasisPlan& plan)
     {
+      std::string ignored;
       for (int k = 0; k < 2; ++k)
       {
         for (const auto& f : k == 0 ? fields : knotspans)
         {
           const std::string base = "/" + std::to_string(f.second) + "/" + orphan +
             (k == 0 ? "/fields/" : "/knotspan/") + f.first + "/";
-          if (in.File.Exists(base + std::to_string(plan.Patches + 1)))
+          if (this->File.Exists(base + std::to_string(plan.Patches + 1)))
           {
             return false;
           }
@@ -462,8 +473,9 @@ int vtkIFEMReader::RequestData(
           {
             std::shared_ptr<vtkIFEMBlockBuilder::Patch> patch;
             uint64_t count = 0;
-            if (!getPatch(plan.Name, plan.BasisLevel, p, patch) ||
-              !in.File.GetNumberOfValues(base + std::to_string(p), count, nullptr))
+            if (!this->GetPatch(plan.Name, plan.BasisLevel, p, rationalMode, patch, ignored,
+                  warnings) ||
+              !this->File.GetNumberOfValues(base + std::to_string(p), count, nullptr))
             {
               return false;
             }
@@ -501,8 +513,133 @@ int vtkIFEMReader::RequestData(
       matches[0]->Knotspans.emplace(f.first, std::make_pair(orphan, f.second));
     }
   }
+}
 
-  // The blocks.
+// The enabled fields (k = 0, nodal) and element fields (k = 1) of `plan` on
+// patch p; records not written for the patch, or empty (IFEM's inactive
+// patches), are left out. On failure `error` names the dataset.
+bool vtkIFEMReader::vtkInternals::ReadPatchValues(const BasisPlan& plan, int p,
+  vtkDataArraySelection* pointSelection, vtkDataArraySelection* cellSelection,
+  std::vector<vtkIFEMBlockBuilder::Values>& fields,
+  std::vector<vtkIFEMBlockBuilder::Values>& knotspans, std::string& error)
+{
+  for (int k = 0; k < 2; ++k)
+  {
+    const auto& list = k == 0 ? plan.Fields : plan.Knotspans;
+    vtkDataArraySelection* selection = k == 0 ? pointSelection : cellSelection;
+    for (const auto& f : list)
+    {
+      if (!selection->ArrayIsEnabled(f.first.c_str()))
+      {
+        continue;
+      }
+      const std::string path = "/" + std::to_string(f.second.second) + "/" + f.second.first +
+        (k == 0 ? "/fields/" : "/knotspan/") + f.first + "/" + std::to_string(p);
+      if (!this->File.Exists(path))
+      {
+        continue; // not written for this patch
+      }
+      vtkIFEMBlockBuilder::Values values;
+      values.Name = f.first;
+      if (!this->File.ReadDoubles(path, values.Data, &error))
+      {
+        error = Quote(path) + ": " + error;
+        return false;
+      }
+      if (!values.Data.empty())
+      {
+        (k == 0 ? fields : knotspans).push_back(std::move(values));
+      }
+    }
+  }
+  return true;
+}
+
+// Mixed methods: how far the geometry of `patch` (basis `what`) is from the
+// reference basis' patch, as field data; a warning when it is not the same.
+void vtkIFEMReader::vtkInternals::AddGeometryDeviation(const std::string& reference,
+  int referenceLevel, int p, int rationalMode, const vtkIFEMBlockBuilder::Patch& patch,
+  const std::string& what, vtkUnstructuredGrid* grid, std::vector<std::string>& warnings)
+{
+  std::shared_ptr<vtkIFEMBlockBuilder::Patch> ref;
+  std::string error;
+  if (referenceLevel < 0 || patch.IsLagrange ||
+    p > this->Levels[referenceLevel].Groups.at(reference).NumberOfBasisPatches ||
+    !this->GetPatch(reference, referenceLevel, p, rationalMode, ref, error, warnings) ||
+    ref->IsLagrange)
+  {
+    return;
+  }
+  double deviation = 0.0;
+  if (!vtkIFEMBlockBuilder::GeometryDeviation(*ref, patch, deviation, &error))
+  {
+    return;
+  }
+  vtkFieldData* fd = grid->GetFieldData();
+  AddString(fd, "LRGeometryReferenceBasis", reference);
+  AddNumber(fd, "LRGeometryDeviation", deviation, false);
+  const double size = std::sqrt(grid->GetLength2());
+  if (!(deviation <= 1e-9 * std::max(size, 1e-300)))
+  {
+    std::ostringstream msg;
+    msg << what << ": its geometry differs from that of \"" << reference << "\" by "
+        << deviation << " (the basis does not contain the geometry map); its fields "
+        << "are drawn on its own geometry";
+    warnings.push_back(msg.str());
+  }
+}
+
+// Groups of `level` the reader leaves out, as warnings.
+void vtkIFEMReader::vtkInternals::WarnUnreadGroups(
+  int level, std::vector<std::string>& warnings) const
+{
+  for (const auto& groupLevel : this->Levels[level].Groups)
+  {
+    for (const std::string& other : groupLevel.second.Others)
+    {
+      if (other != "l2g-node")
+      {
+        warnings.push_back("\"" + groupLevel.first + "/" + other + "\" is not read (" +
+          (other == "Eigenmode" ? "eigenmode files are not supported" : "unknown group") + ")");
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkIFEMReader::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outInfo);
+  this->LastError.clear();
+  vtkInternals& in = *this->Internals;
+  const std::string name = this->ReadFromInputString
+    ? std::string("the input string")
+    : std::string(this->FileName ? this->FileName : "(none)");
+  const std::string where = "cannot read \"" + name + "\": ";
+  std::string error;
+  if (!this->UpdateLayout(&error))
+  {
+    return this->Fail(where + error);
+  }
+  const int level = RequestedLevel(outInfo, in.Times);
+  int piece = 0, numPieces = 1;
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
+  {
+    piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+    numPieces =
+      std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
+    piece = std::max(0, std::min(piece, numPieces - 1));
+  }
+
+  // Plans: each basis with its fields (own and attached).
+  std::vector<std::string> warnings;
+  in.Used.clear();
+  std::vector<BasisPlan> plans = in.PlanBases(level);
+  in.AttachOrphans(level, this->RationalMode, plans, warnings);
+
+  // The blocks: per enabled basis, one grid per patch (this piece's elements).
   unsigned int block = 0;
   int done = 0, total = 0;
   for (const BasisPlan& plan : plans)
@@ -528,40 +665,14 @@ int vtkIFEMReader::RequestData(
       }
       this->UpdateProgress(static_cast<double>(done++) / std::max(1, total));
       std::shared_ptr<vtkIFEMBlockBuilder::Patch> patch;
-      if (!getPatch(plan.Name, plan.BasisLevel, p, patch))
+      std::vector<vtkIFEMBlockBuilder::Values> fields, knotspans;
+      if (!in.GetPatch(plan.Name, plan.BasisLevel, p, this->RationalMode, patch, error,
+            warnings) ||
+        !in.ReadPatchValues(plan, p, this->PointSelection, this->CellSelection, fields,
+          knotspans, error))
       {
         output->Initialize();
         return this->Fail(where + error);
-      }
-      std::vector<vtkIFEMBlockBuilder::Values> fields, knotspans;
-      for (int k = 0; k < 2; ++k)
-      {
-        const auto& list = k == 0 ? plan.Fields : plan.Knotspans;
-        vtkDataArraySelection* selection = k == 0 ? this->PointSelection : this->CellSelection;
-        for (const auto& f : list)
-        {
-          if (!selection->ArrayIsEnabled(f.first.c_str()))
-          {
-            continue;
-          }
-          const std::string path = "/" + std::to_string(f.second.second) + "/" + f.second.first +
-            (k == 0 ? "/fields/" : "/knotspan/") + f.first + "/" + std::to_string(p);
-          vtkIFEMBlockBuilder::Values values;
-          values.Name = f.first;
-          if (!in.File.Exists(path))
-          {
-            continue; // not written for this patch
-          }
-          if (!in.File.ReadDoubles(path, values.Data, &error))
-          {
-            output->Initialize();
-            return this->Fail(where + Quote(path) + ": " + error);
-          }
-          if (!values.Data.empty()) // IFEM writes empty records for inactive patches
-          {
-            (k == 0 ? fields : knotspans).push_back(std::move(values));
-          }
-        }
       }
       vtkIFEMBlockBuilder::Options options;
       options.MergePoints = this->MergePoints != 0;
@@ -590,28 +701,8 @@ int vtkIFEMReader::RequestData(
       AddNumber(fd, "IFEMBasisLevel", plan.BasisLevel, true);
       AddNumber(fd, "IFEMTime", in.Times[level], false);
       AddNumber(fd, "IFEMSpatialDimension", patch->SpatialDimension, true);
-      // Mixed methods: how far this basis' geometry is from the first basis'.
-      std::shared_ptr<vtkIFEMBlockBuilder::Patch> ref;
-      if (referenceLevel >= 0 && !patch->IsLagrange &&
-        p <= in.Levels[referenceLevel].Groups.at(reference).NumberOfBasisPatches &&
-        getPatch(reference, referenceLevel, p, ref) && !ref->IsLagrange)
-      {
-        double deviation = 0.0;
-        if (vtkIFEMBlockBuilder::GeometryDeviation(*ref, *patch, deviation, &error))
-        {
-          AddString(fd, "LRGeometryReferenceBasis", reference);
-          AddNumber(fd, "LRGeometryDeviation", deviation, false);
-          const double size = std::sqrt(grid->GetLength2());
-          if (!(deviation <= 1e-9 * std::max(size, 1e-300)))
-          {
-            std::ostringstream msg;
-            msg << what << ": its geometry differs from that of \"" << reference << "\" by "
-                << deviation << " (the basis does not contain the geometry map); its fields "
-                << "are drawn on its own geometry";
-            warnings.push_back(msg.str());
-          }
-        }
-      }
+      in.AddGeometryDeviation(
+        reference, referenceLevel, p, this->RationalMode, *patch, what, grid, warnings);
       patches->SetBlock(static_cast<unsigned int>(p - 1), grid);
       patches->GetMetaData(static_cast<unsigned int>(p - 1))
         ->Set(vtkCompositeDataSet::NAME(), ("Patch " + std::to_string(p)).c_str());
@@ -620,17 +711,7 @@ int vtkIFEMReader::RequestData(
     output->GetMetaData(block)->Set(vtkCompositeDataSet::NAME(), plan.Name.c_str());
     ++block;
   }
-  for (const auto& groupLevel : in.Levels[level].Groups)
-  {
-    for (const std::string& other : groupLevel.second.Others)
-    {
-      if (other != "l2g-node")
-      {
-        warnings.push_back("\"" + groupLevel.first + "/" + other + "\" is not read (" +
-          (other == "Eigenmode" ? "eigenmode files are not supported" : "unknown group") + ")");
-      }
-    }
-  }
+  in.WarnUnreadGroups(level, warnings);
   for (const std::string& w : warnings)
   {
     vtkWarningMacro(<< "\"" << name << "\": " << w);
