@@ -232,22 +232,49 @@ bool vtkSplineTubeVisibility::Project(
   const double wMin = clipW(c[0], c[1], c[2]) - wScale * radius;
   if (wMin <= 1e-9 * (std::abs(At(p, 3, 3)) + std::abs(c[2]) + radius))
   {
-    out = { 0, 0, width - 1, height - 1, 0.0f };
+    out = { 0, 0, static_cast<std::uint16_t>(std::min(width - 1, 65535)),
+      static_cast<std::uint16_t>(std::min(height - 1, 65535)), 0.0f };
     return true;
   }
   double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
   double hi[2] = { VTK_DOUBLE_MIN, VTK_DOUBLE_MIN };
-  for (int k = 0; k < 8; ++k)
+  if (At(p, 3, 0) == 0.0 && At(p, 3, 1) == 0.0 && At(p, 0, 1) == 0.0 && At(p, 1, 0) == 0.0)
   {
-    const double x = c[0] + ((k & 1) ? radius : -radius);
-    const double y = c[1] + ((k & 2) ? radius : -radius);
-    const double z = c[2] + ((k & 4) ? radius : -radius);
-    const double w = clipW(x, y, z);
+    // The cameras' projections: w depends on z only, the x (y) row on x (y)
+    // and z. Over the box, each NDC coordinate is linear in x (y) and, w
+    // being positive, monotone in z: its extremes are at the four corners of
+    // (x or y) and z, with two divisions instead of the eight corners' eight.
+    // Widened by a relative 1e-12 for the rounding of the reciprocal.
+    const double z[2] = { c[2] - radius, c[2] + radius };
+    const double invW[2] = { 1.0 / clipW(0.0, 0.0, z[0]), 1.0 / clipW(0.0, 0.0, z[1]) };
     for (int a = 0; a < 2; ++a)
     {
-      const double ndc = (At(p, a, 0) * x + At(p, a, 1) * y + At(p, a, 2) * z + At(p, a, 3)) / w;
-      lo[a] = std::min(lo[a], ndc);
-      hi[a] = std::max(hi[a], ndc);
+      for (int k = 0; k < 4; ++k)
+      {
+        const double u = c[a] + ((k & 1) ? radius : -radius);
+        const double ndc = (At(p, a, a) * u + At(p, a, 2) * z[k >> 1] + At(p, a, 3)) * invW[k >> 1];
+        lo[a] = std::min(lo[a], ndc);
+        hi[a] = std::max(hi[a], ndc);
+      }
+      const double pad = 1e-12 * (std::abs(lo[a]) + std::abs(hi[a]) + 1.0);
+      lo[a] -= pad;
+      hi[a] += pad;
+    }
+  }
+  else
+  {
+    for (int k = 0; k < 8; ++k)
+    {
+      const double x = c[0] + ((k & 1) ? radius : -radius);
+      const double y = c[1] + ((k & 2) ? radius : -radius);
+      const double z = c[2] + ((k & 4) ? radius : -radius);
+      const double w = clipW(x, y, z);
+      for (int a = 0; a < 2; ++a)
+      {
+        const double ndc = (At(p, a, 0) * x + At(p, a, 1) * y + At(p, a, 2) * z + At(p, a, 3)) / w;
+        lo[a] = std::min(lo[a], ndc);
+        hi[a] = std::max(hi[a], ndc);
+      }
     }
   }
   const double x0 = std::floor((0.5 * lo[0] + 0.5) * width) - 1.0;
@@ -258,10 +285,11 @@ bool vtkSplineTubeVisibility::Project(
   {
     return false;
   }
-  out.X0 = static_cast<std::int32_t>(std::max(x0, 0.0));
-  out.Y0 = static_cast<std::int32_t>(std::max(y0, 0.0));
-  out.X1 = static_cast<std::int32_t>(std::min(x1, width - 1.0));
-  out.Y1 = static_cast<std::int32_t>(std::min(y1, height - 1.0));
+  // (OpenGL viewports are far below 65535 pixels: GL_MAX_VIEWPORT_DIMS.)
+  out.X0 = static_cast<std::uint16_t>(std::min(std::max(x0, 0.0), 65535.0));
+  out.Y0 = static_cast<std::uint16_t>(std::min(std::max(y0, 0.0), 65535.0));
+  out.X1 = static_cast<std::uint16_t>(std::min(std::min(x1, width - 1.0), 65535.0));
+  out.Y1 = static_cast<std::uint16_t>(std::min(std::min(y1, height - 1.0), 65535.0));
   // Nearest window depth: window depth grows with the distance -z for the
   // projections of cameras (no x, y terms in the depth and w rows).
   const double z = c[2] + radius;
@@ -433,6 +461,15 @@ void vtkSplineTubeVisibility::BeginFrame(
       this->GroupStarts.push_back(numTemporal + layerCounts[l + 1]);
     }
   }
+  this->OrderedProjection.resize(static_cast<size_t>(numInside));
+  vtkSMPTools::For(0, numInside,
+    [&](vtkIdType b, vtkIdType e)
+    {
+      for (vtkIdType i = b; i < e; ++i)
+      {
+        this->OrderedProjection[i] = this->Projection[this->Order[i]];
+      }
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -447,9 +484,10 @@ bool vtkSplineTubeVisibility::IsHidden(const Projected& pr, const DepthPyramid& 
 }
 
 //------------------------------------------------------------------------------
-bool vtkSplineTubeVisibility::IsHidden(std::uint32_t chunk, const DepthPyramid& pyramid) const
+bool vtkSplineTubeVisibility::IsHidden(
+  std::uint32_t chunk, const Projected& projected, const DepthPyramid& pyramid) const
 {
-  if (this->IsHidden(this->Projection[chunk], pyramid))
+  if (this->IsHidden(projected, pyramid))
   {
     return true;
   }
@@ -496,7 +534,8 @@ void vtkSplineTubeVisibility::CullGroup(
       {
         for (vtkIdType i = b; i < e; ++i)
         {
-          hidden[i - begin] = this->IsHidden(this->Order[i], *pyramid) ? 1 : 0;
+          hidden[i - begin] =
+            this->IsHidden(this->Order[i], this->OrderedProjection[i], *pyramid) ? 1 : 0;
         }
       });
     for (vtkIdType i = begin; i < end; ++i)
@@ -528,7 +567,7 @@ void vtkSplineTubeVisibility::EndFrame(const DepthPyramid* pyramid)
       for (vtkIdType i = b; i < e; ++i)
       {
         const std::uint32_t c = this->DrawnChunks[i];
-        this->Visible[c] = this->IsHidden(c, *pyramid) ? 0 : 1;
+        this->Visible[c] = this->IsHidden(c, this->Projection[c], *pyramid) ? 0 : 1;
       }
     });
   this->DrawnChunks.clear();
