@@ -5,6 +5,7 @@
 #include "vtkLRSplineElementLocator.h"
 #include "vtkLRSplineFitCore.h"
 #include "vtkLRSplinePatch.h"
+#include "vtkSplineVizPieces.h"
 #include "vtkSplineVizProgress.h"
 
 #include "vtkAppendPolyData.h"
@@ -724,6 +725,49 @@ bool DataTime(vtkDataObject* object, double* time)
   *time = info->Get(vtkDataObject::DATA_TIME_STEP());
   return true;
 }
+
+// The data sets to fit: the input, or the non-empty leaves of a composite input.
+std::vector<vtkDataSet*> Leaves(vtkDataObject* input)
+{
+  std::vector<vtkDataSet*> leaves;
+  if (vtkDataSet* ds = vtkDataSet::SafeDownCast(input))
+  {
+    leaves.push_back(ds);
+  }
+  else if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      vtkDataSet* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+      if (leaf && leaf->GetNumberOfPoints() > 0)
+      {
+        leaves.push_back(leaf);
+      }
+    }
+  }
+  return leaves;
+}
+
+// What the output says of the fit beyond vtkLRSplineFitCore's report: the
+// domain, whether the previous mesh was reused, the number of data points.
+void AddFitFieldData(vtkFieldData* fd, const double domain[6], bool reused, vtkIdType points)
+{
+  vtkNew<vtkDoubleArray> box;
+  box->SetName("LRFitDomain");
+  box->SetNumberOfComponents(6);
+  box->InsertNextTuple(domain);
+  fd->AddArray(box);
+  vtkNew<vtkIdTypeArray> reuse;
+  reuse->SetName("LRFitReusedPreviousMesh");
+  reuse->InsertNextValue(reused ? 1 : 0);
+  fd->AddArray(reuse);
+  vtkNew<vtkIdTypeArray> count;
+  count->SetName("LRFitDataPoints");
+  count->InsertNextValue(points);
+  fd->AddArray(count);
+}
 }
 
 // What ReusePreviousMesh keeps of an update: the fitted spline and what it
@@ -757,6 +801,19 @@ bool vtkLRSplineFitter::CanReusePreviousFit(
     }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineFitter::RememberFit(
+  const vtkLRSplineBuilder& builder, double time, const double lo[3], const double hi[3], int dim)
+{
+  this->Previous.reset(new PreviousFit);
+  this->Previous->Builder = builder;
+  this->Previous->Settings = this->GetMTime();
+  this->Previous->Time = time;
+  this->Previous->Dim = dim;
+  std::copy(lo, lo + 3, this->Previous->Lo);
+  std::copy(hi, hi + 3, this->Previous->Hi);
 }
 
 //------------------------------------------------------------------------------
@@ -839,24 +896,7 @@ int vtkLRSplineFitter::RequestData(
   {
     return 0;
   }
-  std::vector<vtkDataSet*> leaves;
-  if (vtkDataSet* ds = vtkDataSet::SafeDownCast(input))
-  {
-    leaves.push_back(ds);
-  }
-  else if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      vtkDataSet* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
-      if (leaf && leaf->GetNumberOfPoints() > 0)
-      {
-        leaves.push_back(leaf);
-      }
-    }
-  }
+  const std::vector<vtkDataSet*> leaves = Leaves(input);
 
   // The data: positions, values, checked.
   PointData data;
@@ -960,13 +1000,7 @@ int vtkLRSplineFitter::RequestData(
     stopReason = "the Bezier form differs from the basis form by rounding";
   }
   int piece = 0, numPieces = 1;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
-  {
-    piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-    numPieces =
-      std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-    piece = std::max(0, std::min(piece, numPieces - 1));
-  }
+  vtkSplineVizPieces::GetRequested(outInfo, piece, numPieces);
   const char* methods[] = { "LR-MBA", "least squares", "least squares + LR-MBA" };
   vtkSmartPointer<vtkUnstructuredGrid> grid = vtkLRSplineFitCore::BuildBlock(
     fit.Core.Builder.GetPatch(), result.Volume, 0, piece, numPieces, scale, lo, fieldName,
@@ -980,13 +1014,7 @@ int vtkLRSplineFitter::RequestData(
   }
   if (this->ReusePreviousMesh && hasTime)
   {
-    this->Previous.reset(new PreviousFit);
-    this->Previous->Builder = fit.Core.Builder;
-    this->Previous->Settings = this->GetMTime();
-    this->Previous->Time = time;
-    this->Previous->Dim = data.Dim;
-    std::copy(lo, lo + 3, this->Previous->Lo);
-    std::copy(hi, hi + 3, this->Previous->Hi);
+    this->RememberFit(fit.Core.Builder, time, lo, hi, data.Dim);
   }
   this->MaximumError = report.MaximumError;
   this->RMSError = report.RMSError;
@@ -1003,19 +1031,7 @@ int vtkLRSplineFitter::RequestData(
                     << report.Iterations << (report.Iterations == 1 ? " fit" : " fits")
                     << ", because " << stopReason);
   }
-  vtkNew<vtkDoubleArray> domain;
-  domain->SetName("LRFitDomain");
-  domain->SetNumberOfComponents(6);
-  domain->InsertNextTuple(this->Domain);
-  grid->GetFieldData()->AddArray(domain);
-  vtkNew<vtkIdTypeArray> reused;
-  reused->SetName("LRFitReusedPreviousMesh");
-  reused->InsertNextValue(this->ReusedPreviousMesh ? 1 : 0);
-  grid->GetFieldData()->AddArray(reused);
-  vtkNew<vtkIdTypeArray> count;
-  count->SetName("LRFitDataPoints");
-  count->InsertNextValue(np);
-  grid->GetFieldData()->AddArray(count);
+  AddFitFieldData(grid->GetFieldData(), this->Domain, this->ReusedPreviousMesh, np);
   output->SetNumberOfBlocks(1);
   output->SetBlock(0, grid);
   output->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), "Patch 0");

@@ -58,6 +58,7 @@
 #include <vector> // for std::vector
 
 class vtkDataSet;
+class vtkLRSplineBuilder;
 class vtkPolyData;
 
 class SPLINEVIZ_EXPORT vtkLRSplineFitter : public vtkMultiBlockDataSetAlgorithm
@@ -247,6 +248,9 @@ protected:
   // the same domain (to rounding), no setting changed, the same components.
   bool CanReusePreviousFit(
     bool hasTime, double time, const double lo[3], const double hi[3], int dim);
+  // Keep the fitted spline for the next update (ReusePreviousMesh, data with a time).
+  void RememberFit(const vtkLRSplineBuilder& builder, double time, const double lo[3],
+    const double hi[3], int dim);
   // The boundary surface of the leaves (output port 1).
   bool BuildBoundary(const std::vector<vtkDataSet*>& leaves, vtkPolyData* boundary);
 

@@ -4,6 +4,7 @@
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineFitCore.h"
 #include "vtkLRSplinePatch.h"
+#include "vtkSplineVizPieces.h"
 
 #include "vtkArrayDispatch.h"
 #include "vtkCompositeDataIterator.h"
@@ -730,13 +731,7 @@ int vtkLRSplineImageFitter::RequestData(
   this->AbsoluteTolerance = tolerance;
 
   int piece = 0, numPieces = 1;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
-  {
-    piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-    numPieces =
-      std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-    piece = std::max(0, std::min(piece, numPieces - 1));
-  }
+  vtkSplineVizPieces::GetRequested(outInfo, piece, numPieces);
 
   const int rounds = std::min(MaximumRounds, 3 * (this->MaximumRefinementLevels + 1));
   double sumSquares = 0.0, voxelCount = 0.0;

@@ -3,6 +3,7 @@
 
 #include "vtkIFEMBlockBuilder.h"
 #include "vtkIFEMFile.h"
+#include "vtkSplineVizPieces.h"
 
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArraySelection.h"
@@ -473,8 +474,8 @@ void vtkIFEMReader::vtkInternals::AttachOrphans(
           {
             std::shared_ptr<vtkIFEMBlockBuilder::Patch> patch;
             uint64_t count = 0;
-            if (!this->GetPatch(plan.Name, plan.BasisLevel, p, rationalMode, patch, ignored,
-                  warnings) ||
+            if (!this->GetPatch(
+                  plan.Name, plan.BasisLevel, p, rationalMode, patch, ignored, warnings) ||
               !this->File.GetNumberOfValues(base + std::to_string(p), count, nullptr))
             {
               return false;
@@ -582,8 +583,8 @@ void vtkIFEMReader::vtkInternals::AddGeometryDeviation(const std::string& refere
   if (!(deviation <= 1e-9 * std::max(size, 1e-300)))
   {
     std::ostringstream msg;
-    msg << what << ": its geometry differs from that of \"" << reference << "\" by "
-        << deviation << " (the basis does not contain the geometry map); its fields "
+    msg << what << ": its geometry differs from that of \"" << reference << "\" by " << deviation
+        << " (the basis does not contain the geometry map); its fields "
         << "are drawn on its own geometry";
     warnings.push_back(msg.str());
   }
@@ -625,13 +626,7 @@ int vtkIFEMReader::RequestData(
   }
   const int level = RequestedLevel(outInfo, in.Times);
   int piece = 0, numPieces = 1;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
-  {
-    piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-    numPieces =
-      std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-    piece = std::max(0, std::min(piece, numPieces - 1));
-  }
+  vtkSplineVizPieces::GetRequested(outInfo, piece, numPieces);
 
   // Plans: each basis with its fields (own and attached).
   std::vector<std::string> warnings;
@@ -666,10 +661,9 @@ int vtkIFEMReader::RequestData(
       this->UpdateProgress(static_cast<double>(done++) / std::max(1, total));
       std::shared_ptr<vtkIFEMBlockBuilder::Patch> patch;
       std::vector<vtkIFEMBlockBuilder::Values> fields, knotspans;
-      if (!in.GetPatch(plan.Name, plan.BasisLevel, p, this->RationalMode, patch, error,
-            warnings) ||
-        !in.ReadPatchValues(plan, p, this->PointSelection, this->CellSelection, fields,
-          knotspans, error))
+      if (!in.GetPatch(plan.Name, plan.BasisLevel, p, this->RationalMode, patch, error, warnings) ||
+        !in.ReadPatchValues(
+          plan, p, this->PointSelection, this->CellSelection, fields, knotspans, error))
       {
         output->Initialize();
         return this->Fail(where + error);

@@ -2,6 +2,7 @@
 #include "vtkTractogramReader.h"
 
 #include "vtkSplineVizNameList.h"
+#include "vtkSplineVizPieces.h"
 #include "vtkSplineVizProgress.h"
 #include "vtkTractogramFormats.h"
 
@@ -1211,14 +1212,7 @@ int vtkTractogramReader::RequestData(
   this->Piece = 0;
   this->NumberOfPieces = 1;
   this->LastBytesRead = 0;
-  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()))
-  {
-    this->NumberOfPieces =
-      std::max(1, outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()));
-    this->Piece = std::max(0,
-      std::min(outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()),
-        this->NumberOfPieces - 1));
-  }
+  vtkSplineVizPieces::GetRequested(outInfo, this->Piece, this->NumberOfPieces);
   if (this->NumberOfPieces > 1)
   {
     where +=

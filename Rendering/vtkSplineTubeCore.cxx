@@ -80,8 +80,8 @@ vec3 DoubleReflection(
 /// (the curve lies in their convex hull) padded by the largest of the radius
 /// spline's (the radius lies below their maximum), that radius r, and the
 /// control points.
-void SegmentBox(const double* p, const double* m, vtkIdType k, double box[6], double control[4][3],
-  double& r)
+void SegmentBox(
+  const double* p, const double* m, vtkIdType k, double box[6], double control[4][3], double& r)
 {
   const double* a = p + 4 * k;
   const double* b = p + 4 * (k + 1);

@@ -240,7 +240,8 @@ bool vtkStylizedLineFixUp::TestVertices(const Batch& batch, const View& view) co
   for (int i = 0; i <= batch.Segments; ++i)
   {
     const vec3 p = TransformPoint(view.ModelView,
-      vec3(P[4 * i] - this->Shift[0], P[4 * i + 1] - this->Shift[1], P[4 * i + 2] - this->Shift[2]));
+      vec3(
+        P[4 * i] - this->Shift[0], P[4 * i + 1] - this->Shift[1], P[4 * i + 2] - this->Shift[2]));
     vec3 t = TransformVector(view.ModelView, M[i]);
     const double len = glm::length(t);
     t = len > 0.0 ? t / len : vec3(1.0, 0.0, 0.0);
@@ -344,8 +345,8 @@ void vtkStylizedLineFixUp::BeginView(const View& view, bool enabled)
       double& local = largest.Local();
       for (vtkIdType t = begin; t < end; ++t)
       {
-        local = std::max(
-          { local, this->ScreenRadius(t, 0), this->ScreenRadius(t, core->GetTubeNumberOfNodes(t) - 1) });
+        local = std::max({ local, this->ScreenRadius(t, 0),
+          this->ScreenRadius(t, core->GetTubeNumberOfNodes(t) - 1) });
       }
     });
   for (double r : largest)
@@ -511,8 +512,8 @@ void vtkStylizedLineFixUp::GetCullingChunks(double widen, std::vector<float>& sp
             part[k] = 0.5 * (a + c);
             half2 += 0.25 * (c - a) * (c - a);
           }
-          part[3] = (std::sqrt(half2) + widen * std::max(P[4 * s + 3], P[4 * s + 7])) *
-              (1.0 + 1e-6) +
+          part[3] =
+            (std::sqrt(half2) + widen * std::max(P[4 * s + 3], P[4 * s + 7])) * (1.0 + 1e-6) +
             1e-6 * extent;
           parts[partFirsts[b] + s] = vtkSplineTubeVisibility::EncodePart(&spheres[4 * b], part);
         }

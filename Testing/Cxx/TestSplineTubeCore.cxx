@@ -114,7 +114,6 @@ Vec HermiteRef(const Vec& p0, const Vec& m0, const Vec& p1, const Vec& m1, doubl
   return r;
 }
 
-
 /// The core's node data as arrays (read through its accessors): positions
 /// (3), derivatives of the position spline (3), radii and their derivatives
 /// (2), rotation-minimizing frames (3), node scalars (1).
@@ -229,15 +228,14 @@ void TestHermite(SplineVizTestStatus& status)
     double p[3], d[3], r, dr;
     core->EvaluateSegment(s, 0.0, p, d, &r, &dr);
     SV_CHECK_NEAR(status, Norm(Sub({ p[0], p[1], p[2] }, pts[s])), 0.0, 1e-6);
-    SV_CHECK_NEAR(
-      status, Norm(Sub({ d[0], d[1], d[2] }, NodeVec(Tangents(core), s))), 0.0, 1e-6);
+    SV_CHECK_NEAR(status, Norm(Sub({ d[0], d[1], d[2] }, NodeVec(Tangents(core), s))), 0.0, 1e-6);
     core->EvaluateSegment(s, 1.0, p, d, &r, &dr);
     SV_CHECK_NEAR(status, Norm(Sub({ p[0], p[1], p[2] }, pts[s + 1])), 0.0, 1e-6);
     SV_CHECK_NEAR(
       status, Norm(Sub({ d[0], d[1], d[2] }, NodeVec(Tangents(core), s + 1))), 0.0, 1e-6);
     core->EvaluateSegment(s, 0.3, p, nullptr, nullptr, nullptr);
-    const Vec ref = HermiteRef(pts[s], NodeVec(Tangents(core), s), pts[s + 1],
-      NodeVec(Tangents(core), s + 1), 0.3);
+    const Vec ref = HermiteRef(
+      pts[s], NodeVec(Tangents(core), s), pts[s + 1], NodeVec(Tangents(core), s + 1), 0.3);
     SV_CHECK_NEAR(status, Norm(Sub({ p[0], p[1], p[2] }, ref)), 0.0, 1e-6);
   }
 
@@ -252,8 +250,8 @@ void TestHermite(SplineVizTestStatus& status)
   line->Build();
   for (int i = 0; i < 6; ++i)
   {
-    SV_CHECK_NEAR(status,
-      Norm(Sub(NodeVec(Tangents(line), i), Sub(straight[1], straight[0]))), 0.0, 1e-6);
+    SV_CHECK_NEAR(
+      status, Norm(Sub(NodeVec(Tangents(line), i), Sub(straight[1], straight[0]))), 0.0, 1e-6);
   }
 }
 
@@ -518,15 +516,13 @@ void TestSplit(SplineVizTestStatus& status)
     const vtkIdType i = core->GetSegmentFirstNode(s);
     auto node = [&](vtkIdType j)
     {
-      return vec4(Positions(core)->GetComponent(j, 0),
-        Positions(core)->GetComponent(j, 1), Positions(core)->GetComponent(j, 2),
-        Radii(core)->GetComponent(j, 0));
+      return vec4(Positions(core)->GetComponent(j, 0), Positions(core)->GetComponent(j, 1),
+        Positions(core)->GetComponent(j, 2), Radii(core)->GetComponent(j, 0));
     };
     auto deriv = [&](vtkIdType j)
     {
-      return vec4(Tangents(core)->GetComponent(j, 0),
-        Tangents(core)->GetComponent(j, 1), Tangents(core)->GetComponent(j, 2),
-        Radii(core)->GetComponent(j, 1));
+      return vec4(Tangents(core)->GetComponent(j, 0), Tangents(core)->GetComponent(j, 1),
+        Tangents(core)->GetComponent(j, 2), Radii(core)->GetComponent(j, 1));
     };
     worst = std::max(worst, SplitDeviation(node(i), deriv(i), node(i + 1), deriv(i + 1), 2) / 0.02);
   }
@@ -612,15 +608,13 @@ void TestBoxes(SplineVizTestStatus& status)
     const vtkIdType i = core->GetSegmentFirstNode(s);
     auto node = [&](vtkIdType j)
     {
-      return vec4(Positions(core)->GetComponent(j, 0),
-        Positions(core)->GetComponent(j, 1), Positions(core)->GetComponent(j, 2),
-        Radii(core)->GetComponent(j, 0));
+      return vec4(Positions(core)->GetComponent(j, 0), Positions(core)->GetComponent(j, 1),
+        Positions(core)->GetComponent(j, 2), Radii(core)->GetComponent(j, 0));
     };
     auto deriv = [&](vtkIdType j)
     {
-      return vec4(Tangents(core)->GetComponent(j, 0),
-        Tangents(core)->GetComponent(j, 1), Tangents(core)->GetComponent(j, 2),
-        Radii(core)->GetComponent(j, 1));
+      return vec4(Tangents(core)->GetComponent(j, 0), Tangents(core)->GetComponent(j, 1),
+        Tangents(core)->GetComponent(j, 2), Radii(core)->GetComponent(j, 1));
     };
     for (int k = 0; k < 2; ++k)
     {
@@ -661,8 +655,11 @@ void TestSegmentTable(SplineVizTestStatus& status)
       const int flags = core->GetSegmentFlags(s);
       SV_CHECK(status, ((flags & vtkSplineTubeCore::TUBE_START) != 0) == (k == 0));
       SV_CHECK(status, ((flags & vtkSplineTubeCore::TUBE_END) != 0) == (k + 2 == n));
-      SV_CHECK(status, core->GetTubeCellId(core->GetTubeOfNode(core->GetSegmentFirstNode(s))) == t % 30);
-      SV_CHECK(status, core->GetTubeBlockId(core->GetTubeOfNode(core->GetSegmentFirstNode(s))) == (t < 30 ? 3u : 4u));
+      SV_CHECK(
+        status, core->GetTubeCellId(core->GetTubeOfNode(core->GetSegmentFirstNode(s))) == t % 30);
+      SV_CHECK(status,
+        core->GetTubeBlockId(core->GetTubeOfNode(core->GetSegmentFirstNode(s))) ==
+          (t < 30 ? 3u : 4u));
     }
   }
   SV_CHECK(status, s == core->GetNumberOfSegments());
@@ -703,8 +700,8 @@ void TestBoundsOnly(SplineVizTestStatus& status)
   source->GetOutput()->GetBounds(pb);
   for (int k = 0; k < 6; ++k)
   {
-    SV_CHECK_MSG(status, a[k] == b[k], "bound " << k << ": " << a[k] << " with the chunk table, "
-                                                << b[k] << " without");
+    SV_CHECK_MSG(status, a[k] == b[k],
+      "bound " << k << ": " << a[k] << " with the chunk table, " << b[k] << " without");
     // Every point's sphere of radius 0.05 lies inside (independently of the core).
     const double point = k % 2 == 0 ? pb[k] - 0.05 : pb[k] + 0.05;
     SV_CHECK(status, k % 2 == 0 ? b[k] <= point + 1e-12 : b[k] >= point - 1e-12);
