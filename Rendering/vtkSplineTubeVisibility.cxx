@@ -232,8 +232,8 @@ bool vtkSplineTubeVisibility::Project(
   const double wMin = clipW(c[0], c[1], c[2]) - wScale * radius;
   if (wMin <= 1e-9 * (std::abs(At(p, 3, 3)) + std::abs(c[2]) + radius))
   {
-    out = { 0, 0, static_cast<std::uint16_t>(std::min(width - 1, 65535)),
-      static_cast<std::uint16_t>(std::min(height - 1, 65535)), 0.0f };
+    out = { 0, 0, static_cast<std::uint16_t>(std::max(0, std::min(width - 1, 65535))),
+      static_cast<std::uint16_t>(std::max(0, std::min(height - 1, 65535))), 0.0f };
     return true;
   }
   double lo[2] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MAX };
@@ -288,8 +288,8 @@ bool vtkSplineTubeVisibility::Project(
   // (OpenGL viewports are far below 65535 pixels: GL_MAX_VIEWPORT_DIMS.)
   out.X0 = static_cast<std::uint16_t>(std::min(std::max(x0, 0.0), 65535.0));
   out.Y0 = static_cast<std::uint16_t>(std::min(std::max(y0, 0.0), 65535.0));
-  out.X1 = static_cast<std::uint16_t>(std::min(std::min(x1, width - 1.0), 65535.0));
-  out.Y1 = static_cast<std::uint16_t>(std::min(std::min(y1, height - 1.0), 65535.0));
+  out.X1 = static_cast<std::uint16_t>(std::max(std::min({ x1, width - 1.0, 65535.0 }), 0.0));
+  out.Y1 = static_cast<std::uint16_t>(std::max(std::min({ y1, height - 1.0, 65535.0 }), 0.0));
   // Nearest window depth: window depth grows with the distance -z for the
   // projections of cameras (no x, y terms in the depth and w rows).
   const double z = c[2] + radius;
