@@ -1177,6 +1177,131 @@ std::vector<vtkIdType> vtkTractogramReader::SelectStreamlines(const Streamlines&
 }
 
 //------------------------------------------------------------------------------
+struct vtkTractogramReader::ValueArrays
+{
+  std::vector<vtkSmartPointer<vtkFloatArray>> Arrays;
+  std::vector<float*> Targets;
+  std::vector<int> Components;
+  std::vector<int> Firsts; // the first value of each array in a .trk record
+
+  // One array per (name, components), `tuples` tuples each.
+  void Make(const std::vector<std::pair<std::string, int>>& names, vtkIdType tuples)
+  {
+    int first = 0;
+    for (const auto& n : names)
+    {
+      auto a = vtkSmartPointer<vtkFloatArray>::New();
+      a->SetName(n.first.c_str());
+      a->SetNumberOfComponents(n.second);
+      a->SetNumberOfTuples(tuples);
+      this->Arrays.push_back(a);
+      this->Targets.push_back(a->GetPointer(0));
+      this->Components.push_back(n.second);
+      this->Firsts.push_back(first);
+      first += n.second;
+    }
+  }
+};
+
+//------------------------------------------------------------------------------
+void vtkTractogramReader::ConvertTCK(const Streamlines& lines, std::size_t s, vtkIdType o,
+  float* pf, double* pd, const ValueArrays& point)
+{
+  const vtkIdType m = lines.Count[s];
+  const int vs = lines.ValueSize;
+  const char* p = lines.Data.data() + lines.Start[s] * 3 * vs;
+  if (!lines.Swap && !pd && vs == 4)
+  {
+    if (m > 0) // an empty streamline (kept) may leave the points array empty (null)
+    {
+      std::memcpy(pf + 3 * o, p, static_cast<std::size_t>(12 * m));
+    }
+  }
+  else
+  {
+    for (vtkIdType j = 0; j < 3 * m; ++j)
+    {
+      const double v = Value(p + j * vs, vs, lines.Swap);
+      if (pd)
+      {
+        pd[3 * o + j] = v;
+      }
+      else
+      {
+        pf[3 * o + j] = static_cast<float>(v);
+      }
+    }
+  }
+  for (std::size_t k = 0; k < lines.PointScalars.size(); ++k)
+  {
+    const auto& sc = lines.PointScalars[k];
+    const char* q = sc.Data.data() + lines.Start[s] * sc.ValueSize;
+    float* dst = point.Targets[k] + o;
+    for (vtkIdType j = 0; j < m; ++j)
+    {
+      dst[j] = static_cast<float>(Value(q + j * sc.ValueSize, sc.ValueSize, sc.Swap));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTractogramReader::ConvertTRK(const Streamlines& lines, std::size_t s, vtkIdType o,
+  vtkIdType i, float* pf, const ValueArrays& point, const ValueArrays& cell)
+{
+  const vtkIdType m = lines.Count[s];
+  const int perPoint = 3 + lines.ScalarsPerPoint;
+  const char* p = lines.Data.data() + lines.Start[s] + 4;
+  const double(*a)[4] = lines.ToRAS;
+  float record[3 + 32767 + 32767];
+  for (vtkIdType j = 0; j < m; ++j, p += 4 * perPoint)
+  {
+    std::memcpy(record, p, 4 * static_cast<std::size_t>(perPoint));
+    if (lines.Swap)
+    {
+      TF::SwapBytes(record, 4, static_cast<std::size_t>(perPoint));
+    }
+    const double x[3] = { record[0], record[1], record[2] };
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      return false;
+    }
+    float* dst = pf + 3 * (o + j);
+    for (int r = 0; r < 3; ++r)
+    {
+      const double y = a[r][0] * x[0] + a[r][1] * x[1] + a[r][2] * x[2] + a[r][3];
+      if (!(std::abs(y) <= std::numeric_limits<float>::max()))
+      {
+        // beyond float32 after the voxel-mm to RAS+ map (a voxel size near 0,
+        // a huge vox_to_ras): as unusable as a NaN
+        return false;
+      }
+      dst[r] = static_cast<float>(y);
+    }
+    for (std::size_t k = 0; k < point.Targets.size(); ++k)
+    {
+      const int nc = point.Components[k];
+      std::memcpy(point.Targets[k] + nc * (o + j), record + 3 + point.Firsts[k],
+        4 * static_cast<std::size_t>(nc));
+    }
+  }
+  if (!cell.Targets.empty())
+  {
+    std::memcpy(record, p, 4 * static_cast<std::size_t>(lines.PropertiesPerLine));
+    if (lines.Swap)
+    {
+      TF::SwapBytes(record, 4, static_cast<std::size_t>(lines.PropertiesPerLine));
+    }
+    for (std::size_t k = 0; k < cell.Targets.size(); ++k)
+    {
+      const int nc = cell.Components[k];
+      std::memcpy(
+        cell.Targets[k] + nc * i, record + cell.Firsts[k], 4 * static_cast<std::size_t>(nc));
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkTractogramReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
@@ -1249,52 +1374,20 @@ int vtkTractogramReader::RequestData(
   vtkNew<vtkPoints> points;
   points->SetDataType(doublePoints ? VTK_DOUBLE : VTK_FLOAT);
   points->SetNumberOfPoints(nPoints);
-  std::vector<vtkSmartPointer<vtkFloatArray>> pointArrays, cellArrays;
-  std::vector<int> pointArrayFirst, cellArrayFirst; // first value of each array in a record
-  // one float array per named .trk scalar / property, with its first value in a record
-  auto makeArrays = [](const std::vector<std::pair<std::string, int>>& names, vtkIdType tuples,
-                      std::vector<vtkSmartPointer<vtkFloatArray>>& arrays, std::vector<int>& firsts)
-  {
-    int first = 0;
-    for (const auto& n : names)
-    {
-      auto a = vtkSmartPointer<vtkFloatArray>::New();
-      a->SetName(n.first.c_str());
-      a->SetNumberOfComponents(n.second);
-      a->SetNumberOfTuples(tuples);
-      arrays.push_back(a);
-      firsts.push_back(first);
-      first += n.second;
-    }
-  };
+  ValueArrays pointValues, cellValues;
   if (lines.Format == TF::TRK)
   {
-    makeArrays(lines.Trk.Scalars, nPoints, pointArrays, pointArrayFirst);
-    makeArrays(lines.Trk.Properties, nLines, cellArrays, cellArrayFirst);
+    pointValues.Make(lines.Trk.Scalars, nPoints);
+    cellValues.Make(lines.Trk.Properties, nLines);
   }
   else
   {
-    for (std::size_t k = 0; k < lines.PointScalars.size(); ++k)
+    std::vector<std::pair<std::string, int>> names;
+    for (const auto& scalars : lines.PointScalars)
     {
-      auto a = vtkSmartPointer<vtkFloatArray>::New();
-      a->SetName(lines.PointScalars[k].Name.c_str());
-      a->SetNumberOfTuples(nPoints);
-      pointArrays.push_back(a);
+      names.emplace_back(scalars.Name, 1);
     }
-  }
-
-  // Raw pointers of the arrays (no virtual calls in the loops below).
-  std::vector<float*> pointTargets, cellTargets;
-  std::vector<int> pointComponents, cellComponents;
-  for (auto& a : pointArrays)
-  {
-    pointTargets.push_back(a->GetPointer(0));
-    pointComponents.push_back(a->GetNumberOfComponents());
-  }
-  for (auto& a : cellArrays)
-  {
-    cellTargets.push_back(a->GetPointer(0));
-    cellComponents.push_back(a->GetNumberOfComponents());
+    pointValues.Make(names, nPoints);
   }
 
   // Convert and copy, in parallel batches of about BatchPoints points.
@@ -1303,106 +1396,20 @@ int vtkTractogramReader::RequestData(
     doublePoints ? nullptr : static_cast<vtkFloatArray*>(points->GetData())->GetPointer(0);
   double* pd =
     doublePoints ? static_cast<vtkDoubleArray*>(points->GetData())->GetPointer(0) : nullptr;
-  const char* data = lines.Data.data();
   auto convert = [&](vtkIdType i0, vtkIdType i1)
   {
     for (vtkIdType i = i0; i < i1; ++i)
     {
       const std::size_t s = static_cast<std::size_t>(selected[static_cast<std::size_t>(i)]);
-      const vtkIdType m = lines.Count[s];
-      const vtkIdType o = off[i];
       if (lines.Format == TF::TCK)
       {
-        const int vs = lines.ValueSize;
-        const char* p = data + lines.Start[s] * 3 * vs;
-        if (!lines.Swap && !doublePoints && vs == 4)
-        {
-          if (m > 0) // an empty streamline (kept) may leave the points array empty (null)
-          {
-            std::memcpy(pf + 3 * o, p, static_cast<std::size_t>(12 * m));
-          }
-        }
-        else
-        {
-          for (vtkIdType j = 0; j < 3 * m; ++j)
-          {
-            const double v = Value(p + j * vs, vs, lines.Swap);
-            if (doublePoints)
-            {
-              pd[3 * o + j] = v;
-            }
-            else
-            {
-              pf[3 * o + j] = static_cast<float>(v);
-            }
-          }
-        }
-        for (std::size_t k = 0; k < lines.PointScalars.size(); ++k)
-        {
-          const auto& sc = lines.PointScalars[k];
-          const char* q = sc.Data.data() + lines.Start[s] * sc.ValueSize;
-          float* dst = pointTargets[k] + o;
-          for (vtkIdType j = 0; j < m; ++j)
-          {
-            dst[j] = static_cast<float>(Value(q + j * sc.ValueSize, sc.ValueSize, sc.Swap));
-          }
-        }
+        ConvertTCK(lines, s, off[i], pf, pd, pointValues);
       }
-      else
+      else if (!ConvertTRK(lines, s, off[i], i, pf, pointValues, cellValues))
       {
-        const int perPoint = 3 + lines.ScalarsPerPoint;
-        const char* p = data + lines.Start[s] + 4;
-        const double(*a)[4] = lines.ToRAS;
-        float record[3 + 32767 + 32767];
-        for (vtkIdType j = 0; j < m; ++j, p += 4 * perPoint)
-        {
-          std::memcpy(record, p, 4 * static_cast<std::size_t>(perPoint));
-          if (lines.Swap)
-          {
-            TF::SwapBytes(record, 4, static_cast<std::size_t>(perPoint));
-          }
-          const double x[3] = { record[0], record[1], record[2] };
-          if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-          {
-            vtkIdType expected = -1;
-            badLine.compare_exchange_strong(expected, static_cast<vtkIdType>(s));
-            return;
-          }
-          float* dst = pf + 3 * (o + j);
-          for (int r = 0; r < 3; ++r)
-          {
-            const double y = a[r][0] * x[0] + a[r][1] * x[1] + a[r][2] * x[2] + a[r][3];
-            if (!(std::abs(y) <= std::numeric_limits<float>::max()))
-            {
-              // beyond float32 after the voxel-mm to RAS+ map (a voxel size
-              // near 0, a huge vox_to_ras): as unusable as a NaN
-              vtkIdType expected = -1;
-              badLine.compare_exchange_strong(expected, static_cast<vtkIdType>(s));
-              return;
-            }
-            dst[r] = static_cast<float>(y);
-          }
-          for (std::size_t k = 0; k < pointTargets.size(); ++k)
-          {
-            const int nc = pointComponents[k];
-            std::memcpy(pointTargets[k] + nc * (o + j), record + 3 + pointArrayFirst[k],
-              4 * static_cast<std::size_t>(nc));
-          }
-        }
-        if (!cellTargets.empty())
-        {
-          std::memcpy(record, p, 4 * static_cast<std::size_t>(lines.PropertiesPerLine));
-          if (lines.Swap)
-          {
-            TF::SwapBytes(record, 4, static_cast<std::size_t>(lines.PropertiesPerLine));
-          }
-          for (std::size_t k = 0; k < cellTargets.size(); ++k)
-          {
-            const int nc = cellComponents[k];
-            std::memcpy(cellTargets[k] + nc * i, record + cellArrayFirst[k],
-              4 * static_cast<std::size_t>(nc));
-          }
-        }
+        vtkIdType expected = -1;
+        badLine.compare_exchange_strong(expected, static_cast<vtkIdType>(s));
+        return;
       }
     }
   };
@@ -1441,15 +1448,15 @@ int vtkTractogramReader::RequestData(
   vtkSmartPointer<vtkCellArray> cells = MakePolylines(offsets, nPoints);
   output->SetPoints(points);
   output->SetLines(cells);
-  for (auto& a : pointArrays)
+  for (auto& a : pointValues.Arrays)
   {
     output->GetPointData()->AddArray(a);
   }
-  if (pointArrays.size() == 1 && pointArrays[0]->GetNumberOfComponents() == 1)
+  if (pointValues.Arrays.size() == 1 && pointValues.Arrays[0]->GetNumberOfComponents() == 1)
   {
-    output->GetPointData()->SetActiveScalars(pointArrays[0]->GetName());
+    output->GetPointData()->SetActiveScalars(pointValues.Arrays[0]->GetName());
   }
-  for (auto& a : cellArrays)
+  for (auto& a : cellValues.Arrays)
   {
     output->GetCellData()->AddArray(a);
   }

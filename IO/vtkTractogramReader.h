@@ -173,6 +173,15 @@ protected:
     Streamlines& lines, double progressBegin, double progressEnd, std::string& error);
   void AddTrkFieldData(Streamlines& lines);
   std::vector<vtkIdType> SelectStreamlines(const Streamlines& lines) const;
+  // The output's float arrays of point or cell values, and their raw
+  // pointers for the conversion loops.
+  struct ValueArrays;
+  // Streamline s of `lines` into the output from point o (cell i): false when
+  // a .trk point is not finite, in the file or in RAS+.
+  static void ConvertTCK(const Streamlines& lines, std::size_t s, vtkIdType o, float* pf,
+    double* pd, const ValueArrays& point);
+  static bool ConvertTRK(const Streamlines& lines, std::size_t s, vtkIdType o, vtkIdType i,
+    float* pf, const ValueArrays& point, const ValueArrays& cell);
 
   char* FileName = nullptr;
   int FileFormat = AUTOMATIC;
