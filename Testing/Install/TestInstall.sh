@@ -50,8 +50,11 @@ downstream)
   [ "$found" = "$prefix/lib/cmake/splineviz" ] || fail "SplineViz found in '$found', not in $prefix"
   "$cmake" --build "$work/build" >"$work/build.log" 2>&1 || { cat "$work/build.log"; fail "build failed"; }
   program="$work/build/CountStreamlines"
-  if ldd "$program" | grep -q "$build/lib/"; then fail "the program loads libraries from the build tree"; fi
-  ldd "$program" | grep -q "$prefix/lib/libSplineViz.so" || fail "libSplineViz not loaded from $prefix"
+  # ldd's output kept whole first: `ldd | grep -q` under pipefail fails at
+  # random when grep stops reading at its match and ldd dies of SIGPIPE.
+  libs="$(ldd "$program")" || fail "ldd $program failed"
+  if grep -q "$build/lib/" <<<"$libs"; then fail "the program loads libraries from the build tree: $libs"; fi
+  grep -q "$prefix/lib/libSplineViz.so" <<<"$libs" || fail "libSplineViz not loaded from $prefix: $libs"
   for n in 3 7; do
     "$python" "$here/write_tck.py" "$work/lines$n.tck" "$n"
     out="$("$program" "$work/lines$n.tck")"
