@@ -729,23 +729,12 @@ bool DataTime(vtkDataObject* object, double* time)
 // The data sets to fit: the input, or the non-empty leaves of a composite input.
 std::vector<vtkDataSet*> Leaves(vtkDataObject* input)
 {
-  std::vector<vtkDataSet*> leaves;
-  if (vtkDataSet* ds = vtkDataSet::SafeDownCast(input))
+  std::vector<vtkDataSet*> leaves = vtkCompositeDataSet::GetDataSets(input);
+  if (vtkCompositeDataSet::SafeDownCast(input))
   {
-    leaves.push_back(ds);
-  }
-  else if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      vtkDataSet* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
-      if (leaf && leaf->GetNumberOfPoints() > 0)
-      {
-        leaves.push_back(leaf);
-      }
-    }
+    leaves.erase(std::remove_if(leaves.begin(), leaves.end(),
+                   [](vtkDataSet* leaf) { return leaf->GetNumberOfPoints() == 0; }),
+      leaves.end());
   }
   return leaves;
 }

@@ -32,7 +32,7 @@
  * the volume mapper's trimming input. FileName: also write a .lr file (read
  * it back with PhysicalBounds = LRFitDomain). Every piece fits all the data.
  *
- * Time (issue 30): the filter fits the time step the pipeline asks for and
+ * Time: the filter fits the time step the pipeline asks for and
  * passes the input's time steps on, so ParaView animates the fitted series.
  * With ReusePreviousMesh (default on), a step whose data has the same
  * domain as the previous update's, with no setting changed in between,

@@ -98,6 +98,35 @@ void SegmentBox(
     box[2 * c + 1] = std::max({ control[0][c], control[1][c], control[2][c], control[3][c] }) + r;
   }
 }
+
+/// Grow the box `bounds` (xmin, xmax, ymin, ...) to contain `box`.
+void AddBox(double bounds[6], const double box[6])
+{
+  for (int q = 0; q < 6; q += 2)
+  {
+    bounds[q] = std::min(bounds[q], box[q]);
+    bounds[q + 1] = std::max(bounds[q + 1], box[q + 1]);
+  }
+}
+
+/// A box (xmin, xmax, ymin, ...), empty at first; grown by AddBox().
+struct Box
+{
+  double B[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
+    VTK_DOUBLE_MIN };
+};
+
+/// The union of the threads' boxes (a Local is or derives from Box).
+template <typename Local>
+void MergeBounds(vtkSMPThreadLocal<Local>& locals, double bounds[6])
+{
+  const Box empty;
+  std::copy(empty.B, empty.B + 6, bounds);
+  for (auto& local : locals)
+  {
+    AddBox(bounds, local.B);
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -1041,12 +1070,7 @@ void vtkSplineTubeCore::BuildChunks()
   // Pass 1: per chunk its box (kept until the centre is known), sizes, first
   // segment and tube; the bounds by thread.
   std::vector<double> boxes(static_cast<size_t>(6 * numChunks));
-  struct Local
-  {
-    double B[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
-      VTK_DOUBLE_MIN };
-  };
-  vtkSMPThreadLocal<Local> locals;
+  vtkSMPThreadLocal<Box> locals;
   vtkSMPTools::For(0, numTubes,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -1064,11 +1088,8 @@ void vtkSplineTubeCore::BuildChunks()
           chunkFirst[c] = static_cast<vtkTypeUInt32>(in.TubeFirst[t] - t + k);
           chunkTube[c] = static_cast<vtkTypeUInt32>(t);
           double* box = &boxes[6 * c];
-          for (int q = 0; q < 3; ++q)
-          {
-            box[2 * q] = VTK_DOUBLE_MAX;
-            box[2 * q + 1] = VTK_DOUBLE_MIN;
-          }
+          const Box empty;
+          std::copy(empty.B, empty.B + 6, box);
           double length = 0.0;
           double maxLength = 0.0;
           double maxRadius = 0.0;
@@ -1079,11 +1100,7 @@ void vtkSplineTubeCore::BuildChunks()
             double control[4][3];
             double r = 0.0;
             SegmentBox(s.P.data(), s.M.data(), k, segmentBounds, control, r);
-            for (int q = 0; q < 6; q += 2)
-            {
-              box[q] = std::min(box[q], segmentBounds[q]);
-              box[q + 1] = std::max(box[q + 1], segmentBounds[q + 1]);
-            }
+            AddBox(box, segmentBounds);
             double polygon = 0.0;
             for (int q = 0; q < 3; ++q)
             {
@@ -1093,11 +1110,7 @@ void vtkSplineTubeCore::BuildChunks()
             maxLength = std::max(maxLength, polygon);
             maxRadius = std::max(maxRadius, r);
           }
-          for (int q = 0; q < 6; q += 2)
-          {
-            B[q] = std::min(B[q], box[q]);
-            B[q + 1] = std::max(B[q + 1], box[q + 1]);
-          }
+          AddBox(B, box);
           sizes[3 * c] = static_cast<float>(length);
           sizes[3 * c + 1] = static_cast<float>(maxLength);
           sizes[3 * c + 2] = static_cast<float>(maxRadius);
@@ -1105,19 +1118,7 @@ void vtkSplineTubeCore::BuildChunks()
       }
     });
   chunkFirst[numChunks] = static_cast<vtkTypeUInt32>(numSegments);
-  for (int k = 0; k < 6; k += 2)
-  {
-    this->Bounds[k] = VTK_DOUBLE_MAX;
-    this->Bounds[k + 1] = VTK_DOUBLE_MIN;
-  }
-  for (auto& local : locals)
-  {
-    for (int k = 0; k < 6; k += 2)
-    {
-      this->Bounds[k] = std::min(this->Bounds[k], local.B[k]);
-      this->Bounds[k + 1] = std::max(this->Bounds[k + 1], local.B[k + 1]);
-    }
-  }
+  MergeBounds(locals, this->Bounds);
 
   // Pass 2: the spheres around the boxes, relative to the centre (rounding
   // to float covered by a relative margin), and the segments' spheres.
@@ -1188,10 +1189,8 @@ void vtkSplineTubeCore::BuildBounds()
     return;
   }
   // The same boxes as the chunk table's spheres contain, by thread.
-  struct Local
+  struct Local : Box
   {
-    double B[6] = { VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX, VTK_DOUBLE_MIN, VTK_DOUBLE_MAX,
-      VTK_DOUBLE_MIN };
     std::vector<double> P;
     std::vector<double> M;
   };
@@ -1212,27 +1211,11 @@ void vtkSplineTubeCore::BuildBounds()
           double control[4][3];
           double r = 0.0;
           SegmentBox(local.P.data(), local.M.data(), k, box, control, r);
-          for (int q = 0; q < 6; q += 2)
-          {
-            local.B[q] = std::min(local.B[q], box[q]);
-            local.B[q + 1] = std::max(local.B[q + 1], box[q + 1]);
-          }
+          AddBox(local.B, box);
         }
       }
     });
-  for (int k = 0; k < 6; k += 2)
-  {
-    this->Bounds[k] = VTK_DOUBLE_MAX;
-    this->Bounds[k + 1] = VTK_DOUBLE_MIN;
-  }
-  for (auto& local : locals)
-  {
-    for (int k = 0; k < 6; k += 2)
-    {
-      this->Bounds[k] = std::min(this->Bounds[k], local.B[k]);
-      this->Bounds[k + 1] = std::max(this->Bounds[k + 1], local.B[k + 1]);
-    }
-  }
+  MergeBounds(locals, this->Bounds);
 }
 
 //------------------------------------------------------------------------------

@@ -239,9 +239,7 @@ public:
   vtkGetMacro(InteractiveUpdateRate, double);
   vtkSetClampMacro(InteractiveFrameTime, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(InteractiveFrameTime, double);
-  /// The smallest subset: 0.05 % of the lines (500 of a whole-brain
-  /// tractogram of a million; at 0.2 % the ray-cast tubes and stylized lines
-  /// missed the budget there).
+  /// The smallest subset: 0.05 % of the lines (500 of a million).
   static constexpr double MinimumLineFraction = 0.0005;
   vtkSetMacro(ForceInteractive, bool);
   vtkGetMacro(ForceInteractive, bool);

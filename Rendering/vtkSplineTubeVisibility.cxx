@@ -409,9 +409,8 @@ void vtkSplineTubeVisibility::BeginFrame(
   // screen tiles (64 pixels square): per tile its nearest 64 chunks, then
   // the next 64, 128, 256, ... (doubling), so that each group covers the
   // whole picture with the layer in front of what the earlier groups drew.
-  // Fourfold layers drew twice the chunks of a frame without a last frame
-  // (a whole-brain tractogram's first frame): a pyramid costs a few
-  // milliseconds, drawing what it would have hidden far more.
+  // Small steps: a pyramid costs a few milliseconds, drawing what it would
+  // have hidden far more (most of all in a frame without a last frame).
   this->GroupStarts.assign(1, 0);
   if (!this->Occlusion)
   {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// vtkLRSplineFitter on a transient field (issue 30, "Time"): a source with
+// vtkLRSplineFitter on a transient field (its time series): a source with
 // four time steps of scattered points whose field keeps a sharp bump and
 // grows (f = (1 + t/4) exp(-|x - c|^2 / 0.03) + 0.2 t x):
 //  - the input's time steps reach the output; each requested step is the
@@ -81,7 +81,8 @@ protected:
     }
   }
 
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
+  int RequestInformation(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector* out) override
   {
     vtkInformation* info = out->GetInformationObject(0);
     info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), Steps, 4);
@@ -190,7 +191,8 @@ int TestLRSplineFitterTime(int, char*[])
     SV_CHECK(status, reuse->UpdateTimeStep(t));
     SV_CHECK(status, fresh->UpdateTimeStep(t));
     vtkDataObject* out = reuse->GetOutputDataObject(0);
-    SV_CHECK(status, out->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()) &&
+    SV_CHECK(status,
+      out->GetInformation()->Has(vtkDataObject::DATA_TIME_STEP()) &&
         out->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()) == t);
     const double error = FitError(out, probe, t);
     const double freshError = FitError(fresh->GetOutputDataObject(0), probe, t);
@@ -198,8 +200,8 @@ int TestLRSplineFitterTime(int, char*[])
               << reuse->GetNumberOfIterations() << " rounds, " << reuse->GetNumberOfElements()
               << " elements, " << reuse->GetFitTime() << " s, error " << error << " (tolerance "
               << reuse->GetAbsoluteTolerance() << "); fresh: " << fresh->GetNumberOfIterations()
-              << " rounds, " << fresh->GetNumberOfElements() << " elements, "
-              << fresh->GetFitTime() << " s, error " << freshError << std::endl;
+              << " rounds, " << fresh->GetNumberOfElements() << " elements, " << fresh->GetFitTime()
+              << " s, error " << freshError << std::endl;
     SV_CHECK(status, reuse->GetToleranceMet() && fresh->GetToleranceMet());
     SV_CHECK_MSG(status, error <= reuse->GetAbsoluteTolerance() * (1 + 1e-9), error);
     SV_CHECK_MSG(status, freshError <= fresh->GetAbsoluteTolerance() * (1 + 1e-9), freshError);
