@@ -31,9 +31,10 @@ list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineVizTensorMath")
 list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkTensorMathShared.glsl")
-# Progress, abort, output-size checks and requested pieces shared by the
-# filters and readers.
+# The LR arrays' names; progress, abort, output-size checks and requested
+# pieces shared by the filters and readers.
 list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineArrayNames.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizPieces.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizPolyLines.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizProgress.h"

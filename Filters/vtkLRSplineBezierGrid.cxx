@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineBezierGrid.h"
 
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplinePatch.h"
 
@@ -269,14 +270,14 @@ void AddCellData(vtkCellData* cd, const vtkLRSplineBezierVolume& volume, int pd,
   degrees->SetNumberOfComponents(3);
   degrees->SetNumberOfTuples(count);
   vtkNew<vtkDoubleArray> boxes;
-  boxes->SetName("LRParameterBox");
+  boxes->SetName(vtkLRSplineArrayNames::ParameterBox);
   boxes->SetNumberOfComponents(6);
   boxes->SetNumberOfTuples(count);
   vtkNew<vtkIdTypeArray> elementIds;
-  elementIds->SetName("LRElementId");
+  elementIds->SetName(vtkLRSplineArrayNames::ElementId);
   elementIds->SetNumberOfTuples(count);
   vtkNew<vtkDoubleArray> minSide;
-  minSide->SetName("LRElementMinSide");
+  minSide->SetName(vtkLRSplineArrayNames::ElementMinSide);
   minSide->SetNumberOfTuples(count);
   for (vtkIdType e = 0; e < count; ++e)
   {
@@ -320,29 +321,31 @@ void AddFieldData(vtkFieldData* fd, const vtkLRSplinePatch& patch,
     }
     levels[d] = static_cast<int>(std::lround(std::log2(largest / smallest)));
   }
-  AddFieldArray<vtkIntArray, int>(fd, "LRPatchIndex", { options.PatchIndex });
-  AddFieldArray<vtkIntArray, int>(fd, "LRParametricDimension", { pd });
+  AddFieldArray<vtkIntArray, int>(fd, vtkLRSplineArrayNames::PatchIndex, { options.PatchIndex });
+  AddFieldArray<vtkIntArray, int>(fd, vtkLRSplineArrayNames::ParametricDimension, { pd });
+  AddFieldArray<vtkIntArray, int>(fd, vtkLRSplineArrayNames::Degrees,
+    { patch.Order[0] - 1, patch.Order[1] - 1, patch.Order[2] - 1 });
+  AddFieldArray<vtkIdTypeArray, vtkIdType>(
+    fd, vtkLRSplineArrayNames::NumberOfBasisFunctions, { patch.GetNumberOfBasisFunctions() });
+  AddFieldArray<vtkIdTypeArray, vtkIdType>(fd, vtkLRSplineArrayNames::NumberOfElements, { ne });
+  AddFieldArray<vtkIdTypeArray, vtkIdType>(fd, vtkLRSplineArrayNames::NumberOfMeshRectangles,
+    { static_cast<vtkIdType>(patch.MeshMultiplicities.size()) });
   AddFieldArray<vtkIntArray, int>(
-    fd, "LRDegrees", { patch.Order[0] - 1, patch.Order[1] - 1, patch.Order[2] - 1 });
-  AddFieldArray<vtkIdTypeArray, vtkIdType>(
-    fd, "LRNumberOfBasisFunctions", { patch.GetNumberOfBasisFunctions() });
-  AddFieldArray<vtkIdTypeArray, vtkIdType>(fd, "LRNumberOfElements", { ne });
-  AddFieldArray<vtkIdTypeArray, vtkIdType>(
-    fd, "LRNumberOfMeshRectangles", { static_cast<vtkIdType>(patch.MeshMultiplicities.size()) });
-  AddFieldArray<vtkIntArray, int>(fd, "LRRefinementLevels", { levels[0], levels[1], levels[2] });
+    fd, vtkLRSplineArrayNames::RefinementLevels, { levels[0], levels[1], levels[2] });
   AddFieldArray<vtkDoubleArray, double>(
-    fd, "LRParameterDomain", { dom[0], dom[1], dom[2], dom[3], dom[4], dom[5] });
-  AddFieldArray<vtkIntArray, int>(fd, "LRMode", { geometryMode ? 1 : 0 });
-  AddFieldArray<vtkIntArray, int>(fd, "LRRational", { options.WeightComponent >= 0 ? 1 : 0 });
+    fd, vtkLRSplineArrayNames::ParameterDomain, { dom[0], dom[1], dom[2], dom[3], dom[4], dom[5] });
+  AddFieldArray<vtkIntArray, int>(fd, vtkLRSplineArrayNames::Mode, { geometryMode ? 1 : 0 });
+  AddFieldArray<vtkIntArray, int>(
+    fd, vtkLRSplineArrayNames::Rational, { options.WeightComponent >= 0 ? 1 : 0 });
   if (!geometryMode)
   {
     const double* scale = options.Scale;
     const double* offset = options.Offset;
-    AddFieldArray<vtkDoubleArray, double>(
-      fd, "LRPhysicalTransform", { scale[0], scale[1], scale[2], offset[0], offset[1], offset[2] });
+    AddFieldArray<vtkDoubleArray, double>(fd, vtkLRSplineArrayNames::PhysicalTransform,
+      { scale[0], scale[1], scale[2], offset[0], offset[1], offset[2] });
   }
   vtkNew<vtkStringArray> source;
-  source->SetName("LRSourceFormat");
+  source->SetName(vtkLRSplineArrayNames::SourceFormat);
   source->InsertNextValue(options.SourceFormat);
   fd->AddArray(source);
 }
@@ -408,10 +411,10 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkLRSplineBezierGrid::Build(const vtkLRSpl
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(np);
   vtkNew<vtkDoubleArray> paramCoords;
-  paramCoords->SetName("LRParameterCoordinates");
+  paramCoords->SetName(vtkLRSplineArrayNames::ParameterCoordinates);
   paramCoords->SetNumberOfComponents(3);
   vtkNew<vtkDoubleArray> weights;
-  weights->SetName("RationalWeights");
+  weights->SetName(vtkLRSplineArrayNames::RationalWeights);
   if (geometryMode)
   {
     paramCoords->SetNumberOfTuples(np);

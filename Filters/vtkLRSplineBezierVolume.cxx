@@ -7,6 +7,7 @@
 #include "vtkHigherOrderHexahedron.h"
 #include "vtkHigherOrderQuadrilateral.h"
 #include "vtkIdList.h"
+#include "vtkLRSplineArrayNames.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -513,7 +514,9 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
       vtkDataArray* candidate = pd->GetArray(a);
       const char* n = candidate ? candidate->GetName() : nullptr;
       if (candidate && candidate != pd->GetRationalWeights() &&
-        !(n && (std::string(n) == "LRParameterCoordinates" || std::string(n) == "RationalWeights")))
+        !(n &&
+          (std::string(n) == vtkLRSplineArrayNames::ParameterCoordinates ||
+            std::string(n) == vtkLRSplineArrayNames::RationalWeights)))
       {
         field = candidate;
       }
@@ -538,7 +541,7 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
   {
     degrees = cd->GetArray("HigherOrderDegrees");
   }
-  vtkDataArray* boxes = cd->GetArray("LRParameterBox");
+  vtkDataArray* boxes = cd->GetArray(vtkLRSplineArrayNames::ParameterBox);
   if (boxes && boxes->GetNumberOfComponents() != 6)
   {
     boxes = nullptr;

@@ -7,6 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineGeometryMap.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -106,7 +107,7 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     double matrix[9] = { 1, 0, 0, 0, 1, 0, 0, 0, 1 }, offset[3] = { 0, 0, 0 };
     bool axisAligned = true;
     vtkFieldData* fd = grid->GetFieldData();
-    vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
+    vtkDataArray* mode = fd ? fd->GetArray(vtkLRSplineArrayNames::Mode) : nullptr;
     std::shared_ptr<vtkLRSplineGeometryMap> geometry;
     const bool geometryMode =
       mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1;
@@ -129,7 +130,7 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
         geometry.reset();
       }
     }
-    vtkDataArray* transform = fd ? fd->GetArray("LRPhysicalTransform") : nullptr;
+    vtkDataArray* transform = fd ? fd->GetArray(vtkLRSplineArrayNames::PhysicalTransform) : nullptr;
     if (transform && !parameterSpace && !geometry && transform->GetNumberOfTuples() > 0)
     {
       const vtkIdType count = transform->GetNumberOfComponents() * transform->GetNumberOfTuples();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineFitCore.h"
 
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineBezierGrid.h"
 #include "vtkLRSplineBezierVolume.h"
 
@@ -536,7 +537,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkLRSplineFitCore::BuildBlock(const vtkLRS
     return nullptr;
   }
   vtkNew<vtkDoubleArray> errors;
-  errors->SetName("LRFitElementMaxError");
+  errors->SetName(vtkLRSplineArrayNames::FitElementMaxError);
   errors->SetNumberOfTuples(options.LastElement - options.FirstElement);
   for (vtkIdType e = options.FirstElement; e < options.LastElement; ++e)
   {
@@ -559,15 +560,15 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkLRSplineFitCore::BuildBlock(const vtkLRS
     a->InsertNextValue(v);
     fd->AddArray(a);
   };
-  addDouble("LRFitMaximumError", { report.MaximumError });
-  addDouble("LRFitRMSError", { report.RMSError });
-  addDouble("LRFitTolerance", { report.Tolerance });
-  addInt("LRFitToleranceMet", report.ToleranceMet ? 1 : 0);
-  addInt("LRFitIterations", report.Iterations);
-  addInt("LRFitRefinementLevels", report.Levels);
-  addDouble("LRFitDataRange", { report.DataRange[0], report.DataRange[1] });
+  addDouble(vtkLRSplineArrayNames::FitMaximumError, { report.MaximumError });
+  addDouble(vtkLRSplineArrayNames::FitRMSError, { report.RMSError });
+  addDouble(vtkLRSplineArrayNames::FitTolerance, { report.Tolerance });
+  addInt(vtkLRSplineArrayNames::FitToleranceMet, report.ToleranceMet ? 1 : 0);
+  addInt(vtkLRSplineArrayNames::FitIterations, report.Iterations);
+  addInt(vtkLRSplineArrayNames::FitRefinementLevels, report.Levels);
+  addDouble(vtkLRSplineArrayNames::FitDataRange, { report.DataRange[0], report.DataRange[1] });
   vtkNew<vtkDoubleArray> hist;
-  hist->SetName("LRFitHistory");
+  hist->SetName(vtkLRSplineArrayNames::FitHistory);
   hist->SetNumberOfComponents(5);
   hist->SetComponentName(0, "Elements");
   hist->SetComponentName(1, "BasisFunctions");

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineFitter.h"
 
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineElementLocator.h"
 #include "vtkLRSplineFitCore.h"
@@ -744,16 +745,16 @@ std::vector<vtkDataSet*> Leaves(vtkDataObject* input)
 void AddFitFieldData(vtkFieldData* fd, const double domain[6], bool reused, vtkIdType points)
 {
   vtkNew<vtkDoubleArray> box;
-  box->SetName("LRFitDomain");
+  box->SetName(vtkLRSplineArrayNames::FitDomain);
   box->SetNumberOfComponents(6);
   box->InsertNextTuple(domain);
   fd->AddArray(box);
   vtkNew<vtkIdTypeArray> reuse;
-  reuse->SetName("LRFitReusedPreviousMesh");
+  reuse->SetName(vtkLRSplineArrayNames::FitReusedPreviousMesh);
   reuse->InsertNextValue(reused ? 1 : 0);
   fd->AddArray(reuse);
   vtkNew<vtkIdTypeArray> count;
-  count->SetName("LRFitDataPoints");
+  count->SetName(vtkLRSplineArrayNames::FitDataPoints);
   count->InsertNextValue(points);
   fd->AddArray(count);
 }
@@ -1031,7 +1032,7 @@ int vtkLRSplineFitter::RequestData(
   }
   this->FitTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   vtkNew<vtkDoubleArray> seconds;
-  seconds->SetName("LRFitSeconds");
+  seconds->SetName(vtkLRSplineArrayNames::FitSeconds);
   seconds->InsertNextValue(this->FitTime);
   grid->GetFieldData()->AddArray(seconds);
   return 1;

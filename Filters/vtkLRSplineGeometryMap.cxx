@@ -3,6 +3,7 @@
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkLRSplineArrayNames.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -103,7 +104,7 @@ bool vtkLRSplineGeometryMap::Build(
   vtkDataArray* weights = grid->GetPointData()->GetRationalWeights();
   if (!weights)
   {
-    weights = grid->GetPointData()->GetArray("RationalWeights");
+    weights = grid->GetPointData()->GetArray(vtkLRSplineArrayNames::RationalWeights);
   }
   this->Rational = weights != nullptr;
   const int nc = this->Rational ? 4 : 3;

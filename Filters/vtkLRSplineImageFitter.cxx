@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineImageFitter.h"
 
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineFitCore.h"
 #include "vtkLRSplinePatch.h"
@@ -899,7 +900,7 @@ int vtkLRSplineImageFitter::RequestData(
   if (fd)
   {
     vtkNew<vtkDoubleArray> seconds;
-    seconds->SetName("LRFitSeconds");
+    seconds->SetName(vtkLRSplineArrayNames::FitSeconds);
     seconds->InsertNextValue(this->FitTime);
     fd->AddArray(seconds);
   }

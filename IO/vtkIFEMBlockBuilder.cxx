@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkIFEMBlockBuilder.h"
 
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineElementLocator.h"
 #include "vtkLRSplineParser.h"
@@ -367,7 +368,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkIFEMBlockBuilder::Build(const Patch& pat
     return nullptr;
   }
   std::vector<vtkIdType> elementIds;
-  vtkDataArray* ids = grid->GetCellData()->GetArray("LRElementId");
+  vtkDataArray* ids = grid->GetCellData()->GetArray(vtkLRSplineArrayNames::ElementId);
   for (vtkIdType c = 0; ids && c < ids->GetNumberOfTuples(); ++c)
   {
     elementIds.push_back(static_cast<vtkIdType>(ids->GetComponent(c, 0)));
@@ -477,7 +478,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkIFEMBlockBuilder::BuildLagrange(const Pa
     patch.Lagrange.BuildGrid(options.FirstElement, options.LastElement, nodeIds, elementIds);
   AddArraysFromTable(grid->GetPointData(), arrays, table, width, nodeIds);
   vtkNew<vtkIdTypeArray> ids;
-  ids->SetName("LRElementId");
+  ids->SetName(vtkLRSplineArrayNames::ElementId);
   ids->SetNumberOfTuples(static_cast<vtkIdType>(elementIds.size()));
   for (std::size_t c = 0; c < elementIds.size(); ++c)
   {

@@ -3,6 +3,7 @@
 
 #include "vtkIFEMBlockBuilder.h"
 #include "vtkIFEMFile.h"
+#include "vtkLRSplineArrayNames.h"
 #include "vtkSplineVizPieces.h"
 
 #include "vtkCompositeDataSet.h"
@@ -577,8 +578,8 @@ void vtkIFEMReader::vtkInternals::AddGeometryDeviation(const std::string& refere
     return;
   }
   vtkFieldData* fd = grid->GetFieldData();
-  AddString(fd, "LRGeometryReferenceBasis", reference);
-  AddNumber(fd, "LRGeometryDeviation", deviation, false);
+  AddString(fd, vtkLRSplineArrayNames::GeometryReferenceBasis, reference);
+  AddNumber(fd, vtkLRSplineArrayNames::GeometryDeviation, deviation, false);
   const double size = std::sqrt(grid->GetLength2());
   if (!(deviation <= 1e-9 * std::max(size, 1e-300)))
   {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineVolumeMapper.h"
 
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineField.h"
 #include "vtkLRSplineGeometryMap.h"
 #include "vtkSplineVizGPUBuffer.h"
@@ -78,7 +79,8 @@ void BindPositions(vtkSmartPointer<vtkOpenGLVertexArrayObject>& array, vtkShader
   {
     array->ShaderProgramChanged();
     array->Bind();
-    array->AddAttributeArray(program, buffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
+    array->AddAttributeArray(
+      program, buffer, "vertexMC", 0, 3 * sizeof(float), VTK_FLOAT, 3, false);
     bound = program;
   }
 }
@@ -452,14 +454,14 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   {
     vtkPointData* pd = grids[g]->GetPointData();
     vtkFieldData* fd = grids[g]->GetFieldData();
-    vtkDataArray* rational = fd ? fd->GetArray("LRRational") : nullptr;
-    vtkDataArray* mode = fd ? fd->GetArray("LRMode") : nullptr;
+    vtkDataArray* rational = fd ? fd->GetArray(vtkLRSplineArrayNames::Rational) : nullptr;
+    vtkDataArray* mode = fd ? fd->GetArray(vtkLRSplineArrayNames::Mode) : nullptr;
     const bool geometryMode =
       mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1;
     // (Rational geometry maps are rendered by inversion, their fields as
     // rational splines; a rational field over a parameter box is not.)
     if (!geometryMode &&
-      (pd->GetRationalWeights() || pd->GetArray("RationalWeights") ||
+      (pd->GetRationalWeights() || pd->GetArray(vtkLRSplineArrayNames::RationalWeights) ||
         (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0)))
     {
       return done(in.Fail("patch " + std::to_string(g) +
