@@ -786,7 +786,10 @@ bool vtkLRSplineVolumeMapper::UploadSpline(vtkOpenGLRenderWindow* window)
         window, in.Coefficients.data(), in.Coefficients.size(), 1, VTK_FLOAT, GL_R32F);
     if (!ok)
     {
-      in.Fail("the spline's data could not be uploaded to the GPU");
+      in.Fail("the spline's data could not be uploaded to the GPU: " +
+        vtkSplineVizGPUBuffer::FirstUploadError(
+          { &in.HeadsBuffer, &in.NodeWordsBuffer, &in.NodeSplitsBuffer, &in.OctreeBuffer,
+            &in.BoxesBuffer, &in.OffsetsBuffer, &in.CoefficientsBuffer }));
       in.BuildKey.clear();
       return false;
     }
@@ -982,7 +985,8 @@ bool vtkLRSplineVolumeMapper::UpdateEmptySpaceSkipping(
         !in.BoxesBuffer.Upload(
           window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F))
       {
-        in.Error = "the spline's element boxes could not be uploaded to the GPU";
+        in.Error = "the spline's element boxes could not be uploaded to the GPU: " +
+          in.BoxesBuffer.GetLastUploadError();
         return false;
       }
       in.SkipKey = key.str();

@@ -279,7 +279,7 @@ void vtkRayCastTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
             window, list.data(), chunks.size(), 2, VTK_TYPE_UINT32, GL_RG32UI))
       {
         vtkErrorMacro(<< "Could not upload the chunk list: "
-                      << vtkSplineVizGPUBuffer::GetLastUploadError());
+                      << this->ChunkList->GetLastUploadError());
         return;
       }
       this->ChunkList->Activate(program, "tubeChunkList");

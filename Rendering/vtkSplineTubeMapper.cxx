@@ -819,7 +819,9 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
   if (!ok)
   {
     vtkErrorMacro(<< "Could not upload the tubes buffer to the GPU: "
-                  << vtkSplineVizGPUBuffer::GetLastUploadError());
+                  << vtkSplineVizGPUBuffer::FirstUploadError(
+                       { this->NodesBuffer.get(), this->NodeInfoBuffer.get(),
+                         this->TubesBuffer.get(), this->ColorsBuffer.get() }));
     this->UploadFailed = true;
   }
   return ok;

@@ -18,19 +18,18 @@
 #include <vector>
 #include <string>
 
-namespace
-{
-std::string& LastUploadError()
-{
-  static std::string message; // the render thread's
-  return message;
-}
-}
-
 //------------------------------------------------------------------------------
-const std::string& vtkSplineVizGPUBuffer::GetLastUploadError()
+std::string vtkSplineVizGPUBuffer::FirstUploadError(
+  std::initializer_list<const vtkSplineVizGPUBuffer*> buffers)
 {
-  return LastUploadError();
+  for (const vtkSplineVizGPUBuffer* buffer : buffers)
+  {
+    if (buffer && !buffer->LastUploadError.empty())
+    {
+      return buffer->LastUploadError;
+    }
+  }
+  return std::string();
 }
 
 //------------------------------------------------------------------------------
@@ -90,16 +89,16 @@ bool vtkSplineVizGPUBuffer::UploadInPieces(vtkOpenGLRenderWindow* window, size_t
 {
   const size_t texelBytes =
     static_cast<size_t>(components) * static_cast<size_t>(vtkDataArray::GetDataTypeSize(vtkType));
+  this->LastUploadError.clear();
   const size_t limit = GetMaximumNumberOfTexels(window);
   if (texels > limit)
   {
     std::ostringstream msg;
     msg << "the data needs a GPU buffer of " << texels << " texels (" << texels * texelBytes
         << " bytes); this GPU allows at most " << limit
-        << " texels per buffer (GL_MAX_TEXTURE_BUFFER_SIZE"
-        << TestLimitNote()
+        << " texels per buffer (GL_MAX_TEXTURE_BUFFER_SIZE" << TestLimitNote()
         << "): nothing is drawn";
-    LastUploadError() = msg.str();
+    this->LastUploadError = msg.str();
     this->ReleaseGraphicsResources(window);
     return false;
   }
@@ -120,7 +119,7 @@ bool vtkSplineVizGPUBuffer::UploadInPieces(vtkOpenGLRenderWindow* window, size_t
   if (!this->Buffer->Upload(zeros, sizeof(zeros), vtkOpenGLBufferObject::TextureBuffer) ||
     !this->Buffer->Bind())
   {
-    LastUploadError() = "the GPU could not create a buffer: nothing is drawn";
+    this->LastUploadError = "the GPU could not create a buffer: nothing is drawn";
     this->ReleaseGraphicsResources(window);
     return false;
   }
@@ -128,7 +127,7 @@ bool vtkSplineVizGPUBuffer::UploadInPieces(vtkOpenGLRenderWindow* window, size_t
     GL_STATIC_DRAW);
   if (glGetError() == GL_OUT_OF_MEMORY)
   {
-    LastUploadError() = "the GPU could not allocate a buffer of " + std::to_string(allocate) +
+    this->LastUploadError = "the GPU could not allocate a buffer of " + std::to_string(allocate) +
       " bytes (GL_OUT_OF_MEMORY): nothing is drawn";
     this->Buffer->Release();
     this->ReleaseGraphicsResources(window);
@@ -149,7 +148,7 @@ bool vtkSplineVizGPUBuffer::UploadInPieces(vtkOpenGLRenderWindow* window, size_t
   this->Buffer->Release();
   if (glGetError() == GL_OUT_OF_MEMORY)
   {
-    LastUploadError() = "the GPU ran out of memory filling a buffer of " +
+    this->LastUploadError = "the GPU ran out of memory filling a buffer of " +
       std::to_string(allocate) + " bytes (GL_OUT_OF_MEMORY): nothing is drawn";
     this->ReleaseGraphicsResources(window);
     return false;
@@ -164,8 +163,8 @@ bool vtkSplineVizGPUBuffer::UploadInPieces(vtkOpenGLRenderWindow* window, size_t
   const unsigned int count = static_cast<unsigned int>(texels > 0 ? texels : 1);
   if (!this->Texture->CreateTextureBuffer(count, components, vtkType, this->Buffer))
   {
-    LastUploadError() = "the GPU could not create a buffer texture of " + std::to_string(count) +
-      " texels: nothing is drawn";
+    this->LastUploadError = "the GPU could not create a buffer texture of " +
+      std::to_string(count) + " texels: nothing is drawn";
     this->ReleaseGraphicsResources(window);
     return false;
   }

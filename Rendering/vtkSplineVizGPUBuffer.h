@@ -17,7 +17,7 @@
  * stale or partial data. The environment variable
  * SPLINEVIZ_GPU_BUFFER_LIMIT (texels) lowers the limit, to test that path
  * with small data. Upload() reports nothing itself: the mapper says so
- * with vtkErrorMacro, quoting GetLastUploadError().
+ * with vtkErrorMacro, quoting the buffer's GetLastUploadError().
  *
  * Not wrapped (private to the module).
  */
@@ -29,6 +29,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <initializer_list>
 #include <string>
 
 class vtkOpenGLBufferObject;
@@ -91,9 +92,15 @@ public:
   /// ", lowered by SPLINEVIZ_GPU_BUFFER_LIMIT" when that is set, else "" (for error messages).
   static const char* TestLimitNote();
 
-  /// Why the last failed Upload() failed (for the mapper's error message; kept after later
-  /// successes).
-  static const std::string& GetLastUploadError();
+  /// Why this buffer's last Upload() failed, "" after a success (for the mapper's error message).
+  const std::string& GetLastUploadError() const { return this->LastUploadError; }
+
+  /**
+   * The first non-empty GetLastUploadError() of `buffers`, listed in the order
+   * they were uploaded, "" when none failed: the reason of a chain of uploads
+   * (`ok = ok && b.Upload(...)`) that stops at its first failure.
+   */
+  static std::string FirstUploadError(std::initializer_list<const vtkSplineVizGPUBuffer*> buffers);
 
   /// Bytes held on the GPU (0 before the first upload).
   size_t GetNumberOfBytes() const { return this->Bytes; }
@@ -107,6 +114,7 @@ private:
   vtkSmartPointer<vtkTextureObject> Texture;
   size_t Bytes = 0;
   size_t Texels = 0;
+  std::string LastUploadError;
 };
 
 #endif

@@ -366,7 +366,9 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
   if (!ok)
   {
     vtkErrorMacro(<< "Could not upload the lines to the GPU: "
-                  << vtkSplineVizGPUBuffer::GetLastUploadError());
+                  << vtkSplineVizGPUBuffer::FirstUploadError(
+                       { &in.Nodes, &in.Tangents, &in.TubeStarts, this->TubesBuffer.get(),
+                         &in.Colors, &in.TexCoords, &in.Frames }));
     this->UploadFailed = true;
   }
 }

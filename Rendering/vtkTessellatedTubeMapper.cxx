@@ -268,7 +268,7 @@ void vtkTessellatedTubeMapper::UploadTubes(vtkOpenGLRenderWindow* window)
         }))
   {
     vtkErrorMacro(<< "Could not upload the orthogonal vectors to the GPU: "
-                  << vtkSplineVizGPUBuffer::GetLastUploadError());
+                  << this->FramesBuffer->GetLastUploadError());
     this->UploadFailed = true;
     return;
   }
@@ -774,7 +774,7 @@ void vtkTessellatedTubeMapper::DrawChunks(
         levels.GetInstances().size(), 1, VTK_TYPE_UINT32, GL_R32UI))
   {
     vtkErrorMacro(<< "Could not upload the instance list: "
-                  << vtkSplineVizGPUBuffer::GetLastUploadError());
+                  << this->InstancesBuffer->GetLastUploadError());
     return;
   }
   const bool haveThin = std::any_of(
