@@ -31,6 +31,12 @@ list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineVizTensorMath")
 list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkTensorMathShared.glsl")
+# The shared GLSL/C++ subset: its C++ side (vtkSplineVizSharedGLSL.h) and the
+# prelude every shader that embeds a *Shared.glsl file starts with.
+list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizSharedGLSL.h")
+list(APPEND splineviz_shaders
+  "${SPLINEVIZ_FOLDER}/glsl/vtkSplineVizPrelude.glsl")
 # The LR arrays' names; progress, abort, output-size checks and requested
 # pieces shared by the filters and readers.
 list(APPEND splineviz_private_headers

@@ -3,7 +3,7 @@
 
 #include "vtkDataArray.h"
 
-#include <glm/glm.hpp>
+#include "vtkSplineVizSharedGLSL.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,14 +13,8 @@ namespace
 // The shared GLSL text compiled as C++ in double precision.
 namespace shared
 {
-using namespace glm;
-using real = double;
-using vec3 = glm::dvec3;
-#define SV_OUT(T) T&
-#define SV_INOUT(T) T&
+SV_SHARED_GLSL_TYPES(double);
 #include "glsl/vtkTensorMathShared.glsl"
-#undef SV_OUT
-#undef SV_INOUT
 }
 
 bool AllFinite(const double* c, int n)

@@ -33,7 +33,6 @@ list(APPEND splineviz_shaders
 list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkSplineTubeMath.h")
 list(APPEND splineviz_shaders
-  "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathPrelude.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathShared.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeNodes.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeColor.glsl"

@@ -48,6 +48,7 @@
 
 #include "vtkLRSplineVolumeCompositeFS.h"
 #include "vtkLRSplineVolumeFS.h"
+#include "vtkSplineVizPrelude.h"
 #include "vtkLRSplineVolumeShared.h"
 #include "vtkLRSplineVolumeTrimFS.h"
 #include "vtkLRSplineVolumeVS.h"
@@ -742,6 +743,7 @@ std::string vtkLRSplineVolumeMapper::GetVertexShaderSource()
 std::string vtkLRSplineVolumeMapper::GetFragmentShaderSource()
 {
   std::string fs = vtkLRSplineVolumeFS;
+  vtkShaderProgram::Substitute(fs, "//SV::Prelude::Dec", vtkSplineVizPrelude);
   vtkShaderProgram::Substitute(fs, "//VTK::LRSplineVolumeShared::Dec", vtkLRSplineVolumeShared);
   return fs;
 }

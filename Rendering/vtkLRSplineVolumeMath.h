@@ -8,7 +8,7 @@
  * §3.2: the k-d forest of Algorithm 1, the octree of §3.2.2) and evaluates
  * their Bezier form (§3.2.3) with the code of
  * glsl/vtkLRSplineVolumeShared.glsl, written in the common subset of GLSL and
- * C++ (see glsl/vtkSplineTubeMathShared.glsl). This header compiles the very
+ * C++ (the rules: vtkSplineVizSharedGLSL.h). This header compiles the very
  * same text in single precision, as the GPU runs it, so that the unit test can
  * hold it against vtkLRSplineElementLocator and vtkLRSplineBezierVolume (the
  * double-precision CPU code) on every element.
@@ -21,7 +21,7 @@
 #ifndef vtkLRSplineVolumeMath_h
 #define vtkLRSplineVolumeMath_h
 
-#include <glm/glm.hpp>
+#include "vtkSplineVizSharedGLSL.h"
 
 #include <cmath>
 #include <cstdint>
@@ -53,14 +53,9 @@ inline void SetData(const Data* data)
   detail::Current() = data;
 }
 
-namespace
+namespace // internal linkage: the GLSL text has no `inline`
 {
-using real = float;
-using vec3 = glm::vec3;
-using vec4 = glm::vec4;
-using mat3 = glm::mat3;
-using glm::clamp;
-using glm::inverse;
+SV_SHARED_GLSL_TYPES(float); // as the GPU computes
 using std::abs;
 using std::max;
 using ivec3 = glm::ivec3;
@@ -88,11 +83,7 @@ inline real lrCoefficient(int i)
   return detail::Current()->Coefficients[i];
 }
 
-#define SV_OUT(T) T&
-#define SV_INOUT(T) T&
 #include "glsl/vtkLRSplineVolumeShared.glsl"
-#undef SV_OUT
-#undef SV_INOUT
 }
 }
 

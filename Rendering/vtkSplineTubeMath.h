@@ -4,7 +4,7 @@
  * @brief  The spline-tube math of glsl/vtkSplineTubeMathShared.glsl, compiled as C++.
  *
  * glsl/vtkSplineTubeMathShared.glsl is written in the common subset of GLSL and C++
- * (see the rules at its top). The shaders embed it; this header compiles the
+ * (the rules: vtkSplineVizSharedGLSL.h). The shaders embed it; this header compiles the
  * very same text in double precision with GLM, in the namespace
  * vtkSplineTubeMath, for the tube core, the CPU reference intersection and the
  * unit tests: Hermite evaluation, the split of a cubic segment into quadratic
@@ -16,25 +16,15 @@
 #ifndef vtkSplineTubeMath_h
 #define vtkSplineTubeMath_h
 
-#include <glm/glm.hpp>
+#include "vtkSplineVizSharedGLSL.h"
 
 namespace vtkSplineTubeMath
 {
-using namespace glm;
-using real = double;
-using vec2 = glm::dvec2;
-using vec3 = glm::dvec3;
-using vec4 = glm::dvec4;
-
-#define SV_OUT(T) T&
-#define SV_INOUT(T) T&
-// Internal linkage: the GLSL source has no `inline`.
-namespace
+SV_SHARED_GLSL_TYPES(double);
+namespace // internal linkage: the GLSL text has no `inline`
 {
 #include "glsl/vtkSplineTubeMathShared.glsl"
 }
-#undef SV_OUT
-#undef SV_INOUT
 
 /// A unit vector in the GPU buffers' octahedral format (RG16I, decoded by
 /// svOctDecode from the components / 32767): svOctEncode rounded half away

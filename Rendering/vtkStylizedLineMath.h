@@ -18,22 +18,12 @@
 
 namespace vtkStylizedLineMath
 {
-using namespace glm;
-using real = double;
-using vec2 = glm::dvec2;
-using vec3 = glm::dvec3;
-using vec4 = glm::dvec4;
+SV_SHARED_GLSL_TYPES(double);
 using vtkSplineTubeMath::svAnyOrthogonal;
-
-#define SV_OUT(T) T&
-#define SV_INOUT(T) T&
-// Internal linkage: the GLSL source has no `inline`.
-namespace
+namespace // internal linkage: the GLSL text has no `inline`
 {
 #include "glsl/vtkStylizedLineMathShared.glsl"
 }
-#undef SV_OUT
-#undef SV_INOUT
 }
 
 #endif

@@ -57,6 +57,7 @@
 #include "vtkSuperquadricGlyphGS.h"
 #include "vtkSuperquadricGlyphShared.h"
 #include "vtkSuperquadricGlyphVS.h"
+#include "vtkSplineVizPrelude.h"
 #include "vtkTensorMathShared.h"
 
 #include "vtk_glew.h"
@@ -957,8 +958,7 @@ void vtkSuperquadricGlyphMapper::BuildBufferObjects(vtkRenderer* ren, vtkActor*)
   if (in.TooLarge)
   {
     vtkErrorMacro(<< numGlyphs << " glyphs are more than one GPU draw can hold (at most " << limit
-                  << vtkSplineVizGPUBuffer::TestLimitNote()
-                  << "): nothing is drawn");
+                  << vtkSplineVizGPUBuffer::TestLimitNote() << "): nothing is drawn");
   }
   else
   {
@@ -1118,7 +1118,9 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
   std::string GSSource = shaders[vtkShader::Geometry]->GetSource();
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
 
-  // The math shared with the CPU code.
+  // The math shared with the CPU code, after the prelude of the shared subset.
+  vtkShaderProgram::Substitute(VSSource, "//SV::Prelude::Dec", vtkSplineVizPrelude);
+  vtkShaderProgram::Substitute(FSSource, "//SV::Prelude::Dec", vtkSplineVizPrelude);
   vtkShaderProgram::Substitute(VSSource, "//SQ::TensorMath::Dec", vtkTensorMathShared);
   vtkShaderProgram::Substitute(VSSource, "//SQ::GlyphMath::Dec", vtkSuperquadricGlyphShared);
   vtkShaderProgram::Substitute(FSSource, "//SQ::GlyphMath::Dec", vtkSuperquadricGlyphShared);

@@ -4,7 +4,7 @@
  * @brief  The superquadric glyph math of glsl/vtkSuperquadricGlyphShared.glsl, compiled as C++.
  *
  * glsl/vtkSuperquadricGlyphShared.glsl is written in the common subset of GLSL
- * and C++ (see Filters/glsl/vtkTensorMathShared.glsl). The glyph shaders of
+ * and C++ (the rules: vtkSplineVizSharedGLSL.h). The glyph shaders of
  * vtkSuperquadricGlyphMapper embed it; this header compiles the very same text
  * in double precision with GLM, in the namespace vtkSuperquadricGlyphMath, for
  * the unit tests (ray / superquadric intersection against brute force) and
@@ -17,20 +17,15 @@
 #ifndef vtkSuperquadricGlyphMath_h
 #define vtkSuperquadricGlyphMath_h
 
-#include <glm/glm.hpp>
+#include "vtkSplineVizSharedGLSL.h"
 
 namespace vtkSuperquadricGlyphMath
 {
-using namespace glm;
-using real = double;
-using vec3 = glm::dvec3;
-using vec4 = glm::dvec4;
-
-#define SV_OUT(T) T&
-#define SV_INOUT(T) T&
+SV_SHARED_GLSL_TYPES(double);
+namespace // internal linkage: the GLSL text has no `inline`
+{
 #include "glsl/vtkSuperquadricGlyphShared.glsl"
-#undef SV_OUT
-#undef SV_INOUT
+}
 }
 
 #endif

@@ -3,11 +3,9 @@
 // the CPU code (vtkSplineVizTensorMath.cxx compiles this very text as C++ in
 // double precision with GLM; the superquadric glyph shaders embed it in float).
 //
-// Written in the common subset of GLSL and C++ (same rules as
-// Rendering/glsl/vtkSplineTubeMath.glsl): `real` for scalars, vec3 of real,
-// SV_OUT(T)/SV_INOUT(T) for output parameters, real literals with a decimal
-// point, single-component swizzles only, no recursion. Every name starts with
-// `svt` so that it can be embedded next to other SplineViz GLSL.
+// Written in the common subset of GLSL and C++ (the rules:
+// Filters/vtkSplineVizSharedGLSL.h). Every name starts with `svt` so that it
+// can be embedded next to other SplineViz GLSL.
 //
 // A symmetric tensor is passed as diag = (xx, yy, zz) and off = (xy, yz, xz)
 // (VTK's 6-component order split in two).

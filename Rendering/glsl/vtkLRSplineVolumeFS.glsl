@@ -33,9 +33,7 @@
 
 //VTK::Output::Dec
 
-#define real float
-#define SV_OUT(T) out T
-#define SV_INOUT(T) inout T
+//SV::Prelude::Dec
 
 // Patches (data coordinates x = A u + offset; lrPatchInverse is A^-1).
 uniform vec3 lrPatchLo[LR_MAX_PATCHES];     // parameter domain

@@ -4,10 +4,7 @@
 // This file is written in the common subset of GLSL and C++ (with GLM):
 // it is embedded into the tube shaders and also compiled as C++ through
 // vtkSplineTubeMath.h, so the CPU reference, the unit tests and the GPU run
-// the same algorithm. Rules of the subset: `real` for scalars (float on the
-// GPU, double on the CPU), vec2/vec3/vec4 of real, SV_OUT(T)/SV_INOUT(T) for
-// output parameters, real literals written with a decimal point, no swizzles
-// other than single components, no recursion, no constructors of structs.
+// the same algorithm (the rules of the subset: Filters/vtkSplineVizSharedGLSL.h).
 //
 // Contents:
 //  - cubic Hermite evaluation of (x, y, z, radius) splines (Salm §3);

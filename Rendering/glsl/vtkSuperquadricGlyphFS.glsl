@@ -44,9 +44,7 @@ uniform vec3 sqNegativeFormColor;
 
 //VTK::Output::Dec
 
-#define real float
-#define SV_OUT(T) out T
-#define SV_INOUT(T) inout T
+//SV::Prelude::Dec
 //SQ::GeneralShapes::Dec
 //SQ::Clip::Dec
 //SQ::GlyphMath::Dec

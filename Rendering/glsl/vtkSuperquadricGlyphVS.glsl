@@ -43,9 +43,7 @@ out vec4 glyphColorVSOut; // rgba, a < 0: use the actor's colors
 
 //VTK::Picking::Dec
 
-#define real float
-#define SV_OUT(T) out T
-#define SV_INOUT(T) inout T
+//SV::Prelude::Dec
 //SQ::TensorMath::Dec
 //SQ::GlyphMath::Dec
 
