@@ -14,8 +14,12 @@
  *  - real literals written with a decimal point;
  *  - no swizzles other than single components, no recursion, no
  *    constructors of structs;
- *  - every name starts with the file's prefix (sv, svt, svq, lr), so that
- *    files can be embedded next to each other.
+ *  - every name starts with the file's prefix (sv: tubes, sl: stylized
+ *    lines, svq: glyphs, svt: tensors, lr: LR volumes), so that files can be
+ *    embedded next to each other.
+ *
+ * The substitution tags of SplineViz's own shader code are //SV::Name::Dec
+ * and //SV::Name::Impl (VTK's tags stay //VTK::...).
  *
  * The GLSL side is glsl/vtkSplineVizPrelude.glsl (real = float). The C++ side
  * is this header: include it, then, inside the namespace that is to hold the

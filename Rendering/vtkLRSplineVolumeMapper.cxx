@@ -744,7 +744,7 @@ std::string vtkLRSplineVolumeMapper::GetFragmentShaderSource()
 {
   std::string fs = vtkLRSplineVolumeFS;
   vtkShaderProgram::Substitute(fs, "//SV::Prelude::Dec", vtkSplineVizPrelude);
-  vtkShaderProgram::Substitute(fs, "//VTK::LRSplineVolumeShared::Dec", vtkLRSplineVolumeShared);
+  vtkShaderProgram::Substitute(fs, "//SV::LRSplineVolumeShared::Dec", vtkLRSplineVolumeShared);
   return fs;
 }
 

@@ -104,10 +104,10 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
 
   // The vertex stage reads the tubes buffer and, with scalar coloring, makes
   // the color spline's ends, passed flat to the fragments.
-  vtkShaderProgram::Substitute(VSSource, "//VTK::SplineTubeMath::Dec",
+  vtkShaderProgram::Substitute(VSSource, "//SV::SplineTubeMath::Dec",
     math + GetTubeNodesDeclarations() + GetTubeColorDeclarations());
   std::string declarations = vtkRayCastTubeFS;
-  vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", math);
+  vtkShaderProgram::Substitute(declarations, "//SV::SplineTubeMath::Dec", math);
   const int colorMode = this->GetTubeColorMode();
   if (colorMode == 2)
   {
@@ -115,12 +115,12 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
   }
   if (colorMode != 0)
   {
-    vtkShaderProgram::Substitute(GSSource, "//VTK::TubeColor::GSDec",
+    vtkShaderProgram::Substitute(GSSource, "//SV::TubeColor::GSDec",
       "flat out vec4 tubeC0GSOutput;\n"
       "flat out vec4 tubeD0GSOutput;\n"
       "flat out vec4 tubeC1GSOutput;\n"
       "flat out vec4 tubeD1GSOutput;\n");
-    vtkShaderProgram::Substitute(GSSource, "//VTK::TubeColor::GSImpl",
+    vtkShaderProgram::Substitute(GSSource, "//SV::TubeColor::GSImpl",
       "tubeC0GSOutput = tubeRect[0].c0;\n"
       "    tubeD0GSOutput = tubeRect[0].d0;\n"
       "    tubeC1GSOutput = tubeRect[0].c1;\n"

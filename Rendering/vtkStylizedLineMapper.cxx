@@ -787,8 +787,8 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
   }
 
   vtkShaderProgram::Substitute(VSSource, "//VTK::System::Dec", "//VTK::System::Dec\n" + defines);
-  vtkShaderProgram::Substitute(VSSource, "//VTK::SplineTubeMath::Dec", tubeMath);
-  vtkShaderProgram::Substitute(VSSource, "//VTK::StylizedLineMath::Dec", vtkStylizedLineMathShared);
+  vtkShaderProgram::Substitute(VSSource, "//SV::SplineTubeMath::Dec", tubeMath);
+  vtkShaderProgram::Substitute(VSSource, "//SV::StylizedLineMath::Dec", vtkStylizedLineMathShared);
 
   vtkShaderProgram::Substitute(
     FSSource, "//VTK::System::Dec", "//VTK::System::Dec\n" + defines, false);
@@ -797,9 +797,9 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
   {
     declarations += GetTubeDirectionColorDeclarations();
   }
-  vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", tubeMath);
+  vtkShaderProgram::Substitute(declarations, "//SV::SplineTubeMath::Dec", tubeMath);
   vtkShaderProgram::Substitute(
-    declarations, "//VTK::StylizedLineMath::Dec", vtkStylizedLineMathShared);
+    declarations, "//SV::StylizedLineMath::Dec", vtkStylizedLineMathShared);
   // After the actor texture's sampler (declared by VTK at //VTK::TMap::Dec).
   vtkShaderProgram::Substitute(FSSource, "//VTK::TMap::Dec", "//VTK::TMap::Dec\n" + declarations);
   vtkShaderProgram::Substitute(FSSource, "//VTK::PositionVC::Dec", "in vec4 vertexVCVSOutput;");

@@ -1121,15 +1121,15 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
   // The math shared with the CPU code, after the prelude of the shared subset.
   vtkShaderProgram::Substitute(VSSource, "//SV::Prelude::Dec", vtkSplineVizPrelude);
   vtkShaderProgram::Substitute(FSSource, "//SV::Prelude::Dec", vtkSplineVizPrelude);
-  vtkShaderProgram::Substitute(VSSource, "//SQ::TensorMath::Dec", vtkTensorMathShared);
-  vtkShaderProgram::Substitute(VSSource, "//SQ::GlyphMath::Dec", vtkSuperquadricGlyphShared);
-  vtkShaderProgram::Substitute(FSSource, "//SQ::GlyphMath::Dec", vtkSuperquadricGlyphShared);
+  vtkShaderProgram::Substitute(VSSource, "//SV::TensorMath::Dec", vtkTensorMathShared);
+  vtkShaderProgram::Substitute(VSSource, "//SV::GlyphMath::Dec", vtkSuperquadricGlyphShared);
+  vtkShaderProgram::Substitute(FSSource, "//SV::GlyphMath::Dec", vtkSuperquadricGlyphShared);
 
   // The general ray caster, for the Schultz-Kindlmann shapes only.
   this->Internal->ShaderGeneralShapes = this->NegativeEigenvaluePolicy == SCHULTZ_KINDLMANN;
   for (std::string* source : { &VSSource, &GSSource, &FSSource })
   {
-    vtkShaderProgram::Substitute(*source, "//SQ::GeneralShapes::Dec",
+    vtkShaderProgram::Substitute(*source, "//SV::GeneralShapes::Dec",
       this->Internal->ShaderGeneralShapes ? "#define SQ_GENERAL_SHAPES" : "");
   }
   // Clipping planes: in the fragment stage, on the ray (not VTK's per-vertex
@@ -1139,15 +1139,15 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
   for (std::string* source : { &GSSource, &FSSource })
   {
     vtkShaderProgram::Substitute(
-      *source, "//SQ::Clip::Dec", this->Internal->ShaderClip ? "#define SQ_CLIP" : "");
+      *source, "//SV::Clip::Dec", this->Internal->ShaderClip ? "#define SQ_CLIP" : "");
   }
 
   // Per-block colors, opacities, visibilities.
   this->Internal->ShaderHaveBlockColors = this->Internal->HaveBlockColors;
   if (this->Internal->HaveBlockColors)
   {
-    vtkShaderProgram::Substitute(VSSource, "//SQ::BlockColor::Dec", "in vec4 glyphBlockColor;");
-    vtkShaderProgram::Substitute(VSSource, "//SQ::BlockColor::Impl",
+    vtkShaderProgram::Substitute(VSSource, "//SV::BlockColor::Dec", "in vec4 glyphBlockColor;");
+    vtkShaderProgram::Substitute(VSSource, "//SV::BlockColor::Impl",
       "  if (glyphBlockColor.w <= 0.0)\n"
       "  {\n"
       "    glyphValidVSOut = 0; // a hidden block\n"
@@ -1164,8 +1164,8 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
   this->Internal->ShaderHaveColors = this->Internal->HaveColors;
   if (this->Internal->HaveColors)
   {
-    vtkShaderProgram::Substitute(VSSource, "//SQ::ScalarColor::Dec", "in vec4 glyphScalarColor;");
-    vtkShaderProgram::Substitute(VSSource, "//SQ::ScalarColor::Impl",
+    vtkShaderProgram::Substitute(VSSource, "//SV::ScalarColor::Dec", "in vec4 glyphScalarColor;");
+    vtkShaderProgram::Substitute(VSSource, "//SV::ScalarColor::Impl",
       "  if (sqColorMode == 1)\n"
       "  {\n"
       "    glyphColorVSOut = glyphScalarColor;\n"

@@ -68,7 +68,7 @@ std::string TubeMathSource()
 std::string CommonSource()
 {
   std::string common = vtkTessellatedTubeCommon;
-  vtkShaderProgram::Substitute(common, "//VTK::SplineTubeColor::Dec", vtkSplineTubeColor);
+  vtkShaderProgram::Substitute(common, "//SV::SplineTubeColor::Dec", vtkSplineTubeColor);
   return std::string(vtkSplineTubeNodes) + common;
 }
 
@@ -336,8 +336,8 @@ std::string vtkTessellatedTubeMapper::GetLevelOfDetailSummary()
 std::string vtkTessellatedTubeMapper::GetTessellationControlShaderSource()
 {
   std::string source = vtkTessellatedTubeTCS;
-  vtkShaderProgram::Substitute(source, "//VTK::SplineTubeMath::Dec", TubeMathSource());
-  vtkShaderProgram::Substitute(source, "//VTK::TessellatedTubeCommon::Dec", CommonSource());
+  vtkShaderProgram::Substitute(source, "//SV::SplineTubeMath::Dec", TubeMathSource());
+  vtkShaderProgram::Substitute(source, "//SV::TessellatedTubeCommon::Dec", CommonSource());
   return source;
 }
 
@@ -345,8 +345,8 @@ std::string vtkTessellatedTubeMapper::GetTessellationControlShaderSource()
 std::string vtkTessellatedTubeMapper::GetTessellationEvaluationShaderSource()
 {
   std::string source = vtkTessellatedTubeTES;
-  vtkShaderProgram::Substitute(source, "//VTK::SplineTubeMath::Dec", TubeMathSource());
-  vtkShaderProgram::Substitute(source, "//VTK::TessellatedTubeCommon::Dec", CommonSource());
+  vtkShaderProgram::Substitute(source, "//SV::SplineTubeMath::Dec", TubeMathSource());
+  vtkShaderProgram::Substitute(source, "//SV::TessellatedTubeCommon::Dec", CommonSource());
   return source;
 }
 
@@ -511,8 +511,8 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
   const std::string math = TubeMathSource();
 
-  vtkShaderProgram::Substitute(VSSource, "//VTK::SplineTubeMath::Dec", math);
-  vtkShaderProgram::Substitute(VSSource, "//VTK::TessellatedTubeCommon::Dec", CommonSource());
+  vtkShaderProgram::Substitute(VSSource, "//SV::SplineTubeMath::Dec", math);
+  vtkShaderProgram::Substitute(VSSource, "//SV::TessellatedTubeCommon::Dec", CommonSource());
   // VTK's shader cache identifies programs by their vertex, geometry and
   // fragment sources: make the tessellation stages part of the key.
   if (!this->BuildingThinProgram)
@@ -524,7 +524,7 @@ void vtkTessellatedTubeMapper::ReplaceShaderValues(
 
   std::string declarations =
     this->BuildingThinProgram ? vtkTessellatedTubeThinFS : vtkTessellatedTubeFS;
-  vtkShaderProgram::Substitute(declarations, "//VTK::SplineTubeMath::Dec", math);
+  vtkShaderProgram::Substitute(declarations, "//SV::SplineTubeMath::Dec", math);
   const int colorMode = this->GetTubeColorMode();
   if (colorMode == 2)
   {

@@ -135,7 +135,7 @@ float lrCoefficient(int i)
   return texelFetch(lrCoefficients, i).x;
 }
 
-//VTK::LRSplineVolumeShared::Dec
+//SV::LRSplineVolumeShared::Dec
 
 // The element of the previous sample.
 int lrCurrentPatch = -1;

@@ -21,7 +21,7 @@ uniform int subSegments;
 uniform int rootIterations;
 uniform int rootSamples;
 
-//VTK::SplineTubeMath::Dec
+//SV::SplineTubeMath::Dec
 
 // Casts the view ray through `fragmentVC` (a point of the bounding box).
 // Returns false on a miss; otherwise the hit point and unit normal (view

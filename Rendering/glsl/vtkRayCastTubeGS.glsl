@@ -40,7 +40,7 @@ flat out vec4 tubeQ0GSOutput;    // quadratic sub-segment in view coordinates
 flat out vec4 tubeQ1GSOutput;    // (xyz: control point, w: radius)
 flat out vec4 tubeQ2GSOutput;
 flat out ivec4 tubeInfoGSOutput; // first node, sub-segment, tube, flags | mode << 2
-//VTK::TubeColor::GSDec
+//SV::TubeColor::GSDec
 
 void main()
 {
@@ -61,7 +61,7 @@ void main()
     tubeQ1GSOutput = tubeRect[0].q1;
     tubeQ2GSOutput = tubeRect[0].q2;
     tubeInfoGSOutput = tubeRect[0].info;
-    //VTK::TubeColor::GSImpl
+    //SV::TubeColor::GSImpl
     gl_PrimitiveID = gl_PrimitiveIDIn;
     gl_Position = VCDCMatrix * vec4(p, 1.0);
     EmitVertex();

@@ -49,7 +49,7 @@ out TubeRectangle
   flat vec4 d1;
 } tubeRect;
 
-//VTK::SplineTubeMath::Dec
+//SV::SplineTubeMath::Dec
 
 // Projection of view-space point p onto the plane z = zp along the view ray.
 vec2 projectToPlane(vec3 p, float zp)

@@ -43,9 +43,9 @@ uniform float lineHaloDepth; // in radii
 uniform float lineHaloDepthRange; // depth-dependent halos: the extra depth at the outer edge, in radii
 uniform float lineWiden;          // 1 + halo width
 
-//VTK::SplineTubeMath::Dec
+//SV::SplineTubeMath::Dec
 
-//VTK::StylizedLineMath::Dec
+//SV::StylizedLineMath::Dec
 
 // A box function of period 1, 1 on [0, duty), anti-aliased over the
 // fragment's footprint w (in periods).

@@ -71,9 +71,9 @@ out float lineRadiusVSOutput;    // radius, view units
 flat out ivec2 lineInfoVSOutput; // polyline (picking), kind | halo << 2
 flat out vec4 lineSphereVSOutput; // mode 3: the sphere (center, view coordinates; radius)
 
-//VTK::SplineTubeMath::Dec
+//SV::SplineTubeMath::Dec
 
-//VTK::StylizedLineMath::Dec
+//SV::StylizedLineMath::Dec
 
 vec3 lineViewTangent(int node)
 {

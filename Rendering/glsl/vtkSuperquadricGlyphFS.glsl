@@ -45,9 +45,9 @@ uniform vec3 sqNegativeFormColor;
 //VTK::Output::Dec
 
 //SV::Prelude::Dec
-//SQ::GeneralShapes::Dec
-//SQ::Clip::Dec
-//SQ::GlyphMath::Dec
+//SV::GeneralShapes::Dec
+//SV::Clip::Dec
+//SV::GlyphMath::Dec
 
 #ifdef SQ_GENERAL_SHAPES
 flat in vec4 glyphBlendGSOutput;

@@ -33,7 +33,7 @@ in mat3 glyphFrameVSOut[];
 in vec3 glyphShapeVSOut[];
 in vec3 glyphFormVSOut[];
 in vec4 glyphColorVSOut[];
-//SQ::GeneralShapes::Dec
+//SV::GeneralShapes::Dec
 #ifdef SQ_GENERAL_SHAPES
 in vec4 glyphBlendVSOut[];
 flat out vec4 glyphBlendGSOutput;
@@ -46,7 +46,7 @@ flat out vec3 glyphShapeGSOutput;
 flat out vec3 glyphFormGSOutput;
 flat out vec4 glyphColorGSOutput;
 
-//SQ::Clip::Dec
+//SV::Clip::Dec
 #ifdef SQ_CLIP
 // VTK's clipping planes (data coordinates) and the view-to-data
 // transformation: glyphs whose box is beyond a plane are not drawn.

@@ -10,8 +10,8 @@
 in vec4 vertexMC;
 in vec3 tensorDiagMC; // xx, yy, zz
 in vec3 tensorOffMC;  // xy, yz, xz
-//SQ::ScalarColor::Dec
-//SQ::BlockColor::Dec
+//SV::ScalarColor::Dec
+//SV::BlockColor::Dec
 
 uniform mat4 MCVCMatrix;
 uniform mat3 glyphMCVC; // linear part of model -> view
@@ -21,7 +21,7 @@ uniform float sqScaleFactor;
 uniform float sqMaximumScale;
 uniform float sqMinimumThickness;
 uniform float sqMinimumRoundness;
-//SQ::GeneralShapes::Dec
+//SV::GeneralShapes::Dec
 #ifdef SQ_GENERAL_SHAPES
 uniform float sqZeroEigenvalueBand;
 #endif
@@ -44,8 +44,8 @@ out vec4 glyphColorVSOut; // rgba, a < 0: use the actor's colors
 //VTK::Picking::Dec
 
 //SV::Prelude::Dec
-//SQ::TensorMath::Dec
-//SQ::GlyphMath::Dec
+//SV::TensorMath::Dec
+//SV::GlyphMath::Dec
 
 void main()
 {
@@ -163,7 +163,7 @@ void main()
     // indefinite eigenvalues reaches sqrt(3/2))
     glyphColorVSOut = vec4(abs(e1) * min(fa, 1.0), 1.0);
   }
-  //SQ::ScalarColor::Impl
-  //SQ::BlockColor::Impl
+  //SV::ScalarColor::Impl
+  //SV::BlockColor::Impl
   glyphValidVSOut = 1;
 }

@@ -64,7 +64,7 @@ TubeSegment tubeLoadSegment(int node)
 // at curve parameter t of the segment from `node`; white without scalar
 // coloring (1: scalar coloring; 2: direction coloring, made per fragment).
 uniform int tubeHaveColors;
-//VTK::SplineTubeColor::Dec
+//SV::SplineTubeColor::Dec
 
 vec4 tubeColorAt(int node, float t)
 {

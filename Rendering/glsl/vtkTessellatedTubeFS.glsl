@@ -11,4 +11,4 @@ in float tubeTVSOutput;
 flat in ivec4 tubeInfoVSOutput; // first node, segment, tube, flags | kind << 2
 in vec4 tubeColorVSOutput;
 
-//VTK::SplineTubeMath::Dec
+//SV::SplineTubeMath::Dec

@@ -79,9 +79,9 @@ uniform float tubeSideLength; // pixels per ring edge in the single-patch mode
 // svThinEdgeFactor and svThinRunStraddle (vtkSplineTubeMathShared.glsl).
 uniform vec4 tubeFrustum[6]; // view-coordinate planes, inside: dot >= 0
 
-//VTK::SplineTubeMath::Dec
+//SV::SplineTubeMath::Dec
 
-//VTK::TessellatedTubeCommon::Dec
+//SV::TessellatedTubeCommon::Dec
 
 vec3 tubeToEye(vec3 p)
 {

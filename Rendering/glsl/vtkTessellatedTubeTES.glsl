@@ -42,9 +42,9 @@ out float tubeTVSOutput;
 flat out ivec4 tubeInfoVSOutput;
 out vec4 tubeColorVSOutput;
 
-//VTK::SplineTubeMath::Dec
+//SV::SplineTubeMath::Dec
 
-//VTK::TessellatedTubeCommon::Dec
+//SV::TessellatedTubeCommon::Dec
 
 // Segment of curve parameter t in [0, count] of a run (a vertex at a node
 // belongs to the segment before it, t = 0 to the first).

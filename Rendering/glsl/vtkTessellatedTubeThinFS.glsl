@@ -24,7 +24,7 @@ flat in ivec4 tubeInfoVSOutput; // first node, segment, tube, count << 4 | ends 
 in vec4 tubeColorVSOutput;
 uniform mat4 VCDCMatrix;
 
-//VTK::SplineTubeMath::Dec
+//SV::SplineTubeMath::Dec
 
 // The front surface of the tube along the ray through the wall fragment at
 // p (view coordinates): the point and its unit normal; false when the point

@@ -65,9 +65,9 @@ out float tubeTVSOutput;         // curve parameter in the run
 flat out ivec4 tubeInfoVSOutput; // first node, first node, tube, count << 4 | ends (caps: kind << 2)
 out vec4 tubeColorVSOutput;
 
-//VTK::SplineTubeMath::Dec
+//SV::SplineTubeMath::Dec
 
-//VTK::TessellatedTubeCommon::Dec
+//SV::TessellatedTubeCommon::Dec
 
 // Vertex gl_VertexID of a thin tube's cap (see above): on the circle of the
 // cap's node, counter-clockwise around the curve's direction (the start caps

@@ -34,9 +34,9 @@ flat out ivec4 tubeInfoVSOutput; // first node, first node, tube, flags | kind <
 out vec4 tubeColorVSOutput;      // (made by the evaluation stage)
 out vec4 tubeAxisVSOutput;       // unit tangent (view coordinates), s
 
-//VTK::SplineTubeMath::Dec
+//SV::SplineTubeMath::Dec
 
-//VTK::TessellatedTubeCommon::Dec
+//SV::TessellatedTubeCommon::Dec
 
 void main()
 {
