@@ -36,7 +36,8 @@ list(APPEND splineviz_shaders
 list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkSplineVizSharedGLSL.h")
 list(APPEND splineviz_shaders
-  "${SPLINEVIZ_FOLDER}/glsl/vtkSplineVizPrelude.glsl")
+  "${SPLINEVIZ_FOLDER}/glsl/vtkSplineVizPrelude.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkSplineVizCommonShared.glsl")
 # The LR arrays' names; progress, abort, output-size checks and requested
 # pieces shared by the filters and readers.
 list(APPEND splineviz_private_headers

@@ -21,7 +21,10 @@
  * The substitution tags of SplineViz's own shader code are //SV::Name::Dec
  * and //SV::Name::Impl (VTK's tags stay //VTK::...).
  *
- * The GLSL side is glsl/vtkSplineVizPrelude.glsl (real = float). The C++ side
+ * Helpers more than one file needs are in glsl/vtkSplineVizCommonShared.glsl.
+ * The GLSL side is glsl/vtkSplineVizPrelude.glsl (real = float), put with the
+ * common helpers before the shared code by vtkSplineVizShaderPrelude::Get().
+ * The C++ side
  * is this header: include it, then, inside the namespace that is to hold the
  * functions,
  *

@@ -14,6 +14,7 @@ namespace
 namespace shared
 {
 SV_SHARED_GLSL_TYPES(double);
+#include "glsl/vtkSplineVizCommonShared.glsl"
 #include "glsl/vtkTensorMathShared.glsl"
 }
 
@@ -276,7 +277,7 @@ void PrincipalEigen(const double t[6], double values[3], double e1[3])
   }
   u /= std::sqrt(nu);
   // The 2x2 restriction to the plane orthogonal to u, in closed form.
-  const dvec3 v = shared::svtAnyOrthogonal(u);
+  const dvec3 v = shared::svAnyOrthogonal(u);
   const dvec3 w = glm::cross(u, v);
   const dvec3 cv = shared::svtSymMul(cd, co, v);
   const dvec3 cw = shared::svtSymMul(cd, co, w);

@@ -31,7 +31,8 @@ list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkStylizedLineVS.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkStylizedLineFS.glsl")
 list(APPEND splineviz_private_headers
-  "${SPLINEVIZ_FOLDER}/vtkSplineTubeMath.h")
+  "${SPLINEVIZ_FOLDER}/vtkSplineTubeMath.h"
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizShaderPrelude.h")
 list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeMathShared.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineTubeNodes.glsl"

@@ -48,7 +48,7 @@
 
 #include "vtkLRSplineVolumeCompositeFS.h"
 #include "vtkLRSplineVolumeFS.h"
-#include "vtkSplineVizPrelude.h"
+#include "vtkSplineVizShaderPrelude.h"
 #include "vtkLRSplineVolumeShared.h"
 #include "vtkLRSplineVolumeTrimFS.h"
 #include "vtkLRSplineVolumeVS.h"
@@ -743,7 +743,7 @@ std::string vtkLRSplineVolumeMapper::GetVertexShaderSource()
 std::string vtkLRSplineVolumeMapper::GetFragmentShaderSource()
 {
   std::string fs = vtkLRSplineVolumeFS;
-  vtkShaderProgram::Substitute(fs, "//SV::Prelude::Dec", vtkSplineVizPrelude);
+  vtkShaderProgram::Substitute(fs, "//SV::Prelude::Dec", vtkSplineVizShaderPrelude::Get());
   vtkShaderProgram::Substitute(fs, "//SV::LRSplineVolumeShared::Dec", vtkLRSplineVolumeShared);
   return fs;
 }

@@ -25,7 +25,7 @@
 #include "vtkRayCastTubeFS.h"
 #include "vtkRayCastTubeGS.h"
 #include "vtkRayCastTubeVS.h"
-#include "vtkSplineVizPrelude.h"
+#include "vtkSplineVizShaderPrelude.h"
 #include "vtkSplineTubeMathShared.h"
 
 #include <vtk_glew.h>
@@ -40,7 +40,7 @@ namespace
 {
 std::string TubeMathSource()
 {
-  return std::string(vtkSplineVizPrelude) + vtkSplineTubeMathShared;
+  return vtkSplineVizShaderPrelude::Get() + vtkSplineTubeMathShared;
 }
 }
 

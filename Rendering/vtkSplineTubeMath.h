@@ -23,6 +23,7 @@ namespace vtkSplineTubeMath
 SV_SHARED_GLSL_TYPES(double);
 namespace // internal linkage: the GLSL text has no `inline`
 {
+#include "glsl/vtkSplineVizCommonShared.glsl"
 #include "glsl/vtkSplineTubeMathShared.glsl"
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkStylizedLineFixUp.h"
 
+#include "vtkSplineTubeMath.h"
 #include "vtkStylizedLineMath.h"
 
 #include "vtkFloatArray.h"

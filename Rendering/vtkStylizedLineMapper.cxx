@@ -31,7 +31,7 @@
 #include "vtkTexture.h"
 #include "vtkTypeUInt32Array.h"
 
-#include "vtkSplineVizPrelude.h"
+#include "vtkSplineVizShaderPrelude.h"
 #include "vtkSplineTubeMathShared.h"
 #include "vtkStylizedLineFS.h"
 #include "vtkStylizedLineMathShared.h"
@@ -753,7 +753,7 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
   vtkInternals& in = *this->Internals;
   std::string VSSource = shaders[vtkShader::Vertex]->GetSource();
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
-  const std::string tubeMath = std::string(vtkSplineVizPrelude) + vtkSplineTubeMathShared;
+  const std::string tubeMath = vtkSplineVizShaderPrelude::Get() + vtkSplineTubeMathShared;
 
   // What changes the code (the rest are uniforms).
   const bool writeDepth = this->DepthCorrection || this->HaloWidth > 0.0;

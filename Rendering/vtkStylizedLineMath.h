@@ -14,14 +14,14 @@
 #ifndef vtkStylizedLineMath_h
 #define vtkStylizedLineMath_h
 
-#include "vtkSplineTubeMath.h"
+#include "vtkSplineVizSharedGLSL.h"
 
 namespace vtkStylizedLineMath
 {
 SV_SHARED_GLSL_TYPES(double);
-using vtkSplineTubeMath::svAnyOrthogonal;
 namespace // internal linkage: the GLSL text has no `inline`
 {
+#include "glsl/vtkSplineVizCommonShared.glsl"
 #include "glsl/vtkStylizedLineMathShared.glsl"
 }
 }

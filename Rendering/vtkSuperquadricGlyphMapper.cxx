@@ -57,7 +57,7 @@
 #include "vtkSuperquadricGlyphGS.h"
 #include "vtkSuperquadricGlyphShared.h"
 #include "vtkSuperquadricGlyphVS.h"
-#include "vtkSplineVizPrelude.h"
+#include "vtkSplineVizShaderPrelude.h"
 #include "vtkTensorMathShared.h"
 
 #include "vtk_glew.h"
@@ -1119,8 +1119,8 @@ void vtkSuperquadricGlyphMapper::ReplaceShaderValues(
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
 
   // The math shared with the CPU code, after the prelude of the shared subset.
-  vtkShaderProgram::Substitute(VSSource, "//SV::Prelude::Dec", vtkSplineVizPrelude);
-  vtkShaderProgram::Substitute(FSSource, "//SV::Prelude::Dec", vtkSplineVizPrelude);
+  vtkShaderProgram::Substitute(VSSource, "//SV::Prelude::Dec", vtkSplineVizShaderPrelude::Get());
+  vtkShaderProgram::Substitute(FSSource, "//SV::Prelude::Dec", vtkSplineVizShaderPrelude::Get());
   vtkShaderProgram::Substitute(VSSource, "//SV::TensorMath::Dec", vtkTensorMathShared);
   vtkShaderProgram::Substitute(VSSource, "//SV::GlyphMath::Dec", vtkSuperquadricGlyphShared);
   vtkShaderProgram::Substitute(FSSource, "//SV::GlyphMath::Dec", vtkSuperquadricGlyphShared);

@@ -31,7 +31,7 @@
 #include "vtkShader.h"
 #include "vtkShaderProgram.h"
 
-#include "vtkSplineVizPrelude.h"
+#include "vtkSplineVizShaderPrelude.h"
 #include "vtkSplineTubeMathShared.h"
 #include "vtkSplineTubeColor.h"
 #include "vtkSplineTubeNodes.h"
@@ -60,7 +60,7 @@ namespace
 {
 std::string TubeMathSource()
 {
-  return std::string(vtkSplineVizPrelude) + vtkSplineTubeMathShared;
+  return vtkSplineVizShaderPrelude::Get() + vtkSplineTubeMathShared;
 }
 
 /// What the vertex and tessellation stages share: the tubes buffer, the

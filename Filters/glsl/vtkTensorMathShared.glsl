@@ -28,25 +28,6 @@ vec3 svtSymMul(vec3 diag, vec3 off, vec3 x)
     off.z * x.x + off.y * x.y + diag.z * x.z);
 }
 
-// Any unit vector orthogonal to the unit vector n.
-vec3 svtAnyOrthogonal(vec3 n)
-{
-  vec3 o;
-  if (abs(n.x) < abs(n.y) && abs(n.x) < abs(n.z))
-  {
-    o = vec3(0.0, -n.z, n.y);
-  }
-  else if (abs(n.y) < abs(n.z))
-  {
-    o = vec3(-n.z, 0.0, n.x);
-  }
-  else
-  {
-    o = vec3(-n.y, n.x, 0.0);
-  }
-  return normalize(o);
-}
-
 // Swaps (la, va) and (lb, vb) when la < lb.
 void svtOrderPair(SV_INOUT(real) la, SV_INOUT(vec3) va, SV_INOUT(real) lb, SV_INOUT(vec3) vb)
 {
@@ -141,7 +122,7 @@ void svtSymmetricEigen(
 
   // The 2x2 restriction to the plane orthogonal to u, diagonalized by a
   // rotation of angle theta = atan(2 m01, m00 - m11) / 2.
-  vec3 v = svtAnyOrthogonal(u);
+  vec3 v = svAnyOrthogonal(u);
   vec3 w = cross(u, v);
   vec3 cv = svtSymMul(cd, co, v);
   vec3 cw = svtSymMul(cd, co, w);

@@ -136,25 +136,6 @@ vec4 svQuadraticDerivative(vec4 q0, vec4 q1, vec4 q2, real l)
 // quadratics in l whose extrema are endpoints or the root of a linear equation.
 // Collinear and coincident control points fall back to any orthonormal axes.
 
-// Any unit vector orthogonal to unit vector n.
-vec3 svAnyOrthogonal(vec3 n)
-{
-  vec3 o;
-  if (abs(n.x) < abs(n.y) && abs(n.x) < abs(n.z))
-  {
-    o = vec3(0.0, -n.z, n.y);
-  }
-  else if (abs(n.y) < abs(n.z))
-  {
-    o = vec3(-n.z, 0.0, n.x);
-  }
-  else
-  {
-    o = vec3(-n.y, n.x, 0.0);
-  }
-  return normalize(o);
-}
-
 // Range over l in [0, 1] of the quadratic Bezier with control values c0, c1, c2.
 vec2 svQuadraticRange(real c0, real c1, real c2)
 {
