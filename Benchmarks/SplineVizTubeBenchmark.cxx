@@ -12,7 +12,8 @@
 // tolerance 0, as Salm), "raycast-straight5" and "raycast-straight5-culling"
 // (straight tolerance 5 % of the radius), the tessellated tubes
 // (vtkTessellatedTubeMapper, Salm §3.1) as "tessellated" (defaults: level
-// of detail, adaptive refinement), "tessellated-base" (level of detail,
+// of detail, adaptive refinement, occlusion culling), "tessellated-noculling"
+// (the same without occlusion culling), "tessellated-base" (level of detail,
 // tessellation levels 1), "tessellated-paper" (the paper's fixed 16 x 8 base
 // mesh for every segment, adaptive refinement: Salm Fig. 22 "complete") and
 // "tessellated-paper-base" (fixed base mesh, levels 1: Fig. 22 "unrefined"),
@@ -131,15 +132,16 @@ std::map<std::string, Factory> Renderers()
   r["raycast-sub3"] = raycast(false, -1.0, 3);
   r["raycast-sub4"] = raycast(false, -1.0, 4);
   // Tessellated tubes: level of detail on/off, adaptive or levels 1.
-  auto tessellated = [](bool lod, bool refine)
+  auto tessellated = [](bool lod, bool refine, bool culling = true)
   {
-    return [lod, refine](vtkPolyData* data)
+    return [lod, refine, culling](vtkPolyData* data)
     {
       auto mapper = vtkSmartPointer<vtkTessellatedTubeMapper>::New();
       mapper->SetInputData(data);
       mapper->SetRadiusArray("Radius");
       mapper->SetScalarRange(0.0, 1.0);
       mapper->SetLevelOfDetail(lod);
+      mapper->SetOcclusionCulling(culling);
       if (!refine)
       {
         mapper->SetMaxTessellationLevel(1);
@@ -154,6 +156,7 @@ std::map<std::string, Factory> Renderers()
     };
   };
   r["tessellated"] = tessellated(true, true);
+  r["tessellated-noculling"] = tessellated(true, true, false);
   r["tessellated-base"] = tessellated(true, false);
   r["tessellated-paper"] = tessellated(false, true);
   r["tessellated-paper-base"] = tessellated(false, false);
