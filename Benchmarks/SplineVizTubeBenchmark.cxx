@@ -132,9 +132,9 @@ std::map<std::string, Factory> Renderers()
   r["raycast-sub3"] = raycast(false, -1.0, 3);
   r["raycast-sub4"] = raycast(false, -1.0, 4);
   // Tessellated tubes: level of detail on/off, adaptive or levels 1.
-  auto tessellated = [](bool lod, bool refine, bool culling = true)
+  auto tessellated = [](bool lod, bool refine, bool culling = true, double minimumPixels = 1.0)
   {
-    return [lod, refine, culling](vtkPolyData* data)
+    return [lod, refine, culling, minimumPixels](vtkPolyData* data)
     {
       auto mapper = vtkSmartPointer<vtkTessellatedTubeMapper>::New();
       mapper->SetInputData(data);
@@ -142,6 +142,7 @@ std::map<std::string, Factory> Renderers()
       mapper->SetScalarRange(0.0, 1.0);
       mapper->SetLevelOfDetail(lod);
       mapper->SetOcclusionCulling(culling);
+      mapper->SetMinimumPixelWidth(minimumPixels);
       if (!refine)
       {
         mapper->SetMaxTessellationLevel(1);
@@ -157,6 +158,7 @@ std::map<std::string, Factory> Renderers()
   };
   r["tessellated"] = tessellated(true, true);
   r["tessellated-noculling"] = tessellated(true, true, false);
+  r["tessellated-exact"] = tessellated(true, true, true, 0.0);
   r["tessellated-base"] = tessellated(true, false);
   r["tessellated-paper"] = tessellated(false, true);
   r["tessellated-paper-base"] = tessellated(false, false);
