@@ -6,17 +6,19 @@
 //    frame (tube building, upload, shader compilation, drawing),
 //  - median frame time over the orbit (each frame finished with glFinish),
 //  - bytes the renderer holds on the GPU, per segment,
-// Renderers: "raycast" (vtkRayCastTubeMapper, defaults), "raycast-culling"
-// (the same with its occlusion-culling pre-pass), "raycast-roots" and
+// Renderers: "raycast" (vtkRayCastTubeMapper, defaults but without occlusion
+// culling), "raycast-culling" (with it), "raycast-roots" and
 // "raycast-roots-culling" (root finding for every sub-segment: straight
 // tolerance 0, as Salm), "raycast-straight5" and "raycast-straight5-culling"
 // (straight tolerance 5 % of the radius), the tessellated tubes
 // (vtkTessellatedTubeMapper, Salm §3.1) as "tessellated" (defaults: level
 // of detail, adaptive refinement, occlusion culling), "tessellated-noculling"
-// (the same without occlusion culling), "tessellated-base" (level of detail,
-// tessellation levels 1), "tessellated-paper" (the paper's fixed 16 x 8 base
-// mesh for every segment, adaptive refinement: Salm Fig. 22 "complete") and
-// "tessellated-paper-base" (fixed base mesh, levels 1: Fig. 22 "unrefined"),
+// (the same without occlusion culling), "tessellated-exact" (the same with
+// the exact radius at any zoom: MinimumPixelWidth 0), "tessellated-base"
+// (level of detail, tessellation levels 1), "tessellated-paper" (the paper's
+// fixed 16 x 8 base mesh for every segment, adaptive refinement: Salm Fig. 22
+// "complete") and "tessellated-paper-base" (fixed base mesh, levels 1:
+// Fig. 22 "unrefined"),
 // and the ratios against VTK's own ways of drawing tubes:
 //  - "tubefilter": vtkTubeFilter (12 sides, radius by the Radius array) +
 //    vtkPolyDataMapper (the geometry VTK uploads: points, normals, colors,
@@ -122,7 +124,7 @@ std::map<std::string, Factory> Renderers()
       return b;
     };
   };
-  r["raycast"] = raycast(false, -1.0); // the defaults
+  r["raycast"] = raycast(false, -1.0); // the defaults, culling off
   r["raycast-culling"] = raycast(true, -1.0);
   r["raycast-roots"] = raycast(false, 0.0);
   r["raycast-roots-culling"] = raycast(true, 0.0);
