@@ -233,6 +233,16 @@ struct vtkSplineTubeCore::Internals
   {
     this->Sources[this->Tubes[tube].Source].Point(this->PointId(tube, k), xyzr);
   }
+  /// All nodes of a tube and their derivatives, into `xyzr` and `dxyzr`
+  /// (resized; kept by the caller across tubes); returns their number.
+  vtkIdType TubeNodes(vtkIdType tube, std::vector<double>& xyzr, std::vector<double>& dxyzr) const
+  {
+    const vtkIdType n = this->TubeFirst[tube + 1] - this->TubeFirst[tube];
+    xyzr.resize(static_cast<size_t>(4 * n));
+    dxyzr.resize(static_cast<size_t>(4 * n));
+    this->Nodes(tube, 0, n, xyzr.data(), dxyzr.data());
+    return n;
+  }
   /// Nodes [first, first + count) of a tube (xyzr, 4 each) and, if asked, their derivatives.
   void Nodes(vtkIdType tube, vtkIdType first, vtkIdType count, double* xyzr, double* dxyzr) const
   {
@@ -1078,10 +1088,7 @@ void vtkSplineTubeCore::BuildChunks()
       Scratch& s = scratch.Local();
       for (vtkIdType t = begin; t < end; ++t)
       {
-        const vtkIdType n = in.TubeFirst[t + 1] - in.TubeFirst[t];
-        s.P.resize(static_cast<size_t>(4 * n));
-        s.M.resize(static_cast<size_t>(4 * n));
-        in.Nodes(t, 0, n, s.P.data(), s.M.data());
+        const vtkIdType n = in.TubeNodes(t, s.P, s.M);
         vtkIdType k = 0; // segment of the tube
         for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
         {
@@ -1130,10 +1137,7 @@ void vtkSplineTubeCore::BuildChunks()
       Scratch& s = scratch.Local();
       for (vtkIdType t = begin; t < end; ++t)
       {
-        const vtkIdType n = in.TubeFirst[t + 1] - in.TubeFirst[t];
-        s.P.resize(static_cast<size_t>(4 * n));
-        s.M.resize(static_cast<size_t>(4 * n));
-        in.Nodes(t, 0, n, s.P.data(), s.M.data());
+        const vtkIdType n = in.TubeNodes(t, s.P, s.M);
         const vtkIdType firstSegment = in.TubeFirst[t] - t;
         for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
         {
@@ -1201,10 +1205,7 @@ void vtkSplineTubeCore::BuildBounds()
       Local& local = locals.Local();
       for (vtkIdType t = begin; t < end; ++t)
       {
-        const vtkIdType n = in.TubeFirst[t + 1] - in.TubeFirst[t];
-        local.P.resize(static_cast<size_t>(4 * n));
-        local.M.resize(static_cast<size_t>(4 * n));
-        in.Nodes(t, 0, n, local.P.data(), local.M.data());
+        const vtkIdType n = in.TubeNodes(t, local.P, local.M);
         for (vtkIdType k = 0; k + 1 < n; ++k)
         {
           double box[6];
