@@ -406,6 +406,25 @@ vtkIdType vtkSplineTubeCore::GetTubeOfNode(vtkIdType node) const
   return this->Internal->TubeOfNode(node);
 }
 
+bool vtkSplineTubeCore::GetConstantRadius(double& radius) const
+{
+  const Internals& in = *this->Internal;
+  if (in.Sources.empty())
+  {
+    return false;
+  }
+  for (const Internals::Source& source : in.Sources)
+  {
+    if (source.Radius || source.ConstantRadius != in.Sources[0].ConstantRadius)
+    {
+      return false;
+    }
+  }
+  radius = in.Sources[0].ConstantRadius;
+  return true;
+}
+
+//------------------------------------------------------------------------------
 bool vtkSplineTubeCore::HasNodeScalars() const
 {
   return this->Internal->HaveScalars;
@@ -818,9 +837,11 @@ void vtkSplineTubeCore::EvaluateSegment(vtkIdType segment, double t, double posi
 
 //------------------------------------------------------------------------------
 void vtkSplineTubeCore::FillNodes(
-  vtkIdType first, vtkIdType count, const double shift[3], float* xyzr) const
+  vtkIdType first, vtkIdType count, const double shift[3], float* out, int components) const
 {
   const Internals& in = *this->Internal;
+  const bool withRadius = components >= 4;
+  const vtkIdType stride = withRadius ? 4 : 3;
   in.ForNodes(first, count,
     [&](vtkIdType t, vtkIdType b, vtkIdType e)
     {
@@ -828,12 +849,15 @@ void vtkSplineTubeCore::FillNodes(
       {
         double p[4];
         in.Node(t, node - in.TubeFirst[t], p);
-        float* out = xyzr + 4 * (node - first);
+        float* o = out + stride * (node - first);
         for (int c = 0; c < 3; ++c)
         {
-          out[c] = static_cast<float>(p[c] - shift[c]);
+          o[c] = static_cast<float>(p[c] - shift[c]);
         }
-        out[3] = static_cast<float>(p[3]);
+        if (withRadius)
+        {
+          o[3] = static_cast<float>(p[3]);
+        }
       }
     });
 }

@@ -24,8 +24,9 @@
  *   renderers' per-view work (vtkSplineTubeVisibility, levels of detail), and
  *   the bounds;
  * - the GPU layout, filled range by range for uploads in pieces
- *   (FillNodes(): position relative to a shift and radius, 16 bytes, plus the
- *   tube and its end flags, 4 bytes; FillColors(): RGBA8; FillFrames(): the
+ *   (FillNodes(): position relative to a shift and radius, 16 bytes, or the
+ *   position alone, 12 bytes, when every node has the same radius
+ *   (GetConstantRadius()); FillNodeInfo(): the tube and its end flags, 4 bytes; FillColors(): RGBA8; FillFrames(): the
  *   rotation-minimizing frames of Salm §3.1, double reflection of Wang et
  *   al. 2008 with sub-steps where the tangent turns more than
  *   MaximumFrameStepAngle, octahedral int16 x 2).
@@ -235,7 +236,8 @@ public:
   ///@{
   /**
    * The GPU layout of the nodes [first, first + count), in parallel:
-   * FillNodes: 4 floats per node (position minus `shift`, radius);
+   * FillNodes: `components` floats per node: 4 (position minus `shift`,
+   * radius) or 3 (position minus `shift` only, for a constant radius);
    * FillNodeInfo: one word per node (its tube | NODE_FIRST | NODE_LAST, the
    * first and last node of the tube); FillColors: RGBA8 in one
    * word (red lowest); FillScalars: the node scalar; FillFrames: the unit
@@ -243,7 +245,8 @@ public:
    * (frames propagate along whole tubes: for a range cutting a tube, its
    * nodes before `first` are propagated but not written).
    */
-  void FillNodes(vtkIdType first, vtkIdType count, const double shift[3], float* xyzr) const;
+  void FillNodes(vtkIdType first, vtkIdType count, const double shift[3], float* out,
+    int components = 4) const;
   void FillNodeInfo(vtkIdType first, vtkIdType count, unsigned int* info) const;
   void FillColors(vtkIdType first, vtkIdType count, unsigned int* rgba) const;
   void FillScalars(vtkIdType first, vtkIdType count, float* scalars) const;
@@ -276,6 +279,14 @@ public:
 
   /// True when colors were given for every piece added.
   bool HasColors() const { return this->ColorsGiven && !this->ColorsMissing; }
+
+  /**
+   * True when every node has the same radius: no piece took its radii from
+   * RadiusArrayName and all pieces were added with the same Radius, which
+   * `radius` receives. The GPU layout may then leave the radius out
+   * (FillNodes() with 3 components): 4 bytes per node less.
+   */
+  bool GetConstantRadius(double& radius) const;
 
   /// True when the nodes carry scalars (NodeScalarArrayName was found).
   bool HasNodeScalars() const;

@@ -770,14 +770,7 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
   }
   // Filled piece by piece from the input: no copy of the whole data on the
   // CPU side (vtkSplineTubeCore::Fill...).
-  const double shift[3] = { this->Shift[0], this->Shift[1], this->Shift[2] };
-  bool ok = this->NodesBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 4, VTK_FLOAT,
-    GL_RGBA32F,
-    [&](size_t first, size_t count, void* destination)
-    {
-      core->FillNodes(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count), shift,
-        static_cast<float*>(destination));
-    });
+  bool ok = this->UploadNodes(window, *this->NodesBuffer);
   ok = ok &&
     this->NodeInfoBuffer->UploadInPieces(window, static_cast<size_t>(numNodes), 1, VTK_TYPE_UINT32,
       GL_R32UI,
@@ -828,9 +821,39 @@ bool vtkSplineTubeMapper::UploadTubeBuffers(vtkOpenGLRenderWindow* window)
 }
 
 //------------------------------------------------------------------------------
+bool vtkSplineTubeMapper::UploadNodes(vtkOpenGLRenderWindow* window, vtkSplineVizGPUBuffer& buffer)
+{
+  vtkSplineTubeCore* core = this->Core;
+  double radius = 0.0;
+  const bool positionsOnly =
+    core->GetConstantRadius(radius) && vtkSplineVizGPUBuffer::SupportsRGB32F();
+  const int components = positionsOnly ? 3 : 4;
+  this->NodesConstantRadius = positionsOnly ? static_cast<float>(radius) : -1.0f;
+  const double shift[3] = { this->Shift[0], this->Shift[1], this->Shift[2] };
+  return buffer.UploadInPieces(window, static_cast<size_t>(core->GetNumberOfNodes()), components,
+    VTK_FLOAT, positionsOnly ? GL_RGB32F : GL_RGBA32F,
+    [&](size_t first, size_t count, void* destination)
+    {
+      core->FillNodes(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count), shift,
+        static_cast<float*>(destination), components);
+    });
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::SetNodesUniforms(vtkShaderProgram* program, const char* prefix)
+{
+  const std::string name = std::string(prefix) + "ConstantRadius";
+  if (program->IsUniformUsed(name.c_str()))
+  {
+    program->SetUniformf(name.c_str(), this->NodesConstantRadius);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkSplineTubeMapper::ActivateTubeBuffers(vtkShaderProgram* program)
 {
   this->NodesBuffer->Activate(program, "tubeNodes");
+  this->SetNodesUniforms(program, "tube");
   this->NodeInfoBuffer->Activate(program, "tubeNodeInfo");
   if (program->IsUniformUsed("tubeTubes"))
   {

@@ -347,8 +347,9 @@ protected:
   /**
    * The tubes buffer shared by the tube mappers (see the class comment).
    * UploadTubeBuffers() uploads it from the core (positions relative to
-   * Shift); ActivateTubeBuffers() binds it to the uniforms tubeNodes,
-   * tubeNodeInfo, tubeTubes and tubeColors (those the program uses);
+   * Shift, with UploadNodes()); ActivateTubeBuffers() binds it to the
+   * uniforms tubeNodes, tubeNodeInfo, tubeTubes and tubeColors (those the
+   * program uses) and sets tubeConstantRadius;
    * GetTubeBuffersSize() counts its bytes.
    */
   bool UploadTubeBuffers(vtkOpenGLRenderWindow* window);
@@ -356,6 +357,21 @@ protected:
   void DeactivateTubeBuffers();
   size_t GetTubeBuffersSize();
   ///@}
+
+  /**
+   * Upload the nodes' positions (relative to Shift) and radii from the core
+   * to `buffer`, piece by piece: when every node has the same radius
+   * (vtkSplineTubeCore::GetConstantRadius()) and the context reads RGB32F
+   * buffer textures, the positions alone (12 bytes per node) and
+   * NodesConstantRadius is that radius; otherwise position and radius
+   * (RGBA32F, 16 bytes) and NodesConstantRadius is -1. The shaders read a
+   * node through one function that takes the radius from the uniform
+   * `<prefix>ConstantRadius` when it is not negative (SetNodesUniforms()).
+   */
+  bool UploadNodes(vtkOpenGLRenderWindow* window, vtkSplineVizGPUBuffer& buffer);
+  /// Set `<prefix>ConstantRadius` of `program` (e.g. prefix "tube": tubeConstantRadius).
+  void SetNodesUniforms(vtkShaderProgram* program, const char* prefix);
+  float NodesConstantRadius = -1.0f;
 
   /**
    * Shader declarations of the tubes buffer (needs the spline-tube math

@@ -48,6 +48,28 @@ size_t vtkSplineVizGPUBuffer::GetMaximumNumberOfTexels(vtkOpenGLRenderWindow*)
 }
 
 //------------------------------------------------------------------------------
+bool vtkSplineVizGPUBuffer::ContextSupports(int major, const char* extension)
+{
+  GLint contextMajor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &contextMajor);
+  if (contextMajor >= major)
+  {
+    return true;
+  }
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i)
+  {
+    const char* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+    if (name && std::strcmp(name, extension) == 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 size_t vtkSplineVizGPUBuffer::ApplyTestLimit(size_t limit)
 {
   if (const char* forced = std::getenv("SPLINEVIZ_GPU_BUFFER_LIMIT"))

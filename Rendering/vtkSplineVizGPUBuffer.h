@@ -92,6 +92,20 @@ public:
   /// ", lowered by SPLINEVIZ_GPU_BUFFER_LIMIT" when that is set, else "" (for error messages).
   static const char* TestLimitNote();
 
+  /**
+   * True when the current OpenGL context is at least version `major`.0 or
+   * lists `extension` (e.g. "GL_ARB_tessellation_shader"): the one place the
+   * mappers ask what the context can do.
+   */
+  static bool ContextSupports(int major, const char* extension);
+
+  /**
+   * True when buffer textures may have the RGB32F format (three floats per
+   * texel: OpenGL 4.0 or GL_ARB_texture_buffer_object_rgb32), so that
+   * positions need not be padded to four floats.
+   */
+  static bool SupportsRGB32F() { return ContextSupports(4, "GL_ARB_texture_buffer_object_rgb32"); }
+
   /// Why this buffer's last Upload() failed, "" after a success (for the mapper's error message).
   const std::string& GetLastUploadError() const { return this->LastUploadError; }
 

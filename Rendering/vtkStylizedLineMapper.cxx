@@ -249,19 +249,14 @@ void vtkStylizedLineMapper::UploadTubes(vtkOpenGLRenderWindow* window)
     in.StripCounts.clear();
     return;
   }
-  const double shift[3] = { this->Shift[0], this->Shift[1], this->Shift[2] };
   // The fix-up's batches (per data).
   in.FixUp.Build(core, this->Shift);
 
-  // Positions (relative to the shift) and radii; unit tangents, octahedral;
-  // filled piece by piece from the input (no copy kept on the CPU side).
+  // Positions (relative to the shift) and radii (UploadNodes(): positions
+  // alone for a constant radius); unit tangents, octahedral; filled piece by
+  // piece from the input (no copy kept on the CPU side).
   const size_t nodes = static_cast<size_t>(numNodes);
-  bool ok = in.Nodes.UploadInPieces(window, nodes, 4, VTK_FLOAT, GL_RGBA32F,
-    [&](size_t first, size_t count, void* destination)
-    {
-      core->FillNodes(static_cast<vtkIdType>(first), static_cast<vtkIdType>(count), shift,
-        static_cast<float*>(destination));
-    });
+  bool ok = this->UploadNodes(window, in.Nodes);
   ok = ok &&
     in.Tangents.UploadInPieces(window, nodes, 2, VTK_TYPE_INT16, GL_RG16I,
       [&](size_t first, size_t count, void* destination)
@@ -873,6 +868,7 @@ void vtkStylizedLineMapper::SetMapperShaderParameters(
   vtkInternals& in = *this->Internals;
   vtkShaderProgram* program = cellBO.Program;
   in.Nodes.Activate(program, "lineNodes");
+  this->SetNodesUniforms(program, "line");
   in.Tangents.Activate(program, "lineTangents");
   in.TubeStarts.Activate(program, "lineTubeStarts");
   in.Segments.Activate(program, "lineSegments");

@@ -48,7 +48,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <functional>
 #include <map>
 #include <sstream>
@@ -145,20 +144,8 @@ bool vtkTessellatedTubeMapper::IsTessellationSupported(vtkRenderWindow* window)
   {
     return false;
   }
-  GLint major = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  bool supported = major >= 4;
-  if (!supported)
-  {
-    GLint count = 0;
-    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
-    for (GLint i = 0; i < count && !supported; ++i)
-    {
-      const char* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
-      supported = name && std::strcmp(name, "GL_ARB_tessellation_shader") == 0;
-    }
-  }
-  return supported && glPatchParameteri != nullptr;
+  return vtkSplineVizGPUBuffer::ContextSupports(4, "GL_ARB_tessellation_shader") &&
+    glPatchParameteri != nullptr;
 }
 
 //------------------------------------------------------------------------------

@@ -4,12 +4,15 @@
 // (vtkSplineTubeMathShared.glsl) before it.
 //
 // Per node one RGBA32F texel of `tubeNodes` (position relative to the
-// mapper's shift, radius) and one R32UI texel of `tubeNodeInfo` (the node's
+// mapper's shift, radius), or an RGB32F texel (the position alone) when every
+// node has the radius tubeConstantRadius (not negative; see
+// vtkSplineTubeMapper::UploadNodes()), and one R32UI texel of `tubeNodeInfo` (the node's
 // tube, | 1 << 30 for the first node of the tube, | 1 << 31 for its last).
 // The derivatives along the tube are not stored: svNodeDerivative() makes
 // them from the neighbours, as vtkSplineTubeCore does on the CPU.
 uniform samplerBuffer tubeNodes;
 uniform usamplerBuffer tubeNodeInfo;
+uniform float tubeConstantRadius; // < 0: each node's radius is in tubeNodes
 
 const uint tubeFirstNodeBit = 0x40000000u;
 const uint tubeLastNodeBit = 0x80000000u;
@@ -23,7 +26,8 @@ int tubeOfNode(int node)
 // Position and radius of a node (shifted model coordinates).
 vec4 tubeNodeModel(int node)
 {
-  return texelFetch(tubeNodes, node);
+  vec4 n = texelFetch(tubeNodes, node);
+  return tubeConstantRadius < 0.0 ? n : vec4(n.xyz, tubeConstantRadius);
 }
 
 // Where a node's tube ends around it, for svNodeDerivative(): the indices of
@@ -58,9 +62,9 @@ TubeNeighbours tubeNeighbours(int node)
 vec4 tubeNodeDerivativeModel(int node)
 {
   TubeNeighbours n = tubeNeighbours(node);
-  return svNodeDerivative(texelFetch(tubeNodes, n.nodes.x), texelFetch(tubeNodes, n.nodes.y),
-    texelFetch(tubeNodes, node), texelFetch(tubeNodes, n.nodes.z),
-    texelFetch(tubeNodes, n.nodes.w), n.first, n.last, n.prevIsFirst, n.nextIsLast);
+  return svNodeDerivative(tubeNodeModel(n.nodes.x), tubeNodeModel(n.nodes.y),
+    tubeNodeModel(node), tubeNodeModel(n.nodes.z), tubeNodeModel(n.nodes.w), n.first, n.last,
+    n.prevIsFirst, n.nextIsLast);
 }
 
 // The segment from `node` to the next: its ends and their derivatives
@@ -71,8 +75,8 @@ void tubeSegmentModel(int node, out vec4 p0, out vec4 m0, out vec4 p1, out vec4 
 {
   uint a = texelFetch(tubeNodeInfo, node).x;
   uint b = texelFetch(tubeNodeInfo, node + 1).x;
-  p0 = texelFetch(tubeNodes, node);
-  p1 = texelFetch(tubeNodes, node + 1);
+  p0 = tubeNodeModel(node);
+  p1 = tubeNodeModel(node + 1);
   m0 = tubeNodeDerivativeModel(node);
   m1 = tubeNodeDerivativeModel(node + 1);
   flags = ((a & tubeFirstNodeBit) != 0u ? 1 : 0) | ((b & tubeLastNodeBit) != 0u ? 2 : 0);

@@ -30,6 +30,7 @@
 // vtkStylizedLineMapper::RenderPieceDraw).
 
 uniform samplerBuffer lineNodes;       // per vertex: (x, y, z, radius), shifted model coordinates
+uniform float lineConstantRadius;      // not negative: every radius, and lineNodes holds (x, y, z)
 uniform isamplerBuffer lineTangents;   // per vertex: unit tangent, octahedral, 2 x int16
 uniform usamplerBuffer lineTubeStarts; // per polyline: its first vertex (one entry more: the end)
 uniform usamplerBuffer lineSegments;   // fix-up: first vertex of each segment drawn as a cylinder
@@ -72,6 +73,13 @@ flat out ivec2 lineInfoVSOutput; // polyline (picking), kind | halo << 2
 flat out vec4 lineSphereVSOutput; // mode 3: the sphere (center, view coordinates; radius)
 
 //SV::SplineTubeMath::Dec
+
+// Position and radius of a vertex (shifted model coordinates).
+vec4 lineNode(int node)
+{
+  vec4 n = texelFetch(lineNodes, node);
+  return lineConstantRadius < 0.0 ? n : vec4(n.xyz, lineConstantRadius);
+}
 
 //SV::StylizedLineMath::Dec
 
@@ -139,7 +147,7 @@ void main()
   {
     node = gl_VertexID >> 1;
     float side = (gl_VertexID & 1) != 0 ? 1.0 : -1.0;
-    vec4 pr = texelFetch(lineNodes, node);
+    vec4 pr = lineNode(node);
     vec3 p = (tubeMCVC * vec4(pr.xyz, 1.0)).xyz;
     float r = svDrawnRadius(pr.w * tubeRadiusScale, p.z, tubeMinimumRadius);
     vec3 t = lineViewTangent(node);
@@ -176,7 +184,7 @@ void main()
     vec3 b = cross(t, a);
     float phi = 6.283185307179586 * float(j) / float(lineSides);
     vec3 n = cos(phi) * a + sin(phi) * b;
-    vec4 pr = texelFetch(lineNodes, node);
+    vec4 pr = lineNode(node);
     vec3 p = (tubeMCVC * vec4(pr.xyz, 1.0)).xyz;
     float r = svDrawnRadius(pr.w * tubeRadiusScale, p.z, tubeMinimumRadius);
     position = p + (r * (lineHaloPass != 0 ? lineWiden : 1.0)) * n;
@@ -192,7 +200,7 @@ void main()
   else if (lineMode == 3)
   {
     node = int(texelFetch(lineJoints, gl_InstanceID).x);
-    vec4 pr = texelFetch(lineNodes, node);
+    vec4 pr = lineNode(node);
     vec3 p = (tubeMCVC * vec4(pr.xyz, 1.0)).xyz;
     float r = svDrawnRadius(pr.w * tubeRadiusScale, p.z, tubeMinimumRadius);
     float rr = r * (lineHaloPass != 0 ? lineWiden : 1.0);
@@ -227,7 +235,7 @@ void main()
     int end = cap & 1;
     node = end != 0 ? int(texelFetch(lineTubeStarts, tube + 1).x) - 1
                     : int(texelFetch(lineTubeStarts, tube).x);
-    vec4 pr = texelFetch(lineNodes, node);
+    vec4 pr = lineNode(node);
     vec3 p = (tubeMCVC * vec4(pr.xyz, 1.0)).xyz;
     float r = svDrawnRadius(pr.w * tubeRadiusScale, p.z, tubeMinimumRadius);
     vec3 t = lineViewTangent(node);

@@ -5,7 +5,8 @@
 // and camera, at the whole-data view and zoomed 2x and 5x (toward a point on
 // the data, so that the zoomed views are full of tubes).
 //
-// Scenes (radius from the point array "Radius"):
+// Scenes (radius from the point array "Radius", or the mapper's constant
+// Radius where the scene says so):
 // - DIPY's real cb_2 bundle (Testing/Data/DIPY/cb_2.vtp: 116 streamlines,
 //   2,088 points, mm), densely resampled: 4 points per segment along the
 //   spline of its points (SplineVizTest::DenseSpline), radius 0.22-0.38 mm
@@ -13,7 +14,8 @@
 // - the synthetic curls (SplineVizTest::Curls: helices, a loop and a line,
 //   5 degrees of turn per segment, radii 0.04-0.11);
 // - a dense bundle of 5,000 overlapping streamlines (DenseBundle(): 8
-//   segments each along a bent bundle 12 mm across, radius 0.15 mm, tubes
+//   segments each along a bent bundle 12 mm across, the mapper's constant
+//   radius 0.15 mm (the tubes buffer then holds positions only), tubes
 //   1-2 pixels wide and tens of them behind each pixel of the bundle's core
 //   in the whole view), whose references are coarser to stay small (8
 //   samples per segment, 16 sides, caps of 8 x 8: silhouettes within 2 % of
@@ -37,6 +39,8 @@
 // radii 15 % too small (the IoU target; not for the dense bundle, whose
 // coverage is saturated: thinner tubes cover the same pixels), and moved
 // away from the eye by 0.3 times the largest radius (the depth target).
+// GPU bytes: the constant radius leaves 4 bytes per node out of the tubes
+// buffer (checked against the same bundle with its radius array).
 // SPLINEVIZ_TEST_IMAGES=<dir> writes the renderings as PNG files.
 #include "vtkRayCastTubeMapper.h"
 #include "vtkStylizedLineMapper.h"
@@ -45,6 +49,7 @@
 #include "SplineVizRenderingTestUtilities.h"
 #include "SplineVizTestUtilities.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkMath.h"
@@ -52,6 +57,7 @@
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include <cmath>
@@ -152,7 +158,10 @@ enum Renderer
 };
 const char* const RendererNames[] = { "raycast", "tessellated", "stylized" };
 
-vtkSmartPointer<vtkMapper> MakeMapper(Renderer which, vtkPolyData* lines)
+/// The renderer's mapper for `lines`: radii from their "Radius" array, or
+/// the constant `constantRadius` when it is positive.
+vtkSmartPointer<vtkSplineTubeMapper> MakeMapper(
+  Renderer which, vtkPolyData* lines, double constantRadius = 0.0)
 {
   vtkSmartPointer<vtkSplineTubeMapper> mapper;
   switch (which)
@@ -168,7 +177,14 @@ vtkSmartPointer<vtkMapper> MakeMapper(Renderer which, vtkPolyData* lines)
       break;
   }
   mapper->SetInputData(lines);
-  mapper->SetRadiusArray("Radius");
+  if (constantRadius > 0.0)
+  {
+    mapper->SetRadius(constantRadius);
+  }
+  else
+  {
+    mapper->SetRadiusArray("Radius");
+  }
   mapper->ScalarVisibilityOff();
   return mapper;
 }
@@ -222,6 +238,24 @@ SplineVizTest::Frame DepthErrors(const SplineVizTest::Frame& test,
   return out;
 }
 
+/// The GPU bytes of `mapper` after a frame with the camera `setup` (its
+/// resources are released when its renderer leaves the window).
+long long GPUBytes(vtkRenderWindow* window, vtkSplineTubeMapper* mapper,
+  const SplineVizTest::CameraSetup& setup, const double bounds[6])
+{
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  window->AddRenderer(renderer);
+  setup(renderer->GetActiveCamera());
+  renderer->ResetCameraClippingRange(const_cast<double*>(bounds));
+  window->Render();
+  const auto bytes = static_cast<long long>(mapper->GetGPUMemorySize());
+  window->RemoveRenderer(renderer);
+  return bytes;
+}
+
 struct View
 {
   std::string Name;
@@ -273,6 +307,7 @@ struct Scene
   double Target[3]; // a point on the data
   ReferenceResolution Resolution;
   bool SaturatedCoverage = false; // tubes behind every pixel: IoU cannot see the radius
+  double ConstantRadius = 0.0;    // > 0: the mapper's Radius instead of the array
 };
 }
 
@@ -321,6 +356,7 @@ int TestTubeFidelity(int, char*[])
     std::copy(node.begin(), node.begin() + 3, dense.Target);
     dense.Resolution = { 8, 16, 8 };
     dense.SaturatedCoverage = true;
+    dense.ConstantRadius = 0.15;
     scenes.push_back(dense);
   }
 
@@ -352,7 +388,7 @@ int TestTubeFidelity(int, char*[])
       vtkNew<vtkPolyDataMapper> reference;
       reference->SetInputData(referenceTubes);
       reference->ScalarVisibilityOff();
-      auto mapper = MakeMapper(which, lines);
+      auto mapper = MakeMapper(which, lines, scene.ConstantRadius);
       const double iouTarget = which == RayCast ? 0.98 : 0.95;
       const double depthTarget = which == RayCast ? 0.98 : (which == Tessellated ? 0.95 : 0.0);
       for (const View& view : Views)
@@ -387,11 +423,25 @@ int TestTubeFidelity(int, char*[])
         {
           continue;
         }
+        if (scene.ConstantRadius > 0.0)
+        {
+          // The same tubes with the radius array: 4 more bytes per node.
+          auto withArray = MakeMapper(which, lines);
+          const auto nodes = static_cast<long long>(lines->GetNumberOfPoints());
+          const long long bytes = GPUBytes(window, mapper, setup, bounds);
+          const long long arrayBytes = GPUBytes(window, withArray, setup, bounds);
+          std::cout << "  GPU bytes per node: " << static_cast<double>(bytes) / nodes
+                    << " with the constant radius, " << static_cast<double>(arrayBytes) / nodes
+                    << " with the radius array" << std::endl;
+          SV_CHECK_MSG(status, arrayBytes - bytes == 4 * nodes,
+            name << ": the constant radius saves " << arrayBytes - bytes << " bytes, not 4 per node ("
+                 << 4 * nodes << ")");
+        }
         // Negative controls at the whole view (moved by 0.3 rMax: at least
         // 0.3 local radii everywhere).
         if (!scene.SaturatedCoverage)
         {
-          auto thin = MakeMapper(which, thinLines);
+          auto thin = MakeMapper(which, thinLines, 0.85 * scene.ConstantRadius);
           const auto thinFrame = SplineVizTest::Render(window, thin, setup, bounds, camera);
           const auto thinMeasure = SplineVizTest::Measure(thinFrame, ref, camera, 0.0, &tolerance);
           std::cout << "  negative control, radii 15 % too small: IoU " << thinMeasure.IoU
