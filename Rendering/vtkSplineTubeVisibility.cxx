@@ -129,7 +129,6 @@ void vtkSplineTubeVisibility::SetChunks(const float* spheres, const std::uint32_
   this->Parts = partFirsts ? parts : nullptr;
   this->PartFirsts = parts ? partFirsts : nullptr;
   this->NumberOfChunks = count;
-  this->Projection.assign(static_cast<size_t>(count), Projected());
   this->Visible.assign(static_cast<size_t>(count), 0);
   // The chunks by their line's rank (a counting sort in RankBuckets buckets),
   // so that a subset's chunks are a prefix.
@@ -152,7 +151,8 @@ void vtkSplineTubeVisibility::SetChunks(const float* spheres, const std::uint32_
   }
   this->Order.clear();
   this->GroupStarts.assign(1, 0);
-  this->DrawnChunks.clear();
+  this->OrderedProjection.clear();
+  this->DrawnPositions.clear();
   this->Drawn = 0;
   this->Hidden = 0;
 }
@@ -350,123 +350,133 @@ void vtkSplineTubeVisibility::BeginFrame(
     numCandidates = this->RankBucketStart[b];
   }
   auto candidate = [&](vtkIdType i) -> vtkIdType { return all ? i : this->RankOrder[i]; };
-  // Project the candidates in the frustum (in parallel).
-  std::vector<unsigned char> inside(static_cast<size_t>(numCandidates), 0);
+  // Project the candidates (in parallel), with a sort key per candidate: 0
+  // outside the frustum, else 1 + its depth bucket (4096 buckets of nearest
+  // depth), the chunks visible in the last frame first. The projections live
+  // while the frame starts only: the culling keeps them in draw order
+  // (OrderedProjection), nothing per chunk is kept between frames.
+  constexpr int Buckets = 4096;
+  constexpr int TileShift = 6; // tiles of 64 pixels square
+  const bool temporal = this->Occlusion && useLastFrame;
+  const int tilesX = (view.Width >> TileShift) + 1;
+  const int tilesY = (view.Height >> TileShift) + 1;
+  std::vector<Projected> projected(static_cast<size_t>(numCandidates));
+  std::vector<std::uint16_t> key(static_cast<size_t>(numCandidates), 0);
   vtkSMPTools::For(0, numCandidates,
     [&](vtkIdType begin, vtkIdType end)
     {
       for (vtkIdType i = begin; i < end; ++i)
       {
         const vtkIdType c = candidate(i);
+        Projected& pr = projected[i];
         if ((!all && Rank(this->Lines[c]) >= fraction) ||
-          (this->LineMask && !this->LineMask[this->Lines[c]]))
+          (this->LineMask && !this->LineMask[this->Lines[c]]) ||
+          !this->Project(this->Spheres + 4 * c, view, pixelSlope, pr))
         {
           continue;
         }
-        inside[i] =
-          this->Project(this->Spheres + 4 * c, view, pixelSlope, this->Projection[c]) ? 1 : 0;
+        const int b = std::min(Buckets - 1, static_cast<int>(pr.Depth * Buckets));
+        key[i] = static_cast<std::uint16_t>(1 + ((temporal && this->Visible[c]) ? b : Buckets + b));
       }
     });
 
-  // Order front to back: a counting sort by nearest depth in 4096 buckets,
-  // the chunks visible in the last frame first.
+  // Order front to back: a counting sort by the key. Order holds candidate
+  // indices (their projections are read below) until the groups are made.
   this->Order.clear();
-  this->DrawnChunks.clear();
+  this->DrawnPositions.clear();
   this->Drawn = 0;
   this->Hidden = 0;
-  constexpr int Buckets = 4096;
-  std::vector<vtkIdType> counts(2 * Buckets + 1, 0);
-  const bool temporal = this->Occlusion && useLastFrame;
-  auto bucket = [&](vtkIdType c)
-  {
-    const int b = std::min(Buckets - 1, static_cast<int>(this->Projection[c].Depth * Buckets));
-    return (temporal && this->Visible[c]) ? b : Buckets + b;
-  };
+  std::vector<vtkIdType> counts(2 * Buckets + 2, 0);
   for (vtkIdType i = 0; i < numCandidates; ++i)
   {
-    if (inside[i])
-    {
-      ++counts[bucket(candidate(i)) + 1];
-    }
+    ++counts[key[i]];
   }
-  for (int b = 0; b < 2 * Buckets; ++b)
+  // counts[k] becomes the start of key k (key 0, outside, is not ordered).
+  vtkIdType total = 0;
+  for (int k = 1; k <= 2 * Buckets; ++k)
   {
-    counts[b + 1] += counts[b];
+    const vtkIdType n = counts[k];
+    counts[k] = total;
+    total += n;
   }
-  const vtkIdType numInside = counts[2 * Buckets];
-  const vtkIdType numTemporal = counts[Buckets];
+  const vtkIdType numInside = total;
+  const vtkIdType numTemporal = counts[Buckets + 1];
   this->Order.resize(static_cast<size_t>(numInside));
   for (vtkIdType i = 0; i < numCandidates; ++i)
   {
-    if (inside[i])
+    if (key[i])
     {
-      const vtkIdType c = candidate(i);
-      this->Order[counts[bucket(c)]++] = static_cast<std::uint32_t>(c);
+      this->Order[counts[key[i]]++] = static_cast<std::uint32_t>(i);
     }
   }
 
   // Groups: the last frame's visible chunks, then the rest by layers of
-  // screen tiles (64 pixels square): per tile its nearest 64 chunks, then
-  // the next 64, 128, 256, ... (doubling), so that each group covers the
-  // whole picture with the layer in front of what the earlier groups drew.
-  // Small steps: a pyramid costs a few milliseconds, drawing what it would
-  // have hidden far more (most of all in a frame without a last frame).
+  // screen tiles: per tile its nearest 64 chunks, then the next 64, 128,
+  // 256, ... (doubling), so that each group covers the whole picture with
+  // the layer in front of what the earlier groups drew. Small steps: a
+  // pyramid costs a few milliseconds, drawing what it would have hidden far
+  // more (most of all in a frame without a last frame).
   this->GroupStarts.assign(1, 0);
-  if (!this->Occlusion)
-  {
-    this->GroupStarts.push_back(numInside);
-    return;
-  }
-  if (numTemporal > 0)
+  if (this->Occlusion && numTemporal > 0)
   {
     this->GroupStarts.push_back(numTemporal);
   }
-  constexpr int TileShift = 6;
-  constexpr int Layers = 17; // ranks [0, 64), [64, 128), ..., [2^21, inf)
-  const int tilesX = (view.Width >> TileShift) + 1;
-  const int tilesY = (view.Height >> TileShift) + 1;
-  std::vector<std::uint32_t> rank(static_cast<size_t>(tilesX) * tilesY, 0);
-  std::vector<unsigned char> layer(static_cast<size_t>(numInside - numTemporal), 0);
-  std::vector<vtkIdType> layerCounts(Layers + 1, 0);
-  for (vtkIdType i = numTemporal; i < numInside; ++i)
+  if (this->Occlusion)
   {
-    const Projected& pr = this->Projection[this->Order[i]];
-    const int tx = ((pr.X0 + pr.X1) / 2) >> TileShift;
-    const int ty = ((pr.Y0 + pr.Y1) / 2) >> TileShift;
-    const std::uint32_t r = rank[static_cast<size_t>(ty) * tilesX + tx]++;
-    int l = 0;
-    for (std::uint32_t limit = 64; l + 1 < Layers && r >= limit; limit *= 2)
+    constexpr int Layers = 17; // ranks [0, 64), [64, 128), ..., [2^21, inf)
+    std::vector<std::uint32_t> rank(static_cast<size_t>(tilesX) * tilesY, 0);
+    std::vector<unsigned char> layer(static_cast<size_t>(numInside - numTemporal), 0);
+    std::vector<vtkIdType> layerCounts(Layers + 1, 0);
+    for (vtkIdType i = numTemporal; i < numInside; ++i)
     {
-      ++l;
+      const Projected& pr = projected[this->Order[i]];
+      const int tx = ((pr.X0 + pr.X1) / 2) >> TileShift;
+      const int ty = ((pr.Y0 + pr.Y1) / 2) >> TileShift;
+      const std::uint32_t r = rank[static_cast<size_t>(ty) * tilesX + tx]++;
+      int l = 0;
+      for (std::uint32_t limit = 64; l + 1 < Layers && r >= limit; limit *= 2)
+      {
+        ++l;
+      }
+      layer[i - numTemporal] = static_cast<unsigned char>(l);
+      ++layerCounts[l + 1];
     }
-    layer[i - numTemporal] = static_cast<unsigned char>(l);
-    ++layerCounts[l + 1];
-  }
-  for (int l = 0; l < Layers; ++l)
-  {
-    layerCounts[l + 1] += layerCounts[l];
-  }
-  // A stable counting sort by layer (depth order within each).
-  std::vector<std::uint32_t> rest(this->Order.begin() + numTemporal, this->Order.end());
-  std::vector<vtkIdType> cursor(layerCounts.begin(), layerCounts.end() - 1);
-  for (size_t i = 0; i < rest.size(); ++i)
-  {
-    this->Order[numTemporal + cursor[layer[i]]++] = rest[i];
-  }
-  for (int l = 0; l < Layers; ++l)
-  {
-    if (layerCounts[l + 1] > layerCounts[l])
+    for (int l = 0; l < Layers; ++l)
     {
-      this->GroupStarts.push_back(numTemporal + layerCounts[l + 1]);
+      layerCounts[l + 1] += layerCounts[l];
+    }
+    // A stable counting sort by layer (depth order within each).
+    std::vector<std::uint32_t> rest(this->Order.begin() + numTemporal, this->Order.end());
+    std::vector<vtkIdType> cursor(layerCounts.begin(), layerCounts.end() - 1);
+    for (size_t i = 0; i < rest.size(); ++i)
+    {
+      this->Order[numTemporal + cursor[layer[i]]++] = rest[i];
+    }
+    for (int l = 0; l < Layers; ++l)
+    {
+      if (layerCounts[l + 1] > layerCounts[l])
+      {
+        this->GroupStarts.push_back(numTemporal + layerCounts[l + 1]);
+      }
     }
   }
-  this->OrderedProjection.resize(static_cast<size_t>(numInside));
+  else
+  {
+    this->GroupStarts.push_back(numInside);
+  }
+  // The projections in draw order (with occlusion only: the culling reads
+  // them in order, not scattered over the chunks), candidate indices to chunks.
+  this->OrderedProjection.resize(this->Occlusion ? static_cast<size_t>(numInside) : 0);
   vtkSMPTools::For(0, numInside,
     [&](vtkIdType b, vtkIdType e)
     {
       for (vtkIdType i = b; i < e; ++i)
       {
-        this->OrderedProjection[i] = this->Projection[this->Order[i]];
+        if (this->Occlusion)
+        {
+          this->OrderedProjection[i] = projected[this->Order[i]];
+        }
+        this->Order[i] = static_cast<std::uint32_t>(candidate(this->Order[i]));
       }
     });
 }
@@ -524,6 +534,10 @@ void vtkSplineTubeVisibility::CullGroup(
   if (!pyramid || !this->Occlusion)
   {
     chunks.assign(this->Order.begin() + begin, this->Order.begin() + end);
+    for (vtkIdType i = begin; i < end && this->Occlusion; ++i)
+    {
+      this->DrawnPositions.push_back(static_cast<std::uint32_t>(i));
+    }
   }
   else
   {
@@ -542,32 +556,33 @@ void vtkSplineTubeVisibility::CullGroup(
       if (!hidden[i - begin])
       {
         chunks.push_back(this->Order[i]);
+        this->DrawnPositions.push_back(static_cast<std::uint32_t>(i));
       }
     }
     this->Hidden += (end - begin) - static_cast<vtkIdType>(chunks.size());
   }
   this->Drawn += static_cast<vtkIdType>(chunks.size());
-  this->DrawnChunks.insert(this->DrawnChunks.end(), chunks.begin(), chunks.end());
 }
 
 //------------------------------------------------------------------------------
 void vtkSplineTubeVisibility::EndFrame(const DepthPyramid* pyramid)
 {
   std::fill(this->Visible.begin(), this->Visible.end(), 0);
-  if (!pyramid)
+  if (pyramid && this->Occlusion)
   {
-    this->DrawnChunks.clear(); // nothing known of what is visible
-    return;
-  }
-  const vtkIdType n = static_cast<vtkIdType>(this->DrawnChunks.size());
-  vtkSMPTools::For(0, n,
-    [&](vtkIdType b, vtkIdType e)
-    {
-      for (vtkIdType i = b; i < e; ++i)
+    const vtkIdType n = static_cast<vtkIdType>(this->DrawnPositions.size());
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType b, vtkIdType e)
       {
-        const std::uint32_t c = this->DrawnChunks[i];
-        this->Visible[c] = this->IsHidden(c, this->Projection[c], *pyramid) ? 0 : 1;
-      }
-    });
-  this->DrawnChunks.clear();
+        for (vtkIdType i = b; i < e; ++i)
+        {
+          const std::uint32_t position = this->DrawnPositions[i];
+          const std::uint32_t c = this->Order[position];
+          this->Visible[c] =
+            this->IsHidden(c, this->OrderedProjection[position], *pyramid) ? 0 : 1;
+        }
+      });
+  }
+  // (Without a pyramid nothing is known of what is visible.)
+  this->DrawnPositions.clear();
 }

@@ -164,14 +164,14 @@ private:
   static constexpr int RankBuckets = 65536;
   std::vector<std::uint32_t> RankOrder;   ///< chunks by their line's rank
   std::vector<vtkIdType> RankBucketStart; ///< RankBuckets + 1 offsets into RankOrder
-  std::vector<Projected> Projection;      ///< per chunk, valid for those in Order
   std::vector<std::uint32_t> Order;       ///< chunks in the frustum, by group, front to back
-  /// Projection[Order[i]] at i (with occlusion): the culling reads it in order,
-  /// not scattered over the chunks (cache misses were most of its time).
+  /// The projection of Order[i] at i (with occlusion only): the culling reads
+  /// it in order, not scattered over the chunks (cache misses were most of its
+  /// time); no per-chunk projection outlives BeginFrame().
   std::vector<Projected> OrderedProjection;
   std::vector<vtkIdType> GroupStarts;
   std::vector<unsigned char> Visible; ///< per chunk: visible at the end of the last frame
-  std::vector<std::uint32_t> DrawnChunks;
+  std::vector<std::uint32_t> DrawnPositions; ///< positions in Order of the drawn chunks
   vtkIdType Drawn = 0;
   vtkIdType Hidden = 0;
   bool Occlusion = false;

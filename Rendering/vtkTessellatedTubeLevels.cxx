@@ -358,7 +358,8 @@ void vtkTessellatedTubeLevels::SetCore(vtkSplineTubeCore* core)
   this->ChunkThinLevels.assign(static_cast<size_t>(numChunks), 0);
   this->TubeSideBin.assign(static_cast<size_t>(core->GetNumberOfTubes()), Culled);
   this->TubeStamp.assign(static_cast<size_t>(core->GetNumberOfTubes()), 0);
-  this->ThinCaps.assign(static_cast<size_t>(core->GetNumberOfSegments()), 0);
+  this->ThinStartCaps.assign(static_cast<size_t>(core->GetNumberOfTubes()), 0);
+  this->ThinEndCaps.assign(static_cast<size_t>(core->GetNumberOfTubes()), 0);
   this->LastView.clear();
 }
 
@@ -565,21 +566,17 @@ void vtkTessellatedTubeLevels::ClassifyThin(std::uint32_t c)
       }
       this->ChunkRingBin[c] = ThinChunk;
       this->ChunkThinLevels[c] = static_cast<std::uint32_t>(rung);
-      // Caps of the tube's ends turned to the eye (the control stage's test).
+      // Caps of the tube's ends turned to the eye (the control stage's test),
+      // written by the chunk that holds the end (one writer per byte).
       const vtkIdType lastSegment = firstSegment + core->GetTubeNumberOfNodes(tube) - 2;
-      for (vtkIdType s = chunkFirst[c]; settings.Capping && s < chunkFirst[c + 1]; ++s)
+      if (settings.Capping && chunkFirst[c] == firstSegment)
       {
-        unsigned char visible = 0;
-        if (s == firstSegment && ThinCapVisible(thin, ToView(thin, P, M, s - chunkFirst[c]), 1))
-        {
-          visible |= 1;
-        }
-        if (s == lastSegment &&
-          ThinCapVisible(thin, ToView(thin, P, M, s - chunkFirst[c] + 1), 2))
-        {
-          visible |= 2;
-        }
-        this->ThinCaps[s] = visible;
+        this->ThinStartCaps[tube] = ThinCapVisible(thin, ToView(thin, P, M, 0), 1) ? 1 : 0;
+      }
+      if (settings.Capping && chunkFirst[c + 1] == lastSegment + 1)
+      {
+        this->ThinEndCaps[tube] =
+          ThinCapVisible(thin, ToView(thin, P, M, lastSegment - chunkFirst[c] + 1), 2) ? 1 : 0;
       }
       return;
     }
@@ -690,7 +687,9 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
       }
       if (ringBin == ThinChunk)
       {
-        counts[thinCapBin] += 2 * ((this->ThinCaps[s] & 1) + (this->ThinCaps[s] >> 1));
+        const int flags = segmentFlags(s, chunkTube[c]);
+        counts[thinCapBin] += 2 * (((flags & 1) && this->ThinStartCaps[chunkTube[c]]) +
+                                    ((flags & 2) && this->ThinEndCaps[chunkTube[c]]));
       }
       else
       {
@@ -747,7 +746,8 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
       {
         for (std::uint32_t kind = 1; kind <= 2; ++kind)
         {
-          if ((this->ThinCaps[s] & kind) != 0)
+          if (((flags & kind) != 0) &&
+            (kind == 1 ? this->ThinStartCaps : this->ThinEndCaps)[chunkTube[c]] != 0)
           {
             this->Instances[cursor[thinCapBin]++] = static_cast<std::uint32_t>(s) + toNode;
             this->Instances[cursor[thinCapBin]++] = kind;

@@ -181,7 +181,12 @@ private:
   std::vector<std::uint32_t> TubeStamp; ///< the view a tube was last classified in
   std::uint32_t ViewStamp = 0;
   double Planes[6][4] = {};            ///< frustum planes of the view, view coordinates
-  std::vector<unsigned char> ThinCaps; ///< per segment of thin runs: its caps turned to the eye
+  ///@{
+  /// Per tube: its start (end) cap turned to the eye, when the chunk that
+  /// holds that end is thin (a thin draw); read only for those chunks.
+  std::vector<unsigned char> ThinStartCaps;
+  std::vector<unsigned char> ThinEndCaps;
+  ///@}
 
   // Per draw list.
   std::vector<std::uint32_t> Instances;
