@@ -166,12 +166,14 @@ int Child(const std::string& file, const std::string& renderer, int width, int h
   const double first = Now() - t0;
 
   std::vector<double> still;
+  std::vector<double> perView;
   for (int f = 0; f < frames; ++f)
   {
     ren->GetActiveCamera()->Azimuth(10.0);
     const double s = Now();
     window->Render();
     still.push_back(Now() - s);
+    perView.push_back(tubes ? tubes->GetLastPerViewTime() : 0.0);
   }
   std::vector<double> interactive;
   double fraction = 1.0;
@@ -203,9 +205,9 @@ int Child(const std::string& file, const std::string& renderer, int width, int h
   {
     gpu = 12.0 * lines->GetNumberOfPoints() + 8.0 * segments; // points, line indices
   }
-  std::printf("RESULT %lld %.3f %.3f %.3f %.3f %.3f %.4f %.1f %.3f\n",
+  std::printf("RESULT %lld %.3f %.3f %.3f %.3f %.3f %.4f %.1f %.3f %.3f\n",
     static_cast<long long>(segments), readTime, readRSS, first, Median(still), Median(interactive),
-    fraction, gpu / std::max<vtkIdType>(segments, 1), PeakRSSGB());
+    fraction, gpu / std::max<vtkIdType>(segments, 1), PeakRSSGB(), Median(perView));
   return 0;
 }
 
@@ -215,6 +217,7 @@ struct Result
   long long Segments = 0;
   double Read = 0, ReadRSS = 0, First = 0, Still = 0, Interactive = 0, Fraction = 1, GPU = 0,
          RSS = 0;
+  double PerView = 0; ///< of the still frames: per-view CPU work (our renderers)
 };
 
 /// Run this program as a child for one (file, renderer); parse its RESULT line.
@@ -233,8 +236,9 @@ Result RunChild(const char* self, const std::string& file, const std::string& re
   char line[1024];
   while (std::fgets(line, sizeof(line), pipe))
   {
-    if (std::sscanf(line, "RESULT %lld %lf %lf %lf %lf %lf %lf %lf %lf", &r.Segments, &r.Read,
-          &r.ReadRSS, &r.First, &r.Still, &r.Interactive, &r.Fraction, &r.GPU, &r.RSS) == 9)
+    if (std::sscanf(line, "RESULT %lld %lf %lf %lf %lf %lf %lf %lf %lf %lf", &r.Segments, &r.Read,
+          &r.ReadRSS, &r.First, &r.Still, &r.Interactive, &r.Fraction, &r.GPU, &r.RSS,
+          &r.PerView) == 10)
     {
       r.Ok = true;
     }
@@ -336,7 +340,7 @@ int main(int argc, char* argv[])
   {
     std::fprintf(csv,
       "data,renderer,segments,read_s,read_rss_gb,first_s,still_s,interactive_s,"
-      "fraction,gpu_bytes_per_segment,peak_rss_gb\n");
+      "fraction,gpu_bytes_per_segment,peak_rss_gb,per_view_s\n");
   }
   std::printf("Tractograms at %s, radius %g mm, %d still and %d interactive frames; each "
               "renderer in a process of its own. Ratios to VTK's plain lines.\n",
@@ -346,9 +350,9 @@ int main(int argc, char* argv[])
     MakeData(Split(options["--data"]), Split(options["--streamlines"]), options["--dir"]))
   {
     std::printf("\n== %s\n", data.first.c_str());
-    std::printf("%-13s %10s %7s %7s %8s %8s %9s %8s %7s %7s %7s\n", "renderer", "segments",
-      "read s", "first s", "still s", "inter s", "fraction", "GPU B/s", "RSS GB", "first x",
-      "still x");
+    std::printf("%-13s %10s %7s %7s %8s %7s %8s %9s %8s %7s %7s %7s\n", "renderer", "segments",
+      "read s", "first s", "still s", "view s", "inter s", "fraction", "GPU B/s", "RSS GB",
+      "first x", "still x");
     std::map<std::string, Result> results;
     // VTK's lines first: the reference of the ratios.
     std::vector<std::string> order = renderers;
@@ -372,16 +376,17 @@ int main(int argc, char* argv[])
       }
       const Result* lines =
         results.count("lines") && results["lines"].Ok ? &results["lines"] : nullptr;
-      std::printf("%-13s %10lld %7.2f %7.2f %8.3f %8.3f %9.4f %8.1f %7.2f %7s %7s\n",
-        renderer.c_str(), r.Segments, r.Read, r.First, r.Still, r.Interactive, r.Fraction, r.GPU,
+      std::printf("%-13s %10lld %7.2f %7.2f %8.3f %7.3f %8.3f %9.4f %8.1f %7.2f %7s %7s\n",
+        renderer.c_str(), r.Segments, r.Read, r.First, r.Still, r.PerView, r.Interactive,
+        r.Fraction, r.GPU,
         r.RSS, lines ? std::to_string(r.First / lines->First).substr(0, 5).c_str() : "-",
         lines ? std::to_string(r.Still / lines->Still).substr(0, 5).c_str() : "-");
       std::fflush(stdout);
       if (csv)
       {
-        std::fprintf(csv, "%s,%s,%lld,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.1f,%.3f\n",
+        std::fprintf(csv, "%s,%s,%lld,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.1f,%.3f,%.3f\n",
           data.first.c_str(), renderer.c_str(), r.Segments, r.Read, r.ReadRSS, r.First, r.Still,
-          r.Interactive, r.Fraction, r.GPU, r.RSS);
+          r.Interactive, r.Fraction, r.GPU, r.RSS, r.PerView);
         std::fflush(csv);
       }
     }

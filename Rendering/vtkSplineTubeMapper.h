@@ -250,8 +250,9 @@ public:
   /**
    * What the last render drew: the fraction of the lines (1 at rest), the
    * chunks in the view frustum, the chunks drawn and those dropped as hidden,
-   * the depth pyramids read back, and the time the render took (seconds, to
-   * the end of the GPU's work).
+   * the depth pyramids read back, the time the render took (seconds, to
+   * the end of the GPU's work) and the part of it spent in per-view CPU work
+   * (classification, projection, culling tests, the stylized fix-up).
    */
   double GetLastLineFraction() const { return this->LastLineFraction; }
   vtkIdType GetLastNumberOfChunksInFrustum() const;
@@ -259,6 +260,7 @@ public:
   vtkIdType GetLastNumberOfChunksHidden() const;
   int GetLastNumberOfDepthPyramids() const { return this->LastNumberOfDepthPyramids; }
   double GetLastDrawTime() const { return this->LastDrawTime; }
+  double GetLastPerViewTime() const { return this->LastFixedTime; }
   ///@}
 
   /**
