@@ -29,6 +29,9 @@ list(APPEND splineviz_private_classes
 # glsl/vtkTensorMathShared.glsl, compiled as C++ and embedded in shaders.
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineVizTensorMath")
+# All cores by default: the SMP backend the library's parallel loops run on.
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizThreads")
 list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkTensorMathShared.glsl")
 # The shared GLSL/C++ subset: its C++ side (vtkSplineVizSharedGLSL.h) and the
