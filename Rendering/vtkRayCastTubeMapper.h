@@ -44,7 +44,8 @@
  * fits the frame budget (InteractiveSubset).
  *
  * Data on the GPU (uploaded once per data change): the line mappers' node
- * buffers (vtkSplineTubeMapper: 20 bytes per node, 24 with scalar colors) and
+ * buffers (vtkSplineTubeMapper: 20 bytes per node, 16 when all radii are
+ * equal, 4 more with scalar colors) and
  * per tube its cell and block ids. See GetGPUMemorySize().
  *
  * Limitations: translucent tubes show their nearest surface only (the far

@@ -24,12 +24,15 @@
  *
  * - the tubes buffer on the GPU (Salm §3, Fig. 3), as buffer textures read by
  *   the shaders with texelFetch (glsl/vtkSplineTubeNodes.glsl): per node the
- *   position and radius (`tubeNodes`, RGBA32F) and its tube with the flags
+ *   position and radius (`tubeNodes`, RGBA32F; the position alone, RGB32F,
+ *   when every node has the same radius, which then is a uniform) and its
+ *   tube with the flags
  *   first and last node of the tube (`tubeNodeInfo`, R32UI); the derivatives
  *   are the neighbours' differences, computed where they are used (the same
  *   as vtkSplineTubeCore's); per tube the cell and block ids for picking
  *   (`tubeTubes`, RG32I); with scalar coloring, per node the color (RGBA8,
- *   `tubeColors`, R32UI). 20 bytes per node, 24 with colors, uploaded in
+ *   `tubeColors`, R32UI). 20 bytes per node (16 with one radius), 4 more
+ *   with colors, uploaded in
  *   pieces from the input (no copy of the data kept on the CPU side);
  * - the fragment-shader code for the color spline and for hardware picking
  *   (cell = polyline, composite index = block).

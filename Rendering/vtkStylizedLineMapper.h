@@ -13,7 +13,8 @@
  * are given per point.
  *
  * - **Per-vertex data, uploaded once per data change** (§3, §4.1): position
- *   and radius (16 bytes), unit tangent (octahedral, 4 bytes), with scalar
+ *   and radius (16 bytes; 12, the position alone, when all radii are equal),
+ *   unit tangent (octahedral, 4 bytes), with scalar
  *   coloring the color (RGBA8, 4 bytes), with a texture the texture
  *   coordinate along the line and the orientation angle (8 bytes) and a
  *   body-fixed frame vector (4 bytes), plus 12 bytes per polyline: at most

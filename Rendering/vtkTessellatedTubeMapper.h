@@ -141,7 +141,8 @@
  *   wireframe representation shows the tessellated triangles.
  *
  * Data on the GPU (uploaded once per data change): the node buffers of
- * vtkSplineTubeMapper (per node 20 bytes, 4 more with scalar coloring; per
+ * vtkSplineTubeMapper (per node 20 bytes, 16 when all radii are equal, 4
+ * more with scalar coloring; per
  * tube 8 bytes) plus the orthogonal vectors, octahedral
  * encoded in 4 bytes per node (Salm's suggested compact format), and the base
  * meshes' index buffer (once; 3 KB of it for the thin-tube mesh, whose rows
