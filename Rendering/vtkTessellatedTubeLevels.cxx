@@ -586,31 +586,70 @@ void vtkTessellatedTubeLevels::ClassifyThin(std::uint32_t c)
 }
 
 //------------------------------------------------------------------------------
+int vtkTessellatedTubeLevels::SegmentEnds(vtkIdType segment, std::uint32_t tube) const
+{
+  const vtkIdType firstSegment = this->Core->GetTubeFirstSegment(tube);
+  return (segment == firstSegment ? 1 : 0) |
+    (segment == firstSegment + this->Core->GetTubeNumberOfNodes(tube) - 2 ? 2 : 0);
+}
+
+//------------------------------------------------------------------------------
+int vtkTessellatedTubeLevels::ThinCapsToDraw(std::uint32_t tube, int ends) const
+{
+  return ((ends & 1) && this->ThinStartCaps[tube] ? 1 : 0) |
+    ((ends & 2) && this->ThinEndCaps[tube] ? 2 : 0);
+}
+
+//------------------------------------------------------------------------------
+vtkTessellatedTubeLevels::BinLayout vtkTessellatedTubeLevels::GetBinLayout() const
+{
+  // Walls per (rings, sides), caps per sides, whole chunks (2 list entries
+  // each), thin runs per rung (2 entries), thin caps ((segment, kind) pairs).
+  BinLayout layout;
+  layout.SideBins = static_cast<int>(this->SideLadder.size());
+  layout.Walls = static_cast<int>(this->RingLadder.size()) * layout.SideBins;
+  layout.Chunks = layout.Walls + layout.SideBins;
+  layout.ThinBase = layout.Chunks + 1;
+  layout.ThinBins = static_cast<int>(this->ThinLadder.size());
+  layout.ThinCaps = layout.ThinBase + layout.ThinBins;
+  return layout;
+}
+
+//------------------------------------------------------------------------------
+bool vtkTessellatedTubeLevels::IsDrawn(std::uint32_t chunk) const
+{
+  const vtkTypeUInt32* chunkTube = this->Core->GetChunkTubes()->GetPointer(0);
+  return this->TubeSideBin[chunkTube[chunk]] != Culled && this->ChunkRingBin[chunk] != Culled;
+}
+
+//------------------------------------------------------------------------------
 void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chunks)
 {
-  vtkSplineTubeCore* core = this->Core;
   this->Draws.clear();
   this->Instances.clear();
-  if (!core)
+  if (!this->Core)
   {
     return;
   }
-  const Settings& settings = this->CurrentSettings;
-  const int ringBins = static_cast<int>(this->RingLadder.size());
-  const int sideBins = static_cast<int>(this->SideLadder.size());
-  const vtkTypeUInt32* chunkFirst = core->GetChunkFirstSegments()->GetPointer(0);
-  const vtkTypeUInt32* chunkTube = core->GetChunkTubes()->GetPointer(0);
-  // A segment's flags: 1 when it starts its tube, 2 when it ends it.
-  auto segmentFlags = [&](vtkIdType s, std::uint32_t t)
+  this->ClassifyChunks(chunks);
+  const BinLayout layout = this->GetBinLayout();
+  const std::vector<vtkIdType> counts = this->CountInstances(chunks, layout);
+  std::vector<vtkIdType> offsets(counts.size() + 1, 0);
+  for (size_t b = 0; b < counts.size(); ++b)
   {
-    const vtkIdType firstSegment = core->GetTubeFirstSegment(t);
-    return (s == firstSegment ? 1 : 0) |
-      (s == firstSegment + core->GetTubeNumberOfNodes(t) - 2 ? 2 : 0);
-  };
+    offsets[b + 1] = offsets[b] + counts[b];
+  }
+  this->FillInstances(chunks, layout, offsets);
+  this->AddDraws(layout, counts, offsets);
+}
 
+//------------------------------------------------------------------------------
+void vtkTessellatedTubeLevels::ClassifyChunks(const std::vector<std::uint32_t>& chunks)
+{
   // The tubes of these chunks not yet classified in this view (in parallel),
   // then the thin tubes' chunks: their levels, in parallel.
-  const vtkIdType n = static_cast<vtkIdType>(chunks.size());
+  const vtkTypeUInt32* chunkTube = this->Core->GetChunkTubes()->GetPointer(0);
+  const int sideBins = static_cast<int>(this->SideLadder.size());
   std::vector<std::uint32_t> tubes;
   for (std::uint32_t c : chunks)
   {
@@ -629,9 +668,9 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
         this->ClassifyTube(tubes[i]);
       }
     });
-  if (settings.LevelOfDetail)
+  if (this->CurrentSettings.LevelOfDetail)
   {
-    vtkSMPTools::For(0, n,
+    vtkSMPTools::For(0, static_cast<vtkIdType>(chunks.size()),
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType i = begin; i < end; ++i)
@@ -644,122 +683,132 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
         }
       });
   }
+}
 
-  // Bins: walls per (rings, sides), caps per sides, whole chunks (2 list
-  // entries each), thin runs per rung (2 entries), thin caps ((segment,
-  // kind) pairs); then the instance list.
-  const int bins = ringBins * sideBins;
-  const int chunkBin = bins + sideBins;
-  const int thinBase = chunkBin + 1;
-  const int thinBins = static_cast<int>(this->ThinLadder.size());
-  const int thinCapBin = thinBase + thinBins;
-  auto thinBin = [&](std::uint32_t rung) { return thinBase + static_cast<int>(rung); };
-  auto drawn = [&](std::uint32_t c)
-  { return this->TubeSideBin[chunkTube[c]] != Culled && this->ChunkRingBin[c] != Culled; };
-  std::vector<vtkIdType> counts(static_cast<size_t>(thinCapBin + 1), 0);
+//------------------------------------------------------------------------------
+std::vector<vtkIdType> vtkTessellatedTubeLevels::CountInstances(
+  const std::vector<std::uint32_t>& chunks, const BinLayout& layout)
+{
+  const vtkTypeUInt32* chunkFirst = this->Core->GetChunkFirstSegments()->GetPointer(0);
+  const vtkTypeUInt32* chunkTube = this->Core->GetChunkTubes()->GetPointer(0);
+  const bool capping = this->CurrentSettings.Capping;
+  std::vector<vtkIdType> counts(static_cast<size_t>(layout.ThinCaps + 1), 0);
   for (std::uint32_t c : chunks)
   {
-    if (!drawn(c))
+    if (!this->IsDrawn(c))
     {
       continue;
     }
-    const int sideBin = this->TubeSideBin[chunkTube[c]];
+    const std::uint32_t tube = chunkTube[c];
+    const int sideBin = this->TubeSideBin[tube];
     const vtkIdType segments = chunkFirst[c + 1] - chunkFirst[c];
     const unsigned char ringBin = this->ChunkRingBin[c];
     this->DrawnSegments += segments;
     if (ringBin == WholeChunk)
     {
-      counts[chunkBin] += 2;
+      counts[layout.Chunks] += 2;
     }
     else if (ringBin == ThinChunk)
     {
-      counts[thinBin(this->ChunkThinLevels[c])] += 2;
+      counts[layout.ThinBase + this->ChunkThinLevels[c]] += 2;
     }
     else
     {
-      counts[ringBin * sideBins + sideBin] += segments;
+      counts[ringBin * layout.SideBins + sideBin] += segments;
     }
-    for (vtkIdType s = chunkFirst[c]; settings.Capping && s < chunkFirst[c + 1]; ++s)
+    for (vtkIdType s = chunkFirst[c]; capping && s < chunkFirst[c + 1]; ++s)
     {
-      if (segmentFlags(s, chunkTube[c]) == 0)
+      const int ends = this->SegmentEnds(s, tube);
+      if (ends == 0)
       {
         continue;
       }
       if (ringBin == ThinChunk)
       {
-        const int flags = segmentFlags(s, chunkTube[c]);
-        counts[thinCapBin] += 2 * (((flags & 1) && this->ThinStartCaps[chunkTube[c]]) +
-                                    ((flags & 2) && this->ThinEndCaps[chunkTube[c]]));
+        const int kinds = this->ThinCapsToDraw(tube, ends);
+        counts[layout.ThinCaps] += 2 * ((kinds & 1) + (kinds >> 1));
       }
       else
       {
-        counts[bins + sideBin] += 1;
+        counts[layout.Walls + sideBin] += 1;
       }
     }
   }
-  std::vector<vtkIdType> offsets(counts.size() + 1, 0);
-  for (size_t b = 0; b < counts.size(); ++b)
-  {
-    offsets[b + 1] = offsets[b] + counts[b];
-  }
+  return counts;
+}
+
+//------------------------------------------------------------------------------
+void vtkTessellatedTubeLevels::FillInstances(const std::vector<std::uint32_t>& chunks,
+  const BinLayout& layout, const std::vector<vtkIdType>& offsets)
+{
+  // Instance entries name segments by their first node (segment + tube).
+  const vtkTypeUInt32* chunkFirst = this->Core->GetChunkFirstSegments()->GetPointer(0);
+  const vtkTypeUInt32* chunkTube = this->Core->GetChunkTubes()->GetPointer(0);
+  const bool capping = this->CurrentSettings.Capping;
   this->Instances.resize(static_cast<size_t>(offsets.back()));
   std::vector<vtkIdType> cursor(offsets.begin(), offsets.end() - 1);
-  // Instance entries name segments by their first node (segment + tube).
   for (std::uint32_t c : chunks)
   {
-    if (!drawn(c))
+    if (!this->IsDrawn(c))
     {
       continue;
     }
-    const int sideBin = this->TubeSideBin[chunkTube[c]];
+    const std::uint32_t tube = chunkTube[c];
+    const int sideBin = this->TubeSideBin[tube];
     const unsigned char ringBin = this->ChunkRingBin[c];
     const vtkIdType first = chunkFirst[c];
     const vtkIdType stop = chunkFirst[c + 1];
-    const std::uint32_t toNode = chunkTube[c];
+    const std::uint32_t toNode = tube;
     const bool thinChunk = ringBin == ThinChunk;
     if (thinChunk)
     {
-      vtkIdType& entry = cursor[thinBin(this->ChunkThinLevels[c])];
+      vtkIdType& entry = cursor[layout.ThinBase + this->ChunkThinLevels[c]];
       this->Instances[entry++] = static_cast<std::uint32_t>(first) + toNode;
       // (count | whether the run starts and ends its tube << 8)
       this->Instances[entry++] = static_cast<std::uint32_t>(stop - first) |
         (static_cast<std::uint32_t>(
-           (segmentFlags(first, chunkTube[c]) & 1) | (segmentFlags(stop - 1, chunkTube[c]) & 2))
+           (this->SegmentEnds(first, tube) & 1) | (this->SegmentEnds(stop - 1, tube) & 2))
           << 8);
     }
     const bool whole = thinChunk || ringBin == WholeChunk;
     if (whole && !thinChunk)
     {
-      vtkIdType& entry = cursor[chunkBin];
+      vtkIdType& entry = cursor[layout.Chunks];
       this->Instances[entry++] = static_cast<std::uint32_t>(first) + toNode;
       this->Instances[entry++] = static_cast<std::uint32_t>(stop - first);
     }
-    vtkIdType& wall = cursor[whole ? 0 : ringBin * sideBins + sideBin];
+    vtkIdType& wall = cursor[whole ? 0 : ringBin * layout.SideBins + sideBin];
     for (vtkIdType s = first; s < stop; ++s)
     {
       if (!whole)
       {
         this->Instances[wall++] = static_cast<std::uint32_t>(s) + toNode;
       }
-      const int flags = segmentFlags(s, chunkTube[c]);
-      if (settings.Capping && flags != 0 && thinChunk)
+      const int ends = this->SegmentEnds(s, tube);
+      if (capping && ends != 0 && thinChunk)
       {
+        const int kinds = this->ThinCapsToDraw(tube, ends);
         for (std::uint32_t kind = 1; kind <= 2; ++kind)
         {
-          if (((flags & kind) != 0) &&
-            (kind == 1 ? this->ThinStartCaps : this->ThinEndCaps)[chunkTube[c]] != 0)
+          if ((kinds & kind) != 0)
           {
-            this->Instances[cursor[thinCapBin]++] = static_cast<std::uint32_t>(s) + toNode;
-            this->Instances[cursor[thinCapBin]++] = kind;
+            this->Instances[cursor[layout.ThinCaps]++] = static_cast<std::uint32_t>(s) + toNode;
+            this->Instances[cursor[layout.ThinCaps]++] = kind;
           }
         }
       }
-      else if (settings.Capping && flags != 0)
+      else if (capping && ends != 0)
       {
-        this->Instances[cursor[bins + sideBin]++] = static_cast<std::uint32_t>(s) + toNode;
+        this->Instances[cursor[layout.Walls + sideBin]++] = static_cast<std::uint32_t>(s) + toNode;
       }
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkTessellatedTubeLevels::AddDraws(const BinLayout& layout,
+  const std::vector<vtkIdType>& counts, const std::vector<vtkIdType>& offsets)
+{
   auto add = [&](int b, bool thin, bool caps, bool whole, int rings, int sides, vtkIdType count)
   {
     if (counts[b] == 0)
@@ -780,20 +829,21 @@ void vtkTessellatedTubeLevels::BuildDraws(const std::vector<std::uint32_t>& chun
          << " x " << sides;
     this->Summary[name.str()] += count;
   };
-  for (int b = 0; b <= chunkBin; ++b)
+  const int sideBins = layout.SideBins;
+  for (int b = 0; b <= layout.Chunks; ++b)
   {
-    const bool caps = b >= bins && b < chunkBin;
-    const bool whole = b == chunkBin;
+    const bool caps = b >= layout.Walls && b < layout.Chunks;
+    const bool whole = b == layout.Chunks;
     add(b, false, caps, whole, (caps || whole) ? 2 : this->RingLadder[b / sideBins],
-      whole ? 1 : this->SideLadder[caps ? b - bins : b % sideBins],
+      whole ? 1 : this->SideLadder[caps ? b - layout.Walls : b % sideBins],
       whole ? counts[b] / 2 : counts[b]);
   }
-  for (int b = thinBase; b < thinBase + thinBins; ++b)
+  for (int b = layout.ThinBase; b < layout.ThinBase + layout.ThinBins; ++b)
   {
-    add(b, true, false, false, this->ThinLadder[static_cast<size_t>(b - thinBase)] + 1,
+    add(b, true, false, false, this->ThinLadder[static_cast<size_t>(b - layout.ThinBase)] + 1,
       ThinRibbonSides, counts[b] / 2);
   }
-  add(thinCapBin, true, true, false, 1, ThinCapSides, counts[thinCapBin] / 2);
+  add(layout.ThinCaps, true, true, false, 1, ThinCapSides, counts[layout.ThinCaps] / 2);
 }
 
 //------------------------------------------------------------------------------

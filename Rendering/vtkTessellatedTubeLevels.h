@@ -151,6 +151,32 @@ public:
   void Invalidate() { this->LastView.clear(); }
 
 private:
+  /// Where each kind of instance list goes in BuildDraws()'s bins.
+  struct BinLayout
+  {
+    int SideBins = 0; ///< sides ladder size
+    int Walls = 0;    ///< bins [0, Walls): walls per (rings, sides); then caps per sides
+    int Chunks = 0;   ///< whole chunks (2 entries each)
+    int ThinBase = 0; ///< thin runs per rung (2 entries each), ThinBins of them
+    int ThinBins = 0;
+    int ThinCaps = 0; ///< thin caps ((segment, kind) pairs)
+  };
+  BinLayout GetBinLayout() const;
+  /// BuildDraws(), step by step: classify the chunks' tubes and thin runs,
+  /// count the entries per bin, fill the instance list, make the draws.
+  void ClassifyChunks(const std::vector<std::uint32_t>& chunks);
+  std::vector<vtkIdType> CountInstances(
+    const std::vector<std::uint32_t>& chunks, const BinLayout& layout);
+  void FillInstances(const std::vector<std::uint32_t>& chunks, const BinLayout& layout,
+    const std::vector<vtkIdType>& offsets);
+  void AddDraws(const BinLayout& layout, const std::vector<vtkIdType>& counts,
+    const std::vector<vtkIdType>& offsets);
+  /// Whether a chunk is drawn in this view (its tube and itself not culled).
+  bool IsDrawn(std::uint32_t chunk) const;
+  /// A segment's ends: 1 when it starts its tube, 2 when it ends it.
+  int SegmentEnds(vtkIdType segment, std::uint32_t tube) const;
+  /// Of a thin chunk's segment with these ends, the caps turned to the eye (1 start, 2 end).
+  int ThinCapsToDraw(std::uint32_t tube, int ends) const;
   void ClassifyThin(std::uint32_t chunk);
   /// A tube's chunks in this view: frustum, length on screen, rings; its sides.
   void ClassifyTube(vtkIdType tube);
