@@ -402,11 +402,23 @@ void vtkSplineTubeVisibility::BeginFrame(
   const vtkIdType numInside = total;
   const vtkIdType numTemporal = counts[Buckets + 1];
   this->Order.resize(static_cast<size_t>(numInside));
+  // With occlusion, the screen tile of each chunk's rectangle centre in
+  // depth order too (read in order below, not gathered from the projections).
+  const size_t numTiles = std::min<size_t>(static_cast<size_t>(tilesX) * tilesY, 65536);
+  std::vector<std::uint16_t> tileOf(this->Occlusion ? static_cast<size_t>(numInside) : 0);
   for (vtkIdType i = 0; i < numCandidates; ++i)
   {
     if (key[i])
     {
-      this->Order[counts[key[i]]++] = static_cast<std::uint32_t>(i);
+      const vtkIdType position = counts[key[i]]++;
+      this->Order[position] = static_cast<std::uint32_t>(i);
+      if (this->Occlusion)
+      {
+        const Projected& pr = projected[i];
+        const size_t tile = static_cast<size_t>(((pr.Y0 + pr.Y1) / 2) >> TileShift) * tilesX +
+          (((pr.X0 + pr.X1) / 2) >> TileShift);
+        tileOf[position] = static_cast<std::uint16_t>(std::min(tile, numTiles - 1));
+      }
     }
   }
 
@@ -424,15 +436,12 @@ void vtkSplineTubeVisibility::BeginFrame(
   if (this->Occlusion)
   {
     constexpr int Layers = 17; // ranks [0, 64), [64, 128), ..., [2^21, inf)
-    std::vector<std::uint32_t> rank(static_cast<size_t>(tilesX) * tilesY, 0);
+    std::vector<std::uint32_t> rank(numTiles, 0);
     std::vector<unsigned char> layer(static_cast<size_t>(numInside - numTemporal), 0);
     std::vector<vtkIdType> layerCounts(Layers + 1, 0);
     for (vtkIdType i = numTemporal; i < numInside; ++i)
     {
-      const Projected& pr = projected[this->Order[i]];
-      const int tx = ((pr.X0 + pr.X1) / 2) >> TileShift;
-      const int ty = ((pr.Y0 + pr.Y1) / 2) >> TileShift;
-      const std::uint32_t r = rank[static_cast<size_t>(ty) * tilesX + tx]++;
+      const std::uint32_t r = rank[tileOf[i]]++;
       int l = 0;
       for (std::uint32_t limit = 64; l + 1 < Layers && r >= limit; limit *= 2)
       {
@@ -504,20 +513,71 @@ bool vtkSplineTubeVisibility::IsHidden(
   {
     return false;
   }
-  // The parts: hidden when each is (outside the frustum counts as hidden).
+  // The parts: hidden when each is (outside the frustum counts as hidden),
+  // tested in groups of PartGroup: first a sphere around the group's parts
+  // (it hides them all when it is hidden: their rectangles lie in its
+  // rectangle, their depths behind its depth), then each part.
   const float* sphere = this->Spheres + 4 * chunk;
   double slope[2] = { this->PixelSlope[0], this->PixelSlope[1] };
-  for (std::uint32_t p = this->PartFirsts[chunk]; p < this->PartFirsts[chunk + 1]; ++p)
+  const std::uint32_t first = this->PartFirsts[chunk];
+  const std::uint32_t last = this->PartFirsts[chunk + 1];
+  for (std::uint32_t g = first; g < last; g += PartGroup)
   {
-    float part[4];
-    DecodePart(sphere, this->Parts[p], part);
-    Projected pr;
-    if (this->Project(part, this->CurrentView, slope, pr) && !this->IsHidden(pr, pyramid))
+    const std::uint32_t count = std::min<std::uint32_t>(PartGroup, last - g);
+    float parts[PartGroup][4];
+    for (std::uint32_t k = 0; k < count; ++k)
     {
-      return false;
+      DecodePart(sphere, this->Parts[g + k], parts[k]);
+    }
+    Projected pr;
+    if (count > 1)
+    {
+      float around[4];
+      EnclosingSphere(parts, count, around);
+      if (!this->Project(around, this->CurrentView, slope, pr) || this->IsHidden(pr, pyramid))
+      {
+        continue;
+      }
+    }
+    for (std::uint32_t k = 0; k < count; ++k)
+    {
+      if (this->Project(parts[k], this->CurrentView, slope, pr) && !this->IsHidden(pr, pyramid))
+      {
+        return false;
+      }
     }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeVisibility::EnclosingSphere(
+  const float (*spheres)[4], std::uint32_t count, float out[4])
+{
+  double center[3] = { 0.0, 0.0, 0.0 };
+  for (std::uint32_t k = 0; k < count; ++k)
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      center[i] += spheres[k][i] / count;
+    }
+  }
+  double radius = 0.0;
+  for (std::uint32_t k = 0; k < count; ++k)
+  {
+    const double dx = spheres[k][0] - center[0];
+    const double dy = spheres[k][1] - center[1];
+    const double dz = spheres[k][2] - center[2];
+    radius = std::max(radius, std::sqrt(dx * dx + dy * dy + dz * dz) + spheres[k][3]);
+  }
+  for (int i = 0; i < 3; ++i)
+  {
+    out[i] = static_cast<float>(center[i]);
+  }
+  // Widened for the rounding of the centre to float (half an ulp per
+  // coordinate) and of the radius.
+  const double ulp = 6e-8 * (std::abs(center[0]) + std::abs(center[1]) + std::abs(center[2]));
+  out[3] = static_cast<float>((radius + ulp) * (1.0 + 1e-6));
 }
 
 //------------------------------------------------------------------------------

@@ -95,6 +95,12 @@ public:
   ///@}
 
   /**
+   * A sphere that contains `count` spheres (x, y, z, radius; float rounding
+   * included): the culling tests a group of parts with it first.
+   */
+  static void EnclosingSphere(const float (*spheres)[4], std::uint32_t count, float out[4]);
+
+  /**
    * Lines to leave out whatever the view: `mask[line]` 0 hides a line's
    * chunks (a streamline selection), nullptr (default) shows all. The array
    * must live until the next SetLineMask() or SetChunks().
@@ -154,6 +160,8 @@ private:
   /// Chunk `chunk` with its projection `projected`: hidden by its sphere or by all its parts.
   bool IsHidden(std::uint32_t chunk, const Projected& projected, const DepthPyramid& pyramid) const;
   bool IsHidden(const Projected& projected, const DepthPyramid& pyramid) const;
+  /// Parts tested together behind one enclosing sphere (IsHidden()).
+  static constexpr std::uint32_t PartGroup = 4;
 
   const float* Spheres = nullptr;
   const std::uint32_t* Lines = nullptr;

@@ -150,6 +150,60 @@ void TestParts(SplineVizTestStatus& status, std::mt19937& rng)
   SV_CHECK_MSG(status, bad == 0, bad << " decoded part spheres do not contain their parts");
 }
 
+void TestEnclosingSphere(SplineVizTestStatus& status, std::mt19937& rng)
+{
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  long bad = 0;
+  long loose = 0;
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    // Far from the origin (float rounding of the centre matters) and small.
+    const double offset = 1000.0 * u(rng);
+    const std::uint32_t count = 1 + trial % 4;
+    float spheres[4][4];
+    for (std::uint32_t k = 0; k < count; ++k)
+    {
+      for (int i = 0; i < 3; ++i)
+      {
+        spheres[k][i] = static_cast<float>(offset + 0.01 * u(rng));
+      }
+      spheres[k][3] = static_cast<float>(0.001 * std::abs(u(rng)));
+    }
+    float around[4];
+    vtkSplineTubeVisibility::EnclosingSphere(spheres, count, around);
+    for (std::uint32_t k = 0; k < count; ++k)
+    {
+      double d2 = 0.0;
+      for (int i = 0; i < 3; ++i)
+      {
+        const double d = static_cast<double>(spheres[k][i]) - around[i];
+        d2 += d * d;
+      }
+      bad += std::sqrt(d2) + spheres[k][3] > around[3] ? 1 : 0;
+    }
+    // Not a useless bound either: within 2x of the spheres' own extent (plus
+    // the padding for float rounding at this distance from the origin).
+    double extent = 0.0;
+    for (std::uint32_t k = 0; k < count; ++k)
+    {
+      extent = std::max(extent, static_cast<double>(spheres[k][3]));
+      for (std::uint32_t j = 0; j < count; ++j)
+      {
+        double d2 = 0.0;
+        for (int i = 0; i < 3; ++i)
+        {
+          const double d = static_cast<double>(spheres[k][i]) - spheres[j][i];
+          d2 += d * d;
+        }
+        extent = std::max(extent, std::sqrt(d2) + spheres[k][3] + spheres[j][3]);
+      }
+    }
+    loose += around[3] > 2.0 * extent + 1e-6 * (std::abs(offset) + 1.0) ? 1 : 0;
+  }
+  SV_CHECK_MSG(status, bad == 0, bad << " enclosing spheres do not contain their spheres");
+  SV_CHECK_MSG(status, loose == 0, loose << " enclosing spheres more than twice too large");
+}
+
 void TestPyramid(SplineVizTestStatus& status, std::mt19937& rng)
 {
   const int w = 97;
@@ -327,6 +381,7 @@ int TestSplineTubeVisibility(int, char*[])
   SplineVizTestStatus status;
   std::mt19937 rng(7);
   TestParts(status, rng);
+  TestEnclosingSphere(status, rng);
   TestPyramid(status, rng);
   for (bool parallel : { false, true })
   {
