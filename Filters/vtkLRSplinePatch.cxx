@@ -234,6 +234,29 @@ bool vtkLRSplinePatch::Validate(std::string* error) const
 bool vtkLRSplinePatch::ComputeSupports(
   std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& ids, std::string* error) const
 {
+  const vtkIdType ne = this->GetNumberOfElements();
+  vtkLRSplineElementLocator tree;
+  std::string locError;
+  if (!tree.Build(
+        this->ElementBoxes.data(), ne, vtkLRSplineElementLocator::KD_TREE, nullptr, &locError))
+  {
+    if (error)
+    {
+      *error = locError;
+    }
+    return false;
+  }
+  std::vector<std::vector<vtkIdType>> perFunction;
+  return this->CheckElementsTile(tree, error) &&
+    this->FindSupportElements(tree, perFunction, error) &&
+    this->InvertSupports(perFunction, offsets, ids, error) &&
+    this->CheckFileSupports(offsets, ids, error);
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplinePatch::CheckElementsTile(
+  const vtkLRSplineElementLocator& tree, std::string* error) const
+{
   auto fail = [error](const std::string& msg)
   {
     if (error)
@@ -242,16 +265,7 @@ bool vtkLRSplinePatch::ComputeSupports(
     }
     return false;
   };
-  const vtkIdType nb = this->GetNumberOfBasisFunctions();
   const vtkIdType ne = this->GetNumberOfElements();
-
-  vtkLRSplineElementLocator tree;
-  std::string locError;
-  if (!tree.Build(
-        this->ElementBoxes.data(), ne, vtkLRSplineElementLocator::KD_TREE, nullptr, &locError))
-  {
-    return fail(locError);
-  }
   double domain[6];
   this->GetDomain(domain);
 
@@ -317,8 +331,25 @@ bool vtkLRSplinePatch::ComputeSupports(
     return fail("the elements do not fill their bounding box (there are holes in the mesh)");
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplinePatch::FindSupportElements(const vtkLRSplineElementLocator& tree,
+  std::vector<std::vector<vtkIdType>>& perFunction, std::string* error) const
+{
+  auto fail = [error](const std::string& msg)
+  {
+    if (error)
+    {
+      *error = msg;
+    }
+    return false;
+  };
+  const vtkIdType nb = this->GetNumberOfBasisFunctions();
+  vtkSMPThreadLocal<std::vector<vtkIdType>> tlHits;
   // Elements in each basis function's support.
-  std::vector<std::vector<vtkIdType>> perFunction(nb);
+  perFunction.assign(nb, std::vector<vtkIdType>());
   std::atomic<vtkIdType> badFunction(-1);
   std::atomic<vtkIdType> badElement(-1);
   vtkSMPTools::For(0, nb,
@@ -381,6 +412,23 @@ bool vtkLRSplinePatch::ComputeSupports(
     return fail(msg);
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplinePatch::InvertSupports(const std::vector<std::vector<vtkIdType>>& perFunction,
+  std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& ids, std::string* error) const
+{
+  auto fail = [error](const std::string& msg)
+  {
+    if (error)
+    {
+      *error = msg;
+    }
+    return false;
+  };
+  const vtkIdType nb = this->GetNumberOfBasisFunctions();
+  const vtkIdType ne = this->GetNumberOfElements();
   // Invert to per-element lists (ascending function index).
   offsets.assign(ne + 1, 0);
   for (vtkIdType i = 0; i < nb; ++i)
@@ -412,6 +460,22 @@ bool vtkLRSplinePatch::ComputeSupports(
     }
   }
 
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplinePatch::CheckFileSupports(const std::vector<vtkIdType>& offsets,
+  const std::vector<vtkIdType>& ids, std::string* error) const
+{
+  auto fail = [error](const std::string& msg)
+  {
+    if (error)
+    {
+      *error = msg;
+    }
+    return false;
+  };
+  const vtkIdType ne = this->GetNumberOfElements();
   // The file's lists, when given, must say the same.
   if (!this->FileSupportOffsets.empty())
   {

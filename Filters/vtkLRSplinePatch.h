@@ -47,6 +47,7 @@
 #include <vector>
 
 class vtkLRSplineBezierVolume;
+class vtkLRSplineElementLocator;
 
 class SPLINEVIZ_EXPORT vtkLRSplinePatch
 {
@@ -191,6 +192,21 @@ public:
 
   /// Write in the LRSplines text format ("# LRSPLINE VOLUME" or "SURFACE" ...).
   void Write(std::ostream& os) const;
+
+private:
+  ///@{
+  /// ComputeSupports(), step by step: the elements tile the domain (no
+  /// overlap, no hole); the elements in each basis function's support (each
+  /// support a union of elements); those lists per element (every element
+  /// in some support); the file's lists, when given, say the same.
+  bool CheckElementsTile(const vtkLRSplineElementLocator& tree, std::string* error) const;
+  bool FindSupportElements(const vtkLRSplineElementLocator& tree,
+    std::vector<std::vector<vtkIdType>>& perFunction, std::string* error) const;
+  bool InvertSupports(const std::vector<std::vector<vtkIdType>>& perFunction,
+    std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& ids, std::string* error) const;
+  bool CheckFileSupports(const std::vector<vtkIdType>& offsets, const std::vector<vtkIdType>& ids,
+    std::string* error) const;
+  ///@}
 };
 
 #endif
