@@ -48,5 +48,6 @@ list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkSplineVizPieces.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizPolyLines.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizProgress.h"
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizError.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizSeeds.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizRandom.h")

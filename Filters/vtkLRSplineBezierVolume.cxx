@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineBezierVolume.h"
+#include "vtkSplineVizError.h"
 
 #include "vtkCellData.h"
 #include "vtkCellType.h"
@@ -18,6 +19,8 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+
+using vtkSplineVizError::Fail;
 
 //------------------------------------------------------------------------------
 template <typename Real>
@@ -482,17 +485,9 @@ void vtkLRSplineBezierVolume::EvaluateLocal(
 bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, const char* arrayName,
   std::string* error, std::vector<vtkIdType>* cellIds, std::string* usedArrayName)
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   if (!grid)
   {
-    return fail("no grid");
+    return Fail(error, "no grid");
   }
   vtkPointData* pd = grid->GetPointData();
   vtkDataArray* field = nullptr;
@@ -501,8 +496,8 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
     field = pd->GetArray(arrayName);
     if (!field)
     {
-      return fail(
-        std::string("the spline grid has no point-data array named \"") + arrayName + "\"");
+      return Fail(
+        error, std::string("the spline grid has no point-data array named \"") + arrayName + "\"");
     }
   }
   else
@@ -523,7 +518,7 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
     }
     if (!field)
     {
-      return fail("the spline grid has no point-data array to evaluate");
+      return Fail(error, "the spline grid has no point-data array to evaluate");
     }
   }
   if (usedArrayName)
@@ -533,7 +528,7 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
   const int nc = field->GetNumberOfComponents();
   if (nc < 1 || nc > MaxComponents)
   {
-    return fail("the field array has an unsupported number of components");
+    return Fail(error, "the field array has an unsupported number of components");
   }
   vtkCellData* cd = grid->GetCellData();
   vtkDataArray* degrees = cd->GetHigherOrderDegrees();
@@ -569,7 +564,7 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
       std::ostringstream msg;
       msg << "cell " << cell << " is not a VTK_BEZIER_HEXAHEDRON (volume) or, in a grid of them, a "
           << "VTK_BEZIER_QUADRILATERAL (surface)";
-      return fail(msg.str());
+      return Fail(error, msg.str());
     }
     grid->GetCellPoints(cell, pts);
     int deg[3] = { 0, 0, 0 };
@@ -594,7 +589,7 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
     {
       if (deg[d] < 1 || deg[d] > MaximumDegree)
       {
-        return fail("unsupported Bezier degree in the spline grid");
+        return Fail(error, "unsupported Bezier degree in the spline grid");
       }
     }
     if (!haveDegree)
@@ -604,12 +599,12 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
     }
     else if (deg[0] != this->Degree[0] || deg[1] != this->Degree[1] || deg[2] != this->Degree[2])
     {
-      return fail("the Bezier cells of one spline grid must all have the same degrees");
+      return Fail(error, "the Bezier cells of one spline grid must all have the same degrees");
     }
     const int per = (deg[0] + 1) * (deg[1] + 1) * (deg[2] + 1);
     if (pts->GetNumberOfIds() != per)
     {
-      return fail("a Bezier cell has a number of points that does not match its degrees");
+      return Fail(error, "a Bezier cell has a number of points that does not match its degrees");
     }
     double box[6];
     if (boxes)
@@ -645,7 +640,7 @@ bool vtkLRSplineBezierVolume::FromUnstructuredGrid(vtkUnstructuredGrid* grid, co
       {
         std::ostringstream msg;
         msg << "cell " << cell << " has an empty or invalid parameter box";
-        return fail(msg.str());
+        return Fail(error, msg.str());
       }
     }
     this->Boxes.insert(this->Boxes.end(), box, box + 6);

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineBuilder.h"
+#include "vtkSplineVizError.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <queue>
+
+using vtkSplineVizError::Fail;
 
 namespace
 {
@@ -26,14 +29,6 @@ std::string vtkLRSplineBuilder::Key(const double* knots) const
 bool vtkLRSplineBuilder::InitializeTensorProduct(
   const int degree[3], const std::vector<double> breaks[3], int dimension, std::string* error)
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   this->Patch = vtkLRSplinePatch();
   this->Alive.clear();
   this->Index.clear();
@@ -44,20 +39,20 @@ bool vtkLRSplineBuilder::InitializeTensorProduct(
   }
   if (dimension < 1 || dimension > 64)
   {
-    return fail("dimension must be 1 to 64");
+    return Fail(error, "dimension must be 1 to 64");
   }
   std::vector<double> knots[3];
   for (int d = 0; d < 3; ++d)
   {
     if (degree[d] < 0 || degree[d] > 15 || breaks[d].size() < 2)
     {
-      return fail("invalid degree or breakpoints");
+      return Fail(error, "invalid degree or breakpoints");
     }
     for (std::size_t k = 1; k < breaks[d].size(); ++k)
     {
       if (!(breaks[d][k] > breaks[d][k - 1]))
       {
-        return fail("breakpoints must increase");
+        return Fail(error, "breakpoints must increase");
       }
     }
     this->Patch.Order[d] = degree[d] + 1;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineElementLocator.h"
+#include "vtkSplineVizError.h"
 
 #include "vtkSMPTools.h"
 
@@ -7,6 +8,8 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+
+using vtkSplineVizError::Fail;
 
 namespace
 {
@@ -300,14 +303,6 @@ std::vector<float> vtkLRSplineElementLocator::GetNodeSplitsFloat() const
 bool vtkLRSplineElementLocator::Build(
   const double* boxes, vtkIdType n, int type, const int blocks[3], std::string* error)
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   this->Boxes.assign(boxes, boxes + 6 * n);
   this->Heads.clear();
   this->NodeWords.clear();
@@ -322,11 +317,11 @@ bool vtkLRSplineElementLocator::Build(
   this->Type = type;
   if (n < 1)
   {
-    return fail("no elements");
+    return Fail(error, "no elements");
   }
   if (n > static_cast<vtkIdType>(ElementMask) - 1)
   {
-    return fail("too many elements for the locator");
+    return Fail(error, "too many elements for the locator");
   }
   for (int d = 0; d < 3; ++d)
   {
@@ -340,7 +335,7 @@ bool vtkLRSplineElementLocator::Build(
     {
       if (!(b[d] < b[d + 3]) || !std::isfinite(b[d]) || !std::isfinite(b[d + 3]))
       {
-        return fail("element " + std::to_string(e) + " has an empty or invalid box");
+        return Fail(error, "element " + std::to_string(e) + " has an empty or invalid box");
       }
       this->Domain[d] = std::min(this->Domain[d], b[d]);
       this->Domain[d + 3] = std::max(this->Domain[d + 3], b[d + 3]);
@@ -349,7 +344,8 @@ bool vtkLRSplineElementLocator::Build(
 
   if (this->AllowOverlap && type != LINEAR && type != KD_TREE && type != KD_FOREST)
   {
-    return fail("overlapping element boxes need a linear search, a k-d tree or a k-d forest");
+    return Fail(
+      error, "overlapping element boxes need a linear search, a k-d tree or a k-d forest");
   }
   switch (type)
   {
@@ -368,7 +364,7 @@ bool vtkLRSplineElementLocator::Build(
       if (b[0] < 1 || b[1] < 1 || b[2] < 1 ||
         static_cast<double>(b[0]) * b[1] * b[2] > 1024.0 * 1024.0 * 1024.0)
       {
-        return fail("the number of forest blocks must be at least 1 and at most 2^30");
+        return Fail(error, "the number of forest blocks must be at least 1 and at most 2^30");
       }
       return this->BuildForest(b, error);
     }
@@ -377,8 +373,9 @@ bool vtkLRSplineElementLocator::Build(
       int levels[3];
       if (!ComputeDyadicLevels(boxes, n, this->Domain, levels))
       {
-        return fail("a lookup texture needs dyadic knots (every element boundary at a multiple "
-                    "of 2^-l of the domain), and these knots are not");
+        return Fail(error,
+          "a lookup texture needs dyadic knots (every element boundary at a multiple "
+          "of 2^-l of the domain), and these knots are not");
       }
       int size[3];
       double total = 1.0;
@@ -386,14 +383,14 @@ bool vtkLRSplineElementLocator::Build(
       {
         if (levels[d] > 11)
         {
-          return fail("the lookup texture would need more than 2048 texels per direction");
+          return Fail(error, "the lookup texture would need more than 2048 texels per direction");
         }
         size[d] = 1 << levels[d];
         total *= size[d];
       }
       if (total > 134217728.0)
       {
-        return fail("the lookup texture would need more than 2^27 texels");
+        return Fail(error, "the lookup texture would need more than 2^27 texels");
       }
       if (!this->BuildForest(size, error))
       {
@@ -402,14 +399,14 @@ bool vtkLRSplineElementLocator::Build(
       this->Type = TEXTURE;
       if (this->Stats.NumberOfLeafBlocks != this->Stats.NumberOfBlocks)
       {
-        return fail("the lookup texture has cells with more than one element");
+        return Fail(error, "the lookup texture has cells with more than one element");
       }
       return true;
     }
     case OCTREE:
       return this->BuildOctree(error);
     default:
-      return fail("unknown locator type " + std::to_string(type));
+      return Fail(error, "unknown locator type " + std::to_string(type));
   }
 }
 
@@ -606,20 +603,13 @@ bool vtkLRSplineElementLocator::BuildForest(const int blocks[3], std::string* er
 //------------------------------------------------------------------------------
 bool vtkLRSplineElementLocator::BuildOctree(std::string* error)
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   const vtkIdType n = this->GetNumberOfElements();
   int levels[3];
   if (!ComputeDyadicLevels(this->Boxes.data(), n, this->Domain, levels))
   {
-    return fail("an octree needs dyadic knots (every element boundary at a multiple of 2^-l "
-                "of the domain), and these knots are not");
+    return Fail(error,
+      "an octree needs dyadic knots (every element boundary at a multiple of 2^-l "
+      "of the domain), and these knots are not");
   }
   const int maxLevel = std::max(levels[0], std::max(levels[1], levels[2]));
   const std::size_t maxNodes = std::size_t(1) << 28;
@@ -659,7 +649,7 @@ bool vtkLRSplineElementLocator::BuildOctree(std::string* error)
     }
     if (task.Level >= maxLevel + 1 || this->OctreeNodes.size() + 8 > maxNodes)
     {
-      return fail(
+      return Fail(error,
         "the octree could not separate the elements (overlapping elements or too many levels)");
     }
     const Word base = static_cast<Word>(this->OctreeNodes.size());

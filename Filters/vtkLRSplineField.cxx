@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineField.h"
+#include "vtkSplineVizError.h"
 
 #include "vtkCharArray.h"
 #include "vtkCompositeDataIterator.h"
@@ -20,6 +21,8 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+
+using vtkSplineVizError::Fail;
 
 namespace
 {
@@ -56,14 +59,6 @@ int AutomaticBlocks(vtkIdType numElements)
 bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int locatorType,
   const int blocks[3], bool parameterSpace, std::string* error, double surfaceTolerance)
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   this->Patches.clear();
   this->NumberOfComponents = 0;
   this->ArrayName.clear();
@@ -72,8 +67,9 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
   CollectGrids(source, grids);
   if (grids.empty())
   {
-    return fail("the spline input has no non-empty vtkUnstructuredGrid (expected the output of "
-                "vtkLRSplineReader)");
+    return Fail(error,
+      "the spline input has no non-empty vtkUnstructuredGrid (expected the output of "
+      "vtkLRSplineReader)");
   }
   std::string name = arrayName ? arrayName : "";
   for (std::size_t g = 0; g < grids.size(); ++g)
@@ -88,7 +84,7 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     std::string msg, used;
     if (!volume.FromUnstructuredGrid(grid, name.c_str(), &msg, nullptr, &used))
     {
-      return fail("patch " + std::to_string(g) + ": " + msg);
+      return Fail(error, "patch " + std::to_string(g) + ": " + msg);
     }
     if (name.empty())
     {
@@ -100,7 +96,7 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     }
     else if (this->NumberOfComponents != volume.NumberOfComponents)
     {
-      return fail("the patches' field arrays have different numbers of components");
+      return Fail(error, "the patches' field arrays have different numbers of components");
     }
     // The physical placement: 6 values (scale xyz, offset xyz: per axis) or
     // 12 (a row-major 3x3 matrix A, offset xyz: x = A u + offset).
@@ -119,7 +115,7 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
       geometry->SetSurfaceTolerance(surfaceTolerance);
       if (!geometry->Build(grid, blocks, &msg))
       {
-        return fail("patch " + std::to_string(g) + " (geometry): " + msg);
+        return Fail(error, "patch " + std::to_string(g) + " (geometry): " + msg);
       }
       if (geometry->IsAffine())
       {
@@ -145,7 +141,8 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
           offset[d] = value(d + 3);
           if (!(matrix[4 * d] > 0) || !std::isfinite(matrix[4 * d]) || !std::isfinite(offset[d]))
           {
-            return fail("patch " + std::to_string(g) + " has an invalid LRPhysicalTransform");
+            return Fail(
+              error, "patch " + std::to_string(g) + " has an invalid LRPhysicalTransform");
           }
         }
       }
@@ -163,8 +160,9 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
       }
       else
       {
-        return fail("patch " + std::to_string(g) + " has an LRPhysicalTransform of " +
-          std::to_string(count) + " values (6: scale and offset, or 12: a 3x3 matrix and offset)");
+        return Fail(error,
+          "patch " + std::to_string(g) + " has an LRPhysicalTransform of " + std::to_string(count) +
+            " values (6: scale and offset, or 12: a 3x3 matrix and offset)");
       }
     }
     int autoBlocks[3];
@@ -176,14 +174,15 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     auto evaluator = std::make_unique<vtkLRSplineEvaluator>();
     if (!evaluator->Initialize(std::move(volume), locatorType, blocks ? blocks : autoBlocks, &msg))
     {
-      return fail("patch " + std::to_string(g) + ": " + msg);
+      return Fail(error, "patch " + std::to_string(g) + ": " + msg);
     }
     if (geometry)
     {
       if (!evaluator->SetGeometry(std::move(geometry)))
       {
-        return fail("patch " + std::to_string(g) + ": the geometry and the field \"" + name +
-          "\" have different elements");
+        return Fail(error,
+          "patch " + std::to_string(g) + ": the geometry and the field \"" + name +
+            "\" have different elements");
       }
     }
     else if (axisAligned)
@@ -193,14 +192,15 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     }
     else if (!evaluator->SetPhysicalAffine(matrix, offset))
     {
-      return fail(
+      return Fail(error,
         "patch " + std::to_string(g) + " has a singular or non-finite LRPhysicalTransform matrix");
     }
     this->Patches.push_back(std::move(evaluator));
   }
   if (this->Patches.empty())
   {
-    return fail("no patch of the spline input has a point-data array named \"" + name + "\"");
+    return Fail(
+      error, "no patch of the spline input has a point-data array named \"" + name + "\"");
   }
   this->ArrayName = name;
   // Do the patches' boxes overlap (then the hint must not skip the order rule)?

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineGeometryMap.h"
+#include "vtkSplineVizError.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -12,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+using vtkSplineVizError::Fail;
 
 namespace
 {
@@ -87,17 +90,9 @@ int AutomaticBlocks(vtkIdType n)
 bool vtkLRSplineGeometryMap::Build(
   vtkUnstructuredGrid* grid, const int blocks[3], std::string* error)
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   if (!grid || !grid->GetPoints() || grid->GetNumberOfCells() < 1)
   {
-    return fail("the geometry grid has no cells");
+    return Fail(error, "the geometry grid has no cells");
   }
   // The control points (homogeneous where rational) as a point-data array,
   // so that the Bezier blocks come out in the field's element order.
@@ -120,8 +115,9 @@ bool vtkLRSplineGeometryMap::Build(
     const double w = this->Rational ? weights->GetComponent(i, 0) : 1.0;
     if (!(w > 0) || !std::isfinite(w) || !std::isfinite(x[0] + x[1] + x[2]))
     {
-      return fail("control point " + std::to_string(i) +
-        " has a non-finite coordinate or a weight that is not positive");
+      return Fail(error,
+        "control point " + std::to_string(i) +
+          " has a non-finite coordinate or a weight that is not positive");
     }
     for (int d = 0; d < 3; ++d)
     {
@@ -141,7 +137,7 @@ bool vtkLRSplineGeometryMap::Build(
   std::string msg;
   if (!this->Volume.FromUnstructuredGrid(copy, coords->GetName(), &msg))
   {
-    return fail(msg);
+    return Fail(error, msg);
   }
   // Physical boxes of the control points, padded by a rounding tolerance.
   const vtkIdType ne = this->Volume.GetNumberOfElements();
@@ -175,7 +171,7 @@ bool vtkLRSplineGeometryMap::Build(
     (all[4] - all[1]) * (all[4] - all[1]) + (all[5] - all[2]) * (all[5] - all[2]));
   if (!(diagonal > 0))
   {
-    return fail("the geometry is a single point");
+    return Fail(error, "the geometry is a single point");
   }
   this->Size.resize(ne);
   const bool surface = this->Volume.ParametricDimension == 2;
@@ -211,7 +207,7 @@ bool vtkLRSplineGeometryMap::Build(
   this->Locator.SetAllowOverlap(true);
   if (!this->Locator.Build(boxes.data(), ne, vtkLRSplineElementLocator::KD_FOREST, blocks, &msg))
   {
-    return fail("the physical element search: " + msg);
+    return Fail(error, "the physical element search: " + msg);
   }
   this->Affine = false;
   if (!surface)

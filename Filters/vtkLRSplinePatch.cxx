@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplinePatch.h"
+#include "vtkSplineVizError.h"
 
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineElementLocator.h"
@@ -14,6 +15,8 @@
 #include <mutex>
 #include <ostream>
 #include <sstream>
+
+using vtkSplineVizError::Fail;
 
 namespace
 {
@@ -94,52 +97,48 @@ bool vtkLRSplinePatch::ApplyRationalMode(
 //------------------------------------------------------------------------------
 bool vtkLRSplinePatch::Validate(std::string* error) const
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   for (int d = 0; d < 3; ++d)
   {
     if (this->Order[d] < 1 || this->Order[d] > vtkLRSplineBezierVolume::MaximumDegree + 1)
     {
-      return fail("order " + std::to_string(this->Order[d]) + " in direction " + DirName(d) +
-        " is not supported (1 to " + std::to_string(vtkLRSplineBezierVolume::MaximumDegree + 1) +
-        ")");
+      return Fail(error,
+        "order " + std::to_string(this->Order[d]) + " in direction " + DirName(d) +
+          " is not supported (1 to " + std::to_string(vtkLRSplineBezierVolume::MaximumDegree + 1) +
+          ")");
     }
   }
   if (this->ParametricDimension != 2 && this->ParametricDimension != 3)
   {
-    return fail("the parametric dimension must be 2 (surface) or 3 (volume), not " +
-      std::to_string(this->ParametricDimension));
+    return Fail(error,
+      "the parametric dimension must be 2 (surface) or 3 (volume), not " +
+        std::to_string(this->ParametricDimension));
   }
   if (this->ParametricDimension == 2 && this->Order[2] != 1)
   {
-    return fail("a surface patch must have order 1 in its third (w) direction");
+    return Fail(error, "a surface patch must have order 1 in its third (w) direction");
   }
   if (this->Dimension < 1 || this->Dimension > 64)
   {
-    return fail("the number of coefficient components must be 1 to 64, not " +
-      std::to_string(this->Dimension));
+    return Fail(error,
+      "the number of coefficient components must be 1 to 64, not " +
+        std::to_string(this->Dimension));
   }
   if (this->RationalCoefficients && this->Dimension < 2)
   {
-    return fail("a rational patch needs at least 2 coefficient components (the last is the "
-                "weight)");
+    return Fail(error,
+      "a rational patch needs at least 2 coefficient components (the last is the "
+      "weight)");
   }
   const vtkIdType nb = this->GetNumberOfBasisFunctions();
   const vtkIdType ne = this->GetNumberOfElements();
   if (nb < 1 || ne < 1)
   {
-    return fail("a patch needs at least one basis function and one element");
+    return Fail(error, "a patch needs at least one basis function and one element");
   }
   if (static_cast<vtkIdType>(this->Knots.size()) != nb * this->GetKnotsPerFunction() ||
     static_cast<vtkIdType>(this->Coefficients.size()) != nb * this->Dimension)
   {
-    return fail("inconsistent basis function arrays");
+    return Fail(error, "inconsistent basis function arrays");
   }
   for (vtkIdType i = 0; i < nb; ++i)
   {
@@ -151,27 +150,31 @@ bool vtkLRSplinePatch::Validate(std::string* error) const
       {
         if (!std::isfinite(t[k]))
         {
-          return fail(Where(this->BasisLines, i) + "basis function " + std::to_string(i) +
-            ": knot vector " + DirName(d) + " has a value that is not a finite number");
+          return Fail(error,
+            Where(this->BasisLines, i) + "basis function " + std::to_string(i) + ": knot vector " +
+              DirName(d) + " has a value that is not a finite number");
         }
         if (k > 0 && t[k] < t[k - 1])
         {
-          return fail(Where(this->BasisLines, i) + "basis function " + std::to_string(i) +
-            ": knot vector " + DirName(d) + " is not non-decreasing");
+          return Fail(error,
+            Where(this->BasisLines, i) + "basis function " + std::to_string(i) + ": knot vector " +
+              DirName(d) + " is not non-decreasing");
         }
       }
       if (!(t[0] < t[n - 1]))
       {
-        return fail(Where(this->BasisLines, i) + "basis function " + std::to_string(i) +
-          ": knot vector " + DirName(d) + " has an empty support");
+        return Fail(error,
+          Where(this->BasisLines, i) + "basis function " + std::to_string(i) + ": knot vector " +
+            DirName(d) + " has an empty support");
       }
     }
     for (int c = 0; c < this->Dimension; ++c)
     {
       if (!std::isfinite(this->Coefficients[i * this->Dimension + c]))
       {
-        return fail(Where(this->BasisLines, i) + "basis function " + std::to_string(i) +
-          ": coefficient " + std::to_string(c) + " is not a finite number");
+        return Fail(error,
+          Where(this->BasisLines, i) + "basis function " + std::to_string(i) + ": coefficient " +
+            std::to_string(c) + " is not a finite number");
       }
     }
     if (this->RationalCoefficients)
@@ -179,16 +182,18 @@ bool vtkLRSplinePatch::Validate(std::string* error) const
       const double w = this->Coefficients[(i + 1) * this->Dimension - 1];
       if (!(w > 0))
       {
-        return fail(Where(this->BasisLines, i) + "basis function " + std::to_string(i) +
-          ": the rational weight (the last coefficient component) must be positive, it is " +
-          std::to_string(w));
+        return Fail(error,
+          Where(this->BasisLines, i) + "basis function " + std::to_string(i) +
+            ": the rational weight (the last coefficient component) must be positive, it is " +
+            std::to_string(w));
       }
     }
     const double g = this->Gamma[i];
     if (!std::isfinite(g) || !(g > 0))
     {
-      return fail(Where(this->BasisLines, i) + "basis function " + std::to_string(i) +
-        ": the scaling weight gamma must be a positive finite number");
+      return Fail(error,
+        Where(this->BasisLines, i) + "basis function " + std::to_string(i) +
+          ": the scaling weight gamma must be a positive finite number");
     }
   }
   for (vtkIdType e = 0; e < ne; ++e)
@@ -198,13 +203,15 @@ bool vtkLRSplinePatch::Validate(std::string* error) const
     {
       if (!std::isfinite(b[d]) || !std::isfinite(b[d + 3]))
       {
-        return fail(Where(this->ElementLines, e) + "element " + std::to_string(e) +
-          ": a corner is not a finite number");
+        return Fail(error,
+          Where(this->ElementLines, e) + "element " + std::to_string(e) +
+            ": a corner is not a finite number");
       }
       if (!(b[d] < b[d + 3]))
       {
-        return fail(Where(this->ElementLines, e) + "element " + std::to_string(e) +
-          ": the box is empty in direction " + DirName(d));
+        return Fail(error,
+          Where(this->ElementLines, e) + "element " + std::to_string(e) +
+            ": the box is empty in direction " + DirName(d));
       }
     }
   }
@@ -212,7 +219,7 @@ bool vtkLRSplinePatch::Validate(std::string* error) const
   {
     if (static_cast<vtkIdType>(this->FileSupportOffsets.size()) != ne + 1)
     {
-      return fail("inconsistent element support arrays");
+      return Fail(error, "inconsistent element support arrays");
     }
     for (vtkIdType e = 0; e < ne; ++e)
     {
@@ -220,9 +227,10 @@ bool vtkLRSplinePatch::Validate(std::string* error) const
       {
         if (this->FileSupport[k] < 0 || this->FileSupport[k] >= nb)
         {
-          return fail(Where(this->ElementLines, e) + "element " + std::to_string(e) +
-            ": basis function index " + std::to_string(this->FileSupport[k]) +
-            " is out of range (there are " + std::to_string(nb) + ")");
+          return Fail(error,
+            Where(this->ElementLines, e) + "element " + std::to_string(e) +
+              ": basis function index " + std::to_string(this->FileSupport[k]) +
+              " is out of range (there are " + std::to_string(nb) + ")");
         }
       }
     }
@@ -257,14 +265,6 @@ bool vtkLRSplinePatch::ComputeSupports(
 bool vtkLRSplinePatch::CheckElementsTile(
   const vtkLRSplineElementLocator& tree, std::string* error) const
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   const vtkIdType ne = this->GetNumberOfElements();
   double domain[6];
   this->GetDomain(domain);
@@ -316,7 +316,7 @@ bool vtkLRSplinePatch::CheckElementsTile(
     {
       msg += " another element";
     }
-    return fail(msg);
+    return Fail(error, msg);
   }
   double volume = 0.0;
   for (vtkIdType e = 0; e < ne; ++e)
@@ -328,7 +328,7 @@ bool vtkLRSplinePatch::CheckElementsTile(
     (domain[3] - domain[0]) * (domain[4] - domain[1]) * (domain[5] - domain[2]);
   if (!(std::abs(volume - domainVolume) <= 1e-9 * domainVolume))
   {
-    return fail("the elements do not fill their bounding box (there are holes in the mesh)");
+    return Fail(error, "the elements do not fill their bounding box (there are holes in the mesh)");
   }
 
   return true;
@@ -338,14 +338,6 @@ bool vtkLRSplinePatch::CheckElementsTile(
 bool vtkLRSplinePatch::FindSupportElements(const vtkLRSplineElementLocator& tree,
   std::vector<std::vector<vtkIdType>>& perFunction, std::string* error) const
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   const vtkIdType nb = this->GetNumberOfBasisFunctions();
   vtkSMPThreadLocal<std::vector<vtkIdType>> tlHits;
   // Elements in each basis function's support.
@@ -409,7 +401,7 @@ bool vtkLRSplinePatch::FindSupportElements(const vtkLRSplineElementLocator& tree
     {
       msg += "is not covered by elements (it reaches outside the mesh)";
     }
-    return fail(msg);
+    return Fail(error, msg);
   }
 
   return true;
@@ -419,14 +411,6 @@ bool vtkLRSplinePatch::FindSupportElements(const vtkLRSplineElementLocator& tree
 bool vtkLRSplinePatch::InvertSupports(const std::vector<std::vector<vtkIdType>>& perFunction,
   std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& ids, std::string* error) const
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   const vtkIdType nb = this->GetNumberOfBasisFunctions();
   const vtkIdType ne = this->GetNumberOfElements();
   // Invert to per-element lists (ascending function index).
@@ -455,8 +439,9 @@ bool vtkLRSplinePatch::InvertSupports(const std::vector<std::vector<vtkIdType>>&
   {
     if (offsets[e + 1] == offsets[e])
     {
-      return fail(Where(this->ElementLines, e) + "element " + std::to_string(e) +
-        " is not in the support of any basis function");
+      return Fail(error,
+        Where(this->ElementLines, e) + "element " + std::to_string(e) +
+          " is not in the support of any basis function");
     }
   }
 
@@ -467,14 +452,6 @@ bool vtkLRSplinePatch::InvertSupports(const std::vector<std::vector<vtkIdType>>&
 bool vtkLRSplinePatch::CheckFileSupports(const std::vector<vtkIdType>& offsets,
   const std::vector<vtkIdType>& ids, std::string* error) const
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   const vtkIdType ne = this->GetNumberOfElements();
   // The file's lists, when given, must say the same.
   if (!this->FileSupportOffsets.empty())
@@ -503,7 +480,7 @@ bool vtkLRSplinePatch::CheckFileSupports(const std::vector<vtkIdType>& offsets,
           }
           msg << " differs)";
         }
-        return fail(msg.str());
+        return Fail(error, msg.str());
       }
     }
   }
@@ -605,14 +582,6 @@ bool vtkLRSplinePatch::ExtractBezier(vtkLRSplineBezierVolume& out, std::string* 
   std::string* warning, vtkIdType first, vtkIdType last, const double* coefficients,
   int numberOfComponents) const
 {
-  auto fail = [error](const std::string& msg)
-  {
-    if (error)
-    {
-      *error = msg;
-    }
-    return false;
-  };
   if (!this->Validate(error))
   {
     return false;
@@ -632,7 +601,7 @@ bool vtkLRSplinePatch::ExtractBezier(vtkLRSplineBezierVolume& out, std::string* 
 
   if (coefficients && numberOfComponents < 1)
   {
-    return fail("the coefficients to extract have no components");
+    return Fail(error, "the coefficients to extract have no components");
   }
   const int nc = coefficients ? numberOfComponents : this->Dimension;
   const double* source = coefficients ? coefficients : this->Coefficients.data();
@@ -720,12 +689,13 @@ bool vtkLRSplinePatch::ExtractBezier(vtkLRSplineBezierVolume& out, std::string* 
   if (badElement.load() >= 0)
   {
     const vtkIdType e = badElement.load();
-    return fail(Where(this->ElementLines, e) + "element " + std::to_string(e) +
-      " is not inside one knot interval of basis function " + std::to_string(badFunction.load()) +
-      (static_cast<std::size_t>(badFunction.load()) < this->BasisLines.size()
-          ? " on line " + std::to_string(this->BasisLines[badFunction.load()])
-          : std::string()) +
-      " (the knot vectors do not match the mesh)");
+    return Fail(error,
+      Where(this->ElementLines, e) + "element " + std::to_string(e) +
+        " is not inside one knot interval of basis function " + std::to_string(badFunction.load()) +
+        (static_cast<std::size_t>(badFunction.load()) < this->BasisLines.size()
+            ? " on line " + std::to_string(this->BasisLines[badFunction.load()])
+            : std::string()) +
+        " (the knot vectors do not match the mesh)");
   }
   if (warning)
   {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkIFEMBlockBuilder.h"
+#include "vtkSplineVizError.h"
 
 #include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineBezierVolume.h"
@@ -25,14 +26,7 @@ namespace
 {
 using PointArray = vtkLRSplineBezierGrid::Options::PointArray;
 
-bool Fail(std::string* error, const std::string& message)
-{
-  if (error)
-  {
-    *error = message;
-  }
-  return false;
-}
+using vtkSplineVizError::Fail;
 
 std::string Trim(const std::string& s)
 {

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkIFEMFile.h"
+#include "vtkSplineVizError.h"
 
 #include "vtkSplineVizProgress.h"
 
@@ -74,14 +75,7 @@ bool IsNonNegativeInteger(const std::string& s, long long* value)
   return true;
 }
 
-bool Fail(std::string* error, const std::string& message)
-{
-  if (error)
-  {
-    *error = message;
-  }
-  return false;
-}
+using vtkSplineVizError::Fail;
 }
 
 //------------------------------------------------------------------------------
