@@ -179,7 +179,11 @@ void vtkStylizedLineFixUp::Build(vtkSplineTubeCore* core, const double shift[3])
   {
     this->TubeFirstBatch[t + 1] = this->TubeFirstBatch[t] + counts[t + 1];
   }
-  this->Batches.resize(static_cast<size_t>(this->TubeFirstBatch[numTubes]));
+  const size_t numBatches = static_cast<size_t>(this->TubeFirstBatch[numTubes]);
+  this->Batches.resize(numBatches);
+  this->Spheres.resize(4 * numBatches);
+  this->Tubes.resize(numBatches);
+  this->CullingWiden = -1.0; // radii and parts made by SetCullingChunks()
   vtkSMPTools::For(0, numTubes,
     [&](vtkIdType begin, vtkIdType end)
     {
@@ -190,9 +194,10 @@ void vtkStylizedLineFixUp::Build(vtkSplineTubeCore* core, const double shift[3])
           [&](vtkIdType start, vtkIdType stop, const vec3& axis, double minCos)
           {
             const std::vector<double>& P = load(t).P;
-            Batch& batch = this->Batches[b++];
+            Batch& batch = this->Batches[b];
+            float* center = &this->Spheres[4 * b];
+            this->Tubes[b++] = static_cast<std::uint32_t>(t);
             batch.FirstNode = static_cast<std::uint32_t>(core->GetTubeFirstNode(t) + start);
-            batch.Tube = static_cast<std::uint32_t>(t);
             batch.Segments = static_cast<int>(stop - start);
             for (int c = 0; c < 3; ++c)
             {
@@ -217,7 +222,7 @@ void vtkStylizedLineFixUp::Build(vtkSplineTubeCore* core, const double shift[3])
             double r2 = 0.0;
             for (int c = 0; c < 3; ++c)
             {
-              batch.Center[c] = static_cast<float>(0.5 * (lo[c] + hi[c]));
+              center[c] = static_cast<float>(0.5 * (lo[c] + hi[c]));
               r2 += 0.25 * (hi[c] - lo[c]) * (hi[c] - lo[c]);
             }
             batch.Radius = static_cast<float>(std::sqrt(r2) * (1.0 + 1e-6) + 1e-6 * maxRadius);
@@ -232,12 +237,14 @@ void vtkStylizedLineFixUp::Build(vtkSplineTubeCore* core, const double shift[3])
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizedLineFixUp::TestVertices(const Batch& batch, const View& view) const
+bool vtkStylizedLineFixUp::TestVertices(vtkIdType b, const View& view) const
 {
-  const vtkIdType k0 = batch.FirstNode - this->Core->GetTubeFirstNode(batch.Tube);
+  const Batch& batch = this->Batches[b];
+  const std::uint32_t tube = this->Tubes[b];
+  const vtkIdType k0 = batch.FirstNode - this->Core->GetTubeFirstNode(tube);
   double P[4 * (MaximumBatchSegments + 1)];
   vec3 M[MaximumBatchSegments + 1];
-  this->Nodes(batch.Tube, k0, k0 + batch.Segments, P, M);
+  this->Nodes(tube, k0, k0 + batch.Segments, P, M);
   for (int i = 0; i <= batch.Segments; ++i)
   {
     const vec3 p = TransformPoint(view.ModelView,
@@ -261,16 +268,17 @@ std::vector<unsigned char> vtkStylizedLineFixUp::ClassifyAllVertices(const View&
   std::vector<unsigned char> flags(this->Batches.size(), 0);
   for (size_t b = 0; b < this->Batches.size(); ++b)
   {
-    flags[b] = this->TestVertices(this->Batches[b], view) ? 1 : 0;
+    flags[b] = this->TestVertices(static_cast<vtkIdType>(b), view) ? 1 : 0;
   }
   return flags;
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizedLineFixUp::NeedsFixUp(const Batch& batch, const View& view, double thetaEps) const
+bool vtkStylizedLineFixUp::NeedsFixUp(vtkIdType b, const View& view, double thetaEps) const
 {
-  const vec3 c =
-    TransformPoint(view.ModelView, vec3(batch.Center[0], batch.Center[1], batch.Center[2]));
+  const Batch& batch = this->Batches[b];
+  const float* center = &this->Spheres[4 * b];
+  const vec3 c = TransformPoint(view.ModelView, vec3(center[0], center[1], center[2]));
   vec3 a = TransformVector(view.ModelView, vec3(batch.Axis[0], batch.Axis[1], batch.Axis[2]));
   const double al = glm::length(a);
   a = al > 0.0 ? a / al : vec3(1.0, 0.0, 0.0);
@@ -314,7 +322,7 @@ bool vtkStylizedLineFixUp::NeedsFixUp(const Batch& batch, const View& view, doub
     return false;
   }
   ++this->Candidates; // (atomic)
-  return this->TestVertices(batch, view);
+  return this->TestVertices(b, view);
 }
 
 //------------------------------------------------------------------------------
@@ -402,7 +410,7 @@ void vtkStylizedLineFixUp::BuildDraws(const std::vector<std::uint32_t>& batches,
           if (this->Stamps[b] != this->ViewStamp)
           {
             this->Stamps[b] = this->ViewStamp;
-            this->Flags[b] = this->NeedsFixUp(this->Batches[b], view, thetaEps) ? 1 : 0;
+            this->Flags[b] = this->NeedsFixUp(b, view, thetaEps) ? 1 : 0;
           }
         }
       });
@@ -417,13 +425,14 @@ void vtkStylizedLineFixUp::BuildDraws(const std::vector<std::uint32_t>& batches,
   for (std::uint32_t b : batches)
   {
     const Batch& batch = this->Batches[b];
-    if (b == this->TubeFirstBatch[batch.Tube])
+    const std::uint32_t tube = this->Tubes[b];
+    if (b == this->TubeFirstBatch[tube])
     {
-      caps.push_back(2 * batch.Tube);
+      caps.push_back(2 * tube);
     }
-    if (b + 1 == this->TubeFirstBatch[batch.Tube + 1])
+    if (b + 1 == this->TubeFirstBatch[tube + 1])
     {
-      caps.push_back(2 * batch.Tube + 1);
+      caps.push_back(2 * tube + 1);
     }
     if (!this->Enabled || this->Stamps[b] != this->ViewStamp || !this->Flags[b])
     {
@@ -444,20 +453,20 @@ void vtkStylizedLineFixUp::BuildDraws(const std::vector<std::uint32_t>& batches,
     }
     // Fixed up: its segments as cylinders; joints at its points but those
     // whose sphere would stick out of an end cap.
-    const vtkIdType tubeStart = core->GetTubeFirstNode(batch.Tube);
-    const vtkIdType last = core->GetTubeNumberOfNodes(batch.Tube) - 1;
-    const vec3 start = vec3(point(batch.Tube, 0));
-    const vec3 end = vec3(point(batch.Tube, last));
+    const vtkIdType tubeStart = core->GetTubeFirstNode(tube);
+    const vtkIdType last = core->GetTubeNumberOfNodes(tube) - 1;
+    const vec3 start = vec3(point(tube, 0));
+    const vec3 end = vec3(point(tube, last));
     const vtkIdType local = batch.FirstNode - tubeStart; // the batch's first node in its tube
     for (int s = 0; s < batch.Segments; ++s)
     {
       segments.push_back(batch.FirstNode + static_cast<std::uint32_t>(s));
       this->FixedScreenRadius =
-        std::max(this->FixedScreenRadius, this->ScreenRadius(batch.Tube, local + s));
+        std::max(this->FixedScreenRadius, this->ScreenRadius(tube, local + s));
     }
     for (vtkIdType i = batch.FirstNode; i <= batch.FirstNode + batch.Segments; ++i)
     {
-      const vec4 p = point(batch.Tube, i - tubeStart);
+      const vec4 p = point(tube, i - tubeStart);
       const double clearance = view.JointRadius * p.w;
       if (glm::distance(vec3(p), start) > clearance && glm::distance(vec3(p), end) > clearance)
       {
@@ -472,52 +481,54 @@ void vtkStylizedLineFixUp::BuildDraws(const std::vector<std::uint32_t>& batches,
 }
 
 //------------------------------------------------------------------------------
-void vtkStylizedLineFixUp::GetCullingChunks(double widen, std::vector<float>& spheres,
-  std::vector<std::uint32_t>& tubes, std::vector<std::uint32_t>& parts,
-  std::vector<std::uint32_t>& partFirsts) const
+void vtkStylizedLineFixUp::SetCullingChunks(double widen, vtkSplineTubeVisibility& visibility)
 {
   const size_t n = this->Batches.size();
-  spheres.resize(4 * n);
-  tubes.resize(n);
-  partFirsts.resize(n + 1);
-  partFirsts[0] = 0;
-  for (size_t b = 0; b < n; ++b)
+  if (widen != this->CullingWiden)
   {
-    partFirsts[b + 1] = partFirsts[b] + static_cast<std::uint32_t>(this->Batches[b].Segments);
-  }
-  parts.resize(partFirsts[n]);
-  vtkSMPTools::For(0, static_cast<vtkIdType>(n),
-    [&](vtkIdType begin, vtkIdType end)
+    this->CullingWiden = widen;
+    this->PartFirsts.resize(n + 1);
+    this->PartFirsts[0] = 0;
+    for (size_t b = 0; b < n; ++b)
     {
-      for (vtkIdType b = begin; b < end; ++b)
+      this->PartFirsts[b + 1] =
+        this->PartFirsts[b] + static_cast<std::uint32_t>(this->Batches[b].Segments);
+    }
+    this->Parts.resize(this->PartFirsts[n]);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(n),
+      [&](vtkIdType begin, vtkIdType end)
       {
-        const Batch& batch = this->Batches[b];
-        const double extent =
-          std::abs(batch.Center[0]) + std::abs(batch.Center[1]) + std::abs(batch.Center[2]);
-        std::copy(batch.Center, batch.Center + 3, &spheres[4 * b]);
-        spheres[4 * b + 3] = static_cast<float>(
-          (batch.Radius + widen * batch.MaxRadius) * (1.0 + 1e-6) + 1e-6 * extent);
-        tubes[b] = batch.Tube;
-        // The segments: straight, within `widen` radii of their points.
-        const vtkIdType k0 = batch.FirstNode - this->Core->GetTubeFirstNode(batch.Tube);
-        double P[4 * (MaximumBatchSegments + 1)];
-        this->Core->GetTubeNodes(batch.Tube, k0, batch.Segments + 1, P, nullptr);
-        for (int s = 0; s < batch.Segments; ++s)
+        for (vtkIdType b = begin; b < end; ++b)
         {
-          double part[4];
-          double half2 = 0.0;
-          for (int k = 0; k < 3; ++k)
+          const Batch& batch = this->Batches[b];
+          float* sphere = &this->Spheres[4 * b];
+          const double extent = std::abs(sphere[0]) + std::abs(sphere[1]) + std::abs(sphere[2]);
+          sphere[3] = static_cast<float>(
+            (batch.Radius + widen * batch.MaxRadius) * (1.0 + 1e-6) + 1e-6 * extent);
+          // The segments: straight, within `widen` radii of their points.
+          const std::uint32_t tube = this->Tubes[b];
+          const vtkIdType k0 = batch.FirstNode - this->Core->GetTubeFirstNode(tube);
+          double P[4 * (MaximumBatchSegments + 1)];
+          this->Core->GetTubeNodes(tube, k0, batch.Segments + 1, P, nullptr);
+          for (int s = 0; s < batch.Segments; ++s)
           {
-            const double a = P[4 * s + k] - this->Shift[k];
-            const double c = P[4 * s + 4 + k] - this->Shift[k];
-            part[k] = 0.5 * (a + c);
-            half2 += 0.25 * (c - a) * (c - a);
+            double part[4];
+            double half2 = 0.0;
+            for (int k = 0; k < 3; ++k)
+            {
+              const double a = P[4 * s + k] - this->Shift[k];
+              const double c = P[4 * s + 4 + k] - this->Shift[k];
+              part[k] = 0.5 * (a + c);
+              half2 += 0.25 * (c - a) * (c - a);
+            }
+            part[3] =
+              (std::sqrt(half2) + widen * std::max(P[4 * s + 3], P[4 * s + 7])) * (1.0 + 1e-6) +
+              1e-6 * extent;
+            this->Parts[this->PartFirsts[b] + s] = vtkSplineTubeVisibility::EncodePart(sphere, part);
           }
-          part[3] =
-            (std::sqrt(half2) + widen * std::max(P[4 * s + 3], P[4 * s + 7])) * (1.0 + 1e-6) +
-            1e-6 * extent;
-          parts[partFirsts[b] + s] = vtkSplineTubeVisibility::EncodePart(&spheres[4 * b], part);
         }
-      }
-    });
+      });
+  }
+  visibility.SetChunks(this->Spheres.data(), this->Tubes.data(), static_cast<vtkIdType>(n),
+    this->Parts.data(), this->PartFirsts.data());
 }

@@ -40,6 +40,7 @@
 #include <vector>
 
 class vtkSplineTubeCore;
+class vtkSplineTubeVisibility;
 
 class SPLINEVIZ_EXPORT vtkStylizedLineFixUp
 {
@@ -88,15 +89,15 @@ public:
     std::vector<std::uint32_t>& segments, std::vector<std::uint32_t>& joints);
 
   /**
-   * The batches as chunks of vtkSplineTubeVisibility: spheres (shifted model
-   * coordinates) that also hold `widen` times the largest line radius around
-   * the vertices, the polyline of each, and the spheres of their segments
-   * (parts, encoded by vtkSplineTubeVisibility::EncodePart; batch b's in
-   * [partFirsts[b], partFirsts[b + 1])).
+   * Hand the batches to `visibility` as its chunks (SetChunks()): spheres
+   * (shifted model coordinates) that also hold `widen` times the largest
+   * line radius around the vertices, the polyline of each, and the spheres
+   * of their segments (parts, vtkSplineTubeVisibility::EncodePart()). The
+   * arrays are the fix-up's own (the spheres' centers are the batches'), so
+   * they live until the next Build() or SetCullingChunks(); nothing is
+   * recomputed when `widen` is the last call's.
    */
-  void GetCullingChunks(double widen, std::vector<float>& spheres,
-    std::vector<std::uint32_t>& tubes, std::vector<std::uint32_t>& parts,
-    std::vector<std::uint32_t>& partFirsts) const;
+  void SetCullingChunks(double widen, vtkSplineTubeVisibility& visibility);
 
   /// The unit tangent of a line vertex (the bisector; the segment's direction at the ends).
   void GetTangent(vtkIdType node, double tangent[3]) const;
@@ -129,23 +130,24 @@ public:
   int GetBatchNumberOfSegments(vtkIdType b) const { return this->Batches[b].Segments; }
 
 private:
+  // Per batch; its bounding sphere and polyline are in Spheres and Tubes
+  // (the visibility's chunk arrays, struct of arrays so that they are one
+  // copy).
   struct Batch
   {
     std::uint32_t FirstNode;
-    std::uint32_t Tube;
     int Segments;
     float Axis[3];   ///< unit tangent of the first vertex
     float Cone;      ///< largest angle of a vertex tangent to Axis
-    float Center[3]; ///< bounding sphere of the vertices (shifted model coordinates)
-    float Radius;    ///< its radius (vertex positions only)
+    float Radius;    ///< radius of the sphere of the vertices (positions only)
     float MaxRadius; ///< largest line radius in the batch
   };
-  bool TestVertices(const Batch& batch, const View& view) const;
+  bool TestVertices(vtkIdType b, const View& view) const;
   /// Nodes [k0, k1] of a tube (positions and radii, 4 each; may be nullptr) and their tangents.
   void Nodes(vtkIdType tube, vtkIdType k0, vtkIdType k1, double* xyzr,
     vtkStylizedLineMath::vec3* tangents) const;
   /// The cone test, then the vertices of the candidates.
-  bool NeedsFixUp(const Batch& batch, const View& view, double thetaEps) const;
+  bool NeedsFixUp(vtkIdType b, const View& view, double thetaEps) const;
   /// Radius on screen (pixels) of point i in the current view (0 behind the eye).
   /// The radius in pixels of node k of tube t in the current view.
   double ScreenRadius(vtkIdType t, vtkIdType k) const;
@@ -153,10 +155,17 @@ private:
   vtkSplineTubeCore* Core = nullptr;
   double Shift[3] = { 0.0, 0.0, 0.0 };
   std::vector<Batch> Batches;
+  /// Per batch: center of the vertices' bounding sphere (shifted model coordinates) and
+  /// the culling radius (Radius + CullingWiden x MaxRadius, rounded up).
+  std::vector<float> Spheres;
+  std::vector<std::uint32_t> Tubes; ///< per batch: its polyline
+  std::vector<std::uint32_t> Parts; ///< per segment: its culling sphere, encoded
+  std::vector<std::uint32_t> PartFirsts; ///< batches + 1: first part of each
+  double CullingWiden = -1.0;            ///< what Spheres and Parts were made for
   std::vector<vtkIdType> TubeFirstBatch; ///< tubes + 1
   std::vector<unsigned char> Flags;
-  std::vector<std::uint32_t> Stamps; ///< the view a batch was classified in
-  std::uint32_t ViewStamp = 0;
+  std::vector<std::uint8_t> Stamps; ///< the view a batch was classified in (wraps)
+  std::uint8_t ViewStamp = 0;
   View CurrentView{};
   bool Enabled = false;
   mutable std::atomic<vtkIdType> Candidates{ 0 };

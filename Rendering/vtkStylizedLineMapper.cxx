@@ -83,11 +83,7 @@ struct vtkStylizedLineMapper::vtkInternals
   std::vector<int> StripFirsts;
   std::vector<int> StripCounts;
   std::vector<std::uint32_t> Caps;
-  std::vector<float> CullingSpheres; // the batches as chunks of the visibility
-  std::vector<std::uint32_t> CullingTubes;
-  std::vector<std::uint32_t> CullingParts;
-  std::vector<std::uint32_t> CullingPartFirsts;
-  double CullingWiden = -1.0; // the halo the spheres were made for
+  double CullingWiden = -1.0; // the halo the visibility's chunks were made for
   std::vector<std::uint32_t> FixedSegments;
   std::vector<std::uint32_t> Joints;
   std::vector<double> LastView;
@@ -419,11 +415,7 @@ void vtkStylizedLineMapper::SetVisibilityChunks()
   // and fix-up geometry, within a radius).
   vtkInternals& in = *this->Internals;
   in.CullingWiden = 1.0 + std::max(0.0, this->HaloWidth);
-  in.FixUp.GetCullingChunks(
-    in.CullingWiden, in.CullingSpheres, in.CullingTubes, in.CullingParts, in.CullingPartFirsts);
-  this->Visibility->SetChunks(in.CullingSpheres.data(), in.CullingTubes.data(),
-    static_cast<vtkIdType>(in.CullingTubes.size()), in.CullingParts.data(),
-    in.CullingPartFirsts.data());
+  in.FixUp.SetCullingChunks(in.CullingWiden, *this->Visibility);
 }
 
 //------------------------------------------------------------------------------
