@@ -452,17 +452,12 @@ void vtkStylizedLineMapper::UpdateDraws(vtkRenderer* ren, vtkActor* act)
 }
 
 //------------------------------------------------------------------------------
-bool vtkStylizedLineMapper::UpdateShadowMap(
-  vtkRenderer* ren, vtkActor* act, vtkOpenGLHelper& helper)
+void vtkStylizedLineMapper::GetShadowLightDirection(vtkRenderer* ren, double dir[3])
 {
-  vtkInternals& in = *this->Internals;
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  vtkShaderProgram* program = helper.Program;
-
-  // The light's direction (world): the first switched-on light that is not
-  // a headlight, else a virtual one above and right of the camera.
+  // The first switched-on light that is not a headlight, else a virtual one
+  // above and right of the camera.
+  dir[0] = dir[1] = dir[2] = 0.0;
   vtkCamera* camera = ren->GetActiveCamera();
-  double dir[3] = { 0.0, 0.0, 0.0 };
   bool found = false;
   vtkCollectionSimpleIterator it;
   vtkLightCollection* lights = ren->GetLights();
@@ -500,13 +495,18 @@ bool vtkStylizedLineMapper::UpdateShadowMap(
     }
   }
   vtkMath::Normalize(dir);
+}
 
+//------------------------------------------------------------------------------
+double vtkStylizedLineMapper::SetUpShadowCamera(vtkActor* act, const double dir[3])
+{
   // An orthographic light camera around the lines (world bounds).
+  vtkInternals& in = *this->Internals;
   double bounds[6];
   act->GetBounds(bounds);
   if (!vtkMath::AreBoundsInitialized(bounds))
   {
-    return false;
+    return 0.0;
   }
   double center[3];
   double radius = 0.0;
@@ -547,25 +547,19 @@ bool vtkStylizedLineMapper::UpdateShadowMap(
   }
   in.ShadowBias = static_cast<float>(
     (0.25 * this->Core->GetMaximumRadius() * actorScale + 2.0 * texel) / (2.0 * radius));
+  return radius;
+}
 
-  // Redraw the map only when what it shows changed.
-  std::vector<double> key(in.ShadowView, in.ShadowView + 16);
-  key.insert(key.end(),
-    { radius, static_cast<double>(this->ShadowMapResolution),
-      static_cast<double>(this->UploadTime.GetMTime()), static_cast<double>(act->GetMTime()),
-      static_cast<double>(this->GetLineMaskTime()) });
-  if (key == in.LastShadowKey && in.ShadowMap)
-  {
-    return true;
-  }
-
-  const int size = this->ShadowMapResolution;
+//------------------------------------------------------------------------------
+bool vtkStylizedLineMapper::PrepareShadowFramebuffer(vtkOpenGLRenderWindow* window, int size)
+{
+  // Leaves the framebuffer bound (its previous bindings saved) when it succeeds.
+  vtkInternals& in = *this->Internals;
   if (!in.ShadowFramebuffer)
   {
     in.ShadowFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
     in.ShadowFramebuffer->SetContext(window);
   }
-  vtkOpenGLState* state = window->GetState();
   in.ShadowFramebuffer->SaveCurrentBindingsAndBuffers();
   in.ShadowFramebuffer->Bind();
   if (!in.ShadowMap || in.ShadowSize != size)
@@ -604,6 +598,109 @@ bool vtkStylizedLineMapper::UpdateShadowMap(
     in.ShadowFramebuffer->RestorePreviousBindingsAndBuffers();
     return false;
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkStylizedLineMapper::DrawShadowCasters(
+  vtkOpenGLRenderWindow* window, vtkActor* act, vtkShaderProgram* program)
+{
+  // The lines seen from the light: their quads extrude toward it.
+  vtkInternals& in = *this->Internals;
+  vtkNew<vtkMatrix4x4> view;
+  view->DeepCopy(in.ShadowView);
+  float modelView[16];
+  float radiusScale = 1.0f;
+  this->ComputeTubeMatrices(view, act, modelView, nullptr, radiusScale);
+  float clip[16];
+  for (int r = 0; r < 4; ++r)
+  {
+    for (int c = 0; c < 4; ++c)
+    {
+      clip[4 * c + r] = static_cast<float>(in.ShadowProjection[4 * r + c]);
+    }
+  }
+  program->SetUniformMatrix4x4("tubeMCVC", modelView);
+  program->SetUniformf("tubeRadiusScale", radiusScale);
+  program->SetUniformMatrix4x4("VCDCMatrix", clip);
+  program->SetUniformi("cameraParallel", 1);
+  program->SetUniformi("lineShadowPass", 1);
+  program->SetUniformf("lineWiden", 1.0f);
+  program->SetUniformi("lineHaloPass", 0);
+  program->SetUniformi("lineMode", STRIPS);
+  // Only the lines drawn cast shadows (see VisibilityArray).
+  const unsigned char* mask = this->GetLineMask();
+  std::vector<int> firsts;
+  std::vector<int> counts;
+  std::vector<std::uint32_t> caps;
+  if (mask)
+  {
+    for (size_t t = 0; t < in.WholeFirsts.size(); ++t)
+    {
+      if (mask[t])
+      {
+        firsts.push_back(in.WholeFirsts[t]);
+        counts.push_back(in.WholeCounts[t]);
+        caps.push_back(static_cast<std::uint32_t>(2 * t));
+        caps.push_back(static_cast<std::uint32_t>(2 * t + 1));
+      }
+    }
+  }
+  const std::vector<int>& drawFirsts = mask ? firsts : in.WholeFirsts;
+  const std::vector<int>& drawCounts = mask ? counts : in.WholeCounts;
+  if (!drawFirsts.empty())
+  {
+    glMultiDrawArrays(GL_TRIANGLE_STRIP, drawFirsts.data(), drawCounts.data(),
+      static_cast<GLsizei>(drawFirsts.size()));
+  }
+  const bool capList = mask && !caps.empty() &&
+    in.CapsBuffer.Upload(window, caps.data(), caps.size(), 1, VTK_TYPE_UINT32, GL_R32UI);
+  if (capList)
+  {
+    in.CapsBuffer.Activate(program, "lineCaps");
+  }
+  if (this->Capping && (!mask || capList))
+  {
+    in.Meshes->Bind();
+    program->SetUniformi("lineMode", CAPS);
+    program->SetUniformi("lineCapList", capList ? 1 : 0);
+    glDrawElementsInstanced(GL_TRIANGLES, 3 * in.MeshSides, GL_UNSIGNED_SHORT,
+      reinterpret_cast<const void*>(6 * sizeof(unsigned short) * in.MeshSides),
+      static_cast<GLsizei>(capList ? caps.size() : 2 * this->Core->GetNumberOfTubes()));
+    in.Meshes->Release();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkStylizedLineMapper::UpdateShadowMap(
+  vtkRenderer* ren, vtkActor* act, vtkOpenGLHelper& helper)
+{
+  vtkInternals& in = *this->Internals;
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
+  vtkShaderProgram* program = helper.Program;
+  double dir[3];
+  this->GetShadowLightDirection(ren, dir);
+  const double radius = this->SetUpShadowCamera(act, dir);
+  if (radius <= 0.0)
+  {
+    return false;
+  }
+  // Redraw the map only when what it shows changed.
+  std::vector<double> key(in.ShadowView, in.ShadowView + 16);
+  key.insert(key.end(),
+    { radius, static_cast<double>(this->ShadowMapResolution),
+      static_cast<double>(this->UploadTime.GetMTime()), static_cast<double>(act->GetMTime()),
+      static_cast<double>(this->GetLineMaskTime()) });
+  if (key == in.LastShadowKey && in.ShadowMap)
+  {
+    return true;
+  }
+
+  const int size = this->ShadowMapResolution;
+  if (!this->PrepareShadowFramebuffer(window, size))
+  {
+    return false;
+  }
   // The program's shadow sampler must not see the map being drawn: a
   // 1 x 1 stand-in of the same kind meanwhile.
   if (!in.ShadowDummy)
@@ -616,6 +713,7 @@ bool vtkStylizedLineMapper::UpdateShadowMap(
   in.ShadowDummy->Activate();
   program->SetUniformi("lineShadowMap", in.ShadowDummy->GetTextureUnit());
   {
+    vtkOpenGLState* state = window->GetState();
     vtkOpenGLState::ScopedglViewport viewport(state);
     vtkOpenGLState::ScopedglScissor scissor(state);
     vtkOpenGLState::ScopedglColorMask colorMask(state);
@@ -629,67 +727,7 @@ bool vtkStylizedLineMapper::UpdateShadowMap(
     state->vtkglClearDepth(1.0);
     state->vtkglClear(GL_DEPTH_BUFFER_BIT);
 
-    // The lines seen from the light: their quads extrude toward it.
-    float modelView[16];
-    float radiusScale = 1.0f;
-    this->ComputeTubeMatrices(view, act, modelView, nullptr, radiusScale);
-    float clip[16];
-    for (int r = 0; r < 4; ++r)
-    {
-      for (int c = 0; c < 4; ++c)
-      {
-        clip[4 * c + r] = static_cast<float>(in.ShadowProjection[4 * r + c]);
-      }
-    }
-    program->SetUniformMatrix4x4("tubeMCVC", modelView);
-    program->SetUniformf("tubeRadiusScale", radiusScale);
-    program->SetUniformMatrix4x4("VCDCMatrix", clip);
-    program->SetUniformi("cameraParallel", 1);
-    program->SetUniformi("lineShadowPass", 1);
-    program->SetUniformf("lineWiden", 1.0f);
-    program->SetUniformi("lineHaloPass", 0);
-    program->SetUniformi("lineMode", STRIPS);
-    // Only the lines drawn cast shadows (see VisibilityArray).
-    const unsigned char* mask = this->GetLineMask();
-    std::vector<int> firsts;
-    std::vector<int> counts;
-    std::vector<std::uint32_t> caps;
-    if (mask)
-    {
-      for (size_t t = 0; t < in.WholeFirsts.size(); ++t)
-      {
-        if (mask[t])
-        {
-          firsts.push_back(in.WholeFirsts[t]);
-          counts.push_back(in.WholeCounts[t]);
-          caps.push_back(static_cast<std::uint32_t>(2 * t));
-          caps.push_back(static_cast<std::uint32_t>(2 * t + 1));
-        }
-      }
-    }
-    const std::vector<int>& drawFirsts = mask ? firsts : in.WholeFirsts;
-    const std::vector<int>& drawCounts = mask ? counts : in.WholeCounts;
-    if (!drawFirsts.empty())
-    {
-      glMultiDrawArrays(GL_TRIANGLE_STRIP, drawFirsts.data(), drawCounts.data(),
-        static_cast<GLsizei>(drawFirsts.size()));
-    }
-    const bool capList = mask && !caps.empty() &&
-      in.CapsBuffer.Upload(window, caps.data(), caps.size(), 1, VTK_TYPE_UINT32, GL_R32UI);
-    if (capList)
-    {
-      in.CapsBuffer.Activate(program, "lineCaps");
-    }
-    if (this->Capping && (!mask || capList))
-    {
-      in.Meshes->Bind();
-      program->SetUniformi("lineMode", CAPS);
-      program->SetUniformi("lineCapList", capList ? 1 : 0);
-      glDrawElementsInstanced(GL_TRIANGLES, 3 * in.MeshSides, GL_UNSIGNED_SHORT,
-        reinterpret_cast<const void*>(6 * sizeof(unsigned short) * in.MeshSides),
-        static_cast<GLsizei>(capList ? caps.size() : 2 * this->Core->GetNumberOfTubes()));
-      in.Meshes->Release();
-    }
+    this->DrawShadowCasters(window, act, program);
   }
   in.ShadowFramebuffer->RestorePreviousBindingsAndBuffers();
   in.ShadowDummy->Deactivate();

@@ -412,6 +412,15 @@ private:
   bool BuildMeshes();
   /// The shadow map for this frame (when Shadows is on); false without one.
   bool UpdateShadowMap(vtkRenderer* ren, vtkActor* act, vtkOpenGLHelper& helper);
+  /// The light's direction (world, unit) the shadows are cast along.
+  void GetShadowLightDirection(vtkRenderer* ren, double dir[3]);
+  /// The orthographic light camera around the actor's bounds (ShadowView,
+  /// ShadowProjection, ShadowBias); its half size, 0 without bounds.
+  double SetUpShadowCamera(vtkActor* act, const double dir[3]);
+  /// The depth map (size^2) and its framebuffer, bound; false (and unbound) if unusable.
+  bool PrepareShadowFramebuffer(vtkOpenGLRenderWindow* window, int size);
+  /// Draw the lines (the visible ones, their caps) from the light into the bound map.
+  void DrawShadowCasters(vtkOpenGLRenderWindow* window, vtkActor* act, vtkShaderProgram* program);
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
