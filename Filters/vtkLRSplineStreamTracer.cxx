@@ -670,6 +670,99 @@ vtkIdType TraceAll(const vtkLRSplineField& field, const Params& P, const std::ve
   return total;
 }
 
+// The output: the lines of 2 or more points in seed order, forward before
+// backward, with their point arrays (the field's vectors, speed, time,
+// vorticity), seed ids and termination reasons per line and per seed.
+void AssembleOutput(const std::vector<Line>& lines, vtkIdType numSeeds, const std::string& arrayName,
+  bool vorticityOn, vtkPolyData* output)
+{
+  vtkIdType numPoints = 0, numLines = 0;
+  for (const Line& l : lines)
+  {
+    if (l.Time.size() >= 2)
+    {
+      numPoints += static_cast<vtkIdType>(l.Time.size());
+      ++numLines;
+    }
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numPoints);
+  vtkNew<vtkDoubleArray> velocity, speed, time, vorticity;
+  velocity->SetName(arrayName.c_str());
+  velocity->SetNumberOfComponents(3);
+  velocity->SetNumberOfTuples(numPoints);
+  speed->SetName("Speed");
+  speed->SetNumberOfTuples(numPoints);
+  time->SetName("IntegrationTime");
+  time->SetNumberOfTuples(numPoints);
+  vorticity->SetName("Vorticity");
+  vorticity->SetNumberOfComponents(3);
+  if (vorticityOn)
+  {
+    vorticity->SetNumberOfTuples(numPoints);
+  }
+  vtkNew<vtkIntArray> seedIds, reasons;
+  seedIds->SetName("SeedIds");
+  seedIds->SetNumberOfTuples(numLines);
+  reasons->SetName("ReasonForTermination");
+  reasons->SetNumberOfTuples(numLines);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(numLines + 1);
+  connectivity->SetNumberOfTuples(numPoints);
+  vtkNew<vtkIntArray> seedReasons;
+  seedReasons->SetName("SeedReasonForTermination");
+  seedReasons->SetNumberOfComponents(2);
+  seedReasons->SetNumberOfTuples(numSeeds);
+  vtkIdType p = 0, c = 0;
+  for (vtkIdType s = 0; s < numSeeds; ++s)
+  {
+    for (int dir = 0; dir < 2; ++dir)
+    {
+      const Line& l = lines[2 * s + dir];
+      seedReasons->SetTypedComponent(s, dir, l.Reason);
+      if (l.Time.size() < 2)
+      {
+        continue;
+      }
+      offsets->SetValue(c, p);
+      seedIds->SetValue(c, static_cast<int>(s));
+      reasons->SetValue(c, l.Reason);
+      for (std::size_t i = 0; i < l.Time.size(); ++i, ++p)
+      {
+        points->SetPoint(p, l.Points.data() + 3 * i);
+        velocity->SetTypedTuple(p, l.Velocity.data() + 3 * i);
+        speed->SetValue(p, l.Speed[i]);
+        time->SetValue(p, l.Time[i]);
+        if (vorticityOn)
+        {
+          vorticity->SetTypedTuple(p, l.Vorticity.data() + 3 * i);
+        }
+        connectivity->SetValue(p, p);
+      }
+      ++c;
+    }
+  }
+  offsets->SetValue(numLines, numPoints);
+  vtkNew<vtkCellArray> cells;
+  cells->SetData(offsets, connectivity);
+  output->SetPoints(points);
+  output->SetLines(cells);
+  vtkPointData* pd = output->GetPointData();
+  pd->AddArray(velocity);
+  pd->SetActiveVectors(velocity->GetName());
+  pd->AddArray(speed);
+  pd->SetActiveScalars("Speed");
+  pd->AddArray(time);
+  if (vorticityOn)
+  {
+    pd->AddArray(vorticity);
+  }
+  output->GetCellData()->AddArray(seedIds);
+  output->GetCellData()->AddArray(reasons);
+  output->GetFieldData()->AddArray(seedReasons);
+}
+
 }
 
 //------------------------------------------------------------------------------
@@ -753,6 +846,37 @@ int vtkLRSplineStreamTracer::RequestUpdateExtent(
 }
 
 //------------------------------------------------------------------------------
+bool vtkLRSplineStreamTracer::CheckSettings()
+{
+  if (!(this->IntegrationStep > 0) || !std::isfinite(this->IntegrationStep))
+  {
+    vtkErrorMacro(<< "IntegrationStep must be a positive number");
+    return false;
+  }
+  if (this->StepMode == ADAPTIVE && !IsEmbedded(this->IntegratorType))
+  {
+    vtkErrorMacro(<< "the ADAPTIVE step mode needs an embedded integrator (Heun-Euler, "
+                     "Bogacki-Shampine or RKF45), not "
+                  << GetIntegratorName(this->IntegratorType));
+    return false;
+  }
+  if (this->StepMode == ADAPTIVE &&
+    (!(this->MaximumError > 0) || !(this->MinimumIntegrationStep > 0) ||
+      !(this->MaximumIntegrationStep >= this->MinimumIntegrationStep)))
+  {
+    vtkErrorMacro(<< "the ADAPTIVE step mode needs MaximumError > 0 and 0 < "
+                     "MinimumIntegrationStep <= MaximumIntegrationStep");
+    return false;
+  }
+  if (this->MaximumNumberOfSteps < 0)
+  {
+    vtkErrorMacro(<< "MaximumNumberOfSteps must not be negative");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkLRSplineStreamTracer::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -773,30 +897,8 @@ int vtkLRSplineStreamTracer::RequestData(
                      "port (port 1)");
     return 0;
   }
-  // Settings.
-  if (!(this->IntegrationStep > 0) || !std::isfinite(this->IntegrationStep))
+  if (!this->CheckSettings())
   {
-    vtkErrorMacro(<< "IntegrationStep must be a positive number");
-    return 0;
-  }
-  if (this->StepMode == ADAPTIVE && !IsEmbedded(this->IntegratorType))
-  {
-    vtkErrorMacro(<< "the ADAPTIVE step mode needs an embedded integrator (Heun-Euler, "
-                     "Bogacki-Shampine or RKF45), not "
-                  << GetIntegratorName(this->IntegratorType));
-    return 0;
-  }
-  if (this->StepMode == ADAPTIVE &&
-    (!(this->MaximumError > 0) || !(this->MinimumIntegrationStep > 0) ||
-      !(this->MaximumIntegrationStep >= this->MinimumIntegrationStep)))
-  {
-    vtkErrorMacro(<< "the ADAPTIVE step mode needs MaximumError > 0 and 0 < "
-                     "MinimumIntegrationStep <= MaximumIntegrationStep");
-    return 0;
-  }
-  if (this->MaximumNumberOfSteps < 0)
-  {
-    vtkErrorMacro(<< "MaximumNumberOfSteps must not be negative");
     return 0;
   }
   std::string error;
@@ -895,92 +997,7 @@ int vtkLRSplineStreamTracer::RequestData(
     return 0;
   }
 
-  // Assemble in seed order, forward before backward.
-  vtkIdType numPoints = 0, numLines = 0;
-  for (const Line& l : lines)
-  {
-    if (l.Time.size() >= 2)
-    {
-      numPoints += static_cast<vtkIdType>(l.Time.size());
-      ++numLines;
-    }
-  }
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(numPoints);
-  vtkNew<vtkDoubleArray> velocity, speed, time, vorticity;
-  velocity->SetName(this->Field->GetArrayName().c_str());
-  velocity->SetNumberOfComponents(3);
-  velocity->SetNumberOfTuples(numPoints);
-  speed->SetName("Speed");
-  speed->SetNumberOfTuples(numPoints);
-  time->SetName("IntegrationTime");
-  time->SetNumberOfTuples(numPoints);
-  vorticity->SetName("Vorticity");
-  vorticity->SetNumberOfComponents(3);
-  if (this->ComputeVorticity)
-  {
-    vorticity->SetNumberOfTuples(numPoints);
-  }
-  vtkNew<vtkIntArray> seedIds, reasons;
-  seedIds->SetName("SeedIds");
-  seedIds->SetNumberOfTuples(numLines);
-  reasons->SetName("ReasonForTermination");
-  reasons->SetNumberOfTuples(numLines);
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(numLines + 1);
-  connectivity->SetNumberOfTuples(numPoints);
-  vtkNew<vtkIntArray> seedReasons;
-  seedReasons->SetName("SeedReasonForTermination");
-  seedReasons->SetNumberOfComponents(2);
-  seedReasons->SetNumberOfTuples(numSeeds);
-  vtkIdType p = 0, c = 0;
-  for (vtkIdType s = 0; s < numSeeds; ++s)
-  {
-    for (int dir = 0; dir < 2; ++dir)
-    {
-      const Line& l = lines[2 * s + dir];
-      seedReasons->SetTypedComponent(s, dir, l.Reason);
-      if (l.Time.size() < 2)
-      {
-        continue;
-      }
-      offsets->SetValue(c, p);
-      seedIds->SetValue(c, static_cast<int>(s));
-      reasons->SetValue(c, l.Reason);
-      for (std::size_t i = 0; i < l.Time.size(); ++i, ++p)
-      {
-        points->SetPoint(p, l.Points.data() + 3 * i);
-        velocity->SetTypedTuple(p, l.Velocity.data() + 3 * i);
-        speed->SetValue(p, l.Speed[i]);
-        time->SetValue(p, l.Time[i]);
-        if (this->ComputeVorticity)
-        {
-          vorticity->SetTypedTuple(p, l.Vorticity.data() + 3 * i);
-        }
-        connectivity->SetValue(p, p);
-      }
-      ++c;
-    }
-  }
-  offsets->SetValue(numLines, numPoints);
-  vtkNew<vtkCellArray> cells;
-  cells->SetData(offsets, connectivity);
-  output->SetPoints(points);
-  output->SetLines(cells);
-  vtkPointData* pd = output->GetPointData();
-  pd->AddArray(velocity);
-  pd->SetActiveVectors(velocity->GetName());
-  pd->AddArray(speed);
-  pd->SetActiveScalars("Speed");
-  pd->AddArray(time);
-  if (this->ComputeVorticity)
-  {
-    pd->AddArray(vorticity);
-  }
-  output->GetCellData()->AddArray(seedIds);
-  output->GetCellData()->AddArray(reasons);
-  output->GetFieldData()->AddArray(seedReasons);
+  AssembleOutput(lines, numSeeds, this->Field->GetArrayName(), this->ComputeVorticity != 0, output);
   return 1;
 }
 

@@ -349,6 +349,9 @@ private:
   vtkLRSplineStreamTracer(const vtkLRSplineStreamTracer&) = delete;
   void operator=(const vtkLRSplineStreamTracer&) = delete;
 
+  /// The integration settings are usable (else an error, false).
+  bool CheckSettings();
+
   std::unique_ptr<vtkLRSplineField> Field;
   std::string FieldKey;
 };
