@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkTensorLineTracer.h"
 
+#include "vtkSplineVizError.h"
 #include "vtkSplineVizProgress.h"
 #include "vtkSplineVizSeeds.h"
 #include "vtkSplineVizTensorMath.h"
@@ -797,6 +798,284 @@ struct Output
   }
 };
 
+
+// The point tensors of every block in canonical order, flags for the
+// non-finite (and, for the log-Euclidean interpolation, indefinite) ones, the
+// mask values; counts the invalid and indefinite tensors and returns the
+// largest eigenvalue over the definite ones.
+double ReadPointTensors(Field& field, const std::vector<vtkDataSet*>& dataSets,
+  const std::vector<vtkDataArray*>& tensorArrays, const std::vector<vtkDataArray*>& maskArrays,
+  const std::vector<int>& layouts, vtkIdType& numInvalid, vtkIdType& numIndefinite)
+{
+  const bool useMask = field.HasMask;
+  std::atomic<vtkIdType> invalid(0), indefinite(0);
+  double globalMax = 0.0;
+  vtkSMPThreadLocal<double> localMax(0.0);
+  for (std::size_t b = 0; b < dataSets.size(); ++b)
+  {
+    Block& block = field.Blocks[b];
+    vtkDataSet* ds = dataSets[b];
+    const vtkIdType n = ds->GetNumberOfPoints();
+    block.Data = ds;
+    block.Tensors.resize(6 * n);
+    block.Flags.assign(n, POINT_OK);
+    if (useMask)
+    {
+      block.Mask.resize(n);
+    }
+    vtkDataArray* tensors = tensorArrays[b];
+    vtkDataArray* mask = maskArrays[b];
+    const int layout = layouts[b];
+    const int policy = field.SignPolicy;
+    const bool logEuclidean = field.LogEuclidean;
+    vtkSMPTools::For(0, n,
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        double& lmax = localMax.Local();
+        vtkIdType nInvalid = 0, nIndefinite = 0;
+        for (vtkIdType i = begin; i < end; ++i)
+        {
+          double* t = block.Tensors.data() + 6 * i;
+          if (mask)
+          {
+            block.Mask[i] = static_cast<float>(mask->GetComponent(i, 0));
+          }
+          if (!TM::ReadSymmetric(tensors, i, layout, t))
+          {
+            block.Flags[i] = POINT_NONFINITE;
+            std::fill(t, t + 6, 0.0);
+            ++nInvalid;
+            continue;
+          }
+          if (!logEuclidean && PositiveDefinite(t))
+          {
+            continue; // nothing to count or flag (the common case: no eigen-decomposition)
+          }
+          double l[3], e[3][3], ls[3], es[3][3];
+          TM::EigenDecomposition(t, l, e);
+          std::copy(l, l + 3, ls);
+          std::copy(&e[0][0], &e[0][0] + 9, &es[0][0]);
+          const bool definite = TM::ApplySignPolicy(TM::SIGN_SKIP, ls, es);
+          if (!definite)
+          {
+            ++nIndefinite;
+          }
+          if (policy == TM::SIGN_SKIP)
+          {
+            if (!definite)
+            {
+              block.Flags[i] = POINT_NEGATIVE; // only used by the log-Euclidean interpolation
+              continue;
+            }
+            lmax = std::max(lmax, ls[0]);
+          }
+          else
+          {
+            TM::ApplySignPolicy(policy, l, e);
+            lmax = std::max(lmax, l[0]);
+          }
+        }
+        invalid += nInvalid;
+        indefinite += nIndefinite;
+      });
+  }
+  for (double m : localMax)
+  {
+    globalMax = std::max(globalMax, m);
+  }
+  numInvalid = invalid;
+  numIndefinite = indefinite;
+  return globalMax;
+}
+
+// The blocks' interpolation data: the tensors' logarithms (log-Euclidean;
+// eigenvalues floored at 1e-6 of `globalMax`), image geometry or a cell
+// locator.
+bool PrepareBlocks(Field& field, const std::vector<vtkDataSet*>& dataSets, double globalMax,
+  std::string* error)
+{
+  for (std::size_t b = 0; b < dataSets.size(); ++b)
+  {
+    Block& block = field.Blocks[b];
+    vtkDataSet* ds = dataSets[b];
+    if (!field.LogEuclidean)
+    {
+      // Linear interpolation: indefinite point tensors are fine, the
+      // interpolated tensor decides.
+      for (unsigned char& f : block.Flags)
+      {
+        if (f == POINT_NEGATIVE)
+        {
+          f = POINT_OK;
+        }
+      }
+    }
+    else
+    {
+      const double floor = globalMax > 0.0 ? 1e-6 * globalMax : 1e-300;
+      const int policy = field.SignPolicy;
+      vtkSMPTools::For(0, ds->GetNumberOfPoints(),
+        [&](vtkIdType begin, vtkIdType end)
+        {
+          for (vtkIdType i = begin; i < end; ++i)
+          {
+            if (block.Flags[i] != POINT_OK)
+            {
+              continue;
+            }
+            double* t = block.Tensors.data() + 6 * i;
+            double l[3], e[3][3];
+            TM::EigenDecomposition(t, l, e);
+            TM::ApplySignPolicy(policy, l, e);
+            for (double& v : l)
+            {
+              v = std::log(std::max(v, floor));
+            }
+            TM::FromEigenSystem(l, e, t);
+          }
+        });
+    }
+    block.AnyFlag = std::any_of(
+      block.Flags.begin(), block.Flags.end(), [](unsigned char f) { return f != POINT_OK; });
+    if (auto* image = vtkImageData::SafeDownCast(ds))
+    {
+      block.IsImage = true;
+      image->GetExtent(block.Extent);
+      image->GetDimensions(block.Dims);
+      vtkMatrix4x4* m = image->GetPhysicalToIndexMatrix();
+      for (int r = 0; r < 3; ++r)
+      {
+        for (int c = 0; c < 4; ++c)
+        {
+          block.M[4 * r + c] = m->GetElement(r, c);
+        }
+      }
+    }
+    else
+    {
+      if (ds->GetNumberOfCells() == 0)
+      {
+        return vtkSplineVizError::Fail(error,
+          std::string("the ") + ds->GetClassName() +
+            " of the tensor field has points but no cells to interpolate in");
+      }
+      block.Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+      block.Locator->SetDataSet(ds);
+      block.Locator->BuildLocator();
+      field.MaxCellSize = std::max(field.MaxCellSize, ds->GetMaxCellSize());
+    }
+  }
+  return true;
+}
+
+// The smallest cell size of the blocks (images: the smallest spacing;
+// other data sets: the edge of a cube of their mean cell volume), 1 if none.
+double SmallestCellLength(const std::vector<vtkDataSet*>& dataSets)
+{
+  double cellLength = VTK_DOUBLE_MAX;
+  for (vtkDataSet* ds : dataSets)
+  {
+    if (auto* image = vtkImageData::SafeDownCast(ds))
+    {
+      const double* spacing = image->GetSpacing();
+      const int* dims = image->GetDimensions();
+      for (int a = 0; a < 3; ++a)
+      {
+        if (dims[a] > 1 && std::abs(spacing[a]) > 0)
+        {
+          cellLength = std::min(cellLength, std::abs(spacing[a]));
+        }
+      }
+    }
+    else
+    {
+      double bounds[6];
+      ds->GetBounds(bounds);
+      double volume = 1.0;
+      int dim = 0;
+      for (int a = 0; a < 3; ++a)
+      {
+        const double e = bounds[2 * a + 1] - bounds[2 * a];
+        if (e > 0)
+        {
+          volume *= e;
+          ++dim;
+        }
+      }
+      if (dim > 0)
+      {
+        cellLength = std::min(
+          cellLength, std::pow(volume / std::max<vtkIdType>(1, ds->GetNumberOfCells()), 1.0 / dim));
+      }
+    }
+  }
+  return cellLength == VTK_DOUBLE_MAX ? 1.0 : cellLength;
+}
+
+// Every `stride`-th voxel (point) whose own tensor has FA >= `seedFA` and a
+// positive major eigenvalue (and is inside the mask), in point order.
+void CollectVoxelSeeds(Field& field, const std::vector<vtkDataSet*>& dataSets, int stride,
+  double seedFA, std::vector<double>& seeds)
+{
+  const bool useMask = field.HasMask;
+  for (std::size_t b = 0; b < dataSets.size(); ++b)
+  {
+    Block& block = field.Blocks[b];
+    vtkDataSet* ds = dataSets[b];
+    std::vector<vtkIdType> candidates;
+    if (block.IsImage)
+    {
+      for (int k = 0; k < block.Dims[2]; k += stride)
+      {
+        for (int j = 0; j < block.Dims[1]; j += stride)
+        {
+          for (int i = 0; i < block.Dims[0]; i += stride)
+          {
+            candidates.push_back(i +
+              static_cast<vtkIdType>(block.Dims[0]) *
+                (j + static_cast<vtkIdType>(block.Dims[1]) * k));
+          }
+        }
+      }
+    }
+    else
+    {
+      for (vtkIdType i = 0; i < ds->GetNumberOfPoints(); i += stride)
+      {
+        candidates.push_back(i);
+      }
+    }
+    std::vector<char> ok(candidates.size(), 0);
+    vtkSMPTools::For(0, static_cast<vtkIdType>(candidates.size()),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType c = begin; c < end; ++c)
+        {
+          const vtkIdType id = candidates[c];
+          if (block.Flags[id] != POINT_OK || (useMask && block.Mask[id] < 0.5f))
+          {
+            continue;
+          }
+          Sample s;
+          if (Analyze(field, block.Tensors.data() + 6 * id, 1.0, s) && s.FA >= seedFA &&
+            s.L[0] > 0.0)
+          {
+            ok[c] = 1;
+          }
+        }
+      });
+    for (std::size_t c = 0; c < candidates.size(); ++c)
+    {
+      if (ok[c])
+      {
+        double x[3];
+        ds->GetPoint(candidates[c], x);
+        seeds.insert(seeds.end(), x, x + 3);
+      }
+    }
+  }
+}
+
 }
 
 //------------------------------------------------------------------------------
@@ -887,6 +1166,160 @@ int vtkTensorLineTracer::RequestUpdateExtent(
 }
 
 //------------------------------------------------------------------------------
+bool vtkTensorLineTracer::CollectTensorArrays(vtkDataObject* input,
+  std::vector<vtkDataSet*>& dataSets, std::vector<vtkDataArray*>& tensorArrays,
+  std::vector<vtkDataArray*>& maskArrays, std::vector<int>& layouts, bool& useMask)
+{
+  dataSets.clear();
+  for (vtkDataSet* ds : vtkCompositeDataSet::GetDataSets(input))
+  {
+    if (ds->GetNumberOfPoints() > 0)
+    {
+      dataSets.push_back(ds);
+    }
+  }
+  if (dataSets.empty())
+  {
+    vtkErrorMacro(<< "the input has no points: connect a vtkImageData (or any data set) with a "
+                     "point tensor array to port 0");
+    return false;
+  }
+  // "None" is ParaView's no-array choice (unless an array has that name).
+  useMask = this->MaskArrayName && this->MaskArrayName[0] &&
+    !(std::string(this->MaskArrayName) == "None" && !dataSets[0]->GetPointData()->GetArray("None"));
+  tensorArrays.assign(dataSets.size(), nullptr);
+  maskArrays.assign(dataSets.size(), nullptr);
+  layouts.assign(dataSets.size(), 0);
+  for (std::size_t b = 0; b < dataSets.size(); ++b)
+  {
+    vtkDataSet* ds = dataSets[b];
+    int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    vtkDataArray* tensors = this->GetInputArrayToProcess(0, ds, association);
+    if (!tensors)
+    {
+      vtkErrorMacro(<< "no tensor array in " << ds->GetClassName()
+                    << ": select a point array with 6, 7 or 9 components "
+                       "(SetInputArrayToProcess) or set active point tensors");
+      return false;
+    }
+    if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS ||
+      tensors->GetNumberOfTuples() != ds->GetNumberOfPoints())
+    {
+      vtkErrorMacro(<< "the tensor array '" << (tensors->GetName() ? tensors->GetName() : "")
+                    << "' must be point data (one tensor per point), for interpolation; "
+                       "convert cell data with vtkCellDataToPointData");
+      return false;
+    }
+    const int comps = tensors->GetNumberOfComponents();
+    layouts[b] = TM::ResolveLayout(this->TensorLayout, comps);
+    if (layouts[b] < 0)
+    {
+      vtkErrorMacro(<< "tensor array '" << (tensors->GetName() ? tensors->GetName() : "(unnamed)")
+                    << "' has " << comps << " components, which does not fit the tensor layout '"
+                    << TM::GetLayoutName(this->TensorLayout)
+                    << "' (6-component layouts need 6, FULL_9 needs 9, TEEM_7 7)");
+      return false;
+    }
+    tensorArrays[b] = tensors;
+    if (useMask)
+    {
+      vtkDataArray* mask = ds->GetPointData()->GetArray(this->MaskArrayName);
+      if (!mask || mask->GetNumberOfComponents() != 1)
+      {
+        vtkErrorMacro(<< "the mask array '" << this->MaskArrayName
+                      << (mask ? "' must have one component" : "' is not a point array of ")
+                      << (mask ? "" : ds->GetClassName()));
+        return false;
+      }
+      maskArrays[b] = mask;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTensorLineTracer::ReportTensorProblems()
+{
+  if (this->NumberOfInvalidTensors > 0)
+  {
+    vtkWarningMacro(<< this->NumberOfInvalidTensors
+                    << " point tensors have NaN or infinite components; lines stop before "
+                       "interpolating them (reason "
+                    << UNEXPECTED_VALUE << ")");
+  }
+  if (this->NumberOfIndefiniteTensors > 0)
+  {
+    vtkWarningMacro(<< this->NumberOfIndefiniteTensors
+                    << " point tensors have negative eigenvalues; "
+                    << (this->NegativeEigenvalues == NEGATIVE_EIGENVALUES_STOP
+                           ? "lines stop where the tensor is indefinite (reason 11)"
+                           : "their absolute values are used"));
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTensorLineTracer::CollectSourceSeeds(
+  vtkInformationVector* sourceVector, std::vector<double>& seeds)
+{
+  vtkDataObject* source = sourceVector->GetNumberOfInformationObjects() > 0
+    ? vtkDataObject::GetData(sourceVector, 0)
+    : nullptr;
+  if (!source)
+  {
+    vtkErrorMacro(<< "no seeds: connect a data set whose points are the seeds to the source "
+                     "port (port 1), or use SeedMode SEEDS_FROM_VOXELS");
+    return false;
+  }
+  // Absurd seed counts (e.g. an implicit image of 10^9 points) are refused
+  // before anything is allocated: per seed its coordinates, a line and at
+  // least two points of output.
+  const double seedCount = vtkSplineVizSeeds::Count(source);
+  std::string sizeError;
+  if (!vtkSplineVizProgress::CheckOutputSize(seedCount, 3 * 8.0 + sizeof(Line) + 2 * 100.0,
+        "the tensor lines of all seeds", &sizeError))
+  {
+    vtkErrorMacro(<< sizeError);
+    return false;
+  }
+  vtkSplineVizSeeds::Collect(source, seeds);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkTensorLineTracer::GetSeedRange(
+  vtkInformation* outInfo, vtkIdType total, vtkIdType& first, vtkIdType& last) const
+{
+  // Pieces split the voxel seeds (source seeds are split by the source's pieces).
+  first = 0;
+  last = total;
+  if (this->SeedMode == SEEDS_FROM_VOXELS)
+  {
+    const int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
+    const int pieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
+    if (pieces > 1 && piece >= 0 && piece < pieces)
+    {
+      first = total * piece / pieces;
+      last = total * (piece + 1) / pieces;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkTensorLineTracer::UseDoubleOutput(bool inputDouble) const
+{
+  bool outDouble = inputDouble;
+  if (this->OutputPointsPrecision == SINGLE_PRECISION)
+  {
+    outDouble = false;
+  }
+  else if (this->OutputPointsPrecision == DOUBLE_PRECISION)
+  {
+    outDouble = true;
+  }
+  return outDouble;
+}
+
+//------------------------------------------------------------------------------
 int vtkTensorLineTracer::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -906,22 +1339,16 @@ int vtkTensorLineTracer::RequestData(
 
   // The field's data sets and their arrays.
   std::vector<vtkDataSet*> dataSets;
-  for (vtkDataSet* ds : vtkCompositeDataSet::GetDataSets(input))
+  std::vector<vtkDataArray*> tensorArrays;
+  std::vector<vtkDataArray*> maskArrays;
+  std::vector<int> layouts;
+  bool useMask = false;
+  if (!this->CollectTensorArrays(input, dataSets, tensorArrays, maskArrays, layouts, useMask))
   {
-    if (ds->GetNumberOfPoints() > 0)
-    {
-      dataSets.push_back(ds);
-    }
-  }
-  if (dataSets.empty())
-  {
-    vtkErrorMacro(<< "the input has no points: connect a vtkImageData (or any data set) with a "
-                     "point tensor array to port 0");
     return 0;
   }
-  // "None" is ParaView's no-array choice (unless an array has that name).
-  const bool useMask = this->MaskArrayName && this->MaskArrayName[0] &&
-    !(std::string(this->MaskArrayName) == "None" && !dataSets[0]->GetPointData()->GetArray("None"));
+  const bool dbl = std::any_of(tensorArrays.begin(), tensorArrays.end(),
+    [](vtkDataArray* a) { return a->GetDataType() == VTK_DOUBLE; });
   Field field;
   field.LogEuclidean = this->Interpolation == LOG_EUCLIDEAN_INTERPOLATION;
   field.SignPolicy =
@@ -929,266 +1356,21 @@ int vtkTensorLineTracer::RequestData(
   field.HasMask = useMask;
   field.NeedLinearAnisotropy = this->UseTensorlines && this->TensorlineWeightFromLinearAnisotropy;
   field.Blocks.resize(dataSets.size());
-  std::vector<vtkDataArray*> tensorArrays(dataSets.size());
-  std::vector<vtkDataArray*> maskArrays(dataSets.size(), nullptr);
-  std::vector<int> layouts(dataSets.size());
-  bool dbl = false;
-  for (std::size_t b = 0; b < dataSets.size(); ++b)
-  {
-    vtkDataSet* ds = dataSets[b];
-    int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
-    vtkDataArray* tensors = this->GetInputArrayToProcess(0, ds, association);
-    if (!tensors)
-    {
-      vtkErrorMacro(<< "no tensor array in " << ds->GetClassName()
-                    << ": select a point array with 6, 7 or 9 components "
-                       "(SetInputArrayToProcess) or set active point tensors");
-      return 0;
-    }
-    if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS ||
-      tensors->GetNumberOfTuples() != ds->GetNumberOfPoints())
-    {
-      vtkErrorMacro(<< "the tensor array '" << (tensors->GetName() ? tensors->GetName() : "")
-                    << "' must be point data (one tensor per point), for interpolation; "
-                       "convert cell data with vtkCellDataToPointData");
-      return 0;
-    }
-    const int comps = tensors->GetNumberOfComponents();
-    layouts[b] = TM::ResolveLayout(this->TensorLayout, comps);
-    if (layouts[b] < 0)
-    {
-      vtkErrorMacro(<< "tensor array '" << (tensors->GetName() ? tensors->GetName() : "(unnamed)")
-                    << "' has " << comps << " components, which does not fit the tensor layout '"
-                    << TM::GetLayoutName(this->TensorLayout)
-                    << "' (6-component layouts need 6, FULL_9 needs 9, TEEM_7 7)");
-      return 0;
-    }
-    dbl = dbl || tensors->GetDataType() == VTK_DOUBLE;
-    tensorArrays[b] = tensors;
-    if (useMask)
-    {
-      vtkDataArray* mask = ds->GetPointData()->GetArray(this->MaskArrayName);
-      if (!mask || mask->GetNumberOfComponents() != 1)
-      {
-        vtkErrorMacro(<< "the mask array '" << this->MaskArrayName
-                      << (mask ? "' must have one component" : "' is not a point array of ")
-                      << (mask ? "" : ds->GetClassName()));
-        return 0;
-      }
-      maskArrays[b] = mask;
-    }
-  }
 
   // Precompute the point tensors (canonical order; logarithms for the
   // log-Euclidean interpolation) and the locators.
-  std::atomic<vtkIdType> invalid(0), indefinite(0);
-  double globalMax = 0.0;
+  const double globalMax = ReadPointTensors(field, dataSets, tensorArrays, maskArrays, layouts,
+    this->NumberOfInvalidTensors, this->NumberOfIndefiniteTensors);
+  std::string error;
+  if (!PrepareBlocks(field, dataSets, globalMax, &error))
   {
-    vtkSMPThreadLocal<double> localMax(0.0);
-    for (std::size_t b = 0; b < dataSets.size(); ++b)
-    {
-      Block& block = field.Blocks[b];
-      vtkDataSet* ds = dataSets[b];
-      const vtkIdType n = ds->GetNumberOfPoints();
-      block.Data = ds;
-      block.Tensors.resize(6 * n);
-      block.Flags.assign(n, POINT_OK);
-      if (useMask)
-      {
-        block.Mask.resize(n);
-      }
-      vtkDataArray* tensors = tensorArrays[b];
-      vtkDataArray* mask = maskArrays[b];
-      const int layout = layouts[b];
-      const int policy = field.SignPolicy;
-      const bool logEuclidean = field.LogEuclidean;
-      vtkSMPTools::For(0, n,
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          double& lmax = localMax.Local();
-          vtkIdType nInvalid = 0, nIndefinite = 0;
-          for (vtkIdType i = begin; i < end; ++i)
-          {
-            double* t = block.Tensors.data() + 6 * i;
-            if (mask)
-            {
-              block.Mask[i] = static_cast<float>(mask->GetComponent(i, 0));
-            }
-            if (!TM::ReadSymmetric(tensors, i, layout, t))
-            {
-              block.Flags[i] = POINT_NONFINITE;
-              std::fill(t, t + 6, 0.0);
-              ++nInvalid;
-              continue;
-            }
-            if (!logEuclidean && PositiveDefinite(t))
-            {
-              continue; // nothing to count or flag (the common case: no eigen-decomposition)
-            }
-            double l[3], e[3][3], ls[3], es[3][3];
-            TM::EigenDecomposition(t, l, e);
-            std::copy(l, l + 3, ls);
-            std::copy(&e[0][0], &e[0][0] + 9, &es[0][0]);
-            const bool definite = TM::ApplySignPolicy(TM::SIGN_SKIP, ls, es);
-            if (!definite)
-            {
-              ++nIndefinite;
-            }
-            if (policy == TM::SIGN_SKIP)
-            {
-              if (!definite)
-              {
-                block.Flags[i] = POINT_NEGATIVE; // only used by the log-Euclidean interpolation
-                continue;
-              }
-              lmax = std::max(lmax, ls[0]);
-            }
-            else
-            {
-              TM::ApplySignPolicy(policy, l, e);
-              lmax = std::max(lmax, l[0]);
-            }
-          }
-          invalid += nInvalid;
-          indefinite += nIndefinite;
-        });
-    }
-    for (double m : localMax)
-    {
-      globalMax = std::max(globalMax, m);
-    }
+    vtkErrorMacro(<< error);
+    return 0;
   }
-  this->NumberOfInvalidTensors = invalid;
-  this->NumberOfIndefiniteTensors = indefinite;
-  for (std::size_t b = 0; b < dataSets.size(); ++b)
-  {
-    Block& block = field.Blocks[b];
-    vtkDataSet* ds = dataSets[b];
-    if (!field.LogEuclidean)
-    {
-      // Linear interpolation: indefinite point tensors are fine, the
-      // interpolated tensor decides.
-      for (unsigned char& f : block.Flags)
-      {
-        if (f == POINT_NEGATIVE)
-        {
-          f = POINT_OK;
-        }
-      }
-    }
-    else
-    {
-      const double floor = globalMax > 0.0 ? 1e-6 * globalMax : 1e-300;
-      const int policy = field.SignPolicy;
-      vtkSMPTools::For(0, ds->GetNumberOfPoints(),
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          for (vtkIdType i = begin; i < end; ++i)
-          {
-            if (block.Flags[i] != POINT_OK)
-            {
-              continue;
-            }
-            double* t = block.Tensors.data() + 6 * i;
-            double l[3], e[3][3];
-            TM::EigenDecomposition(t, l, e);
-            TM::ApplySignPolicy(policy, l, e);
-            for (double& v : l)
-            {
-              v = std::log(std::max(v, floor));
-            }
-            TM::FromEigenSystem(l, e, t);
-          }
-        });
-    }
-    block.AnyFlag = std::any_of(
-      block.Flags.begin(), block.Flags.end(), [](unsigned char f) { return f != POINT_OK; });
-    if (auto* image = vtkImageData::SafeDownCast(ds))
-    {
-      block.IsImage = true;
-      image->GetExtent(block.Extent);
-      image->GetDimensions(block.Dims);
-      vtkMatrix4x4* m = image->GetPhysicalToIndexMatrix();
-      for (int r = 0; r < 3; ++r)
-      {
-        for (int c = 0; c < 4; ++c)
-        {
-          block.M[4 * r + c] = m->GetElement(r, c);
-        }
-      }
-    }
-    else
-    {
-      if (ds->GetNumberOfCells() == 0)
-      {
-        vtkErrorMacro(<< "the " << ds->GetClassName()
-                      << " of the tensor field has points but no cells to interpolate in");
-        return 0;
-      }
-      block.Locator = vtkSmartPointer<vtkStaticCellLocator>::New();
-      block.Locator->SetDataSet(ds);
-      block.Locator->BuildLocator();
-      field.MaxCellSize = std::max(field.MaxCellSize, ds->GetMaxCellSize());
-    }
-  }
-  if (this->NumberOfInvalidTensors > 0)
-  {
-    vtkWarningMacro(<< this->NumberOfInvalidTensors
-                    << " point tensors have NaN or infinite components; lines stop before "
-                       "interpolating them (reason "
-                    << UNEXPECTED_VALUE << ")");
-  }
-  if (this->NumberOfIndefiniteTensors > 0)
-  {
-    vtkWarningMacro(<< this->NumberOfIndefiniteTensors
-                    << " point tensors have negative eigenvalues; "
-                    << (this->NegativeEigenvalues == NEGATIVE_EIGENVALUES_STOP
-                           ? "lines stop where the tensor is indefinite (reason 11)"
-                           : "their absolute values are used"));
-  }
+  this->ReportTensorProblems();
 
   // The step in world units.
-  double cellLength = VTK_DOUBLE_MAX;
-  for (vtkDataSet* ds : dataSets)
-  {
-    if (auto* image = vtkImageData::SafeDownCast(ds))
-    {
-      const double* spacing = image->GetSpacing();
-      const int* dims = image->GetDimensions();
-      for (int a = 0; a < 3; ++a)
-      {
-        if (dims[a] > 1 && std::abs(spacing[a]) > 0)
-        {
-          cellLength = std::min(cellLength, std::abs(spacing[a]));
-        }
-      }
-    }
-    else
-    {
-      double bounds[6];
-      ds->GetBounds(bounds);
-      double volume = 1.0;
-      int dim = 0;
-      for (int a = 0; a < 3; ++a)
-      {
-        const double e = bounds[2 * a + 1] - bounds[2 * a];
-        if (e > 0)
-        {
-          volume *= e;
-          ++dim;
-        }
-      }
-      if (dim > 0)
-      {
-        cellLength = std::min(
-          cellLength, std::pow(volume / std::max<vtkIdType>(1, ds->GetNumberOfCells()), 1.0 / dim));
-      }
-    }
-  }
-  if (cellLength == VTK_DOUBLE_MAX)
-  {
-    cellLength = 1.0;
-  }
+  const double cellLength = SmallestCellLength(dataSets);
   this->StepLength = this->IntegrationStepUnit == CELL_LENGTH_UNIT
     ? this->IntegrationStep * cellLength
     : this->IntegrationStep;
@@ -1197,104 +1379,21 @@ int vtkTensorLineTracer::RequestData(
   std::vector<double> seeds;
   if (this->SeedMode == SEEDS_FROM_SOURCE)
   {
-    vtkDataObject* source = inputVector[1]->GetNumberOfInformationObjects() > 0
-      ? vtkDataObject::GetData(inputVector[1], 0)
-      : nullptr;
-    if (!source)
+    if (!this->CollectSourceSeeds(inputVector[1], seeds))
     {
-      vtkErrorMacro(<< "no seeds: connect a data set whose points are the seeds to the source "
-                       "port (port 1), or use SeedMode SEEDS_FROM_VOXELS");
       return 0;
     }
-    // Absurd seed counts (e.g. an implicit image of 10^9 points) are refused
-    // before anything is allocated: per seed its coordinates, a line and at
-    // least two points of output.
-    const double seedCount = vtkSplineVizSeeds::Count(source);
-    std::string sizeError;
-    if (!vtkSplineVizProgress::CheckOutputSize(seedCount, 3 * 8.0 + sizeof(Line) + 2 * 100.0,
-          "the tensor lines of all seeds", &sizeError))
-    {
-      vtkErrorMacro(<< sizeError);
-      return 0;
-    }
-    vtkSplineVizSeeds::Collect(source, seeds);
   }
   else
   {
     // Every SeedStride-th voxel whose own tensor has FA >= SeedFAThreshold
     // (and is inside the mask), in point order.
-    const int stride = this->SeedStride;
-    const double seedFA = std::max(this->SeedFAThreshold, this->StoppingFAThreshold);
-    for (std::size_t b = 0; b < dataSets.size(); ++b)
-    {
-      Block& block = field.Blocks[b];
-      vtkDataSet* ds = dataSets[b];
-      std::vector<vtkIdType> candidates;
-      if (block.IsImage)
-      {
-        for (int k = 0; k < block.Dims[2]; k += stride)
-        {
-          for (int j = 0; j < block.Dims[1]; j += stride)
-          {
-            for (int i = 0; i < block.Dims[0]; i += stride)
-            {
-              candidates.push_back(i +
-                static_cast<vtkIdType>(block.Dims[0]) *
-                  (j + static_cast<vtkIdType>(block.Dims[1]) * k));
-            }
-          }
-        }
-      }
-      else
-      {
-        for (vtkIdType i = 0; i < ds->GetNumberOfPoints(); i += stride)
-        {
-          candidates.push_back(i);
-        }
-      }
-      std::vector<char> ok(candidates.size(), 0);
-      vtkSMPTools::For(0, static_cast<vtkIdType>(candidates.size()),
-        [&](vtkIdType begin, vtkIdType end)
-        {
-          for (vtkIdType c = begin; c < end; ++c)
-          {
-            const vtkIdType id = candidates[c];
-            if (block.Flags[id] != POINT_OK || (useMask && block.Mask[id] < 0.5f))
-            {
-              continue;
-            }
-            Sample s;
-            if (Analyze(field, block.Tensors.data() + 6 * id, 1.0, s) && s.FA >= seedFA &&
-              s.L[0] > 0.0)
-            {
-              ok[c] = 1;
-            }
-          }
-        });
-      for (std::size_t c = 0; c < candidates.size(); ++c)
-      {
-        if (ok[c])
-        {
-          double x[3];
-          ds->GetPoint(candidates[c], x);
-          seeds.insert(seeds.end(), x, x + 3);
-        }
-      }
-    }
+    CollectVoxelSeeds(field, dataSets, this->SeedStride,
+      std::max(this->SeedFAThreshold, this->StoppingFAThreshold), seeds);
   }
   const vtkIdType totalSeeds = static_cast<vtkIdType>(seeds.size() / 3);
-  // Pieces split the voxel seeds (source seeds are split by the source's pieces).
   vtkIdType firstSeed = 0, lastSeed = totalSeeds;
-  if (this->SeedMode == SEEDS_FROM_VOXELS)
-  {
-    const int piece = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER());
-    const int pieces = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES());
-    if (pieces > 1 && piece >= 0 && piece < pieces)
-    {
-      firstSeed = totalSeeds * piece / pieces;
-      lastSeed = totalSeeds * (piece + 1) / pieces;
-    }
-  }
+  this->GetSeedRange(outInfo, totalSeeds, firstSeed, lastSeed);
   this->NumberOfSeeds = lastSeed - firstSeed;
   if (this->NumberOfSeeds == 0)
   {
@@ -1322,15 +1421,7 @@ int vtkTensorLineTracer::RequestData(
   P.F = this->TensorlineEigenvectorWeight;
   P.G = this->TensorlineDeflectionWeight;
 
-  bool outDouble = dbl;
-  if (this->OutputPointsPrecision == SINGLE_PRECISION)
-  {
-    outDouble = false;
-  }
-  else if (this->OutputPointsPrecision == DOUBLE_PRECISION)
-  {
-    outDouble = true;
-  }
+  const bool outDouble = this->UseDoubleOutput(dbl);
   std::unique_ptr<Output<float>> outF;
   std::unique_ptr<Output<double>> outD;
   if (outDouble)

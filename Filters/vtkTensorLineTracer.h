@@ -115,6 +115,11 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <vector> // for CollectTensorArrays
+
+class vtkDataArray;
+class vtkDataSet;
+
 class SPLINEVIZ_EXPORT vtkTensorLineTracer : public vtkPolyDataAlgorithm
 {
 public:
@@ -378,6 +383,23 @@ protected:
 private:
   vtkTensorLineTracer(const vtkTensorLineTracer&) = delete;
   void operator=(const vtkTensorLineTracer&) = delete;
+
+  /**
+   * The input's data sets with points, their tensor arrays (checked: point
+   * data, a layout that fits), layouts and masks (useMask: a mask array is
+   * set); false after an error.
+   */
+  bool CollectTensorArrays(vtkDataObject* input, std::vector<vtkDataSet*>& dataSets,
+    std::vector<vtkDataArray*>& tensorArrays, std::vector<vtkDataArray*>& maskArrays,
+    std::vector<int>& layouts, bool& useMask);
+  /// Warnings for the point tensors that are not finite or not positive definite.
+  void ReportTensorProblems();
+  /// The seeds of the source port (SEEDS_FROM_SOURCE); false after an error.
+  bool CollectSourceSeeds(vtkInformationVector* sourceVector, std::vector<double>& seeds);
+  /// This piece's share [first, last) of `total` voxel seeds (all of the source's).
+  void GetSeedRange(vtkInformation* outInfo, vtkIdType total, vtkIdType& first, vtkIdType& last) const;
+  /// Double output points (OutputPointsPrecision; DEFAULT: as the input tensors).
+  bool UseDoubleOutput(bool inputDouble) const;
 };
 
 #endif
