@@ -1072,9 +1072,20 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
         // quads' band).
         if (fixed && halo == 0)
         {
+          // The cylinders' back faces: hidden behind their front faces and,
+          // at the open ends, behind the joint spheres or the end caps (a
+          // sphere holds the end's disk). The vertex shader winds the walls
+          // counterclockwise seen from outside, in view coordinates; culled
+          // here, they cost no fragments (which get no early depth test).
           program->SetUniformi("lineMode", FIXUP_CYLINDERS);
+          GLint cullMode = GL_BACK;
+          state->vtkglGetIntegerv(GL_CULL_FACE_MODE, &cullMode);
+          state->vtkglEnable(GL_CULL_FACE);
+          state->vtkglCullFace(GL_BACK);
           glDrawElementsInstanced(GL_TRIANGLES, 6 * sides, GL_UNSIGNED_SHORT, nullptr,
             static_cast<GLsizei>(in.FixedSegments.size()));
+          state->vtkglCullFace(static_cast<unsigned int>(cullMode));
+          state->vtkglDisable(GL_CULL_FACE);
         }
         if (joints && halo == 0)
         {
