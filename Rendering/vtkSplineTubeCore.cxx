@@ -135,6 +135,24 @@ void MergeBounds(vtkSMPThreadLocal<Local>& locals, double bounds[6])
 // MergedPoints[Merged + k] for the (rare) tubes with merged repeated points.
 struct vtkSplineTubeCore::Internals
 {
+  /// What scanning an input line found (Source::ScanLine()).
+  enum LineStatus : unsigned char
+  {
+    LINE_OK,
+    LINE_NONFINITE_POINT,
+    LINE_BAD_RADIUS,
+    LINE_BAD_SCALAR,
+  };
+  struct LineScan
+  {
+    vtkIdType Kept = 0;   ///< nodes kept
+    vtkIdType Merged = 0; ///< repeated consecutive points merged
+    vtkIdType BadPoint = -1;
+    double BadRadius = 0.0;
+    double MaxRadius = 0.0;
+    unsigned char Status = LINE_OK;
+  };
+
   struct Source
   {
     vtkSmartPointer<vtkPolyData> Data;
@@ -178,6 +196,93 @@ struct vtkSplineTubeCore::Internals
       }
       xyzr[3] = this->Radius ? this->Radius->GetComponent(pid, 0) * this->RadiusScale
                              : this->ConstantRadius;
+    }
+
+    /// The input's points, lines and arrays (one-component radius and node
+    /// scalar arrays, or nullptr; RGBA colors per point or per cell).
+    void Init(vtkPolyData* input, vtkDataArray* radius, vtkDataArray* scalar,
+      vtkUnsignedCharArray* colors, bool colorsPerCell, unsigned int blockId, double constantRadius,
+      double radiusScale)
+    {
+      this->Data = input;
+      this->Points = input->GetPoints()->GetData();
+      if (auto* f = vtkFloatArray::SafeDownCast(this->Points))
+      {
+        this->PointsF = f->GetPointer(0);
+      }
+      else if (auto* d = vtkDoubleArray::SafeDownCast(this->Points))
+      {
+        this->PointsD = d->GetPointer(0);
+      }
+      this->Radius = radius;
+      this->Scalar = scalar;
+      this->Colors = colors;
+      this->ColorsPerCell = colorsPerCell;
+      this->Lines = input->GetLines();
+      if (this->Lines->IsStorage64Bit())
+      {
+        this->Connectivity64 = this->Lines->GetConnectivityArray64()->GetPointer(0);
+      }
+      else
+      {
+        this->Connectivity32 = this->Lines->GetConnectivityArray32()->GetPointer(0);
+      }
+      this->FirstCellId = input->GetNumberOfVerts(); // line cell ids follow the verts
+      this->BlockId = blockId;
+      this->ConstantRadius = constantRadius;
+      this->RadiusScale = radiusScale;
+    }
+
+    /**
+     * Scan line `line` of the input: calls keep(pointId) for every node kept
+     * (repeated consecutive points merged); stops at the first point with a
+     * non-finite coordinate, radius or scalar, or a radius <= 0.
+     */
+    template <typename Keep>
+    void ScanLine(vtkIdType line, vtkIdList* scratch, LineScan& scan, Keep&& keep) const
+    {
+      vtkIdType npts;
+      const vtkIdType* pts;
+      this->Lines->GetCellAtId(line, npts, pts, scratch);
+      double last[3] = { 0.0, 0.0, 0.0 };
+      for (vtkIdType k = 0; k < npts; ++k)
+      {
+        double p[4];
+        this->Point(pts[k], p);
+        if (!IsFinite(p[0]) || !IsFinite(p[1]) || !IsFinite(p[2]))
+        {
+          scan.Status = LINE_NONFINITE_POINT;
+          scan.BadPoint = pts[k];
+          return;
+        }
+        if (this->Radius && (!IsFinite(p[3]) || p[3] <= 0.0))
+        {
+          scan.Status = LINE_BAD_RADIUS;
+          scan.BadPoint = pts[k];
+          scan.BadRadius = p[3];
+          return;
+        }
+        if (this->Scalar && !IsFinite(this->Scalar->GetComponent(pts[k], 0)))
+        {
+          scan.Status = LINE_BAD_SCALAR;
+          scan.BadPoint = pts[k];
+          return;
+        }
+        if (scan.Kept > 0)
+        {
+          const double d2 = vtkMath::Distance2BetweenPoints(p, last);
+          const double scale = std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]), p[3] });
+          if (d2 <= (1e-10 * scale) * (1e-10 * scale))
+          {
+            ++scan.Merged;
+            continue;
+          }
+        }
+        keep(pts[k]);
+        ++scan.Kept;
+        scan.MaxRadius = std::max(scan.MaxRadius, p[3]);
+        std::copy(p, p + 3, last);
+      }
     }
   };
   struct Tube
@@ -431,6 +536,57 @@ bool vtkSplineTubeCore::HasNodeScalars() const
 }
 
 //------------------------------------------------------------------------------
+bool vtkSplineTubeCore::FindPointArray(
+  vtkPolyData* input, const char* name, const char* what, vtkDataArray*& array)
+{
+  array = nullptr;
+  if (!name || !name[0])
+  {
+    return true;
+  }
+  vtkAbstractArray* abstractArray = input->GetPointData()->GetAbstractArray(name);
+  if (!abstractArray)
+  {
+    vtkErrorMacro(<< "The " << what << " array \"" << name
+                  << "\" is not a point array of the input.");
+    return false;
+  }
+  array = vtkDataArray::SafeDownCast(abstractArray);
+  if (!array)
+  {
+    vtkErrorMacro(<< "The " << what << " array \"" << name << "\" is not numeric.");
+    return false;
+  }
+  if (array->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro(<< "The " << what << " array \"" << name << "\" has "
+                  << array->GetNumberOfComponents() << " components; a " << what
+                  << " array needs exactly one.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkDataArray* vtkSplineTubeCore::FindOriginalIds(vtkPolyData* input) const
+{
+  vtkDataArray* originalIds = nullptr;
+  if (this->CellIdArrayName && this->CellIdArrayName[0])
+  {
+    originalIds = input->GetCellData()->GetArray(this->CellIdArrayName);
+    if (originalIds &&
+      (originalIds->GetNumberOfComponents() != 1 ||
+        vtkDataArray::GetDataTypeMin(originalIds->GetDataType()) == VTK_DOUBLE_MIN ||
+        vtkDataArray::GetDataTypeMin(originalIds->GetDataType()) == VTK_FLOAT_MIN ||
+        originalIds->GetNumberOfTuples() != input->GetNumberOfCells()))
+    {
+      originalIds = nullptr;
+    }
+  }
+  return originalIds;
+}
+
+//------------------------------------------------------------------------------
 bool vtkSplineTubeCore::AddPolyData(
   vtkPolyData* input, vtkUnsignedCharArray* colors, unsigned int blockId, bool colorsPerCell)
 {
@@ -441,41 +597,11 @@ bool vtkSplineTubeCore::AddPolyData(
   }
   const vtkIdType numPoints = input->GetNumberOfPoints();
 
-  // A named one-component numeric point array, or an error.
-  auto findArray = [&](const char* name, const char* what, vtkDataArray*& array)
-  {
-    array = nullptr;
-    if (!name || !name[0])
-    {
-      return true;
-    }
-    vtkAbstractArray* abstractArray = input->GetPointData()->GetAbstractArray(name);
-    if (!abstractArray)
-    {
-      vtkErrorMacro(<< "The " << what << " array \"" << name
-                    << "\" is not a point array of the input.");
-      return false;
-    }
-    array = vtkDataArray::SafeDownCast(abstractArray);
-    if (!array)
-    {
-      vtkErrorMacro(<< "The " << what << " array \"" << name << "\" is not numeric.");
-      return false;
-    }
-    if (array->GetNumberOfComponents() != 1)
-    {
-      vtkErrorMacro(<< "The " << what << " array \"" << name << "\" has "
-                    << array->GetNumberOfComponents() << " components; a " << what
-                    << " array needs exactly one.");
-      return false;
-    }
-    return true;
-  };
   const char* role = this->NodeScalarRole ? this->NodeScalarRole : "node scalar";
   vtkDataArray* radiusArray = nullptr;
   vtkDataArray* scalarArray = nullptr;
-  if (!findArray(this->RadiusArrayName, "radius", radiusArray) ||
-    !findArray(this->NodeScalarArrayName, role, scalarArray))
+  if (!this->FindPointArray(input, this->RadiusArrayName, "radius", radiusArray) ||
+    !this->FindPointArray(input, this->NodeScalarArrayName, role, scalarArray))
   {
     return false;
   }
@@ -500,118 +626,18 @@ bool vtkSplineTubeCore::AddPolyData(
   }
 
   Internals::Source source;
-  source.Data = input;
-  source.Points = input->GetPoints()->GetData();
-  if (auto* f = vtkFloatArray::SafeDownCast(source.Points))
-  {
-    source.PointsF = f->GetPointer(0);
-  }
-  else if (auto* d = vtkDoubleArray::SafeDownCast(source.Points))
-  {
-    source.PointsD = d->GetPointer(0);
-  }
-  source.Radius = radiusArray;
-  source.Scalar = scalarArray;
-  source.Colors = colors;
-  source.ColorsPerCell = colorsPerCell;
-  source.Lines = input->GetLines();
-  if (source.Lines->IsStorage64Bit())
-  {
-    source.Connectivity64 = source.Lines->GetConnectivityArray64()->GetPointer(0);
-  }
-  else
-  {
-    source.Connectivity32 = source.Lines->GetConnectivityArray32()->GetPointer(0);
-  }
-  source.FirstCellId = input->GetNumberOfVerts(); // line cell ids follow the verts
-  source.BlockId = blockId;
-  source.ConstantRadius = this->Radius;
-  source.RadiusScale = this->RadiusScale;
+  source.Init(input, radiusArray, scalarArray, colors, colorsPerCell, blockId, this->Radius,
+    this->RadiusScale);
   in.HaveScalars = in.HaveScalars || scalarArray;
 
-  // Original cell ids, when the input carries them (one component, integer).
-  vtkDataArray* originalIds = nullptr;
-  if (this->CellIdArrayName && this->CellIdArrayName[0])
-  {
-    originalIds = input->GetCellData()->GetArray(this->CellIdArrayName);
-    if (originalIds &&
-      (originalIds->GetNumberOfComponents() != 1 ||
-        vtkDataArray::GetDataTypeMin(originalIds->GetDataType()) == VTK_DOUBLE_MIN ||
-        vtkDataArray::GetDataTypeMin(originalIds->GetDataType()) == VTK_FLOAT_MIN ||
-        originalIds->GetNumberOfTuples() != input->GetNumberOfCells()))
-    {
-      originalIds = nullptr;
-    }
-  }
+  vtkDataArray* originalIds = this->FindOriginalIds(input);
 
   // One pass over the polylines in parallel (vtkSMPTools): validate every
   // line and count the nodes it keeps (repeated consecutive points merged);
   // messages in line order.
   vtkCellArray* lines = source.Lines;
   const vtkIdType numLines = lines->GetNumberOfCells();
-  enum LineStatus : unsigned char
-  {
-    LINE_OK,
-    LINE_NONFINITE_POINT,
-    LINE_BAD_RADIUS,
-    LINE_BAD_SCALAR,
-  };
-  struct LineScan
-  {
-    vtkIdType Kept = 0;
-    vtkIdType Merged = 0;
-    vtkIdType BadPoint = -1;
-    double BadRadius = 0.0;
-    double MaxRadius = 0.0;
-    unsigned char Status = LINE_OK;
-  };
-  // Scans line `line`: calls keep(pointId) for every node kept; stops at the
-  // first point with a non-finite coordinate, radius or scalar.
-  auto scanLine = [&](vtkIdType line, vtkIdList* scratch, LineScan& scan, auto&& keep)
-  {
-    vtkIdType npts;
-    const vtkIdType* pts;
-    lines->GetCellAtId(line, npts, pts, scratch);
-    double last[3] = { 0.0, 0.0, 0.0 };
-    for (vtkIdType k = 0; k < npts; ++k)
-    {
-      double p[4];
-      source.Point(pts[k], p);
-      if (!IsFinite(p[0]) || !IsFinite(p[1]) || !IsFinite(p[2]))
-      {
-        scan.Status = LINE_NONFINITE_POINT;
-        scan.BadPoint = pts[k];
-        return;
-      }
-      if (radiusArray && (!IsFinite(p[3]) || p[3] <= 0.0))
-      {
-        scan.Status = LINE_BAD_RADIUS;
-        scan.BadPoint = pts[k];
-        scan.BadRadius = p[3];
-        return;
-      }
-      if (scalarArray && !IsFinite(scalarArray->GetComponent(pts[k], 0)))
-      {
-        scan.Status = LINE_BAD_SCALAR;
-        scan.BadPoint = pts[k];
-        return;
-      }
-      if (scan.Kept > 0)
-      {
-        const double d2 = vtkMath::Distance2BetweenPoints(p, last);
-        const double scale = std::max({ std::abs(p[0]), std::abs(p[1]), std::abs(p[2]), p[3] });
-        if (d2 <= (1e-10 * scale) * (1e-10 * scale))
-        {
-          ++scan.Merged;
-          continue;
-        }
-      }
-      keep(pts[k]);
-      ++scan.Kept;
-      scan.MaxRadius = std::max(scan.MaxRadius, p[3]);
-      std::copy(p, p + 3, last);
-    }
-  };
+  using LineScan = Internals::LineScan;
   std::vector<LineScan> scans(static_cast<size_t>(numLines));
   vtkSMPThreadLocalObject<vtkIdList> scratch;
   vtkSMPTools::For(0, numLines,
@@ -620,7 +646,7 @@ bool vtkSplineTubeCore::AddPolyData(
       vtkIdList* s = scratch.Local();
       for (vtkIdType line = begin; line < end; ++line)
       {
-        scanLine(line, s, scans[line], [](vtkIdType) {});
+        source.ScanLine(line, s, scans[line], [](vtkIdType) {});
       }
     });
 
@@ -638,14 +664,14 @@ bool vtkSplineTubeCore::AddPolyData(
     const LineScan& scan = scans[line];
     const vtkIdType cellId = firstCellId + line;
     mergedHere += scan.Merged;
-    if (scan.Status == LINE_NONFINITE_POINT)
+    if (scan.Status == Internals::LINE_NONFINITE_POINT)
     {
       vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << scan.BadPoint
                       << " has a NaN or infinite coordinate.");
       ++this->NumberOfSkippedLines;
       continue;
     }
-    if (scan.Status == LINE_BAD_RADIUS)
+    if (scan.Status == Internals::LINE_BAD_RADIUS)
     {
       vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << scan.BadPoint
                       << " has the radius " << scan.BadRadius
@@ -653,7 +679,7 @@ bool vtkSplineTubeCore::AddPolyData(
       ++this->NumberOfSkippedLines;
       continue;
     }
-    if (scan.Status == LINE_BAD_SCALAR)
+    if (scan.Status == Internals::LINE_BAD_SCALAR)
     {
       vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << scan.BadPoint
                       << " has a NaN or infinite value in the " << role << " array \""
@@ -692,7 +718,8 @@ bool vtkSplineTubeCore::AddPolyData(
   {
     vtkIdType k = in.Tubes[t].Merged;
     LineScan scan;
-    scanLine(in.Tubes[t].Line, list, scan, [&](vtkIdType pid) { in.MergedPoints[k++] = pid; });
+    source.ScanLine(
+      in.Tubes[t].Line, list, scan, [&](vtkIdType pid) { in.MergedPoints[k++] = pid; });
   }
 
   if (mergedHere > 0)

@@ -26,8 +26,8 @@
  * - the GPU layout, filled range by range for uploads in pieces
  *   (FillNodes(): position relative to a shift and radius, 16 bytes, or the
  *   position alone, 12 bytes, when every node has the same radius
- *   (GetConstantRadius()); FillNodeInfo(): the tube and its end flags, 4 bytes; FillColors(): RGBA8; FillFrames(): the
- *   rotation-minimizing frames of Salm §3.1, double reflection of Wang et
+ *   (GetConstantRadius()); FillNodeInfo(): the tube and its end flags, 4 bytes; FillColors():
+ * RGBA8; FillFrames(): the rotation-minimizing frames of Salm §3.1, double reflection of Wang et
  *   al. 2008 with sub-steps where the tangent turns more than
  *   MaximumFrameStepAngle, octahedral int16 x 2).
  *
@@ -53,6 +53,7 @@
 #include <functional> // for std::function
 #include <memory>     // for std::unique_ptr
 
+class vtkDataArray;
 class vtkFloatArray;
 class vtkIdTypeArray;
 class vtkPolyData;
@@ -245,8 +246,8 @@ public:
    * (frames propagate along whole tubes: for a range cutting a tube, its
    * nodes before `first` are propagated but not written).
    */
-  void FillNodes(vtkIdType first, vtkIdType count, const double shift[3], float* out,
-    int components = 4) const;
+  void FillNodes(
+    vtkIdType first, vtkIdType count, const double shift[3], float* out, int components = 4) const;
   void FillNodeInfo(vtkIdType first, vtkIdType count, unsigned int* info) const;
   void FillColors(vtkIdType first, vtkIdType count, unsigned int* rgba) const;
   void FillScalars(vtkIdType first, vtkIdType count, float* scalars) const;
@@ -345,6 +346,10 @@ private:
   vtkSplineTubeCore(const vtkSplineTubeCore&) = delete;
   void operator=(const vtkSplineTubeCore&) = delete;
 
+  /// The named one-component numeric point array (nullptr without a name); false after an error.
+  bool FindPointArray(vtkPolyData* input, const char* name, const char* what, vtkDataArray*& array);
+  /// The input's original cell ids (CellIdArrayName: one integer component per cell), or nullptr.
+  vtkDataArray* FindOriginalIds(vtkPolyData* input) const;
   /// The chunk table, the bounds and the centre.
   void BuildChunks();
   /// The bounds and the centre only (ChunkTables off); the chunk table emptied.
