@@ -296,6 +296,88 @@ struct FillWorker
     }
   }
 };
+
+// What RequestData() keeps per leaf between classifying and filling.
+struct LeafPlan
+{
+  vtkDataSet* Data;
+  vtkDataArray* Tensors;
+  vtkDataArray* Scalars;
+  int Layout;
+  vtkIdType IdOffset;
+  std::vector<unsigned char> Classes;
+  std::vector<vtkIdType> Offsets;
+};
+
+// The coloring scalars: the kept tuples of every leaf (in the first leaf's
+// array type); nullptr unless all leaves provide them.
+vtkSmartPointer<vtkDataArray> GatherColorScalars(
+  const std::vector<LeafPlan>& plans, vtkIdType total)
+{
+  vtkSmartPointer<vtkDataArray> colorScalars;
+  bool allScalars = !plans.empty();
+  for (const LeafPlan& plan : plans)
+  {
+    allScalars = allScalars && plan.Scalars &&
+      plan.Scalars->GetNumberOfComponents() == plans[0].Scalars->GetNumberOfComponents();
+  }
+  if (allScalars)
+  {
+    vtkDataArray* first = plans[0].Scalars;
+    colorScalars.TakeReference(first->NewInstance());
+    colorScalars->SetName(first->GetName() ? first->GetName() : "scalars");
+    colorScalars->SetNumberOfComponents(first->GetNumberOfComponents());
+    colorScalars->SetNumberOfTuples(total);
+    if (first->GetLookupTable())
+    {
+      colorScalars->SetLookupTable(first->GetLookupTable());
+    }
+    vtkIdType k = 0;
+    for (const LeafPlan& plan : plans)
+    {
+      const vtkIdType n = plan.Data->GetNumberOfPoints();
+      for (vtkIdType i = 0; i < n; ++i)
+      {
+        if (plan.Classes[i] == KEEP)
+        {
+          colorScalars->SetTuple(k++, i, plan.Scalars);
+        }
+      }
+    }
+  }
+  return colorScalars;
+}
+
+// The statistics (largest norm, invalid, zero and masked tensors) and the
+// brick grid (origin, spacing, dimensions; first glyph of every brick) the
+// mapper reads.
+void AddFieldData(vtkPolyData* output, const BrickGrid& grid, double maxNorm, vtkIdType invalid,
+  vtkIdType zero, vtkIdType masked)
+{
+  vtkNew<vtkDoubleArray> stats;
+  stats->SetName("sqStatistics");
+  stats->SetNumberOfTuples(4);
+  stats->SetValue(0, maxNorm);
+  stats->SetValue(1, static_cast<double>(invalid));
+  stats->SetValue(2, static_cast<double>(zero));
+  stats->SetValue(3, static_cast<double>(masked));
+  output->GetFieldData()->AddArray(stats);
+  vtkNew<vtkDoubleArray> gridArray;
+  gridArray->SetName("sqBrickGrid");
+  gridArray->SetNumberOfTuples(9);
+  for (int c = 0; c < 3; ++c)
+  {
+    gridArray->SetValue(c, grid.Origin[c]);
+    gridArray->SetValue(3 + c, grid.Spacing[c]);
+    gridArray->SetValue(6 + c, grid.Dimensions[c]);
+  }
+  output->GetFieldData()->AddArray(gridArray);
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetName("sqBrickOffsets");
+  offsets->SetNumberOfTuples(static_cast<vtkIdType>(grid.Offsets.size()));
+  std::copy(grid.Offsets.begin(), grid.Offsets.end(), offsets->GetPointer(0));
+  output->GetFieldData()->AddArray(offsets);
+}
 }
 
 //------------------------------------------------------------------------------
@@ -347,6 +429,63 @@ int vtkSuperquadricGlyphPreparer::FillInputPortInformation(int, vtkInformation* 
 }
 
 //------------------------------------------------------------------------------
+bool vtkSuperquadricGlyphPreparer::FindLeafArrays(vtkDataSet* leaf, const std::string& where,
+  vtkDataArray*& tensors, int& layout, vtkDataArray*& mask, vtkDataArray*& scalars)
+{
+  vtkPointData* pd = leaf->GetPointData();
+  const bool named = !this->TensorArrayName.empty();
+  tensors = named ? pd->GetArray(this->TensorArrayName.c_str()) : pd->GetTensors();
+  if (!tensors)
+  {
+    if (named)
+    {
+      vtkErrorMacro("No point tensor array named '" << this->TensorArrayName << "'" << where
+                                                    << ": no glyphs drawn for it.");
+    }
+    else
+    {
+      vtkErrorMacro(
+        "No active point tensors" << where << " (set the tensor array name): no glyphs drawn.");
+    }
+    return false;
+  }
+  layout = TM::ResolveLayout(this->TensorLayout, tensors->GetNumberOfComponents());
+  if (layout < 0)
+  {
+    vtkErrorMacro("Tensor array '"
+      << (tensors->GetName() ? tensors->GetName() : "(unnamed)") << "'" << where << " has "
+      << tensors->GetNumberOfComponents() << " components, which does not fit the layout '"
+      << TM::GetLayoutName(this->TensorLayout)
+      << "' (6, 7 or 9 components are needed): no glyphs drawn for it.");
+    return false;
+  }
+  mask = nullptr;
+  if (!this->MaskArrayName.empty())
+  {
+    mask = pd->GetArray(this->MaskArrayName.c_str());
+    if (!mask)
+    {
+      vtkErrorMacro("No point mask array named '" << this->MaskArrayName << "'" << where
+                                                  << ": no glyphs drawn for it.");
+      return false;
+    }
+  }
+  scalars = nullptr;
+  if (this->ColorVisible)
+  {
+    int cellFlag = 0;
+    scalars = vtkArrayDownCast<vtkDataArray>(
+      vtkAbstractMapper::GetAbstractScalars(leaf, this->ColorScalarMode, this->ColorAccessMode,
+        this->ColorArrayId, this->ColorArrayName.c_str(), cellFlag));
+    if (cellFlag != 0)
+    {
+      scalars = nullptr; // glyphs sit at points: cell scalars cannot color them
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkSuperquadricGlyphPreparer::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -369,16 +508,6 @@ int vtkSuperquadricGlyphPreparer::RequestData(
   }
 
   // Per leaf: classify, then fill.
-  struct LeafPlan
-  {
-    vtkDataSet* Data;
-    vtkDataArray* Tensors;
-    vtkDataArray* Scalars;
-    int Layout;
-    vtkIdType IdOffset;
-    std::vector<unsigned char> Classes;
-    std::vector<vtkIdType> Offsets;
-  };
   std::vector<LeafPlan> plans;
   vtkIdType total = 0;
   vtkIdType idOffset = 0;
@@ -395,59 +524,15 @@ int vtkSuperquadricGlyphPreparer::RequestData(
     {
       continue;
     }
-    vtkPointData* pd = leaf->GetPointData();
-    const bool named = !this->TensorArrayName.empty();
-    vtkDataArray* tensors = named ? pd->GetArray(this->TensorArrayName.c_str()) : pd->GetTensors();
-    const std::string where = leaves.size() > 1 ? " in block " + std::to_string(b) : "";
-    if (!tensors)
-    {
-      if (named)
-      {
-        vtkErrorMacro("No point tensor array named '" << this->TensorArrayName << "'" << where
-                                                      << ": no glyphs drawn for it.");
-      }
-      else
-      {
-        vtkErrorMacro(
-          "No active point tensors" << where << " (set the tensor array name): no glyphs drawn.");
-      }
-      ok = false;
-      continue;
-    }
-    const int layout = TM::ResolveLayout(this->TensorLayout, tensors->GetNumberOfComponents());
-    if (layout < 0)
-    {
-      vtkErrorMacro("Tensor array '"
-        << (tensors->GetName() ? tensors->GetName() : "(unnamed)") << "'" << where << " has "
-        << tensors->GetNumberOfComponents() << " components, which does not fit the layout '"
-        << TM::GetLayoutName(this->TensorLayout)
-        << "' (6, 7 or 9 components are needed): no glyphs drawn for it.");
-      ok = false;
-      continue;
-    }
+    vtkDataArray* tensors = nullptr;
     vtkDataArray* mask = nullptr;
-    if (!this->MaskArrayName.empty())
-    {
-      mask = pd->GetArray(this->MaskArrayName.c_str());
-      if (!mask)
-      {
-        vtkErrorMacro("No point mask array named '" << this->MaskArrayName << "'" << where
-                                                    << ": no glyphs drawn for it.");
-        ok = false;
-        continue;
-      }
-    }
     vtkDataArray* scalars = nullptr;
-    if (this->ColorVisible)
+    int layout = -1;
+    if (!this->FindLeafArrays(leaf, leaves.size() > 1 ? " in block " + std::to_string(b) : "",
+          tensors, layout, mask, scalars))
     {
-      int cellFlag = 0;
-      scalars = vtkArrayDownCast<vtkDataArray>(
-        vtkAbstractMapper::GetAbstractScalars(leaf, this->ColorScalarMode, this->ColorAccessMode,
-          this->ColorArrayId, this->ColorArrayName.c_str(), cellFlag));
-      if (cellFlag != 0)
-      {
-        scalars = nullptr; // glyphs sit at points: cell scalars cannot color them
-      }
+      ok = false;
+      continue;
     }
 
     LeafPlan plan;
@@ -530,39 +615,7 @@ int vtkSuperquadricGlyphPreparer::RequestData(
     vtkSMPTools::For(0, static_cast<vtkIdType>(plan.Offsets.size()), fill);
   }
 
-  // Scalars for coloring: the kept tuples of every leaf (in the first leaf's
-  // array type); only when all leaves provide them.
-  vtkSmartPointer<vtkDataArray> colorScalars;
-  bool allScalars = !plans.empty();
-  for (const LeafPlan& plan : plans)
-  {
-    allScalars = allScalars && plan.Scalars &&
-      plan.Scalars->GetNumberOfComponents() == plans[0].Scalars->GetNumberOfComponents();
-  }
-  if (allScalars)
-  {
-    vtkDataArray* first = plans[0].Scalars;
-    colorScalars.TakeReference(first->NewInstance());
-    colorScalars->SetName(first->GetName() ? first->GetName() : "scalars");
-    colorScalars->SetNumberOfComponents(first->GetNumberOfComponents());
-    colorScalars->SetNumberOfTuples(total);
-    if (first->GetLookupTable())
-    {
-      colorScalars->SetLookupTable(first->GetLookupTable());
-    }
-    vtkIdType k = 0;
-    for (const LeafPlan& plan : plans)
-    {
-      const vtkIdType n = plan.Data->GetNumberOfPoints();
-      for (vtkIdType i = 0; i < n; ++i)
-      {
-        if (plan.Classes[i] == KEEP)
-        {
-          colorScalars->SetTuple(k++, i, plan.Scalars);
-        }
-      }
-    }
-  }
+  vtkSmartPointer<vtkDataArray> colorScalars = GatherColorScalars(plans, total);
 
   // Bricks: the glyphs sorted by the cells of a uniform grid over their
   // bounds (about 8 glyphs per cell), so that the mapper can draw them brick
@@ -580,29 +633,7 @@ int vtkSuperquadricGlyphPreparer::RequestData(
   {
     output->GetPointData()->SetScalars(colorScalars);
   }
-  vtkNew<vtkDoubleArray> stats;
-  stats->SetName("sqStatistics");
-  stats->SetNumberOfTuples(4);
-  stats->SetValue(0, maxNorm);
-  stats->SetValue(1, static_cast<double>(invalid));
-  stats->SetValue(2, static_cast<double>(zero));
-  stats->SetValue(3, static_cast<double>(masked));
-  output->GetFieldData()->AddArray(stats);
-  vtkNew<vtkDoubleArray> gridArray;
-  gridArray->SetName("sqBrickGrid");
-  gridArray->SetNumberOfTuples(9);
-  for (int c = 0; c < 3; ++c)
-  {
-    gridArray->SetValue(c, grid.Origin[c]);
-    gridArray->SetValue(3 + c, grid.Spacing[c]);
-    gridArray->SetValue(6 + c, grid.Dimensions[c]);
-  }
-  output->GetFieldData()->AddArray(gridArray);
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetName("sqBrickOffsets");
-  offsets->SetNumberOfTuples(static_cast<vtkIdType>(grid.Offsets.size()));
-  std::copy(grid.Offsets.begin(), grid.Offsets.end(), offsets->GetPointer(0));
-  output->GetFieldData()->AddArray(offsets);
+  AddFieldData(output, grid, maxNorm, invalid, zero, masked);
   return ok ? 1 : 0;
 }
 

@@ -35,6 +35,9 @@
 
 #include <string> // for std::string
 
+class vtkDataArray;
+class vtkDataSet;
+
 class SPLINEVIZ_EXPORT vtkSuperquadricGlyphPreparer : public vtkPolyDataAlgorithm
 {
 public:
@@ -76,6 +79,14 @@ protected:
 private:
   vtkSuperquadricGlyphPreparer(const vtkSuperquadricGlyphPreparer&) = delete;
   void operator=(const vtkSuperquadricGlyphPreparer&) = delete;
+
+  /**
+   * A leaf's point arrays: the tensors (TensorArrayName or the active ones)
+   * and their layout, the mask (MaskArrayName) and the coloring scalars
+   * (point scalars only); false after an error (`where` names the block).
+   */
+  bool FindLeafArrays(vtkDataSet* leaf, const std::string& where, vtkDataArray*& tensors,
+    int& layout, vtkDataArray*& mask, vtkDataArray*& scalars);
 };
 
 #endif
