@@ -673,8 +673,8 @@ vtkIdType TraceAll(const vtkLRSplineField& field, const Params& P, const std::ve
 // The output: the lines of 2 or more points in seed order, forward before
 // backward, with their point arrays (the field's vectors, speed, time,
 // vorticity), seed ids and termination reasons per line and per seed.
-void AssembleOutput(const std::vector<Line>& lines, vtkIdType numSeeds, const std::string& arrayName,
-  bool vorticityOn, vtkPolyData* output)
+void AssembleOutput(const std::vector<Line>& lines, vtkIdType numSeeds,
+  const std::string& arrayName, bool vorticityOn, vtkPolyData* output)
 {
   vtkIdType numPoints = 0, numLines = 0;
   for (const Line& l : lines)

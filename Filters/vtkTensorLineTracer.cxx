@@ -798,7 +798,6 @@ struct Output
   }
 };
 
-
 // The point tensors of every block in canonical order, flags for the
 // non-finite (and, for the log-Euclidean interpolation, indefinite) ones, the
 // mask values; counts the invalid and indefinite tensors and returns the
@@ -891,8 +890,8 @@ double ReadPointTensors(Field& field, const std::vector<vtkDataSet*>& dataSets,
 // The blocks' interpolation data: the tensors' logarithms (log-Euclidean;
 // eigenvalues floored at 1e-6 of `globalMax`), image geometry or a cell
 // locator.
-bool PrepareBlocks(Field& field, const std::vector<vtkDataSet*>& dataSets, double globalMax,
-  std::string* error)
+bool PrepareBlocks(
+  Field& field, const std::vector<vtkDataSet*>& dataSets, double globalMax, std::string* error)
 {
   for (std::size_t b = 0; b < dataSets.size(); ++b)
   {
@@ -1275,8 +1274,8 @@ bool vtkTensorLineTracer::CollectSourceSeeds(
   // least two points of output.
   const double seedCount = vtkSplineVizSeeds::Count(source);
   std::string sizeError;
-  if (!vtkSplineVizProgress::CheckOutputSize(seedCount, 3 * 8.0 + sizeof(Line) + 2 * 100.0,
-        "the tensor lines of all seeds", &sizeError))
+  if (!vtkSplineVizProgress::CheckOutputSize(
+        seedCount, 3 * 8.0 + sizeof(Line) + 2 * 100.0, "the tensor lines of all seeds", &sizeError))
   {
     vtkErrorMacro(<< sizeError);
     return false;

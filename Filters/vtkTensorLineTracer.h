@@ -397,7 +397,8 @@ private:
   /// The seeds of the source port (SEEDS_FROM_SOURCE); false after an error.
   bool CollectSourceSeeds(vtkInformationVector* sourceVector, std::vector<double>& seeds);
   /// This piece's share [first, last) of `total` voxel seeds (all of the source's).
-  void GetSeedRange(vtkInformation* outInfo, vtkIdType total, vtkIdType& first, vtkIdType& last) const;
+  void GetSeedRange(
+    vtkInformation* outInfo, vtkIdType total, vtkIdType& first, vtkIdType& last) const;
   /// Double output points (OutputPointsPrecision; DEFAULT: as the input tensors).
   bool UseDoubleOutput(bool inputDouble) const;
 };

@@ -524,7 +524,8 @@ void vtkStylizedLineFixUp::SetCullingChunks(double widen, vtkSplineTubeVisibilit
             part[3] =
               (std::sqrt(half2) + widen * std::max(P[4 * s + 3], P[4 * s + 7])) * (1.0 + 1e-6) +
               1e-6 * extent;
-            this->Parts[this->PartFirsts[b] + s] = vtkSplineTubeVisibility::EncodePart(sphere, part);
+            this->Parts[this->PartFirsts[b] + s] =
+              vtkSplineTubeVisibility::EncodePart(sphere, part);
           }
         }
       });

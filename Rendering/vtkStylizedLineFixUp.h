@@ -31,7 +31,7 @@
 #ifndef vtkStylizedLineFixUp_h
 #define vtkStylizedLineFixUp_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizModule.h"     // for export macro
 #include "vtkStylizedLineMath.h" // for vec3
 #include "vtkType.h"
 
@@ -158,8 +158,8 @@ private:
   /// Per batch: center of the vertices' bounding sphere (shifted model coordinates) and
   /// the culling radius (Radius + CullingWiden x MaxRadius, rounded up).
   std::vector<float> Spheres;
-  std::vector<std::uint32_t> Tubes; ///< per batch: its polyline
-  std::vector<std::uint32_t> Parts; ///< per segment: its culling sphere, encoded
+  std::vector<std::uint32_t> Tubes;      ///< per batch: its polyline
+  std::vector<std::uint32_t> Parts;      ///< per segment: its culling sphere, encoded
   std::vector<std::uint32_t> PartFirsts; ///< batches + 1: first part of each
   double CullingWiden = -1.0;            ///< what Spheres and Parts were made for
   std::vector<vtkIdType> TubeFirstBatch; ///< tubes + 1

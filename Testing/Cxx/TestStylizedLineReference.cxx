@@ -257,7 +257,7 @@ int TestStylizedLineReference(int, char*[])
                                                               << missingOn);
   SV_CHECK_MSG(status, on.DepthShare >= 0.80,
     "end-on view with the fix-up: eye depth within r/4 on " << 100.0 * on.DepthShare
-                                                             << " % (at least 80 %)");
+                                                            << " % (at least 80 %)");
   SV_CHECK_MSG(status, off.DepthShare < on.DepthShare - 0.2,
     "without the fix-up the end-on depth must agree less: " << 100.0 * off.DepthShare << " % vs "
                                                             << 100.0 * on.DepthShare << " %");
