@@ -468,6 +468,21 @@ private:
     return s;
   }
 };
+
+// The fit's duration in the field data of the output's first block.
+void AddFitSeconds(vtkMultiBlockDataSet* output, double seconds)
+{
+  vtkFieldData* fd = output->GetNumberOfBlocks() > 0
+    ? vtkDataObject::SafeDownCast(output->GetBlock(0))->GetFieldData()
+    : nullptr;
+  if (fd)
+  {
+    vtkNew<vtkDoubleArray> array;
+    array->SetName(vtkLRSplineArrayNames::FitSeconds);
+    array->InsertNextValue(seconds);
+    fd->AddArray(array);
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -520,23 +535,12 @@ int vtkLRSplineImageFitter::RequestUpdateExtent(
 }
 
 //------------------------------------------------------------------------------
-int vtkLRSplineImageFitter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+bool vtkLRSplineImageFitter::CheckSettings()
 {
-  const auto start = std::chrono::steady_clock::now();
-  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outInfo);
-  this->MaximumError = this->RMSError = this->AbsoluteTolerance = this->FitTime = 0.0;
-  this->ToleranceMet = false;
-  this->NumberOfElements = this->NumberOfBasisFunctions = 0;
-  this->NumberOfRefinementLevels = this->NumberOfIterations = 0;
-
-  // The settings.
   if (!(this->Tolerance > 0) || !std::isfinite(this->Tolerance))
   {
     vtkErrorMacro(<< "Tolerance must be positive and finite (it is " << this->Tolerance << ")");
-    return 0;
+    return false;
   }
   for (int d = 0; d < 3; ++d)
   {
@@ -544,22 +548,26 @@ int vtkLRSplineImageFitter::RequestData(
     {
       vtkErrorMacro(<< "Degree must be 1 to 5 in every direction (it is " << this->Degree[0] << " "
                     << this->Degree[1] << " " << this->Degree[2] << ")");
-      return 0;
+      return false;
     }
     if (this->InitialNumberOfElements[d] < 1)
     {
       vtkErrorMacro(<< "InitialNumberOfElements must be at least 1 in every direction");
-      return 0;
+      return false;
     }
   }
   if (!std::isfinite(this->MinimumElementSize) || !std::isfinite(this->Regularization))
   {
     vtkErrorMacro(<< "MinimumElementSize and Regularization must be finite");
-    return 0;
+    return false;
   }
+  return true;
+}
 
-  // The images: the input, or the leaves of a composite input.
-  std::vector<vtkImageData*> images;
+//------------------------------------------------------------------------------
+bool vtkLRSplineImageFitter::CollectImages(vtkDataObject* input, std::vector<vtkImageData*>& images)
+{
+  images.clear();
   if (vtkImageData* image = vtkImageData::SafeDownCast(input))
   {
     images.push_back(image);
@@ -575,7 +583,7 @@ int vtkLRSplineImageFitter::RequestData(
       {
         vtkErrorMacro(<< "every block of a composite input must be a vtkImageData (one is a "
                       << it->GetCurrentDataObject()->GetClassName() << ")");
-        return 0;
+        return false;
       }
       images.push_back(leaf);
     }
@@ -583,6 +591,182 @@ int vtkLRSplineImageFitter::RequestData(
   if (images.empty())
   {
     vtkErrorMacro(<< "no input image: connect a vtkImageData (e.g. vtkNIFTIImageReader)");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineImageFitter::CheckImage(vtkImageData* image, const std::string& which, int n[3],
+  double offset[3], double scale[3], vtkDataArray*& array)
+{
+  int extent[6];
+  image->GetExtent(extent);
+  vtkIdType voxels = 1;
+  for (int d = 0; d < 3; ++d)
+  {
+    n[d] = extent[2 * d + 1] - extent[2 * d] + 1;
+    if (n[d] < 2)
+    {
+      vtkErrorMacro(<< which << "the image must have at least 2 voxels in every direction (it has "
+                    << std::max(0, extent[1] - extent[0] + 1) << " x "
+                    << std::max(0, extent[3] - extent[2] + 1) << " x "
+                    << std::max(0, extent[5] - extent[4] + 1)
+                    << "): an LR-spline volume needs a 3D image");
+      return false;
+    }
+    voxels *= n[d];
+    if (voxels > MaximumVoxels)
+    {
+      vtkErrorMacro(<< which << "the image is too large to fit (" << n[0] << " x "
+                    << extent[3] - extent[2] + 1 << " x " << extent[5] - extent[4] + 1
+                    << " voxels; at most " << MaximumVoxels
+                    << "): crop or shrink it first (vtkExtractVOI, vtkImageShrink3D)");
+      return false;
+    }
+  }
+  if (vtkMatrix3x3* direction = image->GetDirectionMatrix())
+  {
+    if (!direction->IsIdentity())
+    {
+      vtkErrorMacro(<< which
+                    << "the image has a non-identity direction matrix; the fitted spline is "
+                       "placed by a scale and offset per axis only: resample the image to an "
+                       "axis-aligned grid first (vtkImageReslice) or set its direction to the "
+                       "identity and transform the result");
+      return false;
+    }
+  }
+  const double* spacing = image->GetSpacing();
+  const double* origin = image->GetOrigin();
+  for (int d = 0; d < 3; ++d)
+  {
+    if (!(spacing[d] > 0) || !std::isfinite(spacing[d]) || !std::isfinite(origin[d]))
+    {
+      vtkErrorMacro(<< which << "the image spacing must be positive and finite (it is "
+                    << spacing[0] << " " << spacing[1] << " " << spacing[2] << ")");
+      return false;
+    }
+    scale[d] = spacing[d];
+    offset[d] = origin[d] + spacing[d] * extent[2 * d];
+  }
+  int association = -1;
+  array = this->GetInputArrayToProcess(0, image, association);
+  if (!array)
+  {
+    vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
+    const char* name = arrayInfo && arrayInfo->Has(vtkDataObject::FIELD_NAME())
+      ? arrayInfo->Get(vtkDataObject::FIELD_NAME())
+      : nullptr;
+    if (name)
+    {
+      vtkErrorMacro(<< which << "no point-data array to fit: the image has no array \"" << name
+                    << "\" (SetInputArrayToProcess)");
+    }
+    else
+    {
+      vtkErrorMacro(<< which
+                    << "no point-data array to fit: the image has no active scalars; choose "
+                       "an array with SetInputArrayToProcess");
+    }
+    return false;
+  }
+  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+  {
+    vtkErrorMacro(<< which << "the array \"" << (array->GetName() ? array->GetName() : "")
+                  << "\" is not point data; the fitter fits voxel (point) values");
+    return false;
+  }
+  if (array->GetNumberOfComponents() != 1)
+  {
+    vtkErrorMacro(<< which << "the array \"" << (array->GetName() ? array->GetName() : "")
+                  << "\" has " << array->GetNumberOfComponents()
+                  << " components; the fitter needs a scalar (extract a component or the "
+                     "magnitude first)");
+    return false;
+  }
+  if (array->GetNumberOfTuples() != voxels)
+  {
+    vtkErrorMacro(<< which << "the array has " << array->GetNumberOfTuples() << " values for "
+                  << voxels << " voxels");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkLRSplineImageFitter::GetStopReason(int outcome) const
+{
+  switch (outcome)
+  {
+    case vtkLRSplineFitCore::ELEMENT_LIMIT:
+      return "MaximumNumberOfElements (" + std::to_string(this->MaximumNumberOfElements) +
+        ") was reached";
+    case vtkLRSplineFitCore::NOTHING_REFINABLE:
+      return "the elements above the tolerance are at MinimumElementSize (" +
+        std::to_string(this->MinimumElementSize) + " voxels) or MaximumRefinementLevels (" +
+        std::to_string(this->MaximumRefinementLevels) + ")";
+    case vtkLRSplineFitCore::NO_PROGRESS:
+      return "the refinement did not split any element";
+    default:
+      return std::string();
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineImageFitter::ReadValues(const std::vector<vtkDataArray*>& arrays,
+  std::vector<std::vector<double>>& values, double range[2])
+{
+  values.assign(arrays.size(), std::vector<double>());
+  range[0] = VTK_DOUBLE_MAX;
+  range[1] = -VTK_DOUBLE_MAX;
+  for (std::size_t b = 0; b < arrays.size(); ++b)
+  {
+    values[b].resize(static_cast<std::size_t>(arrays[b]->GetNumberOfTuples()));
+    std::atomic<bool> finite(true);
+    CopyWorker worker;
+    if (!vtkArrayDispatch::Dispatch::Execute(arrays[b], worker, values[b], finite))
+    {
+      worker(arrays[b], values[b], finite);
+    }
+    if (!finite)
+    {
+      vtkErrorMacro(<< (arrays.size() > 1 ? "block " + std::to_string(b) + ": " : std::string())
+                    << "the array \"" << (arrays[b]->GetName() ? arrays[b]->GetName() : "")
+                    << "\" has NaN or infinite values; mask or replace them first");
+      return false;
+    }
+    for (double v : values[b])
+    {
+      range[0] = std::min(range[0], v);
+      range[1] = std::max(range[1], v);
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineImageFitter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const auto start = std::chrono::steady_clock::now();
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outInfo);
+  this->MaximumError = this->RMSError = this->AbsoluteTolerance = this->FitTime = 0.0;
+  this->ToleranceMet = false;
+  this->NumberOfElements = this->NumberOfBasisFunctions = 0;
+  this->NumberOfRefinementLevels = this->NumberOfIterations = 0;
+
+  if (!this->CheckSettings())
+  {
+    return 0;
+  }
+
+  // The images: the input, or the leaves of a composite input.
+  std::vector<vtkImageData*> images;
+  if (!this->CollectImages(input, images))
+  {
     return 0;
   }
 
@@ -603,96 +787,9 @@ int vtkLRSplineImageFitter::RequestData(
       images.size() > 1 ? "block " + std::to_string(b) + ": " : std::string();
     Job job;
     job.Image = image;
-    int extent[6];
-    image->GetExtent(extent);
-    vtkIdType voxels = 1;
-    for (int d = 0; d < 3; ++d)
+    vtkDataArray* array = nullptr;
+    if (!this->CheckImage(image, which, job.N, job.Offset, job.Scale, array))
     {
-      job.N[d] = extent[2 * d + 1] - extent[2 * d] + 1;
-      if (job.N[d] < 2)
-      {
-        vtkErrorMacro(<< which
-                      << "the image must have at least 2 voxels in every direction (it has "
-                      << std::max(0, extent[1] - extent[0] + 1) << " x "
-                      << std::max(0, extent[3] - extent[2] + 1) << " x "
-                      << std::max(0, extent[5] - extent[4] + 1)
-                      << "): an LR-spline volume needs a 3D image");
-        return 0;
-      }
-      voxels *= job.N[d];
-      if (voxels > MaximumVoxels)
-      {
-        vtkErrorMacro(<< which << "the image is too large to fit (" << job.N[0] << " x "
-                      << extent[3] - extent[2] + 1 << " x " << extent[5] - extent[4] + 1
-                      << " voxels; at most " << MaximumVoxels
-                      << "): crop or shrink it first (vtkExtractVOI, vtkImageShrink3D)");
-        return 0;
-      }
-    }
-    if (vtkMatrix3x3* direction = image->GetDirectionMatrix())
-    {
-      if (!direction->IsIdentity())
-      {
-        vtkErrorMacro(<< which
-                      << "the image has a non-identity direction matrix; the fitted spline is "
-                         "placed by a scale and offset per axis only: resample the image to an "
-                         "axis-aligned grid first (vtkImageReslice) or set its direction to the "
-                         "identity and transform the result");
-        return 0;
-      }
-    }
-    const double* spacing = image->GetSpacing();
-    const double* origin = image->GetOrigin();
-    for (int d = 0; d < 3; ++d)
-    {
-      if (!(spacing[d] > 0) || !std::isfinite(spacing[d]) || !std::isfinite(origin[d]))
-      {
-        vtkErrorMacro(<< which << "the image spacing must be positive and finite (it is "
-                      << spacing[0] << " " << spacing[1] << " " << spacing[2] << ")");
-        return 0;
-      }
-      job.Scale[d] = spacing[d];
-      job.Offset[d] = origin[d] + spacing[d] * extent[2 * d];
-    }
-    int association = -1;
-    vtkDataArray* array = this->GetInputArrayToProcess(0, image, association);
-    if (!array)
-    {
-      vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
-      const char* name = arrayInfo && arrayInfo->Has(vtkDataObject::FIELD_NAME())
-        ? arrayInfo->Get(vtkDataObject::FIELD_NAME())
-        : nullptr;
-      if (name)
-      {
-        vtkErrorMacro(<< which << "no point-data array to fit: the image has no array \"" << name
-                      << "\" (SetInputArrayToProcess)");
-      }
-      else
-      {
-        vtkErrorMacro(<< which
-                      << "no point-data array to fit: the image has no active scalars; choose "
-                         "an array with SetInputArrayToProcess");
-      }
-      return 0;
-    }
-    if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
-    {
-      vtkErrorMacro(<< which << "the array \"" << (array->GetName() ? array->GetName() : "")
-                    << "\" is not point data; the fitter fits voxel (point) values");
-      return 0;
-    }
-    if (array->GetNumberOfComponents() != 1)
-    {
-      vtkErrorMacro(<< which << "the array \"" << (array->GetName() ? array->GetName() : "")
-                    << "\" has " << array->GetNumberOfComponents()
-                    << " components; the fitter needs a scalar (extract a component or the "
-                       "magnitude first)");
-      return 0;
-    }
-    if (array->GetNumberOfTuples() != voxels)
-    {
-      vtkErrorMacro(<< which << "the array has " << array->GetNumberOfTuples() << " values for "
-                    << voxels << " voxels");
       return 0;
     }
     job.Array = array;
@@ -700,29 +797,16 @@ int vtkLRSplineImageFitter::RequestData(
   }
 
   // The voxel values, checked, and the data range (over all images).
-  std::vector<std::vector<double>> values(jobs.size());
-  double range[2] = { VTK_DOUBLE_MAX, -VTK_DOUBLE_MAX };
-  for (std::size_t b = 0; b < jobs.size(); ++b)
+  std::vector<vtkDataArray*> arrays;
+  for (const Job& job : jobs)
   {
-    values[b].resize(static_cast<std::size_t>(jobs[b].Array->GetNumberOfTuples()));
-    std::atomic<bool> finite(true);
-    CopyWorker worker;
-    if (!vtkArrayDispatch::Dispatch::Execute(jobs[b].Array, worker, values[b], finite))
-    {
-      worker(jobs[b].Array, values[b], finite);
-    }
-    if (!finite)
-    {
-      vtkErrorMacro(<< (jobs.size() > 1 ? "block " + std::to_string(b) + ": " : std::string())
-                    << "the array \"" << (jobs[b].Array->GetName() ? jobs[b].Array->GetName() : "")
-                    << "\" has NaN or infinite values; mask or replace them first");
-      return 0;
-    }
-    for (double v : values[b])
-    {
-      range[0] = std::min(range[0], v);
-      range[1] = std::max(range[1], v);
-    }
+    arrays.push_back(job.Array);
+  }
+  std::vector<std::vector<double>> values;
+  double range[2];
+  if (!this->ReadValues(arrays, values, range))
+  {
+    return 0;
   }
   double tolerance = this->ToleranceMode == RELATIVE_TOLERANCE
     ? this->Tolerance * (range[1] - range[0])
@@ -796,22 +880,9 @@ int vtkLRSplineImageFitter::RequestData(
         output->Initialize();
         return 0;
       }
-      if (outcome == vtkLRSplineFitCore::ELEMENT_LIMIT)
+      if (outcome != vtkLRSplineFitCore::REFINED)
       {
-        stopReason = "MaximumNumberOfElements (" + std::to_string(this->MaximumNumberOfElements) +
-          ") was reached";
-        break;
-      }
-      if (outcome == vtkLRSplineFitCore::NOTHING_REFINABLE)
-      {
-        stopReason = "the elements above the tolerance are at MinimumElementSize (" +
-          std::to_string(this->MinimumElementSize) + " voxels) or MaximumRefinementLevels (" +
-          std::to_string(this->MaximumRefinementLevels) + ")";
-        break;
-      }
-      if (outcome == vtkLRSplineFitCore::NO_PROGRESS)
-      {
-        stopReason = "the refinement did not split any element";
+        stopReason = this->GetStopReason(outcome);
         break;
       }
     }
@@ -894,16 +965,7 @@ int vtkLRSplineImageFitter::RequestData(
     }
   }
   this->FitTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  vtkFieldData* fd = output->GetNumberOfBlocks() > 0
-    ? vtkDataObject::SafeDownCast(output->GetBlock(0))->GetFieldData()
-    : nullptr;
-  if (fd)
-  {
-    vtkNew<vtkDoubleArray> seconds;
-    seconds->SetName(vtkLRSplineArrayNames::FitSeconds);
-    seconds->InsertNextValue(this->FitTime);
-    fd->AddArray(seconds);
-  }
+  AddFitSeconds(output, this->FitTime);
   return 1;
 }
 

@@ -103,6 +103,10 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkMultiBlockDataSetAlgorithm.h"
 
+#include <string> // for GetStopReason
+#include <vector> // for CollectImages
+
+class vtkDataArray;
 class vtkImageData;
 class vtkMultiBlockDataSet;
 
@@ -258,6 +262,24 @@ protected:
 private:
   vtkLRSplineImageFitter(const vtkLRSplineImageFitter&) = delete;
   void operator=(const vtkLRSplineImageFitter&) = delete;
+
+  /// The fit settings are usable (else an error, false).
+  bool CheckSettings();
+  /// The input image, or the leaves of a composite input (all images); false after an error.
+  bool CollectImages(vtkDataObject* input, std::vector<vtkImageData*>& images);
+  /**
+   * An image that can be fitted (3D, not too large, axis-aligned, a scalar
+   * point array to fit): its voxel counts `n`, the placement of its first
+   * voxel (`offset`) and spacing (`scale`) and the array; false after an
+   * error (`which` names the block).
+   */
+  bool CheckImage(vtkImageData* image, const std::string& which, int n[3], double offset[3],
+    double scale[3], vtkDataArray*& array);
+  /// The arrays' values as doubles and their range over all; false (an error) at NaN or infinity.
+  bool ReadValues(const std::vector<vtkDataArray*>& arrays,
+    std::vector<std::vector<double>>& values, double range[2]);
+  /// Why the refinement stopped (a vtkLRSplineFitCore::Outcome other than FAILED or REFINED).
+  std::string GetStopReason(int outcome) const;
 };
 
 #endif
