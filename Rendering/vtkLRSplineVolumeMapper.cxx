@@ -153,6 +153,46 @@ void CollectGrids(vtkDataObject* input, std::vector<vtkUnstructuredGrid*>& grids
     surface = true;
   }
 }
+
+// The lights (VTK's volume mappers sum them): every switched-on light,
+// directional (toward the light from its focal point; direction and
+// intensity times color), at most 8; none: a headlight.
+std::vector<std::array<float, 6>> CollectLights(vtkRenderer* ren)
+{
+  std::vector<std::array<float, 6>> lightList;
+  vtkLightCollection* lights = ren->GetLights();
+  lights->InitTraversal();
+  for (vtkLight* l = lights->GetNextItem(); l && lightList.size() < 8; l = lights->GetNextItem())
+  {
+    if (!l->GetSwitch() || !(l->GetIntensity() > 0))
+    {
+      continue;
+    }
+    double p[3], f[3], toLight[3];
+    l->GetTransformedPosition(p);
+    l->GetTransformedFocalPoint(f);
+    vtkMath::Subtract(p, f, toLight);
+    if (vtkMath::Normalize(toLight) == 0.0)
+    {
+      continue;
+    }
+    const double* c = l->GetDiffuseColor();
+    const double i = l->GetIntensity();
+    lightList.push_back({ static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
+      static_cast<float>(toLight[2]), static_cast<float>(c[0] * i), static_cast<float>(c[1] * i),
+      static_cast<float>(c[2] * i) });
+  }
+  if (lightList.empty())
+  {
+    double toLight[3];
+    vtkMath::Subtract(
+      ren->GetActiveCamera()->GetPosition(), ren->GetActiveCamera()->GetFocalPoint(), toLight);
+    vtkMath::Normalize(toLight);
+    lightList.push_back({ static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
+      static_cast<float>(toLight[2]), 1.0f, 1.0f, 1.0f });
+  }
+  return lightList;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -291,6 +331,275 @@ struct vtkLRSplineVolumeMapper::vtkInternals
     this->TrimKey.clear();
     this->UploadTime = vtkTimeStamp();
     this->Window = nullptr;
+  }
+
+  // The input holds 1 to MaximumPatches polynomial LR-spline volume patches
+  // with point data (else Fail()).
+  bool CheckInput(vtkDataObject* input)
+  {
+    std::vector<vtkUnstructuredGrid*> grids;
+    bool surface = false;
+    CollectGrids(input, grids, surface);
+    if (surface)
+    {
+      return this->Fail("the input is a surface (2D) spline or a polygonal data set: the volume "
+                        "mapper renders trivariate LR-spline volumes only");
+    }
+    if (grids.empty())
+    {
+      return this->Fail(std::string("the input (") + input->GetClassName() +
+        ") holds no LR-spline patch: expected the output of vtkLRSplineReader, a "
+        "vtkMultiBlockDataSet of VTK_BEZIER_HEXAHEDRON grids");
+    }
+    if (static_cast<int>(grids.size()) > MaximumPatches)
+    {
+      return this->Fail("the input has " + std::to_string(grids.size()) +
+        " patches; the volume mapper renders at most " + std::to_string(MaximumPatches));
+    }
+    for (std::size_t g = 0; g < grids.size(); ++g)
+    {
+      vtkPointData* pd = grids[g]->GetPointData();
+      vtkFieldData* fd = grids[g]->GetFieldData();
+      vtkDataArray* rational = fd ? fd->GetArray(vtkLRSplineArrayNames::Rational) : nullptr;
+      vtkDataArray* mode = fd ? fd->GetArray(vtkLRSplineArrayNames::Mode) : nullptr;
+      const bool geometryMode =
+        mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1;
+      // (Rational geometry maps are rendered by inversion, their fields as
+      // rational splines; a rational field over a parameter box is not.)
+      if (!geometryMode &&
+        (pd->GetRationalWeights() || pd->GetArray(vtkLRSplineArrayNames::RationalWeights) ||
+          (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0)))
+      {
+        return this->Fail("patch " + std::to_string(g) +
+          " is rational (it has rational weights): the volume mapper renders polynomial "
+          "LR splines only");
+      }
+      if (pd->GetNumberOfArrays() == 0)
+      {
+        return this->Fail("patch " + std::to_string(g) +
+          " has no point-data array: there is no scalar or vector field to render");
+      }
+    }
+    return true;
+  }
+
+  // The patches' common degrees (the largest per direction; patches of
+  // lower degree are raised exactly), at most 3 (else Fail()).
+  bool CommonDegrees(int degree[3])
+  {
+    degree[0] = degree[1] = degree[2] = 1;
+    for (int p = 0; p < this->Field.GetNumberOfPatches(); ++p)
+    {
+      const int* d = this->Field.GetPatch(p).GetVolume().Degree;
+      for (int k = 0; k < 3; ++k)
+      {
+        degree[k] = std::max(degree[k], d[k]);
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      if (degree[k] > 3)
+      {
+        return this->Fail("the spline has degree " + std::to_string(degree[k]) + " in direction " +
+          std::to_string(k) + "; the volume mapper renders degrees up to 3");
+      }
+    }
+    return true;
+  }
+
+  // Element e of a patch (its Bezier volume at the common degree, the raised
+  // homogeneous geometry of a curved patch) into the GPU arrays: its box
+  // (curved: the physical box and shortest side), coefficients and value
+  // ranges. `edge`: the patch's parameter-to-data scale per direction.
+  void AppendElement(const vtkLRSplineBezierVolume& volume, vtkIdType e,
+    const vtkLRSplineGeometryMap* geometryMap, const vtkLRSplineBezierVolume& geometryRaised,
+    const double edge[3], int per, int nc)
+  {
+    const double* b = volume.GetBox(e);
+    if (geometryMap)
+    {
+      // The physical box; its fourth value the element's shortest side
+      // (data units, > 0: marks a curved element).
+      const double* pb = geometryMap->GetPhysicalBox(e);
+      const double side = geometryMap->GetElementMinimumSide(e);
+      this->Boxes.insert(this->Boxes.end(),
+        { static_cast<float>(pb[0]), static_cast<float>(pb[1]), static_cast<float>(pb[2]), 0.0f,
+          static_cast<float>(pb[3]), static_cast<float>(pb[4]), static_cast<float>(pb[5]),
+          static_cast<float>(side) });
+      this->MinimumSide = std::min(this->MinimumSide, side);
+    }
+    else
+    {
+      this->Boxes.insert(this->Boxes.end(),
+        { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]), 0.0f,
+          static_cast<float>(b[3]), static_cast<float>(b[4]), static_cast<float>(b[5]), 0.0f });
+    }
+    this->Offsets.push_back(static_cast<std::uint32_t>(this->Coefficients.size()));
+    const double* c = volume.GetElementCoefficients(e);
+    for (int i = 0; i < per; ++i)
+    {
+      this->Coefficients.push_back(static_cast<float>(c[i]));
+    }
+    if (geometryMap)
+    {
+      const double* gc = geometryRaised.GetElementCoefficients(e);
+      const int gper = 4 * per / nc;
+      for (int i = 0; i < gper; ++i)
+      {
+        this->Coefficients.push_back(static_cast<float>(gc[i]));
+      }
+    }
+    // Coefficient ranges (the element's values lie within them). On a
+    // rational map the coefficients are w f: the ranges are of f.
+    const double* gw = geometryMap ? geometryRaised.GetElementCoefficients(e) + 3 : nullptr;
+    auto coefficient = [&](int i) { return gw ? c[i] / gw[4 * (i / nc)] : c[i]; };
+    double magnitudeLow = 0.0, magnitudeHigh = 0.0;
+    for (int comp = 0; comp < nc; ++comp)
+    {
+      double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
+      for (int i = comp; i < per; i += nc)
+      {
+        lo = std::min(lo, coefficient(i));
+        hi = std::max(hi, coefficient(i));
+      }
+      this->ComponentRanges.push_back(static_cast<float>(lo));
+      this->ComponentRanges.push_back(static_cast<float>(hi));
+      magnitudeLow = std::max(magnitudeLow, lo > 0 ? lo : (hi < 0 ? -hi : 0.0));
+    }
+    for (int i = 0; i < per; i += nc)
+    {
+      double m2 = 0.0;
+      for (int comp = 0; comp < nc; ++comp)
+      {
+        m2 += coefficient(i + comp) * coefficient(i + comp);
+      }
+      magnitudeHigh = std::max(magnitudeHigh, std::sqrt(m2));
+    }
+    this->MagnitudeRanges.push_back(static_cast<float>(magnitudeLow));
+    this->MagnitudeRanges.push_back(static_cast<float>(magnitudeHigh));
+    for (int k = 0; k < 3 && !geometryMap; ++k)
+    {
+      this->MinimumSide = std::min(this->MinimumSide, (b[k + 3] - b[k]) * edge[k]);
+    }
+  }
+
+  // Patch p of the field into the GPU arrays (its search structure, element
+  // boxes, coefficients at the common degree) and Patches; `kdLocator`: the
+  // mapper's locator is a k-d forest or tree (curved patches need one);
+  // firstElement advances past its elements. False (Fail()) on a bad patch.
+  bool FlattenPatch(int p, const int degree[3], int nc, bool kdLocator, vtkIdType& firstElement)
+  {
+    const int per = (degree[0] + 1) * (degree[1] + 1) * (degree[2] + 1) * nc;
+    const vtkLRSplineEvaluator& patch = this->Field.GetPatch(p);
+    const vtkLRSplineElementLocator& locator = patch.GetLocator();
+    const vtkLRSplineBezierVolume* volume = &patch.GetVolume();
+    vtkLRSplineBezierVolume raised;
+    if (volume->Degree[0] != degree[0] || volume->Degree[1] != degree[1] ||
+      volume->Degree[2] != degree[2])
+    {
+      raised = *volume;
+      raised.CoefficientsFloat.clear();
+      if (!raised.ElevateDegree(degree))
+      {
+        return this->Fail("patch " + std::to_string(p) + ": degree elevation failed");
+      }
+      volume = &raised;
+    }
+    for (double c : volume->Coefficients)
+    {
+      if (!std::isfinite(c))
+      {
+        return this->Fail("patch " + std::to_string(p) + " has NaN or infinite coefficients in \"" +
+          this->Field.GetArrayName() + "\"");
+      }
+    }
+    // A curved patch: its geometry's Bezier coefficients follow the
+    // field's per element, its search structure is the geometry map's.
+    const vtkLRSplineGeometryMap* geometryMap = patch.GetGeometry();
+    vtkLRSplineBezierVolume geometryRaised;
+    if (geometryMap)
+    {
+      if (!kdLocator)
+      {
+        return this->Fail("patch " + std::to_string(p) +
+          " has a curved geometry: its elements are found with a k-d forest or tree, not the " +
+          "octree or the look-up texture");
+      }
+      geometryRaised = geometryMap->GetVolume();
+      geometryRaised.CoefficientsFloat.clear();
+      if (geometryRaised.NumberOfComponents == 3)
+      {
+        // The shader reads homogeneous coefficients (w x, w y, w z, w).
+        std::vector<double> h(geometryRaised.Coefficients.size() / 3 * 4);
+        for (std::size_t k = 0; k < h.size() / 4; ++k)
+        {
+          std::copy(&geometryRaised.Coefficients[3 * k], &geometryRaised.Coefficients[3 * k] + 3,
+            &h[4 * k]);
+          h[4 * k + 3] = 1.0;
+        }
+        geometryRaised.Coefficients.swap(h);
+        geometryRaised.NumberOfComponents = 4;
+      }
+      if (!geometryRaised.ElevateDegree(degree))
+      {
+        return this->Fail("patch " + std::to_string(p) + ": the geometry's degree is too high");
+      }
+      this->Curved = true;
+    }
+    const vtkLRSplineElementLocator& search = geometryMap ? geometryMap->GetLocator() : locator;
+    PatchInfo info;
+    info.Curved = geometryMap ? 1 : 0;
+    const double* domain = search.GetDomain();
+    const double* A = patch.GetMatrix();
+    const double* inverse = patch.GetInverseMatrix();
+    const double* offset = patch.GetOffset();
+    double patchBounds[6];
+    patch.GetBounds(patchBounds);
+    double edge[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      edge[k] = std::sqrt(A[k] * A[k] + A[3 + k] * A[3 + k] + A[6 + k] * A[6 + k]);
+      info.Lo[k] = static_cast<float>(domain[k]);
+      info.Hi[k] = static_cast<float>(domain[k + 3]);
+      info.Offset[k] = static_cast<float>(offset[k]);
+      info.Edge[k] = static_cast<float>(edge[k]);
+      info.BoxLo[k] = static_cast<float>(patchBounds[2 * k]);
+      info.BoxHi[k] = static_cast<float>(patchBounds[2 * k + 1]);
+    }
+    for (int k = 0; k < 9; ++k)
+    {
+      info.Inverse[k] = static_cast<float>(inverse[k]);
+    }
+    info.Starts[0] = static_cast<int>(this->Heads.size());
+    info.Starts[1] = static_cast<int>(this->NodeWords.size());
+    info.Starts[2] = static_cast<int>(this->Octree.size());
+    info.Starts[3] = static_cast<int>(firstElement);
+    if (search.GetType() == vtkLRSplineElementLocator::OCTREE)
+    {
+      info.Locator = 1;
+      const auto& oct = search.GetOctreeNodes();
+      this->Octree.insert(this->Octree.end(), oct.begin(), oct.end());
+    }
+    else
+    {
+      info.Locator = 0;
+      const int* nb = search.GetNumberOfBlocks();
+      std::copy(nb, nb + 3, info.Blocks);
+      const auto& heads = search.GetHeads();
+      const auto& words = search.GetNodeWords();
+      const std::vector<float> splits = search.GetNodeSplitsFloat();
+      this->Heads.insert(this->Heads.end(), heads.begin(), heads.end());
+      this->NodeWords.insert(this->NodeWords.end(), words.begin(), words.end());
+      this->NodeSplits.insert(this->NodeSplits.end(), splits.begin(), splits.end());
+    }
+    const vtkIdType ne = volume->GetNumberOfElements();
+    for (vtkIdType e = 0; e < ne; ++e)
+    {
+      this->AppendElement(*volume, e, geometryMap, geometryRaised, edge, per, nc);
+    }
+    firstElement += ne;
+    this->Patches.push_back(info);
+    return true;
   }
 };
 
@@ -431,49 +740,9 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   in.SkipKey.clear();
   in.BuildTime.Modified();
 
-  // What kind of input is this?
-  std::vector<vtkUnstructuredGrid*> grids;
-  bool surface = false;
-  CollectGrids(input, grids, surface);
-  if (surface)
+  if (!in.CheckInput(input))
   {
-    return done(in.Fail("the input is a surface (2D) spline or a polygonal data set: the volume "
-                        "mapper renders trivariate LR-spline volumes only"));
-  }
-  if (grids.empty())
-  {
-    return done(in.Fail(std::string("the input (") + input->GetClassName() +
-      ") holds no LR-spline patch: expected the output of vtkLRSplineReader, a "
-      "vtkMultiBlockDataSet of VTK_BEZIER_HEXAHEDRON grids"));
-  }
-  if (static_cast<int>(grids.size()) > MaximumPatches)
-  {
-    return done(in.Fail("the input has " + std::to_string(grids.size()) +
-      " patches; the volume mapper renders at most " + std::to_string(MaximumPatches)));
-  }
-  for (std::size_t g = 0; g < grids.size(); ++g)
-  {
-    vtkPointData* pd = grids[g]->GetPointData();
-    vtkFieldData* fd = grids[g]->GetFieldData();
-    vtkDataArray* rational = fd ? fd->GetArray(vtkLRSplineArrayNames::Rational) : nullptr;
-    vtkDataArray* mode = fd ? fd->GetArray(vtkLRSplineArrayNames::Mode) : nullptr;
-    const bool geometryMode =
-      mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1;
-    // (Rational geometry maps are rendered by inversion, their fields as
-    // rational splines; a rational field over a parameter box is not.)
-    if (!geometryMode &&
-      (pd->GetRationalWeights() || pd->GetArray(vtkLRSplineArrayNames::RationalWeights) ||
-        (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0)))
-    {
-      return done(in.Fail("patch " + std::to_string(g) +
-        " is rational (it has rational weights): the volume mapper renders polynomial "
-        "LR splines only"));
-    }
-    if (pd->GetNumberOfArrays() == 0)
-    {
-      return done(in.Fail("patch " + std::to_string(g) +
-        " has no point-data array: there is no scalar or vector field to render"));
-    }
+    return done(false);
   }
 
   std::string message;
@@ -496,22 +765,10 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
       " does not exist: the field has " + std::to_string(nc) + " components"));
   }
   // Common degrees (raised exactly to the largest per direction).
-  int degree[3] = { 1, 1, 1 };
-  for (int p = 0; p < np; ++p)
+  int degree[3];
+  if (!in.CommonDegrees(degree))
   {
-    const int* d = in.Field.GetPatch(p).GetVolume().Degree;
-    for (int k = 0; k < 3; ++k)
-    {
-      degree[k] = std::max(degree[k], d[k]);
-    }
-  }
-  for (int k = 0; k < 3; ++k)
-  {
-    if (degree[k] > 3)
-    {
-      return done(in.Fail("the spline has degree " + std::to_string(degree[k]) + " in direction " +
-        std::to_string(k) + "; the volume mapper renders degrees up to 3"));
-    }
+    return done(false);
   }
   std::copy(degree, degree + 3, in.Degree);
   in.NumberOfComponents = nc;
@@ -534,180 +791,11 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   vtkIdType firstElement = 0;
   for (int p = 0; p < np; ++p)
   {
-    const vtkLRSplineEvaluator& patch = in.Field.GetPatch(p);
-    const vtkLRSplineElementLocator& locator = patch.GetLocator();
-    const vtkLRSplineBezierVolume* volume = &patch.GetVolume();
-    vtkLRSplineBezierVolume raised;
-    if (volume->Degree[0] != degree[0] || volume->Degree[1] != degree[1] ||
-      volume->Degree[2] != degree[2])
+    if (!in.FlattenPatch(p, degree, nc,
+          this->ElementLocator != OCTREE && this->ElementLocator != TEXTURE, firstElement))
     {
-      raised = *volume;
-      raised.CoefficientsFloat.clear();
-      if (!raised.ElevateDegree(degree))
-      {
-        return done(in.Fail("patch " + std::to_string(p) + ": degree elevation failed"));
-      }
-      volume = &raised;
+      return done(false);
     }
-    for (double c : volume->Coefficients)
-    {
-      if (!std::isfinite(c))
-      {
-        return done(in.Fail("patch " + std::to_string(p) +
-          " has NaN or infinite coefficients in \"" + in.Field.GetArrayName() + "\""));
-      }
-    }
-    // A curved patch: its geometry's Bezier coefficients follow the
-    // field's per element, its search structure is the geometry map's.
-    const vtkLRSplineGeometryMap* geometryMap = patch.GetGeometry();
-    vtkLRSplineBezierVolume geometryRaised;
-    if (geometryMap)
-    {
-      if (this->ElementLocator == OCTREE || this->ElementLocator == TEXTURE)
-      {
-        return done(in.Fail("patch " + std::to_string(p) +
-          " has a curved geometry: its elements are found with a k-d forest or tree, not the " +
-          "octree or the look-up texture"));
-      }
-      geometryRaised = geometryMap->GetVolume();
-      geometryRaised.CoefficientsFloat.clear();
-      if (geometryRaised.NumberOfComponents == 3)
-      {
-        // The shader reads homogeneous coefficients (w x, w y, w z, w).
-        std::vector<double> h(geometryRaised.Coefficients.size() / 3 * 4);
-        for (std::size_t k = 0; k < h.size() / 4; ++k)
-        {
-          std::copy(&geometryRaised.Coefficients[3 * k], &geometryRaised.Coefficients[3 * k] + 3,
-            &h[4 * k]);
-          h[4 * k + 3] = 1.0;
-        }
-        geometryRaised.Coefficients.swap(h);
-        geometryRaised.NumberOfComponents = 4;
-      }
-      if (!geometryRaised.ElevateDegree(degree))
-      {
-        return done(in.Fail("patch " + std::to_string(p) + ": the geometry's degree is too high"));
-      }
-      in.Curved = true;
-    }
-    const vtkLRSplineElementLocator& search = geometryMap ? geometryMap->GetLocator() : locator;
-    PatchInfo info;
-    info.Curved = geometryMap ? 1 : 0;
-    const double* domain = search.GetDomain();
-    const double* A = patch.GetMatrix();
-    const double* inverse = patch.GetInverseMatrix();
-    const double* offset = patch.GetOffset();
-    double patchBounds[6];
-    patch.GetBounds(patchBounds);
-    double edge[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      edge[k] = std::sqrt(A[k] * A[k] + A[3 + k] * A[3 + k] + A[6 + k] * A[6 + k]);
-      info.Lo[k] = static_cast<float>(domain[k]);
-      info.Hi[k] = static_cast<float>(domain[k + 3]);
-      info.Offset[k] = static_cast<float>(offset[k]);
-      info.Edge[k] = static_cast<float>(edge[k]);
-      info.BoxLo[k] = static_cast<float>(patchBounds[2 * k]);
-      info.BoxHi[k] = static_cast<float>(patchBounds[2 * k + 1]);
-    }
-    for (int k = 0; k < 9; ++k)
-    {
-      info.Inverse[k] = static_cast<float>(inverse[k]);
-    }
-    info.Starts[0] = static_cast<int>(in.Heads.size());
-    info.Starts[1] = static_cast<int>(in.NodeWords.size());
-    info.Starts[2] = static_cast<int>(in.Octree.size());
-    info.Starts[3] = static_cast<int>(firstElement);
-    if (search.GetType() == vtkLRSplineElementLocator::OCTREE)
-    {
-      info.Locator = 1;
-      const auto& oct = search.GetOctreeNodes();
-      in.Octree.insert(in.Octree.end(), oct.begin(), oct.end());
-    }
-    else
-    {
-      info.Locator = 0;
-      const int* nb = search.GetNumberOfBlocks();
-      std::copy(nb, nb + 3, info.Blocks);
-      const auto& heads = search.GetHeads();
-      const auto& words = search.GetNodeWords();
-      const std::vector<float> splits = search.GetNodeSplitsFloat();
-      in.Heads.insert(in.Heads.end(), heads.begin(), heads.end());
-      in.NodeWords.insert(in.NodeWords.end(), words.begin(), words.end());
-      in.NodeSplits.insert(in.NodeSplits.end(), splits.begin(), splits.end());
-    }
-    const vtkIdType ne = volume->GetNumberOfElements();
-    for (vtkIdType e = 0; e < ne; ++e)
-    {
-      const double* b = volume->GetBox(e);
-      if (geometryMap)
-      {
-        // The physical box; its fourth value the element's shortest side
-        // (data units, > 0: marks a curved element).
-        const double* pb = geometryMap->GetPhysicalBox(e);
-        const double side = geometryMap->GetElementMinimumSide(e);
-        in.Boxes.insert(in.Boxes.end(),
-          { static_cast<float>(pb[0]), static_cast<float>(pb[1]), static_cast<float>(pb[2]), 0.0f,
-            static_cast<float>(pb[3]), static_cast<float>(pb[4]), static_cast<float>(pb[5]),
-            static_cast<float>(side) });
-        in.MinimumSide = std::min(in.MinimumSide, side);
-      }
-      else
-      {
-        in.Boxes.insert(in.Boxes.end(),
-          { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]), 0.0f,
-            static_cast<float>(b[3]), static_cast<float>(b[4]), static_cast<float>(b[5]), 0.0f });
-      }
-      in.Offsets.push_back(static_cast<std::uint32_t>(in.Coefficients.size()));
-      const double* c = volume->GetElementCoefficients(e);
-      for (int i = 0; i < per; ++i)
-      {
-        in.Coefficients.push_back(static_cast<float>(c[i]));
-      }
-      if (geometryMap)
-      {
-        const double* gc = geometryRaised.GetElementCoefficients(e);
-        const int gper = 4 * per / nc;
-        for (int i = 0; i < gper; ++i)
-        {
-          in.Coefficients.push_back(static_cast<float>(gc[i]));
-        }
-      }
-      // Coefficient ranges (the element's values lie within them). On a
-      // rational map the coefficients are w f: the ranges are of f.
-      const double* gw = geometryMap ? geometryRaised.GetElementCoefficients(e) + 3 : nullptr;
-      auto coefficient = [&](int i) { return gw ? c[i] / gw[4 * (i / nc)] : c[i]; };
-      double magnitudeLow = 0.0, magnitudeHigh = 0.0;
-      for (int comp = 0; comp < nc; ++comp)
-      {
-        double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
-        for (int i = comp; i < per; i += nc)
-        {
-          lo = std::min(lo, coefficient(i));
-          hi = std::max(hi, coefficient(i));
-        }
-        in.ComponentRanges.push_back(static_cast<float>(lo));
-        in.ComponentRanges.push_back(static_cast<float>(hi));
-        magnitudeLow = std::max(magnitudeLow, lo > 0 ? lo : (hi < 0 ? -hi : 0.0));
-      }
-      for (int i = 0; i < per; i += nc)
-      {
-        double m2 = 0.0;
-        for (int comp = 0; comp < nc; ++comp)
-        {
-          m2 += coefficient(i + comp) * coefficient(i + comp);
-        }
-        magnitudeHigh = std::max(magnitudeHigh, std::sqrt(m2));
-      }
-      in.MagnitudeRanges.push_back(static_cast<float>(magnitudeLow));
-      in.MagnitudeRanges.push_back(static_cast<float>(magnitudeHigh));
-      for (int k = 0; k < 3 && !geometryMap; ++k)
-      {
-        in.MinimumSide = std::min(in.MinimumSide, (b[k + 3] - b[k]) * edge[k]);
-      }
-    }
-    firstElement += ne;
-    in.Patches.push_back(info);
   }
   in.Valid = true;
   in.Error.clear();
@@ -1273,6 +1361,192 @@ void vtkLRSplineVolumeMapper::DrawSinglePass()
 }
 
 //------------------------------------------------------------------------------
+std::string vtkLRSplineVolumeMapper::BuildFragmentShaderSource(
+  bool shade, bool multiPass, size_t numberOfLights)
+{
+  vtkInternals& in = *this->Internals;
+  std::string fs = this->GetFragmentShaderSource();
+  std::ostringstream defines;
+  defines << "//VTK::System::Dec\n"
+          << "#define LR_DU " << in.Degree[0] << "\n#define LR_DV " << in.Degree[1]
+          << "\n#define LR_DW " << in.Degree[2] << "\n#define LR_NC " << in.NumberOfComponents
+          << "\n#define LR_COMPONENT "
+          << (in.NumberOfComponents == 1
+                 ? 0
+                 : (this->VectorMode == COMPONENT ? this->VectorComponent : -1))
+          << "\n#define LR_BLEND " << this->BlendMode << "\n#define LR_SHADE " << (shade ? 1 : 0)
+          << "\n#define LR_FUCHS " << (this->ShadingModel == FUCHS ? 1 : 0) << "\n#define LR_TRIM "
+          << (this->GetNumberOfInputConnections(1) > 0 || this->GetInputDataObject(1, 0) ? 1 : 0)
+          << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0) << "\n#define LR_PATCHES "
+          << in.Patches.size() << "\n#define LR_CURVED " << (in.Curved ? 1 : 0)
+          << "\n#define LR_MULTIPASS " << (multiPass ? 1 : 0) << "\n#define LR_SUPERSAMPLING "
+          << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
+          << "\n#define LR_LIGHTS " << numberOfLights << "\n#define LR_MAX_PATCHES "
+          << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
+  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str());
+  return fs;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::UpdateProxyBox(const double box[6])
+{
+  vtkInternals& in = *this->Internals;
+  if (in.CubeBuffer && std::equal(box, box + 6, in.CubeBox))
+  {
+    return;
+  }
+  // Slightly larger than the box, so its faces never clip the volume.
+  double pad[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    pad[d] = 1e-4 * (box[d + 3] - box[d]) + 1e-9;
+  }
+  std::vector<float> tri;
+  const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 5, 7, 3 }, { 0, 4, 5, 1 }, { 2, 3, 7, 6 },
+    { 0, 1, 3, 2 }, { 4, 6, 7, 5 } };
+  auto corner = [&](int c, int d)
+  {
+    const bool high = (c >> d) & 1;
+    return static_cast<float>(high ? box[d + 3] + pad[d] : box[d] - pad[d]);
+  };
+  for (const auto& f : faces)
+  {
+    for (int v : { 0, 1, 2, 0, 2, 3 })
+    {
+      for (int d = 0; d < 3; ++d)
+      {
+        tri.push_back(corner(f[v], d));
+      }
+    }
+  }
+  if (!in.CubeBuffer)
+  {
+    in.CubeBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  }
+  in.CubeBuffer->Upload(tri, vtkOpenGLBufferObject::ArrayBuffer);
+  std::copy(box, box + 6, in.CubeBox);
+  in.CubeArrayProgram = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::SetClippingPlaneUniforms(
+  vtkShaderProgram* program, vtkMatrix4x4* dataToWorld)
+{
+  vtkPlaneCollection* planes = this->ClippingPlanes;
+  const int n = planes ? std::min(planes->GetNumberOfItems(), MaximumClipPlanes) : 0;
+  if (planes && planes->GetNumberOfItems() > MaximumClipPlanes)
+  {
+    vtkWarningMacro(<< "Only the first " << MaximumClipPlanes << " clipping planes are used.");
+  }
+  float equations[MaximumClipPlanes][4] = {};
+  for (int i = 0; i < n; ++i)
+  {
+    vtkPlane* plane = planes->GetItem(i);
+    double normal[3], origin[3];
+    plane->GetNormal(normal);
+    plane->GetOrigin(origin);
+    // Kept: n . (x_world - o) >= 0 with x_world = A x + t.
+    double d = -vtkMath::Dot(normal, origin);
+    for (int r = 0; r < 3; ++r)
+    {
+      d += normal[r] * dataToWorld->GetElement(r, 3);
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      double v = 0.0;
+      for (int r = 0; r < 3; ++r)
+      {
+        v += normal[r] * dataToWorld->GetElement(r, c);
+      }
+      equations[i][c] = static_cast<float>(v);
+    }
+    equations[i][3] = static_cast<float>(d);
+  }
+  program->SetUniformi("lrNumberOfClipPlanes", n);
+  program->SetUniform4fv("lrClipPlanes", MaximumClipPlanes, equations);
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::SetShadingUniforms(vtkShaderProgram* program,
+  vtkVolumeProperty* property, const std::vector<std::array<float, 6>>& lightList,
+  const std::vector<float>& isoValues)
+{
+  vtkInternals& in = *this->Internals;
+  const float range[2] = { static_cast<float>(in.TransferRange[0]),
+    static_cast<float>(in.TransferRange[1]) };
+  program->SetUniform2f("lrRange", range);
+  program->SetUniformf("lrUnitDistance",
+    static_cast<float>(std::max(property->GetScalarOpacityUnitDistance(0), 1e-12)));
+  program->SetUniformf("lrAmbient", static_cast<float>(property->GetAmbient(0)));
+  program->SetUniformf("lrDiffuse", static_cast<float>(property->GetDiffuse(0)));
+  program->SetUniformf("lrSpecular", static_cast<float>(property->GetSpecular(0)));
+  program->SetUniformf("lrSpecularPower", static_cast<float>(property->GetSpecularPower(0)));
+  {
+    std::vector<float> directions, colors;
+    for (const auto& l : lightList)
+    {
+      directions.insert(directions.end(), l.begin(), l.begin() + 3);
+      colors.insert(colors.end(), l.begin() + 3, l.end());
+    }
+    program->SetUniform3fv("lrLightDirections", static_cast<int>(lightList.size()),
+      reinterpret_cast<const float(*)[3]>(directions.data()));
+    program->SetUniform3fv("lrLightColors", static_cast<int>(lightList.size()),
+      reinterpret_cast<const float(*)[3]>(colors.data()));
+  }
+  {
+    float iso[MaximumIsoValues] = {};
+    std::copy(isoValues.begin(), isoValues.end(), iso);
+    program->SetUniform1fv("lrIsoValues", MaximumIsoValues, iso);
+    program->SetUniformi("lrNumberOfIsoValues", static_cast<int>(isoValues.size()));
+    program->SetUniformi("lrBisections", this->IsosurfaceBisections);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::ActivateTextures(vtkShaderProgram* program, bool trim)
+{
+  vtkInternals& in = *this->Internals;
+  in.HeadsBuffer.Activate(program, "lrHeads");
+  in.NodeWordsBuffer.Activate(program, "lrNodeWords");
+  in.NodeSplitsBuffer.Activate(program, "lrNodeSplits");
+  in.OctreeBuffer.Activate(program, "lrOctree");
+  in.BoxesBuffer.Activate(program, "lrBoxes");
+  in.OffsetsBuffer.Activate(program, "lrOffsets");
+  in.CoefficientsBuffer.Activate(program, "lrCoefficients");
+  in.TransferTexture->Activate();
+  program->SetUniformi("lrTransfer", in.TransferTexture->GetTextureUnit());
+  in.DepthTexture->Activate();
+  program->SetUniformi("lrDepth", in.DepthTexture->GetTextureUnit());
+  if (trim)
+  {
+    in.TrimTextures[0]->Activate();
+    in.TrimTextures[1]->Activate();
+    program->SetUniformi("lrTrimFront", in.TrimTextures[0]->GetTextureUnit());
+    program->SetUniformi("lrTrimBack", in.TrimTextures[1]->GetTextureUnit());
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::DeactivateTextures(bool trim)
+{
+  vtkInternals& in = *this->Internals;
+  in.HeadsBuffer.Deactivate();
+  in.NodeWordsBuffer.Deactivate();
+  in.NodeSplitsBuffer.Deactivate();
+  in.OctreeBuffer.Deactivate();
+  in.BoxesBuffer.Deactivate();
+  in.OffsetsBuffer.Deactivate();
+  in.CoefficientsBuffer.Deactivate();
+  in.TransferTexture->Deactivate();
+  in.DepthTexture->Deactivate();
+  if (trim)
+  {
+    in.TrimTextures[0]->Deactivate();
+    in.TrimTextures[1]->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   vtkInternals& in = *this->Internals;
@@ -1307,43 +1581,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     return;
   }
 
-  // The lights (VTK's volume mappers sum them): every switched-on light,
-  // directional (toward the light from its focal point), at most 8; none:
-  // a headlight.
-  std::vector<std::array<float, 6>> lightList;
-  {
-    vtkLightCollection* lights = ren->GetLights();
-    lights->InitTraversal();
-    for (vtkLight* l = lights->GetNextItem(); l && lightList.size() < 8; l = lights->GetNextItem())
-    {
-      if (!l->GetSwitch() || !(l->GetIntensity() > 0))
-      {
-        continue;
-      }
-      double p[3], f[3], toLight[3];
-      l->GetTransformedPosition(p);
-      l->GetTransformedFocalPoint(f);
-      vtkMath::Subtract(p, f, toLight);
-      if (vtkMath::Normalize(toLight) == 0.0)
-      {
-        continue;
-      }
-      const double* c = l->GetDiffuseColor();
-      const double i = l->GetIntensity();
-      lightList.push_back({ static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
-        static_cast<float>(toLight[2]), static_cast<float>(c[0] * i), static_cast<float>(c[1] * i),
-        static_cast<float>(c[2] * i) });
-    }
-    if (lightList.empty())
-    {
-      double toLight[3];
-      vtkMath::Subtract(
-        ren->GetActiveCamera()->GetPosition(), ren->GetActiveCamera()->GetFocalPoint(), toLight);
-      vtkMath::Normalize(toLight);
-      lightList.push_back({ static_cast<float>(toLight[0]), static_cast<float>(toLight[1]),
-        static_cast<float>(toLight[2]), 1.0f, 1.0f, 1.0f });
-    }
-  }
+  const std::vector<std::array<float, 6>> lightList = CollectLights(ren);
 
   // Continuation in passes when the rays may need more samples than a pass
   // runs (see MaximumStepsPerPass).
@@ -1358,29 +1596,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   // The program.
   const bool shade = property->GetShade(0) != 0 && !this->CountSamples;
-  std::string fs = this->GetFragmentShaderSource();
-  {
-    std::ostringstream defines;
-    defines << "//VTK::System::Dec\n"
-            << "#define LR_DU " << in.Degree[0] << "\n#define LR_DV " << in.Degree[1]
-            << "\n#define LR_DW " << in.Degree[2] << "\n#define LR_NC " << in.NumberOfComponents
-            << "\n#define LR_COMPONENT "
-            << (in.NumberOfComponents == 1
-                   ? 0
-                   : (this->VectorMode == COMPONENT ? this->VectorComponent : -1))
-            << "\n#define LR_BLEND " << this->BlendMode << "\n#define LR_SHADE " << (shade ? 1 : 0)
-            << "\n#define LR_FUCHS " << (this->ShadingModel == FUCHS ? 1 : 0)
-            << "\n#define LR_TRIM "
-            << (this->GetNumberOfInputConnections(1) > 0 || this->GetInputDataObject(1, 0) ? 1 : 0)
-            << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0)
-            << "\n#define LR_PATCHES " << in.Patches.size() << "\n#define LR_CURVED "
-            << (in.Curved ? 1 : 0) << "\n#define LR_MULTIPASS " << (multiPass ? 1 : 0)
-            << "\n#define LR_SUPERSAMPLING "
-            << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
-            << "\n#define LR_LIGHTS " << lightList.size() << "\n#define LR_MAX_PATCHES "
-            << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
-    vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str());
-  }
+  const std::string fs = this->BuildFragmentShaderSource(shade, multiPass, lightList.size());
   const bool trim = fs.find("#define LR_TRIM 1") != std::string::npos;
   const std::string vs = this->GetVertexShaderSource();
   // A source that failed once is not compiled again every frame.
@@ -1446,40 +1662,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   // The proxy box (the union of the patches' boxes).
   double box[6] = { in.Bounds[0], in.Bounds[2], in.Bounds[4], in.Bounds[1], in.Bounds[3],
     in.Bounds[5] };
-  if (!in.CubeBuffer || !std::equal(box, box + 6, in.CubeBox))
-  {
-    // Slightly larger than the box, so its faces never clip the volume.
-    double pad[3];
-    for (int d = 0; d < 3; ++d)
-    {
-      pad[d] = 1e-4 * (box[d + 3] - box[d]) + 1e-9;
-    }
-    std::vector<float> tri;
-    const int faces[6][4] = { { 0, 2, 6, 4 }, { 1, 5, 7, 3 }, { 0, 4, 5, 1 }, { 2, 3, 7, 6 },
-      { 0, 1, 3, 2 }, { 4, 6, 7, 5 } };
-    auto corner = [&](int c, int d)
-    {
-      const bool high = (c >> d) & 1;
-      return static_cast<float>(high ? box[d + 3] + pad[d] : box[d] - pad[d]);
-    };
-    for (const auto& f : faces)
-    {
-      for (int v : { 0, 1, 2, 0, 2, 3 })
-      {
-        for (int d = 0; d < 3; ++d)
-        {
-          tri.push_back(corner(f[v], d));
-        }
-      }
-    }
-    if (!in.CubeBuffer)
-    {
-      in.CubeBuffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-    }
-    in.CubeBuffer->Upload(tri, vtkOpenGLBufferObject::ArrayBuffer);
-    std::copy(box, box + 6, in.CubeBox);
-    in.CubeArrayProgram = nullptr;
-  }
+  this->UpdateProxyBox(box);
 
   // Trimming: the nearest front faces and the farthest back faces.
   if (trim && !this->RenderTrimmingDepths(program, dataToClip, viewport))
@@ -1504,41 +1687,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniform3f("lrBoxHi", boxHi);
   this->SetPatchUniforms(program);
 
-  // Clipping planes, in data coordinates.
-  {
-    vtkPlaneCollection* planes = this->ClippingPlanes;
-    const int n = planes ? std::min(planes->GetNumberOfItems(), MaximumClipPlanes) : 0;
-    if (planes && planes->GetNumberOfItems() > MaximumClipPlanes)
-    {
-      vtkWarningMacro(<< "Only the first " << MaximumClipPlanes << " clipping planes are used.");
-    }
-    float equations[MaximumClipPlanes][4] = {};
-    for (int i = 0; i < n; ++i)
-    {
-      vtkPlane* plane = planes->GetItem(i);
-      double normal[3], origin[3];
-      plane->GetNormal(normal);
-      plane->GetOrigin(origin);
-      // Kept: n . (x_world - o) >= 0 with x_world = A x + t.
-      double d = -vtkMath::Dot(normal, origin);
-      for (int r = 0; r < 3; ++r)
-      {
-        d += normal[r] * dataToWorld->GetElement(r, 3);
-      }
-      for (int c = 0; c < 3; ++c)
-      {
-        double v = 0.0;
-        for (int r = 0; r < 3; ++r)
-        {
-          v += normal[r] * dataToWorld->GetElement(r, c);
-        }
-        equations[i][c] = static_cast<float>(v);
-      }
-      equations[i][3] = static_cast<float>(d);
-    }
-    program->SetUniformi("lrNumberOfClipPlanes", n);
-    program->SetUniform4fv("lrClipPlanes", MaximumClipPlanes, equations);
-  }
+  this->SetClippingPlaneUniforms(program, dataToWorld);
 
   // Sampling.
   double sampleDistance = 0.0;
@@ -1567,55 +1716,9 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   program->SetUniformi("lrMaxSteps", multiPass ? stepsPerPass : maxSteps);
   program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
 
-  // Transfer function and lighting.
-  const float range[2] = { static_cast<float>(in.TransferRange[0]),
-    static_cast<float>(in.TransferRange[1]) };
-  program->SetUniform2f("lrRange", range);
-  program->SetUniformf("lrUnitDistance",
-    static_cast<float>(std::max(property->GetScalarOpacityUnitDistance(0), 1e-12)));
-  program->SetUniformf("lrAmbient", static_cast<float>(property->GetAmbient(0)));
-  program->SetUniformf("lrDiffuse", static_cast<float>(property->GetDiffuse(0)));
-  program->SetUniformf("lrSpecular", static_cast<float>(property->GetSpecular(0)));
-  program->SetUniformf("lrSpecularPower", static_cast<float>(property->GetSpecularPower(0)));
-  {
-    std::vector<float> directions, colors;
-    for (const auto& l : lightList)
-    {
-      directions.insert(directions.end(), l.begin(), l.begin() + 3);
-      colors.insert(colors.end(), l.begin() + 3, l.end());
-    }
-    program->SetUniform3fv("lrLightDirections", static_cast<int>(lightList.size()),
-      reinterpret_cast<const float(*)[3]>(directions.data()));
-    program->SetUniform3fv("lrLightColors", static_cast<int>(lightList.size()),
-      reinterpret_cast<const float(*)[3]>(colors.data()));
-  }
-  {
-    float iso[MaximumIsoValues] = {};
-    std::copy(isoValues.begin(), isoValues.end(), iso);
-    program->SetUniform1fv("lrIsoValues", MaximumIsoValues, iso);
-    program->SetUniformi("lrNumberOfIsoValues", static_cast<int>(isoValues.size()));
-    program->SetUniformi("lrBisections", this->IsosurfaceBisections);
-  }
+  this->SetShadingUniforms(program, property, lightList, isoValues);
 
-  // Textures.
-  in.HeadsBuffer.Activate(program, "lrHeads");
-  in.NodeWordsBuffer.Activate(program, "lrNodeWords");
-  in.NodeSplitsBuffer.Activate(program, "lrNodeSplits");
-  in.OctreeBuffer.Activate(program, "lrOctree");
-  in.BoxesBuffer.Activate(program, "lrBoxes");
-  in.OffsetsBuffer.Activate(program, "lrOffsets");
-  in.CoefficientsBuffer.Activate(program, "lrCoefficients");
-  in.TransferTexture->Activate();
-  program->SetUniformi("lrTransfer", in.TransferTexture->GetTextureUnit());
-  in.DepthTexture->Activate();
-  program->SetUniformi("lrDepth", in.DepthTexture->GetTextureUnit());
-  if (trim)
-  {
-    in.TrimTextures[0]->Activate();
-    in.TrimTextures[1]->Activate();
-    program->SetUniformi("lrTrimFront", in.TrimTextures[0]->GetTextureUnit());
-    program->SetUniformi("lrTrimBack", in.TrimTextures[1]->GetTextureUnit());
-  }
+  this->ActivateTextures(program, trim);
 
   // Draw the back faces of the proxy box: every pixel the volume may cover
   // runs its ray once, also with the camera inside the box.
@@ -1630,20 +1733,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
     this->DrawSinglePass();
   }
 
-  in.HeadsBuffer.Deactivate();
-  in.NodeWordsBuffer.Deactivate();
-  in.NodeSplitsBuffer.Deactivate();
-  in.OctreeBuffer.Deactivate();
-  in.BoxesBuffer.Deactivate();
-  in.OffsetsBuffer.Deactivate();
-  in.CoefficientsBuffer.Deactivate();
-  in.TransferTexture->Deactivate();
-  in.DepthTexture->Deactivate();
-  if (trim)
-  {
-    in.TrimTextures[0]->Deactivate();
-    in.TrimTextures[1]->Deactivate();
-  }
+  this->DeactivateTextures(trim);
   vtkOpenGLCheckErrorMacro("failed after Render");
   // A good frame: a problem that comes back is reported again.
   in.Error.clear();

@@ -94,6 +94,7 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkAbstractVolumeMapper.h"
 
+#include <array>  // for std::array
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 #include <vector> // for std::vector
@@ -409,6 +410,23 @@ private:
   // Samples per ray (MaximumNumberOfSteps or the automatic estimate) and the
   // fixed step (world units) for the volume's placement.
   int ComputeStepCount(vtkVolume* vol, double& sampleDistance);
+
+  // The fragment shader for this frame: the template with the defines of
+  // the spline's degrees and components, blend mode, shading, trimming,
+  // passes, supersampling and lights.
+  std::string BuildFragmentShaderSource(bool shade, bool multiPass, size_t numberOfLights);
+  // The proxy box's triangles (the box, padded, data coordinates), when it changed.
+  void UpdateProxyBox(const double box[6]);
+  // ClippingPlanes (at most 6) as plane equations in data coordinates.
+  void SetClippingPlaneUniforms(vtkShaderProgram* program, vtkMatrix4x4* dataToWorld);
+  // The transfer range, the property's shading, the lights (direction and
+  // color each) and the iso values.
+  void SetShadingUniforms(vtkShaderProgram* program, vtkVolumeProperty* property,
+    const std::vector<std::array<float, 6>>& lightList, const std::vector<float>& isoValues);
+  // The spline's buffers, the transfer function, the depth and (trim) the
+  // trimming depths bound to their samplers; and unbound.
+  void ActivateTextures(vtkShaderProgram* program, bool trim);
+  void DeactivateTextures(bool trim);
 
   // The rays in one pass into the current draw framebuffer.
   void DrawSinglePass();
