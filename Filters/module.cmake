@@ -50,4 +50,5 @@ list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkSplineVizProgress.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizError.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizSeeds.h"
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizTermination.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizRandom.h")

@@ -4,6 +4,7 @@
 #include "vtkLRSplineField.h"
 #include "vtkSplineVizProgress.h"
 #include "vtkSplineVizSeeds.h"
+#include "vtkSplineVizTermination.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -35,6 +36,27 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkLRSplineStreamTracer);
+
+// The public codes are the module's (vtkSplineVizTermination.h).
+static_assert(static_cast<int>(vtkLRSplineStreamTracer::OUT_OF_DOMAIN) ==
+      vtkSplineVizTermination::OUT_OF_DOMAIN &&
+    static_cast<int>(vtkLRSplineStreamTracer::NOT_INITIALIZED) ==
+      vtkSplineVizTermination::NOT_INITIALIZED &&
+    static_cast<int>(vtkLRSplineStreamTracer::UNEXPECTED_VALUE) ==
+      vtkSplineVizTermination::UNEXPECTED_VALUE &&
+    static_cast<int>(vtkLRSplineStreamTracer::OUT_OF_LENGTH) ==
+      vtkSplineVizTermination::OUT_OF_LENGTH &&
+    static_cast<int>(vtkLRSplineStreamTracer::OUT_OF_STEPS) ==
+      vtkSplineVizTermination::OUT_OF_STEPS &&
+    static_cast<int>(vtkLRSplineStreamTracer::STAGNATION) == vtkSplineVizTermination::STAGNATION &&
+    static_cast<int>(vtkLRSplineStreamTracer::OUT_OF_TIME) == vtkSplineVizTermination::OUT_OF_TIME,
+  "vtkLRSplineStreamTracer's termination codes must be vtkSplineVizTermination's");
+
+//------------------------------------------------------------------------------
+const char* vtkLRSplineStreamTracer::GetReasonName(int reason)
+{
+  return vtkSplineVizTermination::Name(reason);
+}
 
 namespace
 {

@@ -133,6 +133,8 @@ public:
     STAGNATION = 6,
     OUT_OF_TIME = 7
   };
+  /// A short name of a ReasonForTermination code (the same names as vtkTensorLineTracer's).
+  static const char* GetReasonName(int reason);
 
   /// Order of the propagated solution of an integrator.
   static int GetIntegratorOrder(int integrator);

@@ -5,6 +5,7 @@
 #include "vtkSplineVizProgress.h"
 #include "vtkSplineVizSeeds.h"
 #include "vtkSplineVizTensorMath.h"
+#include "vtkSplineVizTermination.h"
 
 #include "vtkAOSDataArrayTemplate.h"
 #include "vtkCellArray.h"
@@ -44,6 +45,26 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkTensorLineTracer);
+
+// The public codes are the module's (vtkSplineVizTermination.h).
+static_assert(
+  static_cast<int>(vtkTensorLineTracer::OUT_OF_DOMAIN) == vtkSplineVizTermination::OUT_OF_DOMAIN &&
+    static_cast<int>(vtkTensorLineTracer::NOT_INITIALIZED) ==
+      vtkSplineVizTermination::NOT_INITIALIZED &&
+    static_cast<int>(vtkTensorLineTracer::UNEXPECTED_VALUE) ==
+      vtkSplineVizTermination::UNEXPECTED_VALUE &&
+    static_cast<int>(vtkTensorLineTracer::OUT_OF_LENGTH) ==
+      vtkSplineVizTermination::OUT_OF_LENGTH &&
+    static_cast<int>(vtkTensorLineTracer::OUT_OF_STEPS) == vtkSplineVizTermination::OUT_OF_STEPS &&
+    static_cast<int>(vtkTensorLineTracer::STAGNATION) == vtkSplineVizTermination::STAGNATION &&
+    static_cast<int>(vtkTensorLineTracer::LOW_ANISOTROPY) ==
+      vtkSplineVizTermination::LOW_ANISOTROPY &&
+    static_cast<int>(vtkTensorLineTracer::HIGH_CURVATURE) ==
+      vtkSplineVizTermination::HIGH_CURVATURE &&
+    static_cast<int>(vtkTensorLineTracer::OUT_OF_MASK) == vtkSplineVizTermination::OUT_OF_MASK &&
+    static_cast<int>(vtkTensorLineTracer::NEGATIVE_EIGENVALUE) ==
+      vtkSplineVizTermination::NEGATIVE_EIGENVALUE,
+  "vtkTensorLineTracer's termination codes must be vtkSplineVizTermination's");
 
 namespace
 {
@@ -1093,31 +1114,7 @@ vtkTensorLineTracer::~vtkTensorLineTracer()
 //------------------------------------------------------------------------------
 const char* vtkTensorLineTracer::GetReasonName(int reason)
 {
-  switch (reason)
-  {
-    case OUT_OF_DOMAIN:
-      return "out of domain";
-    case NOT_INITIALIZED:
-      return "not initialized";
-    case UNEXPECTED_VALUE:
-      return "non-finite tensor";
-    case OUT_OF_LENGTH:
-      return "maximum length";
-    case OUT_OF_STEPS:
-      return "maximum number of steps";
-    case STAGNATION:
-      return "no direction (zero tensor)";
-    case LOW_ANISOTROPY:
-      return "FA below threshold";
-    case HIGH_CURVATURE:
-      return "turning angle above maximum";
-    case OUT_OF_MASK:
-      return "out of mask";
-    case NEGATIVE_EIGENVALUE:
-      return "negative eigenvalue";
-    default:
-      return "unknown";
-  }
+  return vtkSplineVizTermination::Name(reason);
 }
 
 //------------------------------------------------------------------------------

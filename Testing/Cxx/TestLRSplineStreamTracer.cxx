@@ -20,6 +20,7 @@
 #include "vtkLRSplineBuilder.h"
 #include "vtkLRSplineReader.h"
 #include "vtkLRSplineStreamTracer.h"
+#include "vtkTensorLineTracer.h"
 
 #include "LRSplineTestFields.h"
 #include "SplineVizTestUtilities.h"
@@ -545,5 +546,20 @@ int TestLRSplineStreamTracer(int, char*[])
     SV_CHECK(status,
       obs->GetError() && obs->GetErrorMessage().find("vtkLRSplineReader") != std::string::npos);
   }
+  // One set of termination codes and names for both tracers.
+  for (int reason = vtkLRSplineStreamTracer::OUT_OF_DOMAIN;
+       reason <= vtkTensorLineTracer::NEGATIVE_EIGENVALUE; ++reason)
+  {
+    SV_CHECK_MSG(status,
+      std::string(vtkLRSplineStreamTracer::GetReasonName(reason)) ==
+          vtkTensorLineTracer::GetReasonName(reason) &&
+        std::string(vtkLRSplineStreamTracer::GetReasonName(reason)) != "unknown",
+      "termination code " << reason << ": " << vtkLRSplineStreamTracer::GetReasonName(reason)
+                          << " / " << vtkTensorLineTracer::GetReasonName(reason));
+  }
+  SV_CHECK(status,
+    std::string(vtkLRSplineStreamTracer::GetReasonName(vtkLRSplineStreamTracer::OUT_OF_TIME)) ==
+      "maximum integration time");
+  SV_CHECK(status, std::string(vtkLRSplineStreamTracer::GetReasonName(12)) == "unknown");
   return status.Result();
 }
