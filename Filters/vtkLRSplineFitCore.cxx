@@ -357,6 +357,23 @@ int vtkLRSplineFitCore::Solve(const std::vector<double>& rhsData, const std::vec
 }
 
 //------------------------------------------------------------------------------
+std::string vtkLRSplineFitCore::StopReason(
+  Outcome outcome, vtkIdType maximumElements, const std::string& limits)
+{
+  switch (outcome)
+  {
+    case ELEMENT_LIMIT:
+      return "MaximumNumberOfElements (" + std::to_string(maximumElements) + ") was reached";
+    case NOTHING_REFINABLE:
+      return "the elements above the tolerance are at " + limits;
+    case NO_PROGRESS:
+      return "the refinement did not split any element";
+    default:
+      return std::string();
+  }
+}
+
+//------------------------------------------------------------------------------
 int vtkLRSplineFitCore::Levels()
 {
   const vtkLRSplinePatch& patch = this->Builder.GetPatch();

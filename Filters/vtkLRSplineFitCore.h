@@ -108,6 +108,15 @@ public:
   Outcome Refine(const std::vector<double>& elementError, double tolerance,
     vtkIdType maximumElements, std::string* error);
 
+  /**
+   * Why a fit stopped refining, for its warning: `outcome` is ELEMENT_LIMIT,
+   * NOTHING_REFINABLE or NO_PROGRESS (empty for the others);
+   * `limits` says what stops the elements above the tolerance from being
+   * split (the fitter's own settings, e.g. "MaximumRefinementLevels (8)").
+   */
+  static std::string StopReason(
+    Outcome outcome, vtkIdType maximumElements, const std::string& limits);
+
   /// Halvings of the initial element sides reached (largest over directions).
   int Levels();
 

@@ -676,16 +676,11 @@ bool FitLoop(PointFit& fit, const LoopSettings& settings, double tolerance, vtkA
     {
       continue;
     }
-    stopReason = outcome == vtkLRSplineFitCore::ELEMENT_LIMIT
-      ? "MaximumNumberOfElements (" + std::to_string(settings.MaximumNumberOfElements) +
-        ") was reached"
-      : (outcome == vtkLRSplineFitCore::NOTHING_REFINABLE
-            ? "the elements above the tolerance are at MaximumRefinementLevels (" +
-              std::to_string(settings.MaximumRefinementLevels) + ")" +
-              (sparse ? " or hold fewer than MinimumPointsPerElement (" +
-                    std::to_string(settings.MinimumPointsPerElement) + ") data points"
-                      : std::string())
-            : "the refinement did not split any element");
+    stopReason = vtkLRSplineFitCore::StopReason(outcome, settings.MaximumNumberOfElements,
+      "MaximumRefinementLevels (" + std::to_string(settings.MaximumRefinementLevels) + ")" +
+        (sparse ? " or hold fewer than MinimumPointsPerElement (" +
+              std::to_string(settings.MinimumPointsPerElement) + ") data points"
+                : std::string()));
     break;
   }
   return true;

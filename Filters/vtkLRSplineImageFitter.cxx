@@ -697,20 +697,11 @@ bool vtkLRSplineImageFitter::CheckImage(vtkImageData* image, const std::string& 
 //------------------------------------------------------------------------------
 std::string vtkLRSplineImageFitter::GetStopReason(int outcome) const
 {
-  switch (outcome)
-  {
-    case vtkLRSplineFitCore::ELEMENT_LIMIT:
-      return "MaximumNumberOfElements (" + std::to_string(this->MaximumNumberOfElements) +
-        ") was reached";
-    case vtkLRSplineFitCore::NOTHING_REFINABLE:
-      return "the elements above the tolerance are at MinimumElementSize (" +
-        std::to_string(this->MinimumElementSize) + " voxels) or MaximumRefinementLevels (" +
-        std::to_string(this->MaximumRefinementLevels) + ")";
-    case vtkLRSplineFitCore::NO_PROGRESS:
-      return "the refinement did not split any element";
-    default:
-      return std::string();
-  }
+  return vtkLRSplineFitCore::StopReason(static_cast<vtkLRSplineFitCore::Outcome>(outcome),
+    this->MaximumNumberOfElements,
+    "MinimumElementSize (" + std::to_string(this->MinimumElementSize) +
+      " voxels) or MaximumRefinementLevels (" + std::to_string(this->MaximumRefinementLevels) +
+      ")");
 }
 
 //------------------------------------------------------------------------------
