@@ -25,8 +25,10 @@ if cores < 2:
 
 def run(load, **env):
     environment = dict(os.environ)
+    # PV_PLUGIN_PATH: pvpython loads the plugins it names at start-up (the
+    # SplineViz plugin would switch the "VTK alone" process too).
     for name in ("VTK_SMP_BACKEND_IN_USE", "VTK_SMP_MAX_THREADS",
-                 "OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"):
+                 "OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS", "PV_PLUGIN_PATH"):
         environment.pop(name, None)
     environment.update(env)
     python = os.environ.get("SPLINEVIZ_TEST_PYTHON", sys.executable)
