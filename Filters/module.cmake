@@ -24,6 +24,9 @@ list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineGeometryMap"
   "${SPLINEVIZ_FOLDER}/vtkLRSplineField"
   "${SPLINEVIZ_FOLDER}/vtkLRSplinePatch")
+# Values that disagree with their neighbours (the fitter's RemoveOutliers).
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizLocalOutliers")
 # Symmetric tensor math (layouts, eigen-decomposition, invariants, Kindlmann's
 # glyph shape): plain C++ shared by the tensor filters and mappers; its core is
 # glsl/vtkTensorMathShared.glsl, compiled as C++ and embedded in shaders.

@@ -66,6 +66,11 @@ constexpr const char* FitDomain = "LRFitDomain";
 constexpr const char* FitReusedPreviousMesh = "LRFitReusedPreviousMesh";
 constexpr const char* FitDataPoints = "LRFitDataPoints";
 constexpr const char* FitElementMaxError = "LRFitElementMaxError";
+/// vtkLRSplineFitter with RemoveOutliers: the number of data points left out
+/// (field data), and on its outlier output, each one's deviation from its
+/// neighbours in units of max(local spread, tolerance) (point data).
+constexpr const char* FitOutliers = "LRFitOutliers";
+constexpr const char* FitOutlierDeviation = "LRFitOutlierDeviation";
 ///@}
 }
 

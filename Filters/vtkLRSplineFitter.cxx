@@ -6,10 +6,12 @@
 #include "vtkLRSplineElementLocator.h"
 #include "vtkLRSplineFitCore.h"
 #include "vtkLRSplinePatch.h"
+#include "vtkSplineVizLocalOutliers.h"
 #include "vtkSplineVizPieces.h"
 #include "vtkSplineVizProgress.h"
 
 #include "vtkAppendPolyData.h"
+#include "vtkCellArray.h"
 #include "vtkCellCenters.h"
 #include "vtkCellData.h"
 #include "vtkCompositeDataIterator.h"
@@ -29,6 +31,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkPoints.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -61,6 +64,10 @@ constexpr double SolverAccuracy = 1e-2;
 constexpr int MBASweeps = 2;
 // Safety bound on fit-and-refine rounds.
 constexpr int MaximumRounds = 64;
+// RemoveOutliers: detection rounds at most (each with the tolerance of the
+// values still in), and their share of the progress bar.
+constexpr int OutlierRounds = 3;
+constexpr double OutlierProgress = 0.1;
 
 // The data: parameters (3 per point) and values (Dim per point).
 struct PointData
@@ -523,19 +530,20 @@ vtkIdType OpenEdges(vtkPolyData* surface)
   return edges->GetOutput()->GetNumberOfLines();
 }
 
-// The range of the values (of the vectors' lengths).
-void DataRange(const PointData& data, double range[2])
+// The range of the values (`dim` per point; of the vectors' lengths).
+void DataRange(const std::vector<double>& values, int dim, double range[2])
 {
   range[0] = VTK_DOUBLE_MAX;
   range[1] = -VTK_DOUBLE_MAX;
-  for (vtkIdType p = 0; p < data.Size(); ++p)
+  const std::size_t np = values.size() / dim;
+  for (std::size_t p = 0; p < np; ++p)
   {
     double v2 = 0.0;
-    for (int c = 0; c < data.Dim; ++c)
+    for (int c = 0; c < dim; ++c)
     {
-      v2 += data.F[p * data.Dim + c] * data.F[p * data.Dim + c];
+      v2 += values[p * dim + c] * values[p * dim + c];
     }
-    const double v = data.Dim > 1 ? std::sqrt(v2) : data.F[p];
+    const double v = dim > 1 ? std::sqrt(v2) : values[p];
     range[0] = std::min(range[0], v);
     range[1] = std::max(range[1], v);
   }
@@ -593,6 +601,8 @@ struct LoopSettings
   int MaximumRefinementLevels = 10;
   vtkIdType MaximumNumberOfElements = 500000;
   vtkIdType MinimumPointsPerElement = 2;
+  // Progress already reported before the loop (outlier detection).
+  double ProgressStart = 0.0;
 };
 
 // Fit, evaluate, refine until the tolerance is met or a limit is reached
@@ -637,7 +647,8 @@ bool FitLoop(PointFit& fit, const LoopSettings& settings, double tolerance, vtkA
       { static_cast<double>(patch.GetNumberOfElements()),
         static_cast<double>(patch.GetNumberOfBasisFunctions()), fit.MaxError, rms,
         static_cast<double>(fit.SolverIterations) });
-    algorithm->UpdateProgress(std::min(1.0, (iteration + 1.0) / (rounds + 1.0)));
+    algorithm->UpdateProgress(settings.ProgressStart +
+      (1.0 - settings.ProgressStart) * std::min(1.0, (iteration + 1.0) / (rounds + 1.0)));
     if ((fit.RMSMode ? rms : fit.MaxError) <= tolerance)
     {
       met = true;
@@ -736,8 +747,10 @@ std::vector<vtkDataSet*> Leaves(vtkDataObject* input)
 }
 
 // What the output says of the fit beyond vtkLRSplineFitCore's report: the
-// domain, whether the previous mesh was reused, the number of data points.
-void AddFitFieldData(vtkFieldData* fd, const double domain[6], bool reused, vtkIdType points)
+// domain, whether the previous mesh was reused, the number of data points
+// fitted and of those left out (RemoveOutliers).
+void AddFitFieldData(
+  vtkFieldData* fd, const double domain[6], bool reused, vtkIdType points, vtkIdType outliers)
 {
   vtkNew<vtkDoubleArray> box;
   box->SetName(vtkLRSplineArrayNames::FitDomain);
@@ -752,6 +765,10 @@ void AddFitFieldData(vtkFieldData* fd, const double domain[6], bool reused, vtkI
   count->SetName(vtkLRSplineArrayNames::FitDataPoints);
   count->InsertNextValue(points);
   fd->AddArray(count);
+  vtkNew<vtkIdTypeArray> left;
+  left->SetName(vtkLRSplineArrayNames::FitOutliers);
+  left->InsertNextValue(outliers);
+  fd->AddArray(left);
 }
 }
 
@@ -804,7 +821,7 @@ void vtkLRSplineFitter::RememberFit(
 //------------------------------------------------------------------------------
 vtkLRSplineFitter::vtkLRSplineFitter()
 {
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfOutputPorts(3);
   this->SetInputArrayToProcess(
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
 }
@@ -834,7 +851,7 @@ int vtkLRSplineFitter::FillOutputPortInformation(int port, vtkInformation* info)
 int vtkLRSplineFitter::RequestInformation(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
-  for (int port = 0; port < 2; ++port)
+  for (int port = 0; port < 3; ++port)
   {
     outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
   }
@@ -870,10 +887,16 @@ int vtkLRSplineFitter::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outInfo);
   vtkPolyData* boundary = vtkPolyData::GetData(outputVector, 1);
+  vtkPolyData* outliers = vtkPolyData::GetData(outputVector, 2);
+  if (outliers)
+  {
+    outliers->Initialize();
+  }
   this->MaximumError = this->RMSError = this->AbsoluteTolerance = this->FitTime = 0.0;
   this->ToleranceMet = false;
   this->ReusedPreviousMesh = false;
   this->NumberOfElements = this->NumberOfBasisFunctions = this->NumberOfDataPoints = 0;
+  this->NumberOfOutliers = 0;
   this->NumberOfRefinementLevels = this->NumberOfIterations = 0;
   std::fill(this->Domain, this->Domain + 6, 0.0);
 
@@ -887,7 +910,17 @@ int vtkLRSplineFitter::RequestData(
   PointData data;
   std::vector<double> positions;
   std::string fieldName;
-  if (!this->GatherData(leaves, positions, data.F, data.Dim, fieldName))
+  vtkIdType invalid = 0;
+  if (!this->GatherData(leaves, positions, data.F, data.Dim, fieldName, invalid))
+  {
+    return 0;
+  }
+  this->NumberOfOutliers = invalid;
+  int piece = 0, numPieces = 1;
+  vtkSplineVizPieces::GetRequested(outInfo, piece, numPieces);
+  if (this->RemoveOutliers &&
+    !this->SeparateOutliers(
+      positions, data.F, data.Dim, fieldName, piece == 0 ? outliers : nullptr))
   {
     return 0;
   }
@@ -918,11 +951,7 @@ int vtkLRSplineFitter::RequestData(
 
   // The tolerance (relative: of the range of the fitted values or lengths).
   double range[2];
-  DataRange(data, range);
-  double tolerance = this->ToleranceMode == RELATIVE_TOLERANCE
-    ? this->Tolerance * (range[1] - range[0])
-    : this->Tolerance;
-  tolerance = std::max(tolerance, 1e-10 * std::max(std::abs(range[0]), std::abs(range[1])));
+  const double tolerance = this->ComputeAbsoluteTolerance(data.F, data.Dim, range);
   this->AbsoluteTolerance = tolerance;
 
   // The initial spline: the data mean everywhere.
@@ -953,6 +982,7 @@ int vtkLRSplineFitter::RequestData(
   settings.MaximumRefinementLevels = this->MaximumRefinementLevels;
   settings.MaximumNumberOfElements = this->MaximumNumberOfElements;
   settings.MinimumPointsPerElement = this->MinimumPointsPerElement;
+  settings.ProgressStart = this->RemoveOutliers ? OutlierProgress : 0.0;
   std::vector<double> residual;
   vtkLRSplineFitCore::Report report;
   std::string stopReason;
@@ -984,8 +1014,6 @@ int vtkLRSplineFitter::RequestData(
   {
     stopReason = "the Bezier form differs from the basis form by rounding";
   }
-  int piece = 0, numPieces = 1;
-  vtkSplineVizPieces::GetRequested(outInfo, piece, numPieces);
   const char* methods[] = { "LR-MBA", "least squares", "least squares + LR-MBA" };
   vtkSmartPointer<vtkUnstructuredGrid> grid = vtkLRSplineFitCore::BuildBlock(
     fit.Core.Builder.GetPatch(), result.Volume, 0, piece, numPieces, scale, lo, fieldName,
@@ -1016,7 +1044,8 @@ int vtkLRSplineFitter::RequestData(
                     << report.Iterations << (report.Iterations == 1 ? " fit" : " fits")
                     << ", because " << stopReason);
   }
-  AddFitFieldData(grid->GetFieldData(), this->Domain, this->ReusedPreviousMesh, np);
+  AddFitFieldData(
+    grid->GetFieldData(), this->Domain, this->ReusedPreviousMesh, np, this->NumberOfOutliers);
   output->SetNumberOfBlocks(1);
   output->SetBlock(0, grid);
   output->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), "Patch 0");
@@ -1137,8 +1166,10 @@ bool vtkLRSplineFitter::CheckSettings()
 
 //------------------------------------------------------------------------------
 bool vtkLRSplineFitter::GatherData(const std::vector<vtkDataSet*>& leaves,
-  std::vector<double>& positions, std::vector<double>& values, int& dim, std::string& fieldName)
+  std::vector<double>& positions, std::vector<double>& values, int& dim, std::string& fieldName,
+  vtkIdType& invalid)
 {
+  invalid = 0;
   vtkIdType total = 0;
   for (vtkDataSet* leaf : leaves)
   {
@@ -1224,7 +1255,7 @@ bool vtkLRSplineFitter::GatherData(const std::vector<vtkDataSet*>& leaves,
   for (const Leaf& source : sources)
   {
     const vtkIdType n = source.Points->GetNumberOfPoints();
-    for (vtkIdType i = 0; i < n; ++i, ++at)
+    for (vtkIdType i = 0; i < n; ++i)
     {
       source.Points->GetPoint(i, &positions[3 * at]);
       source.Array->GetTuple(i, tuple.data());
@@ -1249,14 +1280,117 @@ bool vtkLRSplineFitter::GatherData(const std::vector<vtkDataSet*>& leaves,
       {
         std::copy(tuple.begin(), tuple.end(), values.begin() + at * dim);
       }
+      ++at;
     }
   }
-  if (bad > 0)
+  invalid = bad;
+  if (bad > 0 && !this->RemoveOutliers)
   {
     vtkErrorMacro(<< bad << " of " << total << " data points have NaN or infinite "
-                  << "values or coordinates; mask or replace them first (e.g. Threshold)");
+                  << "values or coordinates; mask or replace them first (e.g. Threshold), "
+                  << "or turn RemoveOutliers on to leave them out");
     return false;
   }
+  if (at == 0)
+  {
+    vtkErrorMacro(<< "no data to fit: all " << total
+                  << " data points have NaN or infinite values or coordinates");
+    return false;
+  }
+  positions.resize(3 * at);
+  values.resize(static_cast<std::size_t>(at) * dim);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkLRSplineFitter::ComputeAbsoluteTolerance(
+  const std::vector<double>& values, int dim, double range[2])
+{
+  DataRange(values, dim, range);
+  const double tolerance = this->ToleranceMode == RELATIVE_TOLERANCE
+    ? this->Tolerance * (range[1] - range[0])
+    : this->Tolerance;
+  return std::max(tolerance, 1e-10 * std::max(std::abs(range[0]), std::abs(range[1])));
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineFitter::SeparateOutliers(std::vector<double>& positions,
+  std::vector<double>& values, int dim, const std::string& fieldName, vtkPolyData* outliers)
+{
+  vtkSplineVizLocalOutliers finder;
+  finder.Threshold = this->OutlierThreshold;
+  std::vector<double> outPositions, outValues, outDeviations;
+  for (int round = 0; round < OutlierRounds; ++round)
+  {
+    double range[2];
+    finder.Tolerance = this->ComputeAbsoluteTolerance(values, dim, range);
+    std::vector<double> deviation;
+    std::vector<unsigned char> flag;
+    const double from = OutlierProgress * round / OutlierRounds;
+    if (!finder.Find(positions, values, dim, deviation, flag, this, from,
+          from + OutlierProgress / OutlierRounds))
+    {
+      if (this->CheckAbort())
+      {
+        return false;
+      }
+      vtkWarningMacro(<< "RemoveOutliers: only " << positions.size() / 3
+                      << " data points, too few to compare each with " << finder.NumberOfNeighbors
+                      << " neighbours; none is left out");
+      break;
+    }
+    // Move the flagged points out, keep the others in order.
+    std::size_t kept = 0;
+    const std::size_t np = flag.size();
+    for (std::size_t p = 0; p < np; ++p)
+    {
+      if (flag[p])
+      {
+        outPositions.insert(outPositions.end(), &positions[3 * p], &positions[3 * p] + 3);
+        outValues.insert(outValues.end(), &values[p * dim], &values[p * dim] + dim);
+        outDeviations.push_back(deviation[p]);
+        continue;
+      }
+      std::copy(&positions[3 * p], &positions[3 * p] + 3, &positions[3 * kept]);
+      std::copy(&values[p * dim], &values[p * dim] + dim, &values[kept * dim]);
+      ++kept;
+    }
+    if (kept == np)
+    {
+      break;
+    }
+    positions.resize(3 * kept);
+    values.resize(kept * dim);
+    this->NumberOfOutliers += static_cast<vtkIdType>(np - kept);
+  }
+  if (!outliers)
+  {
+    return true;
+  }
+  const vtkIdType n = static_cast<vtkIdType>(outDeviations.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  std::copy(
+    outPositions.begin(), outPositions.end(), static_cast<double*>(points->GetVoidPointer(0)));
+  vtkNew<vtkCellArray> vertices;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    vertices->InsertNextCell(1, &i);
+  }
+  vtkNew<vtkDoubleArray> value;
+  value->SetName(fieldName.c_str());
+  value->SetNumberOfComponents(dim);
+  value->SetNumberOfTuples(n);
+  std::copy(outValues.begin(), outValues.end(), value->GetPointer(0));
+  vtkNew<vtkDoubleArray> deviation;
+  deviation->SetName(vtkLRSplineArrayNames::FitOutlierDeviation);
+  deviation->SetNumberOfTuples(n);
+  std::copy(outDeviations.begin(), outDeviations.end(), deviation->GetPointer(0));
+  outliers->SetPoints(points);
+  outliers->SetVerts(vertices);
+  outliers->GetPointData()->SetScalars(value);
+  outliers->GetPointData()->AddArray(deviation);
   return true;
 }
 
@@ -1352,6 +1486,8 @@ void vtkLRSplineFitter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ExtractBoundary: " << this->ExtractBoundary << "\n";
   os << indent << "ReusePreviousMesh: " << this->ReusePreviousMesh << "\n";
   os << indent << "ReusedPreviousMesh: " << this->ReusedPreviousMesh << "\n";
+  os << indent << "RemoveOutliers: " << this->RemoveOutliers << "\n";
+  os << indent << "OutlierThreshold: " << this->OutlierThreshold << "\n";
   os << indent << "FieldName: " << (this->FieldName ? this->FieldName : "(input array's)") << "\n";
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";
@@ -1360,6 +1496,7 @@ void vtkLRSplineFitter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
   os << indent << "NumberOfBasisFunctions: " << this->NumberOfBasisFunctions << "\n";
   os << indent << "NumberOfDataPoints: " << this->NumberOfDataPoints << "\n";
+  os << indent << "NumberOfOutliers: " << this->NumberOfOutliers << "\n";
   os << indent << "NumberOfRefinementLevels: " << this->NumberOfRefinementLevels << "\n";
   os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
   os << indent << "FitTime: " << this->FitTime << "\n";

@@ -29,7 +29,8 @@
  * image fitter's "LRFit..." cell and field data (plus "LRFitDomain"), for the
  * volume mapper, probe and stream tracer. Output port 1: the data's boundary
  * surface (triangles, consistently oriented; empty for point clouds), for
- * the volume mapper's trimming input. FileName: also write a .lr file (read
+ * the volume mapper's trimming input. Output port 2: the outliers left out
+ * (RemoveOutliers; vertices, empty otherwise). FileName: also write a .lr file (read
  * it back with PhysicalBounds = LRFitDomain). Every piece fits all the data.
  *
  * Time: the filter fits the time step the pipeline asks for and
@@ -41,10 +42,22 @@
  * from a given spline): fewer fit-and-refine rounds per step, and meshes
  * that only ever gain elements along the series.
  *
+ * Outliers: with RemoveOutliers, data values that disagree with their
+ * neighbours (vtkSplineVizLocalOutliers: a linear model of the 16 nearest
+ * data points misses the value by more than OutlierThreshold times
+ * max(what it misses at those neighbours, tolerance)) and points with NaN or infinite values or
+ * coordinates are left out of the fit, so that the refinement does not chase single wrong values
+ * down to its finest level. The detection runs up to three times, the
+ * tolerance (when relative) taken from the range of the values still in.
+ * Output port 2 gets the detected points with their values and deviations
+ * (on piece 0); GetNumberOfOutliers() and the field data "LRFitOutliers"
+ * count everything left out.
+ *
  * Refused before allocating: no points or array, NaN or infinite values or
- * coordinates, points without volume (on a plane, line or point), Tolerance
- * <= 0, degrees outside 1..5, MaximumRefinementLevels outside 0..30, limits
- * whose spline would not fit in memory.
+ * coordinates (unless RemoveOutliers), points without volume (on a plane,
+ * line or point), Tolerance <= 0, degrees outside 1..5,
+ * MaximumRefinementLevels outside 0..30, limits whose spline would not fit
+ * in memory.
  */
 
 #ifndef vtkLRSplineFitter_h
@@ -201,6 +214,29 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Leave out of the fit the data values that disagree with their
+   * neighbours, and points with NaN or infinite values or coordinates (see
+   * the class documentation). Default off: every point is fitted, and
+   * non-finite data is refused.
+   */
+  vtkSetMacro(RemoveOutliers, vtkTypeBool);
+  vtkGetMacro(RemoveOutliers, vtkTypeBool);
+  vtkBooleanMacro(RemoveOutliers, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * RemoveOutliers: a value is an outlier when the linear model of its
+   * neighbours misses it by more than this many times max(what such models
+   * miss at those neighbours, the tolerance). Default 5; lower finds smaller spikes and risks
+   * taking narrow real features for them.
+   */
+  vtkSetClampMacro(OutlierThreshold, double, 1.0, 1e6);
+  vtkGetMacro(OutlierThreshold, double);
+  ///@}
+
+  ///@{
   /// If set, the fitted spline is also written to this .lr file.
   vtkSetStringMacro(FileName);
   vtkGetStringMacro(FileName);
@@ -215,6 +251,8 @@ public:
   vtkIdType GetNumberOfElements() const { return this->NumberOfElements; }
   vtkIdType GetNumberOfBasisFunctions() const { return this->NumberOfBasisFunctions; }
   vtkIdType GetNumberOfDataPoints() const { return this->NumberOfDataPoints; }
+  /// Data points left out of the last fit (RemoveOutliers): detected and non-finite.
+  vtkIdType GetNumberOfOutliers() const { return this->NumberOfOutliers; }
   int GetNumberOfRefinementLevels() const { return this->NumberOfRefinementLevels; }
   int GetNumberOfIterations() const { return this->NumberOfIterations; }
   double GetFitTime() const { return this->FitTime; }
@@ -237,8 +275,17 @@ protected:
   // Refuse bad settings (false with an error).
   bool CheckSettings();
   // The positions (3 per point) and values (dim per point) of every leaf.
+  // With RemoveOutliers, points with non-finite values or coordinates are
+  // left out and counted in `invalid`; without, they are refused.
   bool GatherData(const std::vector<vtkDataSet*>& leaves, std::vector<double>& positions,
-    std::vector<double>& values, int& dim, std::string& fieldName);
+    std::vector<double>& values, int& dim, std::string& fieldName, vtkIdType& invalid);
+  // The absolute tolerance for `values` (dim per point) and their range (of
+  // the lengths, for vectors).
+  double ComputeAbsoluteTolerance(const std::vector<double>& values, int dim, double range[2]);
+  // RemoveOutliers: take the outliers out of `positions` and `values`, into
+  // `outliers` (may be null) with their deviations; false when aborted.
+  bool SeparateOutliers(std::vector<double>& positions, std::vector<double>& values, int dim,
+    const std::string& fieldName, vtkPolyData* outliers);
   // The data's bounding box with the margin (lo, hi), scale = side / elements;
   // false with an error when the points have no volume.
   bool ComputeDomain(
@@ -270,6 +317,8 @@ protected:
   char* FieldName = nullptr;
   char* FileName = nullptr;
   vtkTypeBool ReusePreviousMesh = 1;
+  vtkTypeBool RemoveOutliers = 0;
+  double OutlierThreshold = 5.0;
 
   double MaximumError = 0.0;
   double RMSError = 0.0;
@@ -278,6 +327,7 @@ protected:
   vtkIdType NumberOfElements = 0;
   vtkIdType NumberOfBasisFunctions = 0;
   vtkIdType NumberOfDataPoints = 0;
+  vtkIdType NumberOfOutliers = 0;
   int NumberOfRefinementLevels = 0;
   int NumberOfIterations = 0;
   double FitTime = 0.0;

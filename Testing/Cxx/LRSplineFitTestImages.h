@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Images and checks for the vtkLRSplineImageFitter and vtkLRSplineFitter tests: analytic scalar
-// images, the fitter run with its errors and warnings observed, and the
-// fitted spline evaluated independently of the fitter (vtkLRSplineField on
-// its output grid, in physical coordinates).
+// Data and checks for the vtkLRSplineImageFitter and vtkLRSplineFitter tests: analytic scalar
+// images and point clouds, a smooth field with a narrow bump, the fitter run
+// with its errors and warnings observed, and the fitted spline evaluated
+// independently of the fitter (vtkLRSplineField on its output grid, in
+// physical coordinates).
 #ifndef LRSplineFitTestImages_h
 #define LRSplineFitTestImages_h
 
@@ -17,12 +18,15 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkTestErrorObserver.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <string>
 
 namespace fittest
@@ -126,6 +130,79 @@ inline double VoxelError(
     *rms = std::sqrt(sum / image->GetNumberOfPoints());
   }
   return worst;
+}
+
+// A point cloud (polydata without cells) with a `comps`-component array.
+inline vtkSmartPointer<vtkPolyData> Cloud(
+  const std::vector<double>& x, const std::vector<double>& v, int comps = 1)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  const vtkIdType n = static_cast<vtkIdType>(x.size() / 3);
+  points->SetNumberOfPoints(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->SetPoint(i, &x[3 * i]);
+  }
+  pd->SetPoints(points);
+  vtkNew<vtkDoubleArray> a;
+  a->SetName("f");
+  a->SetNumberOfComponents(comps);
+  a->SetNumberOfTuples(n);
+  std::copy(v.begin(), v.end(), a->GetPointer(0));
+  pd->GetPointData()->SetScalars(a);
+  return pd;
+}
+
+// Largest |spline - v| (length of the difference for vectors) at the points,
+// the spline evaluated from an output with vtkLRSplineField.
+inline double PointError(vtkDataObject* spline, const std::vector<double>& x,
+  const std::vector<double>& v, int comps = 1, double* rms = nullptr)
+{
+  vtkLRSplineField field;
+  std::string error;
+  if (!field.Build(spline, nullptr, 2, nullptr, false, &error))
+  {
+    std::cerr << "vtkLRSplineField: " << error << std::endl;
+    return 1e300;
+  }
+  double worst = 0.0, sum = 0.0;
+  const std::size_t n = x.size() / 3;
+  std::vector<double> s(comps);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    if (field.Evaluate(&x[3 * i], s.data(), nullptr) < 0)
+    {
+      return 1e300;
+    }
+    double e2 = 0.0;
+    for (int c = 0; c < comps; ++c)
+    {
+      e2 += (s[c] - v[comps * i + c]) * (s[c] - v[comps * i + c]);
+    }
+    worst = std::max(worst, std::sqrt(e2));
+    sum += e2;
+  }
+  if (rms)
+  {
+    *rms = std::sqrt(sum / n);
+  }
+  return worst;
+}
+
+// A smooth field with a narrow Gaussian bump at C (width S).
+constexpr double C[3] = { 0.6, 0.4, 0.5 };
+constexpr double S = 0.05;
+inline double Smooth(const double x[3])
+{
+  return std::sin(2 * x[0]) + x[1] * x[2];
+}
+inline double Bump(const double x[3])
+{
+  const double r2 =
+    (x[0] - C[0]) * (x[0] - C[0]) + (x[1] - C[1]) * (x[1] - C[1]) + (x[2] - C[2]) * (x[2] - C[2]);
+  return Smooth(x) + std::exp(-r2 / (2 * S * S));
 }
 }
 

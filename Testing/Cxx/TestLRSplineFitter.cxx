@@ -45,66 +45,13 @@
 namespace
 {
 using FitRun = fittest::FitRunT<vtkLRSplineFitter>;
+using fittest::Bump;
+using fittest::C;
+using fittest::Cloud;
+using fittest::PointError;
+using fittest::S;
+using fittest::Smooth;
 const std::string OutDir = SPLINEVIZ_TEST_OUTPUT_DIR;
-
-// A point cloud (polydata without cells) with a `comps`-component array.
-vtkSmartPointer<vtkPolyData> Cloud(
-  const std::vector<double>& x, const std::vector<double>& v, int comps = 1)
-{
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  const vtkIdType n = static_cast<vtkIdType>(x.size() / 3);
-  points->SetNumberOfPoints(n);
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    points->SetPoint(i, &x[3 * i]);
-  }
-  pd->SetPoints(points);
-  vtkNew<vtkDoubleArray> a;
-  a->SetName("f");
-  a->SetNumberOfComponents(comps);
-  a->SetNumberOfTuples(n);
-  std::copy(v.begin(), v.end(), a->GetPointer(0));
-  pd->GetPointData()->SetScalars(a);
-  return pd;
-}
-
-// Largest |spline - v| (length of the difference for vectors) at the points,
-// the spline evaluated from an output with vtkLRSplineField.
-double PointError(vtkDataObject* spline, const std::vector<double>& x, const std::vector<double>& v,
-  int comps = 1, double* rms = nullptr)
-{
-  vtkLRSplineField field;
-  std::string error;
-  if (!field.Build(spline, nullptr, 2, nullptr, false, &error))
-  {
-    std::cerr << "vtkLRSplineField: " << error << std::endl;
-    return 1e300;
-  }
-  double worst = 0.0, sum = 0.0;
-  const std::size_t n = x.size() / 3;
-  std::vector<double> s(comps);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    if (field.Evaluate(&x[3 * i], s.data(), nullptr) < 0)
-    {
-      return 1e300;
-    }
-    double e2 = 0.0;
-    for (int c = 0; c < comps; ++c)
-    {
-      e2 += (s[c] - v[comps * i + c]) * (s[c] - v[comps * i + c]);
-    }
-    worst = std::max(worst, std::sqrt(e2));
-    sum += e2;
-  }
-  if (rms)
-  {
-    *rms = std::sqrt(sum / n);
-  }
-  return worst;
-}
 
 // A tensor-product B-spline with open uniform knots over [lo, hi] (m
 // elements, degree p per direction) and random coefficients, evaluated with
@@ -238,20 +185,6 @@ void TestExactness(SplineVizTestStatus& status, const int p[3], const int m[3])
       SV_CHECK(status, !run.Fitter->GetToleranceMet() && run.Warned());
     }
   }
-}
-
-// A smooth field with a narrow Gaussian bump at C (width S).
-const double C[3] = { 0.6, 0.4, 0.5 };
-const double S = 0.05;
-double Smooth(const double x[3])
-{
-  return std::sin(2 * x[0]) + x[1] * x[2];
-}
-double Bump(const double x[3])
-{
-  const double r2 =
-    (x[0] - C[0]) * (x[0] - C[0]) + (x[1] - C[1]) * (x[1] - C[1]) + (x[2] - C[2]) * (x[2] - C[2]);
-  return Smooth(x) + std::exp(-r2 / (2 * S * S));
 }
 
 // Mean element volume (physical) far from the bump (centre farther than

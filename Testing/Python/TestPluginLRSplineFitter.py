@@ -8,7 +8,8 @@ port is the mesh's boundary surface; the fitted volume rendered by the
 "LR-Spline Volume" representation with that surface as Trimming Surface draws
 no pixel outside the surface's own silhouette, while the untrimmed volume
 (negative control) does, and leaves no holes in it (a clipped mesh's non-conforming
-faces once made some); a bad setting fails with the fitter's error."""
+faces once made some); Remove Outliers finds exactly five spiked values and
+shows them on the third port; a bad setting fails with the fitter's error."""
 import os
 import sys
 
@@ -123,3 +124,30 @@ bad.UpdatePipeline()
 if bad.GetDataInformation().GetNumberOfCells() != 0 or not observed.errors:
     fail("a zero tolerance gave an output or no error")
 print("zero tolerance: refused (%d error events)" % len(observed.errors))
+
+# Remove Outliers: five spiked mesh values come out on the third port, exactly.
+# (The Programmable Filter's script runs in this interpreter: numpy's `clip`
+# shadows the clip filter afterwards, so this comes last.)
+spiky = ProgrammableFilter(Input=clip)  # noqa: F405
+spiky.Script = """
+out = self.GetOutput()
+out.ShallowCopy(self.GetInput())
+import vtk
+values = vtk.vtkDoubleArray()
+values.DeepCopy(out.GetPointData().GetArray("RTData"))
+values.SetName("RTData")
+for i in (11, 222, 1333, 2444, 3555):
+    values.SetValue(i, values.GetValue(i) + 150.0)
+out.GetPointData().AddArray(values)
+"""
+spiked = [11, 222, 1333, 2444, 3555]
+robust = LRSplineFit(Input=spiky, RemoveOutliers=1)  # noqa: F405
+robust.Array = ["POINTS", "RTData"]
+robust.UpdatePipeline()
+left = servermanager.Fetch(robust, idx=2)
+found = sorted(mesh.FindPoint(left.GetPoint(i)) for i in range(left.GetNumberOfPoints()))
+count = servermanager.Fetch(robust).GetBlock(0).GetFieldData().GetArray("LRFitOutliers")
+print("Remove Outliers: %d points on the Outliers port %s (spiked %s), LRFitOutliers %d"
+      % (left.GetNumberOfPoints(), found, spiked, count.GetValue(0)))
+if found != spiked or count.GetValue(0) != len(spiked):
+    fail("Remove Outliers did not find exactly the spiked values")
