@@ -68,6 +68,9 @@ constexpr int MaximumRounds = 64;
 // values still in), and their share of the progress bar.
 constexpr int OutlierRounds = 3;
 constexpr double OutlierProgress = 0.1;
+// A coefficient this many data ranges beyond the data's values makes the
+// fitter warn that the spline may swing between the data points.
+constexpr double OscillationFactor = 10.0;
 
 // The data: parameters (3 per point) and values (Dim per point).
 struct PointData
@@ -1044,6 +1047,7 @@ int vtkLRSplineFitter::RequestData(
                     << report.Iterations << (report.Iterations == 1 ? " fit" : " fits")
                     << ", because " << stopReason);
   }
+  this->WarnIfOscillating(result.Volume, fit.PointOffsets, range);
   AddFitFieldData(
     grid->GetFieldData(), this->Domain, this->ReusedPreviousMesh, np, this->NumberOfOutliers);
   output->SetNumberOfBlocks(1);
@@ -1300,6 +1304,47 @@ bool vtkLRSplineFitter::GatherData(const std::vector<vtkDataSet*>& leaves,
   positions.resize(3 * at);
   values.resize(static_cast<std::size_t>(at) * dim);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineFitter::WarnIfOscillating(const vtkLRSplineBezierVolume& volume,
+  const std::vector<vtkIdType>& pointOffsets, const double range[2])
+{
+  // On each element the spline lies in the hull of its Bezier coefficients;
+  // coefficients far outside the data's range, on an element that holds
+  // data, mean that the spline can swing that far between the data points.
+  // (Elements without data are an extrapolation, hidden by trimming.)
+  const double width = range[1] - range[0];
+  const double bound = std::max(std::abs(range[0]), std::abs(range[1])) +
+    OscillationFactor * (width > 0 ? width : std::max(std::abs(range[1]), 1e-300));
+  const vtkIdType per =
+    static_cast<vtkIdType>(volume.GetCoefficientsPerElement()) * volume.NumberOfComponents;
+  double largest = 0.0;
+  vtkIdType elements = 0;
+  for (vtkIdType e = 0; e < volume.GetNumberOfElements(); ++e)
+  {
+    if (pointOffsets[e + 1] == pointOffsets[e])
+    {
+      continue;
+    }
+    const double* c = volume.GetElementCoefficients(e);
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < per; ++i)
+    {
+      worst = std::max(worst, std::abs(c[i]));
+    }
+    largest = std::max(largest, worst);
+    elements += worst > bound ? 1 : 0;
+  }
+  if (elements > 0)
+  {
+    vtkWarningMacro(<< "the fitted spline may swing far from the data between the data points: "
+                    << "on " << elements << " elements that hold data its Bezier coefficients "
+                    << "reach " << largest << " for data in [" << range[0] << ", " << range[1]
+                    << "]; single wrong values (turn RemoveOutliers on), too few points per "
+                    << "element (raise MinimumPointsPerElement) or too little Regularization "
+                    << "cause this");
+  }
 }
 
 //------------------------------------------------------------------------------

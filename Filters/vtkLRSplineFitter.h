@@ -72,6 +72,7 @@
 
 class vtkDataSet;
 class vtkLRSplineBuilder;
+class vtkLRSplineBezierVolume;
 class vtkPolyData;
 
 class SPLINEVIZ_EXPORT vtkLRSplineFitter : public vtkMultiBlockDataSetAlgorithm
@@ -298,6 +299,11 @@ protected:
   // Keep the fitted spline for the next update (ReusePreviousMesh, data with a time).
   void RememberFit(const vtkLRSplineBuilder& builder, double time, const double lo[3],
     const double hi[3], int dim);
+  // Warn when, on elements that hold data (pointOffsets: CSR of the points
+  // per element), Bezier coefficients lie far outside the data's range (the
+  // spline can then swing that far between the data points).
+  void WarnIfOscillating(const vtkLRSplineBezierVolume& volume,
+    const std::vector<vtkIdType>& pointOffsets, const double range[2]);
   // The boundary surface of the leaves (output port 1).
   bool BuildBoundary(const std::vector<vtkDataSet*>& leaves, vtkPolyData* boundary);
 
