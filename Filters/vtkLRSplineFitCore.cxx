@@ -260,6 +260,160 @@ void vtkLRSplineFitCore::Regularize(const std::vector<double>& weight, double re
 }
 
 //------------------------------------------------------------------------------
+namespace
+{
+constexpr int MaxOrder = vtkLRSplineBezierVolume::MaximumDegree + 1;
+
+// Gauss-Legendre nodes and weights of n points on [0, 1] (exact for
+// polynomials of degree 2n - 1): Newton's method on the Legendre polynomial.
+void GaussLegendre(int n, double* x, double* w)
+{
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < n; ++i)
+  {
+    double z = std::cos(pi * (i + 0.75) / (n + 0.5));
+    double slope = 1.0;
+    for (int iteration = 0; iteration < 100; ++iteration)
+    {
+      double p1 = 1.0, p0 = 0.0;
+      for (int j = 1; j <= n; ++j)
+      {
+        const double pm = p0;
+        p0 = p1;
+        p1 = ((2.0 * j - 1.0) * z * p0 - (j - 1.0) * pm) / j;
+      }
+      slope = n * (z * p1 - p0) / (z * z - 1.0);
+      const double step = p1 / slope;
+      z -= step;
+      if (std::abs(step) < 1e-16)
+      {
+        break;
+      }
+    }
+    x[i] = 0.5 * (1.0 - z);
+    w[i] = 1.0 / ((1.0 - z * z) * slope * slope);
+  }
+}
+
+// The k-th derivative at s in [0, 1] of the polynomial with Bernstein
+// coefficients c[0..p]: p!/(p-k)! times the Bernstein polynomial of degree
+// p - k of the k-th forward differences (de Casteljau).
+double BernsteinDerivative(const double* c, int p, int k, double s)
+{
+  if (k > p)
+  {
+    return 0.0;
+  }
+  double d[MaxOrder];
+  std::copy(c, c + p + 1, d);
+  double factor = 1.0;
+  for (int j = 0; j < k; ++j)
+  {
+    factor *= p - j;
+    for (int i = 0; i < p - j; ++i)
+    {
+      d[i] = d[i + 1] - d[i];
+    }
+  }
+  const int n = p - k;
+  for (int r = 1; r <= n; ++r)
+  {
+    for (int i = 0; i <= n - r; ++i)
+    {
+      d[i] = (1.0 - s) * d[i] + s * d[i + 1];
+    }
+  }
+  return factor * d[0];
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineFitCore::AddElementSmoothing(const vtkLRSplinePatch& patch, vtkIdType e,
+  double smoothing, double* local, std::string* error) const
+{
+  const double* box = &patch.ElementBoxes[6 * e];
+  const vtkIdType first = this->SupportOffsets[e];
+  const int count = static_cast<int>(this->SupportOffsets[e + 1] - first);
+  // Per direction: the Gauss points, and for every function the value, first
+  // and second derivative (in s) of its univariate factor at each of them.
+  double x[3][MaxOrder], w[3][MaxOrder];
+  int points[3];
+  std::vector<double> table[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    const int order = patch.Order[d];
+    points[d] = order;
+    GaussLegendre(order, x[d], w[d]);
+    table[d].resize(static_cast<std::size_t>(count) * 3 * order);
+    double bernstein[MaxOrder];
+    for (int a = 0; a < count; ++a)
+    {
+      const vtkIdType f = this->SupportIds[first + a];
+      if (!vtkLRSplinePatch::BSplineToBernstein(
+            patch.GetKnots(f, d), order, box[d], box[d + 3], bernstein))
+      {
+        if (error)
+        {
+          *error = "basis function " + std::to_string(f) + " does not cover element " +
+            std::to_string(e) + " in direction " + std::to_string(d);
+        }
+        return false;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        for (int q = 0; q < order; ++q)
+        {
+          table[d][(a * 3 + k) * order + q] = BernsteinDerivative(bernstein, order - 1, k, x[d][q]);
+        }
+      }
+    }
+  }
+  // M[d][k](a, b) = integral over [0, 1] of the k-th derivatives of the
+  // factors of a and b in direction d.
+  std::vector<double> m[3][3];
+  for (int d = 0; d < 3; ++d)
+  {
+    const int n = points[d];
+    for (int k = 0; k < 3; ++k)
+    {
+      std::vector<double>& mk = m[d][k];
+      mk.assign(static_cast<std::size_t>(count) * count, 0.0);
+      for (int a = 0; a < count; ++a)
+      {
+        const double* ta = &table[d][(a * 3 + k) * n];
+        for (int b = a; b < count; ++b)
+        {
+          const double* tb = &table[d][(b * 3 + k) * n];
+          double sum = 0.0;
+          for (int q = 0; q < n; ++q)
+          {
+            sum += w[d][q] * ta[q] * tb[q];
+          }
+          mk[a * count + b] = mk[b * count + a] = sum;
+        }
+      }
+    }
+  }
+  // The thin-plate energy is separable: u_ss^2 + v_ss^2 + w_ss^2 +
+  // 2 (u_s v_s)^2 + 2 (u_s w_s)^2 + 2 (v_s w_s)^2 in terms of the factors.
+  for (int a = 0; a < count; ++a)
+  {
+    const double ga = patch.Gamma[this->SupportIds[first + a]];
+    for (int b = 0; b < count; ++b)
+    {
+      const std::size_t ab = static_cast<std::size_t>(a) * count + b;
+      const double energy = m[0][2][ab] * m[1][0][ab] * m[2][0][ab] +
+        m[0][0][ab] * m[1][2][ab] * m[2][0][ab] + m[0][0][ab] * m[1][0][ab] * m[2][2][ab] +
+        2.0 *
+          (m[0][1][ab] * m[1][1][ab] * m[2][0][ab] + m[0][1][ab] * m[1][0][ab] * m[2][1][ab] +
+            m[0][0][ab] * m[1][1][ab] * m[2][1][ab]);
+      local[ab] += smoothing * ga * patch.Gamma[this->SupportIds[first + b]] * energy;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 int vtkLRSplineFitCore::Solve(const std::vector<double>& rhsData, const std::vector<double>& prior,
   const std::vector<double>& delta, const std::vector<double>& diagonal, double target,
   std::vector<double>& x) const

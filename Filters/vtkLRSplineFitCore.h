@@ -16,6 +16,8 @@
  *   in every function's support (CSR arrays);
  * - BuildPattern(): the sparsity pattern of the normal matrix (functions
  *   overlap when they share an element), whose entries the fitter fills;
+ * - AddElementSmoothing(): the thin-plate energy of the functions on an
+ *   element, in the element's own coordinates (the fitters' smoothing term);
  * - Regularize() and Solve(): the regularized normal equations
  *   (A + D) c = b + D c_prev, D pulling functions with little data towards
  *   the previous fit, solved by conjugate gradients with a Jacobi
@@ -81,6 +83,23 @@ public:
    */
   static void Regularize(const std::vector<double>& weight, double regularization,
     double littleData, std::vector<double>& diagonal, std::vector<double>& delta);
+
+  /**
+   * Smoothing: add `smoothing` times the thin-plate energy of the functions
+   * on element e to `local` (count x count, row-major, in the order of
+   * SupportIds): local[a][b] += smoothing * integral over the element of
+   * sum_{|alpha| = 2} (2 / alpha!) D^alpha B_a D^alpha B_b, the derivatives
+   * taken in the element's own coordinates s in [0, 1]^3 (u = lo + s (hi - lo)),
+   * so that the energy of a function does not depend on the element's size
+   * or shape and the term fades as elements are refined (in the manner of
+   * the smoothing term of GoTools' LRSurfApprox; Skytt, Barrowclough and
+   * Dokken 2015). Exact (Gauss-Legendre on the Bezier form of each function,
+   * one dimension at a time). `patch` is the builder's (GetPatch(), taken
+   * once before threads call this). Needs ComputeSupports(). False with a message
+   * when a function's knots do not cover the element.
+   */
+  bool AddElementSmoothing(const vtkLRSplinePatch& patch, vtkIdType e, double smoothing,
+    double* local, std::string* error = nullptr) const;
 
   /**
    * Solve (A + D) x = rhs + D prior by preconditioned conjugate gradients

@@ -45,6 +45,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -89,6 +90,7 @@ public:
   const PointData* Data = nullptr;
   double Top[3] = { 1, 1, 1 }; // upper end of the parameter domain
   double Regularization = 0.1;
+  double Smoothing = 0.0;
   double Tolerance = 0.0;
   bool RMSMode = false;
 
@@ -336,8 +338,9 @@ public:
     this->Core.Builder.SetCoefficients(coefficients);
   }
 
-  // Regularized least squares on the current mesh, each component.
-  void LeastSquares()
+  // Regularized least squares with smoothing on the current mesh, each
+  // component. False with a message when the smoothing cannot be assembled.
+  bool LeastSquares(std::string* error)
   {
     const vtkLRSplinePatch& patch = this->Core.Builder.GetPatch();
     const vtkIdType nf = patch.GetNumberOfBasisFunctions();
@@ -348,8 +351,10 @@ public:
     const std::size_t nnz = this->Core.Entries.size();
     struct Sums
     {
-      std::vector<double> Entries, Rhs, Weight;
+      std::vector<double> Entries, Rhs, Weight, DataDiagonal;
     };
+    std::atomic<bool> failed(false);
+    std::string failure;
     vtkSMPThreadLocal<Sums> tlSums;
     const vtkIdType ne = patch.GetNumberOfElements();
     vtkSMPThreadLocal<std::vector<double>> tlW, tlLocal;
@@ -362,19 +367,39 @@ public:
           sums.Entries.assign(nnz, 0.0);
           sums.Rhs.assign(static_cast<std::size_t>(nf) * dim, 0.0);
           sums.Weight.assign(nf, 0.0);
+          sums.DataDiagonal.assign(nf, 0.0);
         }
         std::vector<double>& w = tlW.Local();
         std::vector<double>& local = tlLocal.Local();
         for (vtkIdType e = begin; e < end; ++e)
         {
-          if (this->PointOffsets[e + 1] == this->PointOffsets[e])
+          const vtkIdType first = this->Core.SupportOffsets[e];
+          const vtkIdType count = this->Core.SupportOffsets[e + 1] - first;
+          const vtkIdType points = this->PointOffsets[e + 1] - this->PointOffsets[e];
+          // Smoothing on elements with fewer points than functions, fading
+          // to none where the data alone can determine them.
+          const double fade =
+            std::max(0.0, 1.0 - static_cast<double>(points) / static_cast<double>(count));
+          const double smoothing = this->Smoothing * fade;
+          if (points == 0 && !(smoothing > 0))
           {
             continue;
           }
-          const vtkIdType first = this->Core.SupportOffsets[e];
-          const vtkIdType count = this->Core.SupportOffsets[e + 1] - first;
           w.resize(count);
           local.assign(static_cast<std::size_t>(count * count), 0.0);
+          if (smoothing > 0)
+          {
+            std::string why;
+            if (!this->Core.AddElementSmoothing(patch, e, smoothing, local.data(), &why))
+            {
+              bool expected = false;
+              if (failed.compare_exchange_strong(expected, true))
+              {
+                failure = why;
+              }
+              continue;
+            }
+          }
           for (vtkIdType k = this->PointOffsets[e]; k < this->PointOffsets[e + 1]; ++k)
           {
             const vtkIdType p = this->PointIds[k];
@@ -383,6 +408,7 @@ public:
             {
               const vtkIdType f = this->Core.SupportIds[first + a];
               sums.Weight[f] += w[a];
+              sums.DataDiagonal[f] += w[a] * w[a];
               for (int c = 0; c < dim; ++c)
               {
                 sums.Rhs[f * dim + c] += w[a] * this->Data->F[p * dim + c];
@@ -407,8 +433,14 @@ public:
           }
         }
       });
+    if (failed)
+    {
+      *error = "cannot assemble the smoothing term: " + failure;
+      return false;
+    }
     std::vector<double>& entries = this->Core.Entries;
     std::vector<double> rhs(static_cast<std::size_t>(nf) * dim, 0.0), weight(nf, 0.0);
+    std::vector<double> dataDiagonal(nf, 0.0);
     for (const Sums& sums : tlSums)
     {
       if (sums.Weight.empty())
@@ -430,6 +462,7 @@ public:
       for (vtkIdType f = 0; f < nf; ++f)
       {
         weight[f] += sums.Weight[f];
+        dataDiagonal[f] += sums.DataDiagonal[f];
       }
     }
     std::vector<double> diagonal(nf, 0.0);
@@ -440,8 +473,14 @@ public:
         entries[std::lower_bound(row, columns.data() + rowOffsets[f + 1], static_cast<int>(f)) -
           columns.data()];
     }
+    // The pull towards the previous fit is scaled by the data's part of the
+    // diagonal (A_ii); the preconditioner takes the whole (with the smoothing).
     std::vector<double> delta;
-    vtkLRSplineFitCore::Regularize(weight, this->Regularization, LittleData, diagonal, delta);
+    vtkLRSplineFitCore::Regularize(weight, this->Regularization, LittleData, dataDiagonal, delta);
+    for (vtkIdType f = 0; f < nf; ++f)
+    {
+      diagonal[f] += delta[f];
+    }
     std::vector<double> coefficients(patch.Coefficients.begin(), patch.Coefficients.end());
     std::vector<double> b(nf), prior(nf), x;
     this->SolverIterations = 0;
@@ -462,6 +501,7 @@ public:
     this->Core.Builder.SetCoefficients(coefficients);
     this->Core.Columns.clear();
     this->Core.Entries.clear();
+    return true;
   }
 
   // The errors of the output's Bezier form at the points.
@@ -629,7 +669,10 @@ bool FitLoop(PointFit& fit, const LoopSettings& settings, double tolerance, vtkA
     }
     if (settings.Method != vtkLRSplineFitter::MBA)
     {
-      fit.LeastSquares();
+      if (!fit.LeastSquares(error))
+      {
+        return false;
+      }
     }
     else
     {
@@ -695,6 +738,14 @@ bool FitLoop(PointFit& fit, const LoopSettings& settings, double tolerance, vtkA
         (sparse ? " or hold fewer than MinimumPointsPerElement (" +
               std::to_string(settings.MinimumPointsPerElement) + ") data points"
                 : std::string()));
+    if (sparse && fit.Smoothing > 0)
+    {
+      std::ostringstream hint;
+      hint << "; where elements hold few points, Smoothing (" << fit.Smoothing
+           << ") also holds the spline back from them: a lower Smoothing follows them more "
+              "closely, at the risk of swings between the points";
+      stopReason += hint.str();
+    }
     break;
   }
   return true;
@@ -961,6 +1012,7 @@ int vtkLRSplineFitter::RequestData(
   PointFit fit;
   fit.Data = &data;
   fit.Regularization = this->Regularization;
+  fit.Smoothing = this->Smoothing;
   fit.Tolerance = tolerance;
   fit.RMSMode = this->ToleranceType == RMS_ERROR;
   std::string error;
@@ -1139,9 +1191,9 @@ bool vtkLRSplineFitter::CheckSettings()
     vtkErrorMacro(<< "MaximumNumberOfElements must be at least 1");
     return false;
   }
-  if (!std::isfinite(this->Regularization))
+  if (!std::isfinite(this->Regularization) || !std::isfinite(this->Smoothing))
   {
-    vtkErrorMacro(<< "Regularization must be finite");
+    vtkErrorMacro(<< "Regularization and Smoothing must be finite");
     return false;
   }
   // The most elements the limits allow, and the memory they would take: the
@@ -1341,9 +1393,9 @@ void vtkLRSplineFitter::WarnIfOscillating(const vtkLRSplineBezierVolume& volume,
     vtkWarningMacro(<< "the fitted spline may swing far from the data between the data points: "
                     << "on " << elements << " elements that hold data its Bezier coefficients "
                     << "reach " << largest << " for data in [" << range[0] << ", " << range[1]
-                    << "]; single wrong values (turn RemoveOutliers on), too few points per "
-                    << "element (raise MinimumPointsPerElement) or too little Regularization "
-                    << "cause this");
+                    << "]; single wrong values (turn RemoveOutliers on), too little Smoothing ("
+                    << this->Smoothing << ") or too few points per element (raise "
+                    << "MinimumPointsPerElement) cause this");
   }
 }
 
@@ -1528,6 +1580,7 @@ void vtkLRSplineFitter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Margin: " << this->Margin << "\n";
   os << indent << "MinimumPointsPerElement: " << this->MinimumPointsPerElement << "\n";
   os << indent << "Regularization: " << this->Regularization << "\n";
+  os << indent << "Smoothing: " << this->Smoothing << "\n";
   os << indent << "ExtractBoundary: " << this->ExtractBoundary << "\n";
   os << indent << "ReusePreviousMesh: " << this->ReusePreviousMesh << "\n";
   os << indent << "ReusedPreviousMesh: " << this->ReusedPreviousMesh << "\n";

@@ -122,6 +122,8 @@ int TestLRSplineFitterBadInput(int, char*[])
     [](vtkLRSplineFitter* f) { f->SetTolerance(-1.0); });
   Expect(status, "tolerance NaN", good, "Tolerance must be positive",
     [](vtkLRSplineFitter* f) { f->SetTolerance(std::numeric_limits<double>::quiet_NaN()); });
+  Expect(status, "smoothing NaN", good, "Smoothing must be finite",
+    [](vtkLRSplineFitter* f) { f->SetSmoothing(std::numeric_limits<double>::quiet_NaN()); });
   Expect(status, "degree 0", good, "Degree must be 1 to 5",
     [](vtkLRSplineFitter* f) { f->SetDegree(2, 0, 2); });
   Expect(status, "degree 6", good, "Degree must be 1 to 5",

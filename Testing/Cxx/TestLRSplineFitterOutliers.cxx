@@ -10,8 +10,9 @@
 //    tolerance at the clean points against the clean values, and at 50,000
 //    fresh points away from the spikes the spline stays near the field;
 //    negative control: without RemoveOutliers the same data makes the spline
-//    follow the spikes (error at fresh points near them, elements spent)
-//    and the fitter warns that its coefficients leave the data's range;
+//    follow the spikes (error at fresh points near them, elements spent;
+//    with Smoothing 0 the spline also swings between them, as
+//    TestLRSplineFitterSmoothing shows on other data);
 //  - clean data: nothing is left out and the fit is the one without
 //    RemoveOutliers (same elements);
 //  - NaN values and infinite coordinates are left out and counted (refused
@@ -234,9 +235,6 @@ void TestSpikes(SplineVizTestStatus& status)
   SV_CHECK_MSG(status, controlNear > 10 * Tolerance, "negative control passed: " << controlNear);
   SV_CHECK_MSG(status, control.Fitter->GetNumberOfElements() > 2 * cleanElements,
     "negative control: " << control.Fitter->GetNumberOfElements() << " elements");
-  // ... and says so: its coefficients leave the data's range.
-  SV_CHECK_MSG(status, control.Warning().find("swing far from the data") != std::string::npos,
-    "no warning for the oscillating spline: " << control.Warning());
 }
 
 void TestCleanAndInvalid(SplineVizTestStatus& status)
