@@ -3,7 +3,8 @@
 # Run a small 3D OpenFOAM tutorial for the LR-spline fitting demo
 # (Examples/Python/lr_spline_fit_openfoam.py): the porous angled duct of
 # porousSimpleFoam (22,000 hexahedra, 200 steady iterations; about 15 s on
-# 2 cores). Installs Debian's OpenFOAM and its tutorials when missing.
+# 2 cores). Installs Debian's OpenFOAM and its tutorials when missing
+# (unless SPLINEVIZ_NO_INSTALL is set: then it fails).
 #   scripts/openfoam-case.sh [case-dir]     (default: build/openfoam/angledDuct)
 # Prints the case's .foam file for ParaView's OpenFOAM reader.
 set -euo pipefail
@@ -11,6 +12,10 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 case_dir="${1:-$here/build/openfoam/angledDuct}"
 tutorial=/usr/share/doc/openfoam-examples/examples/incompressible/porousSimpleFoam/angledDuct
 if [ ! -d "$tutorial" ] || ! command -v porousSimpleFoam >/dev/null; then
+  if [ -n "${SPLINEVIZ_NO_INSTALL:-}" ]; then
+    echo "error: Debian's openfoam and openfoam-examples are not installed (scripts/setup.sh installs them)" >&2
+    exit 1
+  fi
   echo "== installing Debian's openfoam and openfoam-examples" >&2
   apt-get install -y openfoam openfoam-examples >&2
 fi

@@ -17,7 +17,9 @@ build="${SPLINEVIZ_BUILD_DIR:-$here/build}"
 # real diffusion data of the tensor examples; NiBabel, the independent
 # implementation the neuroimaging IO tests compare with; h5py, with which the
 # IFEM reader's tests read the HDF5 files independently (libhdf5-dev is the
-# library the reader itself uses); clang with its
+# library the reader itself uses); OpenFOAM and its tutorials, the real CFD
+# case of the LR-spline fitting test and example (scripts/openfoam-case.sh);
+# clang with its
 # sanitizer and libFuzzer runtimes and llvm-symbolizer for the sanitizer build.
 packages=(
   build-essential cmake
@@ -30,6 +32,7 @@ packages=(
   libglm-dev
   xvfb xauth x11-utils
   python3-dipy python3-nibabel python3-h5py
+  openfoam openfoam-examples m4
   clang libclang-rt-14-dev llvm
 )
 
