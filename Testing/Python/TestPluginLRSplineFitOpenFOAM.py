@@ -8,6 +8,7 @@ data), fitted by "LR-Spline Fit" to 5 % of the range of p and of |U|:
   basis functions of the written .lr file (ifem_reference) at 3,000 of them;
   negative control: the same numpy check against the field shifted by twice
   the tolerance fails;
+- the fit passes the case's 20 time steps on to ParaView's animation;
 - between the data, at 60,000 random points inside the mesh, the |U| spline
   stays within 0.5 ranges of the data's range; negative control: with
   Smoothing 0 it leaves the range by more than 10 ranges there;
@@ -29,6 +30,7 @@ from paraview import servermanager
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 from vtkmodules.vtkFiltersCore import vtkProbeFilter
 
 import ifem_reference as ref
@@ -170,6 +172,19 @@ for array in ("p", "U"):
         p_fit = f
     else:
         Delete(f)  # noqa: F405
+
+# Time: the fit passes the reader's time steps on, so ParaView's animation
+# scene steps through the fitted series.
+fit_info = p_fit.GetClientSideObject().GetOutputInformation(0)
+fit_times = list(fit_info.Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS()) or [])
+scene = GetAnimationScene()  # noqa: F405
+scene.UpdateAnimationUsingDataTimeSteps()
+scene_times = list(GetTimeKeeper().TimestepValues)  # noqa: F405
+print("time steps: reader %d, fit %d, animation %d"
+      % (len(reader.TimestepValues), len(fit_times), len(scene_times)))
+if fit_times != list(reader.TimestepValues) or len(fit_times) < 2 or \
+        not set(fit_times) <= set(scene_times):
+    fail("the fit does not pass the case's time steps on to the animation")
 
 # Between the data: random points inside the mesh (vtkProbeFilter's valid
 # mask) and inside the fitted domain.
