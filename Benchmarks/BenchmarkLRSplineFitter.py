@@ -30,6 +30,7 @@ ParaView's Resample To Image + Volume), and the mesh itself
 an unstructured grid; --quick skips it above 10^5 points).
 """
 import os
+import runpy
 import statistics
 import subprocess
 import sys
@@ -40,7 +41,7 @@ import numpy as np
 import splineviz
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkImageData, vtkPiecewiseFunction, vtkSphere
-from vtkmodules.vtkFiltersCore import vtkCellCenters, vtkProbeFilter, vtkResampleToImage
+from vtkmodules.vtkFiltersCore import vtkCellCenters
 from vtkmodules.vtkFiltersGeneral import vtkClipDataSet, vtkDataSetTriangleFilter
 from vtkmodules.vtkIOGeometry import vtkOpenFOAMReader
 from vtkmodules.vtkRenderingCore import (vtkColorTransferFunction, vtkRenderer, vtkRenderWindow,
@@ -50,6 +51,9 @@ from vtkmodules.vtkRenderingVolumeOpenGL2 import vtkSmartVolumeMapper
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+# The example's resampling error (one place for ParaView's way of the comparison).
+EXAMPLE = runpy.run_path(os.path.join(HERE, "..", "Examples", "Python", "lr_spline_fit_openfoam.py"),
+                         run_name="lr_spline_fit_openfoam")
 RESOLUTIONS = (32, 48, 64, 96, 128, 192, 256, 384)
 
 
@@ -134,35 +138,6 @@ def point_cloud(x):
     return pd
 
 
-def resampled(mesh, association, array, size, cloud, values):
-    """The mesh resampled to size^3: the image, its time, and the largest
-    error at the data points, overall and away from the boundary (where all
-    8 voxels around a point lie in the mesh)."""
-    resample = vtkResampleToImage()
-    resample.SetInputDataObject(mesh)
-    resample.SetSamplingDimensions(size, size, size)
-    start = time.perf_counter()
-    resample.Update()
-    seconds = time.perf_counter() - start
-    image = resample.GetOutput()
-    probe = vtkProbeFilter()
-    probe.SetInputData(cloud)
-    probe.SetSourceData(image)
-    probe.Update()
-    data = probe.GetOutput().GetPointData()
-    error = np.abs(vtk_to_numpy(data.GetArray(array)) - values)
-    mask = vtkImageData()
-    mask.CopyStructure(image)
-    mask.GetPointData().SetScalars(image.GetPointData().GetArray("vtkValidPointMask"))
-    mask_probe = vtkProbeFilter()
-    mask_probe.SetInputData(cloud)
-    mask_probe.SetSourceData(mask)
-    mask_probe.Update()
-    interior = vtk_to_numpy(mask_probe.GetOutput().GetPointData().GetScalars()) > 0.999
-    interior &= vtk_to_numpy(data.GetArray("vtkValidPointMask")).astype(bool)
-    return image, seconds, error.max(), error[interior].max() if interior.any() else np.inf
-
-
 def transfer_functions(low, high):
     prop = vtkVolumeProperty()
     color = vtkColorTransferFunction()
@@ -228,11 +203,14 @@ def run(label, mesh, association, array, x, values, tolerance, render_mesh=True)
     images = {}
     equal = None
     for size in RESOLUTIONS:
-        image, rs, worst, interior = resampled(mesh, association, array, size, cloud, values)
+        start = time.perf_counter()
+        _, worst, _, interior, _, image = EXAMPLE["resampled_error"](
+            mesh, cloud, values, array, size)
+        rs = time.perf_counter() - start
         if size in (128, 256):
             images[size] = image
-            print("   Resample To Image %d^3: %.2f s, %d bytes (%.1fx the .lr), max error %.4g "
-                  "(%.4g away from the boundary)"
+            print("   Resample To Image %d^3 (and probing it): %.2f s, %d bytes (%.1fx the .lr), "
+                  "max error %.4g (%.4g away from the boundary)"
                   % (size, rs, 4 * size ** 3, 4 * size ** 3 / lr_bytes, worst, interior))
         if equal is None and interior <= fitter.GetMaximumError():
             equal = size

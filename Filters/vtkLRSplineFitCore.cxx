@@ -336,14 +336,29 @@ bool vtkLRSplineFitCore::AddElementSmoothing(const vtkLRSplinePatch& patch, vtkI
   const int count = static_cast<int>(this->SupportOffsets[e + 1] - first);
   // Per direction: the Gauss points, and for every function the value, first
   // and second derivative (in s) of its univariate factor at each of them.
-  double x[3][MaxOrder], w[3][MaxOrder];
+  // Gauss-Legendre rules of 1..MaxOrder points, computed once.
+  struct Rules
+  {
+    double X[MaxOrder + 1][MaxOrder], W[MaxOrder + 1][MaxOrder];
+    Rules()
+    {
+      for (int n = 1; n <= MaxOrder; ++n)
+      {
+        GaussLegendre(n, this->X[n], this->W[n]);
+      }
+    }
+  };
+  static const Rules rules;
+  const double* x[3];
+  const double* w[3];
   int points[3];
   std::vector<double> table[3];
   for (int d = 0; d < 3; ++d)
   {
     const int order = patch.Order[d];
     points[d] = order;
-    GaussLegendre(order, x[d], w[d]);
+    x[d] = rules.X[order];
+    w[d] = rules.W[order];
     table[d].resize(static_cast<std::size_t>(count) * 3 * order);
     double bernstein[MaxOrder];
     for (int a = 0; a < count; ++a)

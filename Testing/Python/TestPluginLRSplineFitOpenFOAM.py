@@ -34,7 +34,7 @@ from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 from vtkmodules.vtkFiltersCore import vtkProbeFilter
 
 import ifem_reference as ref
-from splineviz_testing import output_dir, png_rgb, white_view
+from splineviz_testing import drawn_mask, output_dir, png_rgb, white_view
 
 plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -237,12 +237,8 @@ def picture_rgb(name):
     return png_rgb(path).astype(float)
 
 
-def drawn(rgb):
-    return abs(rgb - 255).max(axis=2) > 3
-
-
 def picture(name):
-    return drawn(picture_rgb(name))
+    return drawn_mask(picture_rgb(name))
 
 
 # The expected picture: the mesh where the spline is defined (the box of the
@@ -279,7 +275,7 @@ display.LRSplineScalarOpacityUnitDistance = 0.0005
 untrimmed = picture("untrimmed")
 display.TrimmingSurface = boundary
 trimmed_rgb = picture_rgb("trimmed")
-trimmed = drawn(trimmed_rgb)
+trimmed = drawn_mask(trimmed_rgb)
 # Negative control for the colours: the first time step's fit.
 view.ViewTime = reader.TimestepValues[0]
 first_rgb = picture_rgb("trimmed-first-step")

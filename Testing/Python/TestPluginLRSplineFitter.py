@@ -15,7 +15,7 @@ import sys
 
 from paraview.simple import *  # noqa: F401,F403
 from paraview import servermanager
-from splineviz_testing import Observed, output_dir, png_rgb, white_view
+from splineviz_testing import Observed, drawn_mask, output_dir, png_rgb, white_view
 
 plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -89,24 +89,20 @@ def picture(name):
     return png_rgb(path)
 
 
-def drawn(rgb):
-    return (abs(rgb - 255).max(axis=2) > 3)
-
-
 surface_display = Show(boundary, view)  # noqa: F405
 surface_display.SetRepresentationType("Surface")
 surface_display.ColorArrayName = ["POINTS", ""]
 surface_display.AmbientColor = surface_display.DiffuseColor = [0.2, 0.2, 0.2]
 view.CameraViewAngle = 30
 Render(view)  # noqa: F405
-silhouette = drawn(picture("boundary"))
+silhouette = drawn_mask(picture("boundary"))
 Hide(boundary, view)  # noqa: F405
 display = Show(fit, view)  # noqa: F405
 display.SetRepresentationType("LR-Spline Volume")
 ColorBy(display, ("POINTS", "RTData"))  # noqa: F405
-untrimmed = drawn(picture("untrimmed"))
+untrimmed = drawn_mask(picture("untrimmed"))
 display.TrimmingSurface = boundary
-trimmed = drawn(picture("trimmed"))
+trimmed = drawn_mask(picture("trimmed"))
 outside = trimmed & ~silhouette
 untrimmed_outside = untrimmed & ~silhouette
 print("silhouette %.3f, trimmed %.3f, drawn outside %d px (untrimmed: %d px)"

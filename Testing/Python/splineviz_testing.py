@@ -5,6 +5,8 @@ how much of a rendered image is drawn."""
 import os
 import sys
 
+import numpy as np
+
 
 class Checker:
     """The checks of a test. check() prints one line per check, "ok: " or
@@ -148,3 +150,9 @@ def drawn_fraction(png, background=None, tolerance=30):
     rgb = png_rgb(png).reshape(-1, 3)
     reference = rgb[0] if background is None else background
     return float((abs(rgb - reference).max(axis=1) > tolerance).mean())
+
+
+def drawn_mask(rgb, background=(255, 255, 255), tolerance=3):
+    """Per pixel of `rgb` (as png_rgb returns it): whether it differs from
+    `background` by more than `tolerance` in some channel."""
+    return abs(rgb - np.asarray(background)).max(axis=2) > tolerance
