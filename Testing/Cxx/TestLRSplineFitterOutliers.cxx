@@ -223,9 +223,13 @@ void TestSpikes(SplineVizTestStatus& status)
   vtkDataArray* count = grid ? grid->GetFieldData()->GetArray("LRFitOutliers") : nullptr;
   SV_CHECK(status, count && count->GetTuple1(0) == run.Fitter->GetNumberOfOutliers());
 
-  // Negative control: the same data without RemoveOutliers.
+  // Negative control: the same data without RemoveOutliers. Chasing the
+  // spikes would refine to about 22x the clean fit's elements; capped at 4x
+  // it shows the same failure, and the test takes a third of the time (it
+  // runs under the sanitizers in CI).
   FitRun control;
   Configure(control.Fitter, false);
+  control.Fitter->SetMaximumNumberOfElements(4 * cleanElements);
   control.Run(cloud);
   double controlNear = 0.0;
   const double controlFresh = FreshError(control.Output(), data, 0.03, &controlNear);
