@@ -224,6 +224,7 @@ void vtkRayCastTubeMapper::SetMapperShaderParameters(
   program->SetUniformi("rootIterations", this->RootIterations);
   program->SetUniformi("rootSamples", this->RootSamples);
   program->SetUniformf("tubeStraightTolerance", static_cast<float>(this->StraightTolerance));
+  program->SetUniformi("tubeSingleLayer", act->IsRenderingTranslucentPolygonalGeometry() ? 1 : 0);
 }
 
 //------------------------------------------------------------------------------

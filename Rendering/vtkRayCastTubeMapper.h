@@ -48,8 +48,13 @@
  * equal, 4 more with scalar colors) and
  * per tube its cell and block ids. See GetGPUMemorySize().
  *
- * Limitations: translucent tubes show their nearest surface only (the far
- * wall of the same sub-segment is not drawn); point picking is not
+ * Translucent (actor opacity below 1, with VTK's depth peeling or its
+ * order-independent translucency), every tube is one layer, its nearest
+ * wall: each rectangle keeps only the hits between the planes normal to the
+ * curve at its ends, so that neighbouring sub-segments, which share their
+ * end spheres, never both draw a point (TestTubeTranslucency).
+ *
+ * Limitations: point picking is not
  * supported (cell and block picking are); non-uniform actor scaling is
  * treated as the uniform scale with the same volume change.
  *

@@ -923,6 +923,7 @@ void vtkStylizedLineMapper::SetMapperShaderParameters(
   program->SetUniformf("lineDepthCap", static_cast<float>(DepthCap));
   program->SetUniformf("lineWiden", static_cast<float>(1.0 + this->HaloWidth));
   program->SetUniformi("lineDepthCorrection", this->DepthCorrection ? 1 : 0);
+  program->SetUniformi("lineSingleLayer", act->IsRenderingTranslucentPolygonalGeometry() ? 1 : 0);
   program->SetUniformf("lineHaloDepth", static_cast<float>(this->HaloDepthOffset));
   program->SetUniformf("lineHaloDepthRange",
     static_cast<float>(this->DepthDependentHalo ? this->HaloDepthRange : 0.0));
@@ -1087,7 +1088,9 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
           state->vtkglCullFace(static_cast<unsigned int>(cullMode));
           state->vtkglDisable(GL_CULL_FACE);
         }
-        if (joints && halo == 0)
+        // Translucent, the joint spheres would be a second layer over the
+        // cylinders they join (TestTubeTranslucency): left out.
+        if (joints && halo == 0 && !act->IsRenderingTranslucentPolygonalGeometry())
         {
           program->SetUniformi("lineMode", FIXUP_JOINTS);
           glDrawElementsInstanced(GL_TRIANGLES, 6, GL_UNSIGNED_SHORT,

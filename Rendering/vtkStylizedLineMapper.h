@@ -32,6 +32,9 @@
  *   frame vectors, then VTK's lighting, material, opacity, scalar coloring,
  *   clipping planes (of the corrected surface point), depth peeling and
  *   hardware picking (cell = the polyline, composite index = its block).
+ *   Translucent, each line is one layer: quad fragments beyond the plane of
+ *   their polyline's end are left to its cap, and the fix-up's joint
+ *   spheres are not drawn (TestTubeTranslucency).
  * - **Halo** (§4.2): HaloWidth (a fraction of the radius) widens every quad;
  *   the extra band is drawn in HaloColor (or the renderer's background) at a
  *   depth pushed back by HaloDepthOffset radii, so that it hides lines

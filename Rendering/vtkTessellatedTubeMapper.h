@@ -157,8 +157,10 @@
  * GL_ARB_tessellation_shader), the mapper warns once and draws the tubes
  * with a vtkRayCastTubeMapper with the same settings instead.
  *
- * Limitations: translucent tubes show their front walls only (back patches
- * are culled); bulbs (self-intersections of the disk model where the radius
+ * Translucent, every tube is one layer, its front walls (back patches are
+ * culled; TestTubeTranslucency).
+ *
+ * Limitations: bulbs (self-intersections of the disk model where the radius
  * is large compared to the curvature radius) are not removed (Salm Fig. 9);
  * point picking is not supported (cell and block picking are); non-uniform
  * actor scaling is treated as the uniform scale with the same volume change.

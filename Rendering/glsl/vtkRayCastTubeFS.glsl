@@ -15,6 +15,8 @@ flat in vec4 tubeQ0VSOutput; // quadratic sub-segment, view coordinates
 flat in vec4 tubeQ1VSOutput;
 flat in vec4 tubeQ2VSOutput;
 flat in ivec4 tubeInfoVSOutput; // first node, sub-segment, tube, flags | mode << 2
+flat in vec4 tubeCut0VSOutput;  // translucent: the planes bounding the rectangle's part
+flat in vec4 tubeCut1VSOutput;
 
 uniform mat4 VCDCMatrix;
 uniform int subSegments;
@@ -74,6 +76,17 @@ bool tubeRayCast(vec3 fragmentVC, out vec3 hitVC, out vec3 normalVC, out float t
     return false;
   }
   hitVC = origin + hit.distance * dir;
+  // Translucent: neighbouring rectangles share their end sphere, so a pixel
+  // near a joint is hit by both, once on the tube's surface and once inside
+  // it. Depth testing hides the inner hit when opaque; translucent, it would
+  // be one more layer. Each rectangle keeps only the hits between its two
+  // cut planes (normal to the curve at its ends; vtkRayCastTubeVS.glsl), so
+  // every point of the tube belongs to exactly one rectangle.
+  if (dot(tubeCut0VSOutput, vec4(hitVC, 1.0)) < 0.0 ||
+    dot(tubeCut1VSOutput, vec4(hitVC, 1.0)) <= 0.0)
+  {
+    return false;
+  }
   vec3 n = hitVC - center.xyz;
   float len = length(n);
   normalVC = len > 0.0 ? n / len : -dir;

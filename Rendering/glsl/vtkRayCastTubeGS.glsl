@@ -33,6 +33,8 @@ in TubeRectangle
   flat vec4 d0;
   flat vec4 c1;
   flat vec4 d1;
+  flat vec4 cut0;
+  flat vec4 cut1;
 } tubeRect[];
 
 out vec4 vertexVCGSOutput;       // position on the rectangle, view coordinates
@@ -40,6 +42,8 @@ flat out vec4 tubeQ0GSOutput;    // quadratic sub-segment in view coordinates
 flat out vec4 tubeQ1GSOutput;    // (xyz: control point, w: radius)
 flat out vec4 tubeQ2GSOutput;
 flat out ivec4 tubeInfoGSOutput; // first node, sub-segment, tube, flags | mode << 2
+flat out vec4 tubeCut0GSOutput;  // translucent: the planes bounding the rectangle's part
+flat out vec4 tubeCut1GSOutput;
 //SV::TubeColor::GSDec
 
 void main()
@@ -61,6 +65,8 @@ void main()
     tubeQ1GSOutput = tubeRect[0].q1;
     tubeQ2GSOutput = tubeRect[0].q2;
     tubeInfoGSOutput = tubeRect[0].info;
+    tubeCut0GSOutput = tubeRect[0].cut0;
+    tubeCut1GSOutput = tubeRect[0].cut1;
     //SV::TubeColor::GSImpl
     gl_PrimitiveID = gl_PrimitiveIDIn;
     gl_Position = VCDCMatrix * vec4(p, 1.0);

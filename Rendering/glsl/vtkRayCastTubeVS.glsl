@@ -33,6 +33,7 @@ uniform int cameraParallel;
 uniform float tubeStraightTolerance; // fraction of the radius; 0: always root finding
 uniform float tubePixelScale;        // pixels per view unit (at unit distance if perspective)
 uniform vec2 tubeMinimumRadius;      // the narrowest drawn radius: x + y (view distance)
+uniform int tubeSingleLayer;         // 1: translucent, each tube one layer (cut0, cut1)
 
 // The sub-segment and its rectangle, for the geometry stage.
 out TubeRectangle
@@ -47,9 +48,24 @@ out TubeRectangle
   flat vec4 d0;
   flat vec4 c1;
   flat vec4 d1;
+  flat vec4 cut0;  // with tubeSingleLayer: the planes between which the rectangle's
+  flat vec4 cut1;  // part of the tube lies (dot(cut, (p, 1)) >= 0 and > 0)
 } tubeRect;
 
 //SV::SplineTubeMath::Dec
+
+// The plane through the segment's point at parameter `t` (k / subSegments)
+// normal to its tangent there, (normal, offset), the normal facing forward.
+// Both rectangles on either side of a joint compute it from the same inputs
+// by the same operations, so they cut the tube along the same plane.
+vec4 tubeCutPlane(vec4 a, vec4 da, vec4 b, vec4 db, int k)
+{
+  vec3 c = k == 0 ? a.xyz : (k == subSegments ? b.xyz : svHermite(a, da, b, db,
+    float(k) / float(subSegments)).xyz);
+  vec3 n = k == 0 ? da.xyz : (k == subSegments ? db.xyz : svHermiteDerivative(a, da, b, db,
+    float(k) / float(subSegments)).xyz);
+  return vec4(n, -dot(n, c));
+}
 
 // Projection of view-space point p onto the plane z = zp along the view ray.
 vec2 projectToPlane(vec3 p, float zp)
@@ -160,6 +176,24 @@ void main()
     else if (mode == 1)
     {
       q1 = 0.5 * (q0 + q2);
+    }
+  }
+  // Translucent: the part of the tube this rectangle draws, between the
+  // planes at its first and last sub-segment's ends (none at the tube's
+  // ends), so that neighbours never both draw a pixel (vtkRayCastTubeFS).
+  tubeRect.cut0 = vec4(0.0, 0.0, 0.0, 1.0);
+  tubeRect.cut1 = vec4(0.0, 0.0, 0.0, 1.0);
+  if (tubeSingleLayer != 0)
+  {
+    int first = mode == 2 ? 0 : k;
+    int last = mode == 2 ? subSegments - 1 : (mode == 3 ? k + 1 : k);
+    if ((flags & 1) == 0 || first != 0)
+    {
+      tubeRect.cut0 = tubeCutPlane(a, da, b, db, first);
+    }
+    if ((flags & 2) == 0 || last != subSegments - 1)
+    {
+      tubeRect.cut1 = -tubeCutPlane(a, da, b, db, last + 1);
     }
   }
   tubeRect.q0 = q0;

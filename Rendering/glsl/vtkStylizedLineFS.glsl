@@ -16,6 +16,9 @@ in vec3 lineFrontVSOutput;
 in float lineRadiusVSOutput;
 flat in ivec2 lineInfoVSOutput;
 flat in vec4 lineSphereVSOutput;
+flat in vec4 lineCut0VSOutput; // translucent: the planes of the polyline's ends
+flat in vec4 lineCut1VSOutput;
+in vec2 lineEndSpanVSOutput; // below 1 on the polyline's first (x) or last (y) segment
 #if defined(LINE_COLORS) || defined(LINE_DIRECTION_COLORS)
 in vec4 lineColorVSOutput;
 #endif
@@ -135,6 +138,18 @@ void lineFragment(inout vec4 vertexVC, out vec3 normal)
   {
     float s = clamp(lineTexVSOutput.x, -1.0, 1.0);
     vertexVC.xyz += sqrt(max(0.0, 1.0 - s * s)) * lineFrontVSOutput;
+  }
+  // Translucent: where an end turned to the eye overlaps the quads of its
+  // segment, their surface point lies beyond the end's plane and the cap is
+  // the line's surface there; drawn, the quad would be a second layer.
+  if (kind == 0 && !lineHalo)
+  {
+    float tolerance = -1.0e-3 * lineRadiusVSOutput;
+    if ((lineEndSpanVSOutput.x < 0.999 && dot(lineCut0VSOutput, vertexVC) < tolerance) ||
+      (lineEndSpanVSOutput.y < 0.999 && dot(lineCut1VSOutput, vertexVC) < tolerance))
+    {
+      discard;
+    }
   }
 #ifdef LINE_TEXTURE
   // u along the line, v around it (a rotation-minimizing frame vector of the

@@ -71,6 +71,10 @@ out vec3 lineFrontVSOutput;      // depth correction: axis to front surface alon
 out float lineRadiusVSOutput;    // radius, view units
 flat out ivec2 lineInfoVSOutput; // polyline (picking), kind | halo << 2
 flat out vec4 lineSphereVSOutput; // mode 3: the sphere (center, view coordinates; radius)
+uniform int lineSingleLayer;      // translucent: each line one layer (the cuts below)
+flat out vec4 lineCut0VSOutput;   // mode 0, translucent: the planes of the polyline's ends,
+flat out vec4 lineCut1VSOutput;   // dot(cut, (p, 1)) >= 0 inside
+out vec2 lineEndSpanVSOutput;     // 0 at the polyline's first (x) or last (y) vertex, else 1
 
 //SV::SplineTubeMath::Dec
 
@@ -89,7 +93,7 @@ vec3 lineViewTangent(int node)
   return normalize(mat3(tubeMCVC) * svOctDecode(e));
 }
 
-// The polyline of a vertex: binary search in lineTubeStarts (picking only).
+// The polyline of a vertex: binary search in lineTubeStarts (picking, translucency).
 int lineTubeOf(int node)
 {
   int lo = 0;
@@ -134,6 +138,25 @@ void lineCulled()
   lineRadiusVSOutput = 0.0;
   lineInfoVSOutput = ivec2(0);
   lineSphereVSOutput = vec4(0.0);
+  lineCut0VSOutput = vec4(0.0, 0.0, 0.0, 1.0);
+  lineCut1VSOutput = vec4(0.0, 0.0, 0.0, 1.0);
+  lineEndSpanVSOutput = vec2(1.0);
+}
+
+// The planes normal to the line at the ends of the polyline of `node`,
+// facing inward (every vertex of the polyline makes the same two).
+void lineEndCuts(int node)
+{
+  int polyline = lineTubeOf(node);
+  int first = int(texelFetch(lineTubeStarts, polyline).x);
+  int last = int(texelFetch(lineTubeStarts, polyline + 1).x) - 1;
+  vec3 c0 = (tubeMCVC * vec4(lineNode(first).xyz, 1.0)).xyz;
+  vec3 c1 = (tubeMCVC * vec4(lineNode(last).xyz, 1.0)).xyz;
+  vec3 t0 = lineViewTangent(first);
+  vec3 t1 = lineViewTangent(last);
+  lineCut0VSOutput = vec4(t0, -dot(t0, c0));
+  lineCut1VSOutput = vec4(-t1, dot(t1, c1));
+  lineEndSpanVSOutput = vec2(node == first ? 0.0 : 1.0, node == last ? 0.0 : 1.0);
 }
 
 void main()
@@ -143,6 +166,9 @@ void main()
   int tube = 0;
   vec3 position;
   lineSphereVSOutput = vec4(0.0);
+  lineCut0VSOutput = vec4(0.0, 0.0, 0.0, 1.0);
+  lineCut1VSOutput = vec4(0.0, 0.0, 0.0, 1.0);
+  lineEndSpanVSOutput = vec2(1.0);
   if (lineMode == 0)
   {
     node = gl_VertexID >> 1;
@@ -165,6 +191,10 @@ void main()
     vec3 dir = cameraParallel != 0 ? vec3(0.0, 0.0, -1.0) : normalize(p);
     lineFrontVSOutput = -dir * slFrontDistance(dir, t, r, lineDepthCap * r);
     lineRadiusVSOutput = r;
+    if (lineSingleLayer != 0)
+    {
+      lineEndCuts(node);
+    }
 #ifdef LINE_PICKING
     tube = lineTubeOf(node);
 #endif

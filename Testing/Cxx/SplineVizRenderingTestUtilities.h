@@ -15,12 +15,14 @@
 #include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkClipPolyData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
 #include "vtkPNGWriter.h"
 #include "vtkNew.h"
+#include "vtkPlane.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -163,9 +165,13 @@ inline std::vector<Vec4> DenseSpline(const std::vector<Vec4>& nodes, int perSegm
 /// absolute scalar, `sides` sides) along the densely resampled spline, plus
 /// spheres (`capResolution` in both angles) for the rounded caps of
 /// sphere-swept tubes (vtkRayCastTubeMapper) or, with `flatCaps`, the
-/// filter's flat caps (the disk model of vtkTessellatedTubeMapper).
+/// filter's flat caps (the disk model of vtkTessellatedTubeMapper). With
+/// `hemispheres`, only the half of each cap sphere outside the tube (cut by
+/// the plane normal to the end segment, where the tube's last ring lies), so
+/// that the front faces cover every pixel of a tube once.
 inline vtkSmartPointer<vtkPolyData> ReferenceTubes(const std::vector<std::vector<Vec4>>& curves,
-  int perSegment, int sides, bool flatCaps = false, int capResolution = 64)
+  int perSegment, int sides, bool flatCaps = false, int capResolution = 64,
+  bool hemispheres = false)
 {
   vtkNew<vtkAppendPolyData> append;
   for (const auto& curve : curves)
@@ -180,24 +186,34 @@ inline vtkSmartPointer<vtkPolyData> ReferenceTubes(const std::vector<std::vector
     tubes->SetCapping(flatCaps);
     tubes->Update();
     append->AddInputData(tubes->GetOutput());
-    for (const Vec4* end : { &dense.front(), &dense.back() })
+    for (int e = 0; e < 2 && !flatCaps; ++e)
     {
-      if (flatCaps)
-      {
-        break;
-      }
+      const Vec4& end = e == 0 ? dense.front() : dense.back();
+      const Vec4& inner = e == 0 ? dense[1] : dense[dense.size() - 2];
       vtkNew<vtkSphereSource> sphere;
-      sphere->SetCenter((*end)[0], (*end)[1], (*end)[2]);
-      sphere->SetRadius((*end)[3]);
+      sphere->SetCenter(end[0], end[1], end[2]);
+      sphere->SetRadius(end[3]);
       sphere->SetThetaResolution(capResolution);
       sphere->SetPhiResolution(capResolution);
       sphere->Update();
+      vtkSmartPointer<vtkPolyData> cap = sphere->GetOutput();
+      if (hemispheres)
+      {
+        vtkNew<vtkPlane> plane;
+        plane->SetOrigin(end[0], end[1], end[2]);
+        plane->SetNormal(end[0] - inner[0], end[1] - inner[1], end[2] - inner[2]);
+        vtkNew<vtkClipPolyData> clip;
+        clip->SetInputData(cap);
+        clip->SetClipFunction(plane);
+        clip->Update();
+        cap = clip->GetOutput();
+      }
       vtkNew<vtkDoubleArray> radius; // kept by the append filter (RadiusFrame)
       radius->SetName("Radius");
-      radius->SetNumberOfValues(sphere->GetOutput()->GetNumberOfPoints());
-      radius->Fill((*end)[3]);
-      sphere->GetOutput()->GetPointData()->AddArray(radius);
-      append->AddInputData(sphere->GetOutput());
+      radius->SetNumberOfValues(cap->GetNumberOfPoints());
+      radius->Fill(end[3]);
+      cap->GetPointData()->AddArray(radius);
+      append->AddInputData(cap);
     }
   }
   append->Update();
