@@ -486,6 +486,31 @@ void AddFitSeconds(vtkMultiBlockDataSet* output, double seconds)
 }
 
 //------------------------------------------------------------------------------
+// An image to fit: checked before anything is fitted.
+struct vtkLRSplineImageFitter::Job
+{
+  vtkImageData* Image = nullptr;
+  vtkDataArray* Array = nullptr;
+  const std::vector<double>* Values = nullptr; ///< the voxel values, read after every check
+  std::string Which;                           ///< "block b: " for composite input
+  int N[3] = { 0, 0, 0 };
+  double Offset[3] = { 0.0, 0.0, 0.0 };
+  double Scale[3] = { 1.0, 1.0, 1.0 };
+};
+
+// One image's fit: the refined spline, its Bezier form and how it ended.
+struct vtkLRSplineImageFitter::BlockFit
+{
+  ImageFit Fit;
+  vtkLRSplineBezierVolume Volume;
+  std::vector<double> History; ///< per fit: elements, functions, maximum, RMS, solver iterations
+  std::string StopReason;
+  double RMS = 0.0;
+  int Iterations = 0;
+  bool Met = false;
+};
+
+//------------------------------------------------------------------------------
 vtkLRSplineImageFitter::vtkLRSplineImageFitter()
 {
   this->SetInputArrayToProcess(
@@ -744,50 +769,16 @@ int vtkLRSplineImageFitter::RequestData(
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outInfo);
-  this->MaximumError = this->RMSError = this->AbsoluteTolerance = this->FitTime = 0.0;
-  this->ToleranceMet = false;
-  this->NumberOfElements = this->NumberOfBasisFunctions = 0;
-  this->NumberOfRefinementLevels = this->NumberOfIterations = 0;
+  this->ResetResults();
 
-  if (!this->CheckSettings())
-  {
-    return 0;
-  }
-
-  // The images: the input, or the leaves of a composite input.
+  // Everything is checked before anything large is allocated.
   std::vector<vtkImageData*> images;
-  if (!this->CollectImages(input, images))
+  std::vector<Job> jobs;
+  if (!this->CheckSettings() || !this->CollectImages(input, images) ||
+    !this->PrepareJobs(images, jobs))
   {
     return 0;
   }
-
-  // Check every image before allocating anything.
-  struct Job
-  {
-    vtkImageData* Image;
-    vtkDataArray* Array;
-    int N[3];
-    double Offset[3];
-    double Scale[3];
-  };
-  std::vector<Job> jobs;
-  for (std::size_t b = 0; b < images.size(); ++b)
-  {
-    vtkImageData* image = images[b];
-    const std::string which =
-      images.size() > 1 ? "block " + std::to_string(b) + ": " : std::string();
-    Job job;
-    job.Image = image;
-    vtkDataArray* array = nullptr;
-    if (!this->CheckImage(image, which, job.N, job.Offset, job.Scale, array))
-    {
-      return 0;
-    }
-    job.Array = array;
-    jobs.push_back(job);
-  }
-
-  // The voxel values, checked, and the data range (over all images).
   std::vector<vtkDataArray*> arrays;
   for (const Job& job : jobs)
   {
@@ -799,138 +790,32 @@ int vtkLRSplineImageFitter::RequestData(
   {
     return 0;
   }
-  double tolerance = this->ToleranceMode == RELATIVE_TOLERANCE
-    ? this->Tolerance * (range[1] - range[0])
-    : this->Tolerance;
-  // A constant image: its constant, up to rounding.
-  tolerance = std::max(tolerance, 1e-10 * std::max(std::abs(range[0]), std::abs(range[1])));
+  const double tolerance = this->ComputeAbsoluteTolerance(range);
   this->AbsoluteTolerance = tolerance;
 
   int piece = 0, numPieces = 1;
   vtkSplineVizPieces::GetRequested(outInfo, piece, numPieces);
-
-  const int rounds = std::min(MaximumRounds, 3 * (this->MaximumRefinementLevels + 1));
   double sumSquares = 0.0, voxelCount = 0.0;
-  bool allMet = true;
   std::vector<vtkLRSplinePatch> written;
+  bool allMet = true;
   output->SetNumberOfBlocks(static_cast<unsigned int>(jobs.size()));
   for (std::size_t b = 0; b < jobs.size(); ++b)
   {
-    const Job& job = jobs[b];
-    const std::string which = jobs.size() > 1 ? "block " + std::to_string(b) + ": " : std::string();
-    ImageFit fit;
-    fit.Values = &values[b];
-    std::copy(job.N, job.N + 3, fit.N);
-    std::copy(this->Degree, this->Degree + 3, fit.Degree);
-    fit.Regularization = this->Regularization;
-    fit.Tolerance = tolerance;
-    std::string error;
-    if (!fit.Initialize(this->InitialNumberOfElements, this->AlignKnotsToVoxels != 0,
-          this->MinimumElementSize, this->MaximumRefinementLevels, &error))
+    jobs[b].Values = &values[b];
+    BlockFit fit;
+    if (!this->FitBlock(jobs, b, tolerance, fit))
     {
-      vtkErrorMacro(<< which << "cannot make the initial spline: " << error);
       output->Initialize();
       return 0;
     }
-    std::vector<double> history;
-    vtkLRSplineBezierVolume volume;
-    std::string stopReason;
-    bool met = false;
-    int iteration = 0;
-    for (;; ++iteration)
-    {
-      fit.Solve();
-      fit.EvaluateFromBasis();
-      const vtkLRSplinePatch& patch = fit.Core.Builder.GetPatch();
-      const vtkIdType voxels = static_cast<vtkIdType>(values[b].size());
-      history.insert(history.end(),
-        { static_cast<double>(patch.GetNumberOfElements()),
-          static_cast<double>(patch.GetNumberOfBasisFunctions()), fit.Stats.MaxError,
-          std::sqrt(fit.Stats.SumSquares / voxels), static_cast<double>(fit.SolverIterations) });
-      this->UpdateProgress((b + std::min(1.0, (iteration + 1.0) / (rounds + 1.0))) / jobs.size());
-      if (fit.Stats.MaxError <= tolerance)
-      {
-        met = true;
-        break;
-      }
-      if (this->CheckAbort())
-      {
-        stopReason = "the update was aborted";
-        break;
-      }
-      if (iteration + 1 >= rounds)
-      {
-        stopReason = "the limit of " + std::to_string(rounds) + " refinement rounds was reached";
-        break;
-      }
-      const vtkLRSplineFitCore::Outcome outcome =
-        fit.Core.Refine(fit.ElementError, tolerance, this->MaximumNumberOfElements, &error);
-      if (outcome == vtkLRSplineFitCore::FAILED)
-      {
-        vtkErrorMacro(<< which << "the refinement failed: " << error);
-        output->Initialize();
-        return 0;
-      }
-      if (outcome != vtkLRSplineFitCore::REFINED)
-      {
-        stopReason = this->GetStopReason(outcome);
-        break;
-      }
-    }
-    // The output's Bezier form, and the errors it has at the voxels.
-    const vtkLRSplinePatch& patch = fit.Core.Builder.GetPatch();
-    if (!patch.ExtractBezier(volume, &error))
-    {
-      vtkErrorMacro(<< which << "the fitted spline is invalid: " << error);
-      output->Initialize();
-      return 0;
-    }
-    fit.EvaluateFromBezier(volume);
-    if (met && !(fit.Stats.MaxError <= tolerance))
-    {
-      met = false;
-      stopReason = "the Bezier form differs from the basis form by rounding";
-    }
-    const int levels = fit.Core.Levels();
-    const double rms = std::sqrt(fit.Stats.SumSquares / static_cast<double>(values[b].size()));
-    if (!met)
-    {
-      allMet = false;
-      vtkWarningMacro(<< which << "the tolerance " << tolerance
-                      << " is not met everywhere: maximum error " << fit.Stats.MaxError << " (RMS "
-                      << rms << ") with " << patch.GetNumberOfElements() << " elements after "
-                      << iteration + 1 << (iteration == 0 ? " fit" : " fits") << ", because "
-                      << stopReason);
-    }
-    this->MaximumError = std::max(this->MaximumError, fit.Stats.MaxError);
-    sumSquares += fit.Stats.SumSquares;
+    this->ReportBlock(jobs, b, tolerance, fit);
+    allMet = allMet && fit.Met;
+    sumSquares += fit.Fit.Stats.SumSquares;
     voxelCount += static_cast<double>(values[b].size());
-    this->NumberOfElements += patch.GetNumberOfElements();
-    this->NumberOfBasisFunctions += patch.GetNumberOfBasisFunctions();
-    this->NumberOfRefinementLevels = std::max(this->NumberOfRefinementLevels, levels);
-    this->NumberOfIterations = std::max(this->NumberOfIterations, iteration + 1);
-
-    // The output block: this piece's elements, in the reader's format.
-    vtkLRSplineFitCore::Report report;
-    report.MaximumError = fit.Stats.MaxError;
-    report.RMSError = rms;
-    report.Tolerance = tolerance;
-    report.ToleranceMet = met;
-    report.Iterations = iteration + 1;
-    report.Levels = levels;
-    report.DataRange[0] = range[0];
-    report.DataRange[1] = range[1];
-    report.History = std::move(history);
-    const char* arrayName = job.Array->GetName();
-    const std::string fieldName = (this->FieldName && *this->FieldName)
-      ? this->FieldName
-      : ((arrayName && *arrayName) ? arrayName : "Field");
-    vtkSmartPointer<vtkUnstructuredGrid> grid = vtkLRSplineFitCore::BuildBlock(patch, volume,
-      static_cast<int>(b), piece, numPieces, job.Scale, job.Offset, fieldName,
-      "vtkLRSplineImageFitter (least squares, local refinement)", fit.ElementError, report, &error);
+    vtkSmartPointer<vtkUnstructuredGrid> grid =
+      this->BuildOutputBlock(jobs, b, tolerance, range, piece, numPieces, fit);
     if (!grid)
     {
-      vtkErrorMacro(<< which << "cannot build the output: " << error);
       output->Initialize();
       return 0;
     }
@@ -939,25 +824,191 @@ int vtkLRSplineImageFitter::RequestData(
       ->Set(vtkCompositeDataSet::NAME(), ("Patch " + std::to_string(b)).c_str());
     if (this->FileName && *this->FileName && piece == 0)
     {
-      written.push_back(patch);
+      written.push_back(fit.Fit.Core.Builder.GetPatch());
     }
   }
   this->RMSError = voxelCount > 0 ? std::sqrt(sumSquares / voxelCount) : 0.0;
   this->ToleranceMet = allMet;
 
-  if (!written.empty())
+  std::string error;
+  if (!written.empty() && !vtkLRSplineFitCore::WritePatches(this->FileName, written, &error))
   {
-    std::string error;
-    if (!vtkLRSplineFitCore::WritePatches(this->FileName, written, &error))
-    {
-      vtkErrorMacro(<< error);
-      output->Initialize();
-      return 0;
-    }
+    vtkErrorMacro(<< error);
+    output->Initialize();
+    return 0;
   }
   this->FitTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   AddFitSeconds(output, this->FitTime);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineImageFitter::ResetResults()
+{
+  this->MaximumError = this->RMSError = this->AbsoluteTolerance = this->FitTime = 0.0;
+  this->ToleranceMet = false;
+  this->NumberOfElements = this->NumberOfBasisFunctions = 0;
+  this->NumberOfRefinementLevels = this->NumberOfIterations = 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineImageFitter::PrepareJobs(
+  const std::vector<vtkImageData*>& images, std::vector<Job>& jobs)
+{
+  for (std::size_t b = 0; b < images.size(); ++b)
+  {
+    Job job;
+    job.Image = images[b];
+    job.Which = images.size() > 1 ? "block " + std::to_string(b) + ": " : std::string();
+    if (!this->CheckImage(job.Image, job.Which, job.N, job.Offset, job.Scale, job.Array))
+    {
+      return false;
+    }
+    jobs.push_back(job);
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+double vtkLRSplineImageFitter::ComputeAbsoluteTolerance(const double range[2]) const
+{
+  const double tolerance = this->ToleranceMode == RELATIVE_TOLERANCE
+    ? this->Tolerance * (range[1] - range[0])
+    : this->Tolerance;
+  // A constant image: its constant, up to rounding.
+  return std::max(tolerance, 1e-10 * std::max(std::abs(range[0]), std::abs(range[1])));
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineImageFitter::FitBlock(
+  const std::vector<Job>& jobs, std::size_t b, double tolerance, BlockFit& result)
+{
+  const Job& job = jobs[b];
+  ImageFit& fit = result.Fit;
+  fit.Values = job.Values;
+  std::copy(job.N, job.N + 3, fit.N);
+  std::copy(this->Degree, this->Degree + 3, fit.Degree);
+  fit.Regularization = this->Regularization;
+  fit.Tolerance = tolerance;
+  std::string error;
+  if (!fit.Initialize(this->InitialNumberOfElements, this->AlignKnotsToVoxels != 0,
+        this->MinimumElementSize, this->MaximumRefinementLevels, &error))
+  {
+    vtkErrorMacro(<< job.Which << "cannot make the initial spline: " << error);
+    return false;
+  }
+  // Least squares, then refinement of the elements out of tolerance, until
+  // the tolerance is met or the refinement stops.
+  const int rounds = std::min(MaximumRounds, 3 * (this->MaximumRefinementLevels + 1));
+  const double voxels = static_cast<double>(job.Values->size());
+  for (result.Iterations = 1;; ++result.Iterations)
+  {
+    fit.Solve();
+    fit.EvaluateFromBasis();
+    const vtkLRSplinePatch& patch = fit.Core.Builder.GetPatch();
+    result.History.insert(result.History.end(),
+      { static_cast<double>(patch.GetNumberOfElements()),
+        static_cast<double>(patch.GetNumberOfBasisFunctions()), fit.Stats.MaxError,
+        std::sqrt(fit.Stats.SumSquares / voxels), static_cast<double>(fit.SolverIterations) });
+    this->UpdateProgress((b + std::min(1.0, result.Iterations / (rounds + 1.0))) / jobs.size());
+    if (fit.Stats.MaxError <= tolerance)
+    {
+      result.Met = true;
+      break;
+    }
+    if (this->CheckAbort())
+    {
+      result.StopReason = "the update was aborted";
+      break;
+    }
+    if (result.Iterations >= rounds)
+    {
+      result.StopReason =
+        "the limit of " + std::to_string(rounds) + " refinement rounds was reached";
+      break;
+    }
+    const vtkLRSplineFitCore::Outcome outcome =
+      fit.Core.Refine(fit.ElementError, tolerance, this->MaximumNumberOfElements, &error);
+    if (outcome == vtkLRSplineFitCore::FAILED)
+    {
+      vtkErrorMacro(<< job.Which << "the refinement failed: " << error);
+      return false;
+    }
+    if (outcome != vtkLRSplineFitCore::REFINED)
+    {
+      result.StopReason = this->GetStopReason(outcome);
+      break;
+    }
+  }
+  // The output's Bezier form, and the errors it has at the voxels.
+  if (!fit.Core.Builder.GetPatch().ExtractBezier(result.Volume, &error))
+  {
+    vtkErrorMacro(<< job.Which << "the fitted spline is invalid: " << error);
+    return false;
+  }
+  fit.EvaluateFromBezier(result.Volume);
+  if (result.Met && !(fit.Stats.MaxError <= tolerance))
+  {
+    result.Met = false;
+    result.StopReason = "the Bezier form differs from the basis form by rounding";
+  }
+  result.RMS = std::sqrt(fit.Stats.SumSquares / voxels);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineImageFitter::ReportBlock(
+  const std::vector<Job>& jobs, std::size_t b, double tolerance, BlockFit& result)
+{
+  const vtkLRSplinePatch& patch = result.Fit.Core.Builder.GetPatch();
+  if (!result.Met)
+  {
+    vtkWarningMacro(<< jobs[b].Which << "the tolerance " << tolerance
+                    << " is not met everywhere: maximum error " << result.Fit.Stats.MaxError
+                    << " (RMS " << result.RMS << ") with " << patch.GetNumberOfElements()
+                    << " elements after " << result.Iterations
+                    << (result.Iterations == 1 ? " fit" : " fits") << ", because "
+                    << result.StopReason);
+  }
+  this->MaximumError = std::max(this->MaximumError, result.Fit.Stats.MaxError);
+  this->NumberOfElements += patch.GetNumberOfElements();
+  this->NumberOfBasisFunctions += patch.GetNumberOfBasisFunctions();
+  this->NumberOfRefinementLevels =
+    std::max(this->NumberOfRefinementLevels, result.Fit.Core.Levels());
+  this->NumberOfIterations = std::max(this->NumberOfIterations, result.Iterations);
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkUnstructuredGrid> vtkLRSplineImageFitter::BuildOutputBlock(
+  const std::vector<Job>& jobs, std::size_t b, double tolerance, const double range[2], int piece,
+  int numPieces, BlockFit& result)
+{
+  const Job& job = jobs[b];
+  vtkLRSplineFitCore::Report report;
+  report.MaximumError = result.Fit.Stats.MaxError;
+  report.RMSError = result.RMS;
+  report.Tolerance = tolerance;
+  report.ToleranceMet = result.Met;
+  report.Iterations = result.Iterations;
+  report.Levels = result.Fit.Core.Levels();
+  report.DataRange[0] = range[0];
+  report.DataRange[1] = range[1];
+  report.History = std::move(result.History);
+  const char* arrayName = job.Array->GetName();
+  const std::string fieldName = (this->FieldName && *this->FieldName)
+    ? this->FieldName
+    : ((arrayName && *arrayName) ? arrayName : "Field");
+  std::string error;
+  // This piece's elements, in the reader's format.
+  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkLRSplineFitCore::BuildBlock(
+    result.Fit.Core.Builder.GetPatch(), result.Volume, static_cast<int>(b), piece, numPieces,
+    job.Scale, job.Offset, fieldName, "vtkLRSplineImageFitter (least squares, local refinement)",
+    result.Fit.ElementError, report, &error);
+  if (!grid)
+  {
+    vtkErrorMacro(<< job.Which << "cannot build the output: " << error);
+  }
+  return grid;
 }
 
 //------------------------------------------------------------------------------

@@ -102,13 +102,16 @@
 
 #include "SplineVizModule.h" // for export macro
 #include "vtkMultiBlockDataSetAlgorithm.h"
+#include "vtkSmartPointer.h" // for BuildOutputBlock
 
-#include <string> // for GetStopReason
-#include <vector> // for CollectImages
+#include <cstddef> // for std::size_t
+#include <string>  // for GetStopReason
+#include <vector>  // for CollectImages
 
 class vtkDataArray;
 class vtkImageData;
 class vtkMultiBlockDataSet;
+class vtkUnstructuredGrid;
 
 class SPLINEVIZ_EXPORT vtkLRSplineImageFitter : public vtkMultiBlockDataSetAlgorithm
 {
@@ -280,6 +283,26 @@ private:
     std::vector<std::vector<double>>& values, double range[2]);
   /// Why the refinement stopped (a vtkLRSplineFitCore::Outcome other than FAILED or REFINED).
   std::string GetStopReason(int outcome) const;
+
+  struct Job;
+  struct BlockFit;
+  /// Zero results before an update.
+  void ResetResults();
+  /// Every image checked (CheckImage), one job each; false after an error.
+  bool PrepareJobs(const std::vector<vtkImageData*>& images, std::vector<Job>& jobs);
+  /// The tolerance in data units for the data range `range`.
+  double ComputeAbsoluteTolerance(const double range[2]) const;
+  /**
+   * Fit job `b`: least squares on the initial spline, then refinement of
+   * the elements out of tolerance until it is met or the refinement stops;
+   * the Bezier form and its errors at the voxels. False after an error.
+   */
+  bool FitBlock(const std::vector<Job>& jobs, std::size_t b, double tolerance, BlockFit& result);
+  /// The block's warning when it missed the tolerance, and the totals it adds to.
+  void ReportBlock(const std::vector<Job>& jobs, std::size_t b, double tolerance, BlockFit& result);
+  /// The output block of this piece's elements; nullptr after an error.
+  vtkSmartPointer<vtkUnstructuredGrid> BuildOutputBlock(const std::vector<Job>& jobs, std::size_t b,
+    double tolerance, const double range[2], int piece, int numPieces, BlockFit& result);
 };
 
 #endif
