@@ -5,7 +5,8 @@ with splineviz.plugin.load_plugin, and renders the synthetic fibers with the
 "Ray-Cast Tubes" representation on the server. Checks that the plugin is
 loaded on the client, that the server offers the SplineViz representations,
 and that the remotely rendered tubes cover much more of the image than
-1-pixel lines; then the real LR-spline file as "LR-Spline Volume" (the
+1-pixel lines, and that the "Render View (Line Depth Cues)" view draws its
+halos there; then the real LR-spline file as "LR-Spline Volume" (the
 spline stays on the server, which renders it), plain and trimmed by a
 sphere.
 
@@ -72,6 +73,30 @@ try:
     if tubes < 2.0 * lines or tubes < 0.1:
         print("ERROR: the ray-cast tubes were not rendered on the server")
         sys.exit(1)
+
+    # "Render View (Line Depth Cues)": the pass runs where the server renders;
+    # its halos cut the tubes behind (less of the image covered).
+    cues = CreateView("RenderViewWithLineDepthCues")  # noqa: F405
+    for name in ("ViewSize", "Background", "UseColorPaletteForBackground",
+                 "OrientationAxesVisibility", "CameraPosition", "CameraFocalPoint",
+                 "CameraViewUp"):
+        setattr(cues, name, getattr(view, name))
+    cue_display = Show(fibers, cues)  # noqa: F405
+    cue_display.SetRepresentationType("Ray-Cast Tubes")
+    cue_display.TubeRadiusArray = "Radius"
+    cues.AmbientOcclusion = 0
+    cues.UseLineDepthCues = 0
+    without = image_coverage(cues, "TestPluginClientServer-cues-off.png")[0]
+    cues.UseLineDepthCues = 1
+    cues.DepthHalos = 1
+    cues.HaloWidth = 6.0
+    haloed = image_coverage(cues, "TestPluginClientServer-cues-halos.png")[0]
+    print("coverage: line depth cues view %.3f, with halos %.3f" % (without, haloed))
+    if without < 0.1 or not haloed < 0.95 * without:
+        print("ERROR: the line depth cues view did not draw its halos on the server")
+        sys.exit(1)
+    Delete(cues)  # noqa: F405
+    SetActiveView(view)  # noqa: F405
 
     # "LR-Spline Volume": the server reads the spline and renders it.
     path = os.path.join(os.environ["SPLINEVIZ_SOURCE_DIR"], "Testing", "Data", "External",
