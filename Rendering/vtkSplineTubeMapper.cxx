@@ -20,15 +20,16 @@
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
-#include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkInformation.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkOpenGLCamera.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLSphereMapper.h"
 #include "vtkOpenGLState.h"
 #include "vtkOpenGLVertexBufferObject.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -555,6 +556,114 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   }
   this->RenderPieceDraw(ren, actor);
   this->RenderPieceFinish(ren, actor);
+  this->RenderEndpointMarkers(ren, actor);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::UpdateEndpointMarkers()
+{
+  vtkDataObject* input = this->GetInputDataObject(0, 0);
+  std::ostringstream signature;
+  signature << input << '|' << (input ? input->GetMTime() : 0) << '|'
+            << this->CoreBuildTime.GetMTime() << '|' << this->LineMaskTime.GetMTime() << '|'
+            << this->EndpointMarkerScale << '|' << this->EndpointMarkerColor[0] << ','
+            << this->EndpointMarkerColor[1] << ',' << this->EndpointMarkerColor[2];
+  if (signature.str() == this->LastMarkerSignature && this->Markers)
+  {
+    return;
+  }
+  this->LastMarkerSignature = signature.str();
+  // The polydata of each block (by flat index), for the tubes' end points.
+  std::vector<vtkPolyData*> blocks;
+  ForEachPolyData(input,
+    [&](vtkPolyData* pd, unsigned int blockId)
+    {
+      if (blocks.size() <= blockId)
+      {
+        blocks.resize(blockId + 1, nullptr);
+      }
+      blocks[blockId] = pd;
+    });
+  const bool useArray = this->RadiusArray && this->RadiusArray[0];
+  const vtkIdType numTubes = this->Core->GetNumberOfTubes();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkFloatArray> radii;
+  radii->SetName("EndpointMarkerRadius");
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("EndpointMarkerColor");
+  colors->SetNumberOfComponents(3);
+  unsigned char rgb[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    rgb[k] = static_cast<unsigned char>(
+      std::lround(255.0 * std::max(0.0, std::min(1.0, this->EndpointMarkerColor[k]))));
+  }
+  for (vtkIdType t = 0; t < numTubes; ++t)
+  {
+    if (!this->LineMask.empty() && !this->LineMask[t])
+    {
+      continue;
+    }
+    const unsigned int block = this->Core->GetTubeBlockId(t);
+    vtkPolyData* pd = block < blocks.size() ? blocks[block] : nullptr;
+    const vtkIdType cell = this->Core->GetTubeCellIndex(t);
+    if (!pd || cell < 0 || cell >= pd->GetNumberOfCells())
+    {
+      continue;
+    }
+    vtkDataArray* radiusArray =
+      useArray ? pd->GetPointData()->GetArray(this->RadiusArray) : nullptr;
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    pd->GetCellPoints(cell, n, ids);
+    if (n < 1)
+    {
+      continue;
+    }
+    for (vtkIdType id : { ids[0], ids[n - 1] })
+    {
+      const double r =
+        radiusArray ? this->RadiusScale * radiusArray->GetComponent(id, 0) : this->EffectiveRadius;
+      if (!(r > 0.0) || !std::isfinite(r))
+      {
+        continue;
+      }
+      points->InsertNextPoint(pd->GetPoint(id));
+      radii->InsertNextValue(static_cast<float>(this->EndpointMarkerScale * r));
+      colors->InsertNextTypedTuple(rgb);
+    }
+  }
+  this->Markers = vtkSmartPointer<vtkPolyData>::New();
+  this->Markers->SetPoints(points);
+  this->Markers->GetPointData()->AddArray(radii);
+  this->Markers->GetPointData()->SetScalars(colors);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::RenderEndpointMarkers(vtkRenderer* ren, vtkActor* act)
+{
+  this->NumberOfEndpointMarkers = 0;
+  if (!this->EndpointMarkers || ren->GetSelector())
+  {
+    return;
+  }
+  this->UpdateEndpointMarkers();
+  if (this->Markers->GetNumberOfPoints() == 0)
+  {
+    return;
+  }
+  if (!this->MarkerMapper)
+  {
+    this->MarkerMapper = vtkSmartPointer<vtkOpenGLSphereMapper>::New();
+    this->MarkerMapper->SetScaleArray("EndpointMarkerRadius");
+    this->MarkerMapper->SetColorModeToDirectScalars();
+    this->MarkerMapper->ScalarVisibilityOn();
+  }
+  this->MarkerMapper->SetInputData(this->Markers);
+  this->MarkerMapper->SetClippingPlanes(this->ClippingPlanes); // the slab's too
+  this->MarkerMapper->Render(ren, act);
+  this->NumberOfEndpointMarkers = this->Markers->GetNumberOfPoints();
 }
 
 //------------------------------------------------------------------------------
@@ -753,6 +862,10 @@ void vtkSplineTubeMapper::ReleaseGraphicsResources(vtkWindow* window)
   this->NodeInfoBuffer->ReleaseGraphicsResources(window);
   this->TubesBuffer->ReleaseGraphicsResources(window);
   this->ColorsBuffer->ReleaseGraphicsResources(window);
+  if (this->MarkerMapper)
+  {
+    this->MarkerMapper->ReleaseGraphicsResources(window);
+  }
   this->UploadTime = vtkTimeStamp();
   this->Modified();
 }
@@ -1216,6 +1329,9 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Radius: " << this->Radius << " (in use: " << this->EffectiveRadius << ")\n";
+  os << indent << "EndpointMarkers: " << this->EndpointMarkers << " (scale "
+     << this->EndpointMarkerScale << ", color " << this->EndpointMarkerColor[0] << ' '
+     << this->EndpointMarkerColor[1] << ' ' << this->EndpointMarkerColor[2] << ")\n";
   os << indent << "AutomaticRadiusBounds: " << this->AutomaticRadiusBounds[0] << ' '
      << this->AutomaticRadiusBounds[1] << ' ' << this->AutomaticRadiusBounds[2] << ' '
      << this->AutomaticRadiusBounds[3] << ' ' << this->AutomaticRadiusBounds[4] << ' '

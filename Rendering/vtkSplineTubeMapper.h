@@ -46,6 +46,7 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkNew.h"          // for vtkNew
 #include "vtkPlane.h"        // for vtkNew<vtkPlane>
+#include "vtkSmartPointer.h" // for the endpoint markers
 #include "vtkOpenGLPolyDataMapper.h"
 
 #include <chrono>     // for std::chrono::steady_clock
@@ -58,6 +59,7 @@
 #include <vector>     // for std::vector
 
 class vtkMatrix4x4;
+class vtkOpenGLSphereMapper;
 class vtkPlane;
 class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
@@ -165,6 +167,28 @@ public:
   vtkSetMacro(DirectionColoring, bool);
   vtkGetMacro(DirectionColoring, bool);
   vtkBooleanMacro(DirectionColoring, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Endpoint markers: a sphere at both ends of every drawn polyline, of
+   * EndpointMarkerScale times the line's radius at that end (Radius, or
+   * RadiusArray times RadiusScale), in EndpointMarkerColor, lit like
+   * surfaces and with exact depth (VTK's impostor spheres,
+   * vtkOpenGLSphereMapper), so a tractogram's terminations show as
+   * tractography viewers show them. Lines hidden by VisibilityArray get
+   * none; the slab crop and clipping planes cut them as they cut the lines.
+   * Default off; scale 1.5; color yellow (1, 0.85, 0).
+   */
+  vtkSetMacro(EndpointMarkers, bool);
+  vtkGetMacro(EndpointMarkers, bool);
+  vtkBooleanMacro(EndpointMarkers, bool);
+  vtkSetClampMacro(EndpointMarkerScale, double, 0.0, 100.0);
+  vtkGetMacro(EndpointMarkerScale, double);
+  vtkSetVector3Macro(EndpointMarkerColor, double);
+  vtkGetVector3Macro(EndpointMarkerColor, double);
+  /// The markers drawn in the last frame (2 per visible line, 0 when off).
+  vtkIdType GetNumberOfEndpointMarkers() const { return this->NumberOfEndpointMarkers; }
   ///@}
 
   ///@{
@@ -602,6 +626,18 @@ private:
   vtkTimeStamp LineMaskTime;
   std::string LastMaskSignature;
   vtkIdType NumberOfVisibleLines = 0;
+
+  /// The endpoint markers' spheres for the current lines and visibility.
+  void UpdateEndpointMarkers();
+  /// Draw them (not while picking: the lines' cell ids are the picked ones).
+  void RenderEndpointMarkers(vtkRenderer* ren, vtkActor* act);
+  bool EndpointMarkers = false;
+  double EndpointMarkerScale = 1.5;
+  double EndpointMarkerColor[3] = { 1.0, 0.85, 0.0 };
+  vtkIdType NumberOfEndpointMarkers = 0;
+  vtkSmartPointer<vtkPolyData> Markers;
+  vtkSmartPointer<vtkOpenGLSphereMapper> MarkerMapper;
+  std::string LastMarkerSignature;
   vtkDataObject* LastInput = nullptr;
 };
 

@@ -78,6 +78,28 @@ void vtkSplineTubeRepresentation::SetDirectionColoring(bool direction)
 }
 
 //------------------------------------------------------------------------------
+void vtkSplineTubeRepresentation::SetEndpointMarkers(bool markers)
+{
+  this->GetTubeMapper()->SetEndpointMarkers(markers);
+  this->GetLODTubeMapper()->SetEndpointMarkers(markers);
+  this->Modified();
+}
+
+void vtkSplineTubeRepresentation::SetEndpointMarkerScale(double scale)
+{
+  this->GetTubeMapper()->SetEndpointMarkerScale(scale);
+  this->GetLODTubeMapper()->SetEndpointMarkerScale(scale);
+  this->Modified();
+}
+
+void vtkSplineTubeRepresentation::SetEndpointMarkerColor(double r, double g, double b)
+{
+  this->GetTubeMapper()->SetEndpointMarkerColor(r, g, b);
+  this->GetLODTubeMapper()->SetEndpointMarkerColor(r, g, b);
+  this->Modified();
+}
+
+//------------------------------------------------------------------------------
 void vtkSplineTubeRepresentation::SetSlabOrigin(double x, double y, double z)
 {
   this->GetTubeMapper()->SetSlabOrigin(x, y, z);

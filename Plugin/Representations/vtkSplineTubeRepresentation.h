@@ -47,6 +47,9 @@ public:
   void SetRadiusArray(const char* name);
   void SetVisibilityArray(const char* name);
   void SetDirectionColoring(bool direction);
+  void SetEndpointMarkers(bool markers);
+  void SetEndpointMarkerScale(double scale);
+  void SetEndpointMarkerColor(double r, double g, double b);
   void SetSlabOrigin(double x, double y, double z);
   void SetSlabNormal(double x, double y, double z);
   void SetSlabThickness(double thickness);

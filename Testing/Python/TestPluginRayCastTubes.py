@@ -3,7 +3,8 @@
 ParaView pipeline (the synthetic fibers source), with a radius array,
 scalar coloring and the ray-casting properties; checks that the tubes are
 drawn (coverage well above that of 1-pixel lines) and that the properties
-reach the mapper."""
+reach the mapper; then the endpoint markers (a property the tube
+representations share)."""
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
@@ -61,4 +62,29 @@ thick = coverage("TestPluginRayCastTubes-constant.png")
 print("coverage: constant radius 0.02: %.3f" % thick)
 if thick <= tubes:
     print("ERROR: the constant radius was not applied")
+    sys.exit(1)
+
+# Endpoint markers: 2 per polyline, in their color, on both line mappers
+# that share the property (the tessellated tubes get it too).
+def marker_colored(name):
+    pixels = image_coverage(view, name)[1]
+    return sum(1 for r, g, b in pixels if r > 230 and 190 < g < 240 and b < 40)
+
+
+before = marker_colored("TestPluginRayCastTubes-no-endpoints.png")
+display.EndpointMarkers = 1
+display.EndpointMarkerColor = [1.0, 0.85, 0.0]
+yellow = marker_colored("TestPluginRayCastTubes-endpoints.png")
+lines = fibers.GetDataInformation().GetNumberOfCells()
+markers = mapper.GetNumberOfEndpointMarkers()
+print("endpoint markers: %d for %d lines; sampled pixels of their color %d (without: %d)" % (
+    markers, lines, yellow, before))
+if markers != 2 * lines or yellow < before + 100:
+    print("ERROR: the endpoint markers were not drawn")
+    sys.exit(1)
+display.SetRepresentationType("Tessellated Tubes")
+Render(view)
+tess = display.GetClientSideObject().GetActiveRepresentation().GetActor().GetMapper()
+if not tess.GetEndpointMarkers() or tess.GetNumberOfEndpointMarkers() != 2 * lines:
+    print("ERROR: the tessellated tubes did not get the endpoint markers")
     sys.exit(1)
