@@ -1253,6 +1253,18 @@ void vtkSplineTubeMapper::ComputeBounds()
     this->BoundsTime.Modified();
   }
   std::copy(this->CoreBounds, this->CoreBounds + 6, this->Bounds);
+  // Endpoint markers wider than the lines reach beyond them.
+  const double pad = this->EndpointMarkers
+    ? std::max(0.0, this->EndpointMarkerScale - 1.0) * this->Core->GetMaximumRadius()
+    : 0.0;
+  if (pad > 0.0 && this->Bounds[0] <= this->Bounds[1])
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      this->Bounds[2 * k] -= pad;
+      this->Bounds[2 * k + 1] += pad;
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
