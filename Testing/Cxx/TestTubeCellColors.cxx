@@ -44,10 +44,7 @@ const double Palette[6][3] = { { 0.9, 0.1, 0.1 }, { 0.1, 0.8, 0.2 }, { 0.2, 0.3,
 int TestTubeCellColors(int, char*[])
 {
   SplineVizTestStatus status;
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(Size, Size);
+  auto window = MakeWindow(Size);
 
   const Curves curves = SplineVizTest::Curls();
   auto lines = SplineVizTest::MakePolylines(curves);
@@ -67,12 +64,7 @@ int TestTubeCellColors(int, char*[])
   }
   lut->Build();
   double bounds[6];
-  lines->GetBounds(bounds);
-  for (int k = 0; k < 3; ++k)
-  {
-    bounds[2 * k] -= 0.4;
-    bounds[2 * k + 1] += 0.4;
-  }
+  PaddedBounds(lines, bounds);
   const double direction[3] = { 4.0, 5.0, 9.0 };
   const double target[3] = { 0.0, 0.0, 0.0 };
   const auto setup = MakeCamera(bounds, direction, target, 1.0);

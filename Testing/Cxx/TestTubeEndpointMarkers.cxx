@@ -100,10 +100,7 @@ vtkSmartPointer<vtkActor> LineActor(vtkMapper* mapper)
 int TestTubeEndpointMarkers(int, char*[])
 {
   SplineVizTestStatus status;
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(Size, Size);
+  auto window = MakeWindow(Size);
 
   const Curves curves = SplineVizTest::Curls();
   auto lines = SplineVizTest::MakePolylines(curves);
@@ -115,12 +112,7 @@ int TestTubeEndpointMarkers(int, char*[])
   }
   lines->GetCellData()->AddArray(shown);
   double bounds[6];
-  lines->GetBounds(bounds);
-  for (int k = 0; k < 3; ++k)
-  {
-    bounds[2 * k] -= 0.4;
-    bounds[2 * k + 1] += 0.4;
-  }
+  PaddedBounds(lines, bounds);
   const double direction[3] = { 4.0, 5.0, 9.0 };
   const double target[3] = { 0.0, 0.0, 0.0 };
   const auto setup = MakeCamera(bounds, direction, target, 1.0);

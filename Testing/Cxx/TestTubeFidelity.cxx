@@ -162,10 +162,7 @@ struct Scene
 int TestTubeFidelity(int, char*[])
 {
   SplineVizTestStatus status;
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(Size, Size);
+  auto window = MakeWindow(Size);
 
   std::vector<Scene> scenes;
   {
@@ -223,12 +220,7 @@ int TestTubeFidelity(int, char*[])
     auto lines = SplineVizTest::MakePolylines(scene.Lines);
     auto thinLines = SplineVizTest::MakePolylines(ScaleRadii(scene.Lines, 0.85));
     double bounds[6];
-    lines->GetBounds(bounds);
-    for (int k = 0; k < 3; ++k)
-    {
-      bounds[2 * k] -= 0.4;
-      bounds[2 * k + 1] += 0.4;
-    }
+    PaddedBounds(lines, bounds);
     for (Renderer which : { RayCast, Tessellated, Stylized })
     {
       const std::string renderer = RendererNames[which];

@@ -189,11 +189,8 @@ struct Scene
 int TestTubeTranslucency(int, char*[])
 {
   SplineVizTestStatus status;
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
+  auto window = MakeWindow(Size);
   window->SetAlphaBitPlanes(1);
-  window->SetSize(Size, Size);
 
   std::vector<Scene> scenes;
   {
@@ -224,12 +221,7 @@ int TestTubeTranslucency(int, char*[])
     auto inner = SplineVizTest::MakePolylines(ScaleRadii(scene.Lines, 0.95));
     const double target = scene.Tolerated;
     double bounds[6];
-    lines->GetBounds(bounds);
-    for (int k = 0; k < 3; ++k)
-    {
-      bounds[2 * k] -= 0.4;
-      bounds[2 * k + 1] += 0.4;
-    }
+    PaddedBounds(lines, bounds);
     const auto setup = MakeCamera(bounds, scene.Direction, scene.Target, scene.Zoom);
     for (Renderer which : { RayCast, Tessellated, Stylized })
     {

@@ -17,6 +17,7 @@
 #include "vtkCellArray.h"
 #include "vtkMath.h"
 #include "vtkPolyData.h"
+#include "vtkRenderWindow.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include <cmath>
@@ -58,6 +59,29 @@ inline Curves LoadBundle()
     curves.push_back(SplineVizTest::DenseSpline(nodes, 4));
   }
   return curves;
+}
+
+/// The lines' bounds widened by 0.4 on every side (room for the tubes),
+/// which fix the camera's clipping range in every rendering of a scene.
+inline void PaddedBounds(vtkPolyData* lines, double bounds[6])
+{
+  lines->GetBounds(bounds);
+  for (int k = 0; k < 3; ++k)
+  {
+    bounds[2 * k] -= 0.4;
+    bounds[2 * k + 1] += 0.4;
+  }
+}
+
+/// An offscreen size x size window without multisampling (the fidelity
+/// tests compare coverage pixel by pixel).
+inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int size)
+{
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(size, size);
+  return window;
 }
 
 /// The curves with their radii scaled (a negative control).
