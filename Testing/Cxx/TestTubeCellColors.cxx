@@ -82,18 +82,12 @@ int TestTubeCellColors(int, char*[])
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
     actor->GetProperty()->LightingOff();
-    vtkNew<vtkRenderer> renderer;
-    renderer->AddActor(actor);
-    window->AddRenderer(renderer);
-    setup(renderer->GetActiveCamera());
-    renderer->ResetCameraClippingRange(bounds);
-    const SplineVizTest::Frame frame = SplineVizTest::Grab(window);
+    vtkNew<vtkCamera> camera;
+    const SplineVizTest::Frame frame = RenderActors(window, { actor }, setup, bounds, camera);
     SplineVizTest::Save(frame, name);
 
-    // The curves' own points, projected by the test.
-    vtkCamera* camera = renderer->GetActiveCamera();
-    vtkMatrix4x4* worldToView =
-      camera->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), -1.0, 1.0);
+    // The curves' own points, projected by the test (a square window).
+    vtkMatrix4x4* worldToView = camera->GetCompositeProjectionTransformMatrix(1.0, -1.0, 1.0);
     int checked = 0, matched = 0, matchedOther = 0;
     for (size_t c = 0; c < curves.size(); ++c)
     {
@@ -137,7 +131,6 @@ int TestTubeCellColors(int, char*[])
         matchedOther += close(other) ? 1 : 0;
       }
     }
-    window->RemoveRenderer(renderer);
     std::cout << name << ": " << matched << " of " << checked
               << " curve points show their curve's color (the next curve's color: " << matchedOther
               << ")" << std::endl;

@@ -69,25 +69,6 @@ SplineVizTest::Frame MarkerPixels(const SplineVizTest::Frame& frame, long& count
   return markers;
 }
 
-/// Render the actors with the camera `setup` (the window's only renderer).
-SplineVizTest::Frame RenderActors(vtkRenderWindow* window, const std::vector<vtkActor*>& actors,
-  const SplineVizTest::CameraSetup& setup, const double bounds[6], vtkCamera* cameraOut)
-{
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(0.0, 0.0, 0.0);
-  for (vtkActor* actor : actors)
-  {
-    renderer->AddActor(actor);
-  }
-  window->AddRenderer(renderer);
-  setup(renderer->GetActiveCamera());
-  renderer->ResetCameraClippingRange(const_cast<double*>(bounds));
-  SplineVizTest::Frame frame = SplineVizTest::Grab(window);
-  cameraOut->DeepCopy(renderer->GetActiveCamera());
-  window->RemoveRenderer(renderer);
-  return frame;
-}
-
 vtkSmartPointer<vtkActor> LineActor(vtkMapper* mapper)
 {
   auto actor = vtkSmartPointer<vtkActor>::New();

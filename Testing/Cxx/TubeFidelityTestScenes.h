@@ -13,11 +13,13 @@
 
 #include "SplineVizRenderingTestUtilities.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkMath.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include <cmath>
@@ -82,6 +84,27 @@ inline vtkSmartPointer<vtkRenderWindow> MakeWindow(int size)
   window->SetMultiSamples(0);
   window->SetSize(size, size);
   return window;
+}
+
+/// Render the actors with the camera `setup` in a renderer of their own on
+/// black; `cameraOut` gets the camera (for depths and projections).
+inline SplineVizTest::Frame RenderActors(vtkRenderWindow* window,
+  const std::vector<vtkActor*>& actors, const SplineVizTest::CameraSetup& setup,
+  const double bounds[6], vtkCamera* cameraOut)
+{
+  vtkNew<vtkRenderer> renderer;
+  renderer->SetBackground(0.0, 0.0, 0.0);
+  for (vtkActor* actor : actors)
+  {
+    renderer->AddActor(actor);
+  }
+  window->AddRenderer(renderer);
+  setup(renderer->GetActiveCamera());
+  renderer->ResetCameraClippingRange(const_cast<double*>(bounds));
+  SplineVizTest::Frame frame = SplineVizTest::Grab(window);
+  cameraOut->DeepCopy(renderer->GetActiveCamera());
+  window->RemoveRenderer(renderer);
+  return frame;
 }
 
 /// The curves with their radii scaled (a negative control).
