@@ -12,7 +12,9 @@ list(APPEND splineviz_classes
 list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkLineAmbientOcclusionPass")
 list(APPEND splineviz_shaders
-  "${SPLINEVIZ_FOLDER}/glsl/vtkLineAmbientOcclusionFS.glsl")
+  "${SPLINEVIZ_FOLDER}/glsl/vtkLineAmbientOcclusionCommon.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkLineAmbientOcclusionFS.glsl"
+  "${SPLINEVIZ_FOLDER}/glsl/vtkLineAmbientOcclusionTilesVS.glsl")
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkSplineVizGPUBuffer"
   "${SPLINEVIZ_FOLDER}/vtkSplineTubeVisibility"

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLineAmbientOcclusionPass.h"
 
+#include "vtkLineAmbientOcclusionCommon.h"
 #include "vtkLineAmbientOcclusionFS.h"
+#include "vtkLineAmbientOcclusionTilesVS.h"
 
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
@@ -13,6 +15,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
+#include "vtkOpenGLVertexArrayObject.h"
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkShaderProgram.h"
@@ -20,57 +23,106 @@
 #include "vtkSmartPointer.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <utility>
 
 vtkStandardNewMacro(vtkLineAmbientOcclusionPass);
 
 struct vtkLineAmbientOcclusionPass::vtkInternals
 {
+  // The delegate's picture.
   vtkSmartPointer<vtkTextureObject> Color;
   vtkSmartPointer<vtkTextureObject> Depth;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  // Drawn by the offscreen stages (through StageFramebuffer): the view point
+  // of every pixel (RGBA32F), and per tile its nearest and farthest view z
+  // (RG32F, with halos only).
+  vtkSmartPointer<vtkTextureObject> Positions;
+  vtkSmartPointer<vtkTextureObject> Tiles;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> StageFramebuffer;
+  /// The full-screen stages' programs (the halo stage has its own vertex
+  /// shader and no quad).
+  std::unique_ptr<vtkOpenGLQuadHelper> Quads[StageHalos];
+  vtkNew<vtkOpenGLVertexArrayObject> TileArray;
+  int TileSize = 8;
+  int TileCount[2] = { 0, 0 };
+
+  static vtkSmartPointer<vtkTextureObject> NewTexture(vtkOpenGLRenderWindow* window)
+  {
+    auto texture = vtkSmartPointer<vtkTextureObject>::New();
+    texture->SetContext(window);
+    texture->SetWrapS(vtkTextureObject::ClampToEdge);
+    texture->SetWrapT(vtkTextureObject::ClampToEdge);
+    return texture;
+  }
 
   void Allocate(vtkOpenGLRenderWindow* window, int w, int h)
   {
     if (!this->Color)
     {
-      this->Color = vtkSmartPointer<vtkTextureObject>::New();
-      this->Color->SetContext(window);
-      this->Color->SetWrapS(vtkTextureObject::ClampToEdge);
-      this->Color->SetWrapT(vtkTextureObject::ClampToEdge);
+      this->Color = NewTexture(window);
       this->Color->Create2D(w, h, 4, VTK_UNSIGNED_CHAR, false);
-      this->Depth = vtkSmartPointer<vtkTextureObject>::New();
-      this->Depth->SetContext(window);
-      this->Depth->SetWrapS(vtkTextureObject::ClampToEdge);
-      this->Depth->SetWrapT(vtkTextureObject::ClampToEdge);
+      this->Depth = NewTexture(window);
       this->Depth->AllocateDepth(w, h, vtkTextureObject::Float32);
       this->Framebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
       this->Framebuffer->SetContext(window);
+      this->Positions = NewTexture(window);
+      this->Positions->Create2D(w, h, 4, VTK_FLOAT, false);
+      this->StageFramebuffer = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+      this->StageFramebuffer->SetContext(window);
     }
     this->Color->Resize(w, h);
     this->Depth->Resize(w, h);
+    this->Positions->Resize(w, h);
+  }
+
+  /// Tiles of `size` pixels for a w x h window.
+  void AllocateTiles(vtkOpenGLRenderWindow* window, int w, int h, int size)
+  {
+    this->TileSize = size;
+    this->TileCount[0] = (w + size - 1) / size;
+    this->TileCount[1] = (h + size - 1) / size;
+    if (!this->Tiles)
+    {
+      this->Tiles = NewTexture(window);
+      this->Tiles->Create2D(this->TileCount[0], this->TileCount[1], 2, VTK_FLOAT, false);
+    }
+    this->Tiles->Resize(this->TileCount[0], this->TileCount[1]);
   }
 
   void Release(vtkWindow* window)
   {
-    if (this->Quad)
+    for (auto& quad : this->Quads)
     {
-      this->Quad->ReleaseGraphicsResources(window);
-      this->Quad.reset();
+      if (quad)
+      {
+        quad->ReleaseGraphicsResources(window);
+        quad.reset();
+      }
     }
-    if (this->Framebuffer)
+    this->TileArray->ReleaseGraphicsResources();
+    for (vtkOpenGLFramebufferObject* fbo : { this->Framebuffer, this->StageFramebuffer })
     {
-      this->Framebuffer->ReleaseGraphicsResources(window);
+      if (fbo)
+      {
+        fbo->ReleaseGraphicsResources(window);
+      }
     }
-    if (this->Color)
+    for (vtkTextureObject* texture : { this->Color, this->Depth, this->Positions, this->Tiles })
     {
-      this->Color->ReleaseGraphicsResources(window);
-      this->Depth->ReleaseGraphicsResources(window);
+      if (texture)
+      {
+        texture->ReleaseGraphicsResources(window);
+      }
     }
     this->Color = nullptr;
     this->Depth = nullptr;
+    this->Positions = nullptr;
+    this->Tiles = nullptr;
     this->Framebuffer = nullptr;
+    this->StageFramebuffer = nullptr;
   }
 };
 
@@ -107,28 +159,88 @@ void vtkLineAmbientOcclusionPass::RenderOffscreen(
 }
 
 //------------------------------------------------------------------------------
-bool vtkLineAmbientOcclusionPass::RenderComposite(
-  const vtkRenderState* s, vtkOpenGLRenderWindow* window, int w, int h)
+bool vtkLineAmbientOcclusionPass::RenderStageInto(const vtkRenderState* s,
+  vtkOpenGLRenderWindow* window, int stage, vtkTextureObject* input, vtkTextureObject* output,
+  int w, int h)
 {
   vtkInternals& in = *this->Internals;
-  if (!in.Quad)
+  vtkShaderProgram* program = this->ReadyStage(window, stage);
+  if (!program)
   {
-    std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
-    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", vtkLineAmbientOcclusionFS);
-    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", "  lineAOMain();\n");
-    in.Quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fs.c_str(), ""));
+    return false;
+  }
+  vtkOpenGLState* state = window->GetState();
+  state->PushFramebufferBindings();
+  in.StageFramebuffer->Bind();
+  in.StageFramebuffer->AddColorAttachment(0, output);
+  in.StageFramebuffer->ActivateDrawBuffer(0);
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglEnableDisable scissorTest(state, GL_SCISSOR_TEST);
+  state->vtkglViewport(0, 0, output->GetWidth(), output->GetHeight());
+  state->vtkglDisable(GL_BLEND);
+  state->vtkglDisable(GL_DEPTH_TEST);
+  state->vtkglDisable(GL_SCISSOR_TEST);
+  input->Activate();
+  this->SetUniforms(program, s, w, h);
+  in.Quads[stage]->Render();
+  input->Deactivate();
+  state->PopFramebufferBindings();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkShaderProgram* vtkLineAmbientOcclusionPass::ReadyStage(vtkOpenGLRenderWindow* window, int stage)
+{
+  static const char* const entryPoints[StageHalos + 1] = { "  lineAOPositionsMain();\n",
+    "  lineAOTilesMain();\n", "  lineAOCopyMain();\n", "  lineAOOcclusionMain();\n",
+    "  lineAOHaloMain();\n" };
+  std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+  const std::string declarations =
+    std::string(vtkLineAmbientOcclusionCommon) + vtkLineAmbientOcclusionFS;
+  vtkShaderProgram* program = nullptr;
+  if (stage == StageHalos)
+  {
+    // Drawn tile by tile: its own vertex shader, the same fragment template.
+    std::string vs = vtkLineAmbientOcclusionTilesVS;
+    vtkShaderProgram::Substitute(vs, "//LineAO::Common", vtkLineAmbientOcclusionCommon);
+    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", "#define LINE_AO_TILES\n" + declarations);
+    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", entryPoints[stage]);
+    program = window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+    if (program && program->GetCompiled())
+    {
+      this->Internals->TileArray->Bind();
+    }
   }
   else
   {
-    window->GetShaderCache()->ReadyShaderProgram(in.Quad->Program);
+    std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Internals->Quads[stage];
+    if (!quad)
+    {
+      vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", declarations);
+      vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", entryPoints[stage]);
+      quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fs.c_str(), ""));
+    }
+    else
+    {
+      window->GetShaderCache()->ReadyShaderProgram(quad->Program);
+    }
+    program = quad->Program;
   }
-  vtkShaderProgram* program = in.Quad->Program;
   if (!program || !program->GetCompiled())
   {
     vtkErrorMacro("Could not build the line ambient occlusion shader program.");
-    return false;
+    return nullptr;
   }
+  return program;
+}
 
+//------------------------------------------------------------------------------
+void vtkLineAmbientOcclusionPass::SetUniforms(
+  vtkShaderProgram* program, const vtkRenderState* s, int w, int h)
+{
+  vtkInternals& in = *this->Internals;
   vtkRenderer* ren = s->GetRenderer();
   // View to normalized device coordinates, as the delegate drew them.
   vtkMatrix4x4* projection =
@@ -140,10 +252,16 @@ bool vtkLineAmbientOcclusionPass::RenderComposite(
     static_cast<float>(projection->GetElement(3, 3)) };
   const double p11 = projection->GetElement(1, 1);
 
-  in.Color->Activate();
-  in.Depth->Activate();
-  program->SetUniformi("aoColor", in.Color->GetTextureUnit());
-  program->SetUniformi("aoDepth", in.Depth->GetTextureUnit());
+  // The textures the stage reads are the active ones.
+  const std::pair<const char*, vtkTextureObject*> samplers[4] = { { "aoColor", in.Color },
+    { "aoDepth", in.Depth }, { "aoPositions", in.Positions }, { "aoTiles", in.Tiles } };
+  for (const auto& sampler : samplers)
+  {
+    if (sampler.second && sampler.second->GetTextureUnit() >= 0)
+    {
+      program->SetUniformi(sampler.first, sampler.second->GetTextureUnit());
+    }
+  }
   program->SetUniformMatrix("aoInverseProjection", inverse);
   program->SetUniform2f("aoClipW", clipW);
   program->SetUniformf("aoPixelScale", static_cast<float>(2.0 / (p11 * h)));
@@ -153,13 +271,11 @@ bool vtkLineAmbientOcclusionPass::RenderComposite(
   program->SetUniform2i("aoSize", size);
 
   program->SetUniformi("aoWorldUnits", this->LengthUnits == UNITS_WORLD ? 1 : 0);
-  program->SetUniformi("aoEnabled", this->AmbientOcclusion ? 1 : 0);
   program->SetUniformi("aoLevels", this->Levels);
   program->SetUniformi("aoSamples", this->Samples);
   program->SetUniformf("aoRadius", static_cast<float>(this->Radius));
   program->SetUniformf("aoStrength", static_cast<float>(this->Strength));
   program->SetUniformf("aoBias", static_cast<float>(this->Bias));
-  program->SetUniformi("aoHalo", this->DepthHalos ? 1 : 0);
   program->SetUniformf("aoHaloWidth", static_cast<float>(this->HaloWidth));
   program->SetUniformf("aoHaloOffset", static_cast<float>(this->HaloDepthOffset));
   program->SetUniformf("aoHaloRange", static_cast<float>(this->HaloDepthRange));
@@ -167,21 +283,100 @@ bool vtkLineAmbientOcclusionPass::RenderComposite(
   const float haloColor[3] = { static_cast<float>(halo[0]), static_cast<float>(halo[1]),
     static_cast<float>(halo[2]) };
   program->SetUniform3f("aoHaloColor", haloColor);
+  program->SetUniformi("aoTileSize", in.TileSize);
+  program->SetUniform2i("aoTileCount", in.TileCount);
+  program->SetUniformi("aoTileReach", (this->HaloReach() + in.TileSize - 1) / in.TileSize);
+}
 
-  // Color and depth replace what the framebuffer holds in the viewport.
+//------------------------------------------------------------------------------
+int vtkLineAmbientOcclusionPass::HaloReach() const
+{
+  // The halo's farthest sample lies HaloWidth pixels away, rounded to a pixel.
+  return static_cast<int>(std::floor(this->HaloWidth + 0.5));
+}
+
+//------------------------------------------------------------------------------
+bool vtkLineAmbientOcclusionPass::RenderComposite(
+  const vtkRenderState* s, vtkOpenGLRenderWindow* window, int w, int h)
+{
+  vtkInternals& in = *this->Internals;
+  const bool occlusion = this->AmbientOcclusion && this->Strength > 0.0;
+  const bool halos = this->DepthHalos && this->HaloWidth > 0.0;
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglEnableDisable blend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglBlendFuncSeparate blendFunc(state);
   vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
   vtkOpenGLState::ScopedglDepthFunc depthFunc(state);
   vtkOpenGLState::ScopedglDepthMask depthMask(state);
+  in.Color->Activate();
+  in.Depth->Activate();
+  in.Positions->Activate();
+  if (in.Tiles)
+  {
+    in.Tiles->Activate();
+  }
+  // Draws one stage with its program; false if the program failed.
+  auto draw = [&](int stage)
+  {
+    vtkShaderProgram* program = this->ReadyStage(window, stage);
+    if (program)
+    {
+      this->SetUniforms(program, s, w, h);
+      if (stage == StageHalos)
+      {
+        glDrawArrays(GL_TRIANGLES, 0, 6 * in.TileCount[0] * in.TileCount[1]);
+        in.TileArray->Release();
+      }
+      else
+      {
+        in.Quads[stage]->Render();
+      }
+    }
+    return program != nullptr;
+  };
+  bool drawn = true;
+
+  // 1. Color and depth replace what the framebuffer holds in the viewport.
   state->vtkglDisable(GL_BLEND);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthFunc(GL_ALWAYS);
   state->vtkglDepthMask(GL_TRUE);
-  in.Quad->Render();
+  drawn = draw(StageCopy);
+
+  // 2. The occlusion factor multiplies the color where there is geometry: the
+  // quad lies on the far plane (depth range [1, 1]) and passes the depth test
+  // only in front of what is nearer, so background pixels are never shaded.
+  if (drawn && occlusion)
+  {
+    GLfloat range[2];
+    glGetFloatv(GL_DEPTH_RANGE, range);
+    glDepthRange(1.0, 1.0);
+    state->vtkglDepthFunc(GL_GREATER);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ZERO, GL_SRC_COLOR, GL_ZERO, GL_ONE);
+    drawn = draw(StageOcclusion);
+    glDepthRange(range[0], range[1]);
+  }
+
+  // 3. Halos, over geometry and background alike, blended by their coverage,
+  // on the tiles that can hold one.
+  if (drawn && halos)
+  {
+    state->vtkglDisable(GL_DEPTH_TEST);
+    state->vtkglDepthMask(GL_FALSE);
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    drawn = draw(StageHalos);
+  }
+  if (in.Tiles)
+  {
+    in.Tiles->Deactivate();
+  }
+  in.Positions->Deactivate();
   in.Depth->Deactivate();
   in.Color->Deactivate();
-  return true;
+  return drawn;
 }
 
 //------------------------------------------------------------------------------
@@ -219,13 +414,23 @@ void vtkLineAmbientOcclusionPass::Render(const vtkRenderState* s)
     return;
   }
   this->RenderOffscreen(s, window, w, h);
+  vtkInternals& in = *this->Internals;
+  bool ready = this->RenderStageInto(s, window, StagePositions, in.Depth, in.Positions, w, h);
+  if (ready && this->DepthHalos && this->HaloWidth > 0.0)
+  {
+    in.AllocateTiles(window, w, h, std::max(8, this->HaloReach()));
+    ready = this->RenderStageInto(s, window, StageTiles, in.Positions, in.Tiles, w, h);
+  }
 
   vtkOpenGLState* state = window->GetState();
   vtkOpenGLState::ScopedglViewport viewport(state);
   vtkOpenGLState::ScopedglScissor scissor(state);
   state->vtkglViewport(x, y, w, h);
   state->vtkglScissor(x, y, w, h);
-  this->RenderComposite(s, window, w, h);
+  if (ready)
+  {
+    this->RenderComposite(s, window, w, h);
+  }
   vtkOpenGLCheckErrorMacro("failed after Render");
 }
 

@@ -5,9 +5,18 @@
  * lines and tubes, from the depth buffer alone.
  *
  * A render pass that draws its delegate (e.g. a vtkRenderStepsPass) into an
- * offscreen color and depth buffer and then, in one full-screen pass, darkens
- * each pixel by its ambient occlusion and, optionally, draws depth-dependent
- * halos. Only the depth buffer is read for the geometry, so it works for any
+ * offscreen color and depth buffer and then darkens each pixel by its ambient
+ * occlusion and, optionally, draws depth-dependent halos, in stages
+ * (vtkLineAmbientOcclusionFS.glsl): every pixel's view point once into a
+ * float texture; the picture copied; the occlusion factor multiplied in
+ * where there is geometry only (a far-plane quad behind a GL_GREATER depth
+ * test, so the early depth test skips the background); the halos drawn only
+ * on tiles where some pixel lies more than HaloDepthOffset in front of
+ * another within reach (vtkLineAmbientOcclusionTilesVS.glsl). Each stage has
+ * its own program because on a CPU rasterizer (Mesa's llvmpipe) code behind
+ * a branch or a uniform switch costs as if it ran; the skipped pixels are
+ * exactly those whose result would be unchanged. docs/line-rendering.md has
+ * the costs. Only the depth buffer is read for the geometry, so it works for any
  * opaque geometry that writes its depth: the three line mappers
  * (vtkRayCastTubeMapper with its exact per-fragment depth,
  * vtkTessellatedTubeMapper, vtkStylizedLineMapper) and ordinary polygons.
@@ -52,6 +61,8 @@
 #include <memory> // for std::unique_ptr
 
 class vtkOpenGLRenderWindow;
+class vtkShaderProgram;
+class vtkTextureObject;
 
 class SPLINEVIZ_EXPORT vtkLineAmbientOcclusionPass : public vtkImageProcessingPass
 {
@@ -209,8 +220,27 @@ private:
 
   /// The delegate's picture into the offscreen color and depth textures.
   void RenderOffscreen(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int w, int h);
-  /// The full-screen pass into the bound framebuffer; false if it failed.
+  /// One offscreen stage over `output` (reading `input`); false if it failed.
+  bool RenderStageInto(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int stage,
+    vtkTextureObject* input, vtkTextureObject* output, int w, int h);
+  /// The stages drawn into the bound framebuffer; false if one failed.
   bool RenderComposite(const vtkRenderState* s, vtkOpenGLRenderWindow* window, int w, int h);
+
+  /// The stages of vtkLineAmbientOcclusionFS.glsl, one program each.
+  enum Stage
+  {
+    StagePositions = 0, ///< every pixel's view point (offscreen)
+    StageTiles = 1,     ///< per tile, its nearest and farthest depth (offscreen, halos only)
+    StageCopy = 2,      ///< the delegate's color and depth
+    StageOcclusion = 3, ///< the occlusion factor, over geometry only
+    StageHalos = 4      ///< the halos, on the tiles that can hold one
+  };
+  /// The stage's program, built on first use and bound; null if it failed.
+  vtkShaderProgram* ReadyStage(vtkOpenGLRenderWindow* window, int stage);
+  /// The uniforms the stages read (view, window, settings).
+  void SetUniforms(vtkShaderProgram* program, const vtkRenderState* s, int w, int h);
+  /// How far from a pixel, in pixels, the halo stage reads.
+  int HaloReach() const;
 
   struct vtkInternals;
   std::unique_ptr<vtkInternals> Internals;

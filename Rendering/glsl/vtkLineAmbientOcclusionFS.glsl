@@ -1,12 +1,34 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Screen-space ambient occlusion and depth-dependent halos for lines
-// (vtkLineAmbientOcclusionPass), one full-screen fragment stage.
+// (vtkLineAmbientOcclusionPass), in stages, each its own program.
 //
-// Inserted into VTK's full-screen-quad fragment template (the declarations
-// part; its body calls lineAOMain()). Inputs: the color and the
-// depth buffer the delegate passes drew. Nothing but the depth buffer is read
-// for the geometry, so every opaque prop that writes its true depth takes part
-// (the ray-cast tubes write their exact surface depth).
+// Inserted after vtkLineAmbientOcclusionCommon.glsl into VTK's
+// full-screen-quad fragment template (the declarations part; its body calls
+// one of the entry points below). Inputs: the color and the depth buffer the
+// delegate passes drew. Nothing but the depth buffer is read for the
+// geometry, so every opaque prop that writes its true depth takes part (the
+// ray-cast tubes write their exact surface depth).
+//
+// The stages, in the order the pass draws them:
+//  1. lineAOPositionsMain (offscreen): the view point of every pixel, from
+//     the depth buffer, into a floating-point texture (aoPositions) that the
+//     other stages read: each pixel's point is computed once, not once per
+//     sample that reads it, and a float color texture reads several times
+//     faster than a depth texture on Mesa's llvmpipe.
+//  2. lineAOTilesMain (offscreen, halos only): per tile of aoTileSize
+//     pixels, the view z of its nearest and farthest pixel, which
+//     vtkLineAmbientOcclusionTilesVS.glsl reads to draw stage 5 only on
+//     tiles that can hold a halo.
+//  3. lineAOCopyMain: the delegate's color and depth, unchanged.
+//  4. lineAOOcclusionMain: the factor the color is multiplied by (the pass
+//     blends dst x src) where there is geometry: the pass draws it behind
+//     everything with a GL_GREATER depth test, so the background is never
+//     shaded (the early depth test skips it; on llvmpipe a stage in a branch
+//     or behind a uniform switch costs as if it ran, hence one program per
+//     stage).
+//  5. lineAOHaloMain: the halo color with its coverage as alpha, blended
+//     over, drawn by vtkLineAmbientOcclusionTilesVS.glsl on the tiles that
+//     can hold a halo (compiled with LINE_AO_TILES defined).
 //
 // Occlusion (after Eichelbaum et al. 2013, LineAO): for each pixel, the view
 // point P and its normal n (from the depth buffer's neighbours), then for
@@ -26,43 +48,32 @@
 
 uniform sampler2D aoColor;
 uniform sampler2D aoDepth;
+uniform sampler2D aoPositions;    // view points (stage 0's output), w = 0: background
 uniform mat4 aoInverseProjection; // normalized device to view coordinates
-uniform vec2 aoClipW;             // clip w = aoClipW.x * z_view + aoClipW.y
-uniform float aoPixelScale;       // one pixel in view units = aoPixelScale x clip w
 uniform vec2 aoTexel;             // one pixel in texture coordinates
 uniform ivec2 aoSize;             // the window's size in pixels
-uniform int aoWorldUnits;         // radius and depth gaps: 1 view units, 0 pixels
-uniform int aoEnabled;
 uniform int aoLevels;
 uniform int aoSamples;
 uniform float aoRadius;
 uniform float aoStrength;
 uniform float aoBias;
-uniform int aoHalo;
 uniform float aoHaloWidth; // pixels
-uniform float aoHaloOffset;
 uniform float aoHaloRange;
 uniform vec3 aoHaloColor;
+uniform ivec2 aoTileCount; // the tiles stage: tiles along x and y
+uniform int aoTileSize;    // pixels per tile side
 
 // The view point at a pixel (outside the window: the nearest edge pixel);
 // w = 0 marks the background. Integer fetches: no filtering to pay for.
 vec4 aoViewPoint(ivec2 pixel)
 {
-  ivec2 q = clamp(pixel, ivec2(0), aoSize - 1);
-  float d = texelFetch(aoDepth, q, 0).r;
-  if (d >= 1.0)
-  {
-    return vec4(0.0);
-  }
-  vec2 ndc = (vec2(q) + 0.5) * (2.0 * aoTexel) - 1.0;
-  vec4 p = aoInverseProjection * vec4(ndc, 2.0 * d - 1.0, 1.0);
-  return vec4(p.xyz / p.w, 1.0);
+  return texelFetch(aoPositions, clamp(pixel, ivec2(0), aoSize - 1), 0);
 }
 
-// The size of one pixel in view units at view depth z.
-float aoPixelSize(float z)
+// The direction d turned by the angle whose cosine and sine are cs.
+vec2 aoTurn(vec2 d, vec2 cs)
 {
-  return aoPixelScale * (aoClipW.x * z + aoClipW.y);
+  return vec2(cs.x * d.x - cs.y * d.y, cs.y * d.x + cs.x * d.y);
 }
 
 // The surface normal at P from the depth buffer: along each axis the
@@ -111,11 +122,15 @@ float aoOcclusion(ivec2 uv, vec3 p, vec3 n)
     float rl = radius * exp2(float(level - aoLevels + 1));
     float rv = rl * pixel; // the hemisphere's radius in view units
     float sum = 0.0;
-    for (int k = 0; k < aoSamples; ++k)
+    // Sample k lies at the angle turn + golden angle x (k + 7 level), each
+    // direction the previous one turned (no sine or cosine per sample).
+    float a = turn + 2.399963229728653 * float(7 * level);
+    vec2 direction = vec2(cos(a), sin(a));
+    const vec2 golden = vec2(-0.7373688780783197, 0.6754902942615238);
+    for (int k = 0; k < aoSamples; ++k, direction = aoTurn(direction, golden))
     {
-      float a = turn + 2.399963229728653 * float(k + 7 * level); // golden angle
       float t = rl * sqrt((float(k) + 0.5) / float(aoSamples));
-      vec4 q = aoViewPoint(uv + ivec2(floor(t * vec2(cos(a), sin(a)) + 0.5)));
+      vec4 q = aoViewPoint(uv + ivec2(floor(t * direction + 0.5)));
       if (q.w == 0.0)
       {
         continue;
@@ -134,49 +149,114 @@ float aoOcclusion(ivec2 uv, vec3 p, vec3 n)
   return total / float(aoLevels);
 }
 
-// Halo coverage in [0, 1] of the pixel (P, or the background when p.w = 0).
-float aoHaloCoverage(ivec2 uv, vec4 p)
+// Halo coverage in [0, 1] of the pixel (P, or the background when p.w = 0):
+// 3 rings of 8 samples, inner ring first, until full coverage is found.
+// One loop whose length is not a constant: the compiler keeps it a loop,
+// and a loop ends once all the pixels shaded together are done (an unrolled
+// or branched-over block costs its full price on llvmpipe). `nearest`: the
+// view z of the nearest pixel within reach (-1e30: none), so a pixel with
+// nothing far enough in front of it takes no sample.
+float aoHaloCoverage(ivec2 uv, vec4 p, float nearest)
 {
   const int directions = 8;
   const int rings = 3;
+  const vec2 eighth = vec2(0.7071067811865476, 0.7071067811865476);
+  const vec2 sixteenth = vec2(0.9238795325112867, 0.3826834323650898);
   float turn = 0.785398163 * aoNoise();
+  // Sample i of ring j lies at turn + (i + j / 2) eighths of a turn.
+  vec2 direction = vec2(cos(turn), sin(turn));
+  // No sample can give a halo unless the nearest point around lies more than
+  // the offset in front (the gap's bound; exact: such a pixel's halo is 0).
+  bool possible = p.w == 0.0 ? nearest > -1.0e29 : aoHaloGap(nearest, p.z) > aoHaloOffset;
+  int count = possible ? directions * rings : 0;
   float halo = 0.0;
-  for (int j = 0; j < rings; ++j)
+  for (int k = 0; k < count && halo < 1.0; ++k)
   {
-    float s = aoHaloWidth * float(j + 1) / float(rings);
-    for (int i = 0; i < directions; ++i)
+    int j = k / directions;
+    if (k > 0)
     {
-      float a = turn + 0.785398163 * (float(i) + 0.5 * float(j));
-      vec4 q = aoViewPoint(uv + ivec2(floor(s * vec2(cos(a), sin(a)) + 0.5)));
-      if (q.w == 0.0)
-      {
-        continue;
-      }
-      float gap = p.w == 0.0 ? 1.0e30 : q.z - p.z; // > 0: P lies behind Q
-      gap = aoWorldUnits != 0 ? gap : gap / aoPixelSize(q.z);
-      float w = aoHaloRange > 0.0 ? clamp((gap - aoHaloOffset) / aoHaloRange, 0.0, 1.0)
-                                  : (gap > aoHaloOffset ? 1.0 : 0.0);
-      halo = max(halo, clamp(aoHaloWidth * w - s + 0.5, 0.0, 1.0));
+      direction = aoTurn(direction, k == j * directions ? sixteenth : eighth);
     }
+    float s = aoHaloWidth * float(j + 1) / float(rings);
+    vec2 q = aoViewPoint(uv + ivec2(floor(s * direction + 0.5))).zw;
+    if (q.y == 0.0)
+    {
+      continue;
+    }
+    float gap = p.w == 0.0 ? 1.0e30 : aoHaloGap(q.x, p.z); // > 0: P lies behind Q
+    float w = aoHaloRange > 0.0 ? clamp((gap - aoHaloOffset) / aoHaloRange, 0.0, 1.0)
+                                : (gap > aoHaloOffset ? 1.0 : 0.0);
+    halo = max(halo, clamp(aoHaloWidth * w - s + 0.5, 0.0, 1.0));
   }
   return halo;
 }
 
-void lineAOMain()
+// The pixel this fragment shades.
+ivec2 aoPixel()
 {
-  ivec2 pixel = ivec2(texCoord * vec2(aoSize));
-  vec4 color = texelFetch(aoColor, pixel, 0);
-  float depth = texelFetch(aoDepth, pixel, 0).r;
+  return ivec2(texCoord * vec2(aoSize));
+}
+
+void lineAOPositionsMain()
+{
+  ivec2 pixel = aoPixel();
+  float d = texelFetch(aoDepth, pixel, 0).r;
+  vec4 p = vec4(0.0);
+  if (d < 1.0)
+  {
+    vec2 ndc = (vec2(pixel) + 0.5) * (2.0 * aoTexel) - 1.0;
+    p = aoInverseProjection * vec4(ndc, 2.0 * d - 1.0, 1.0);
+    p = vec4(p.xyz / p.w, 1.0);
+  }
+  gl_FragData[0] = p;
+}
+
+void lineAOTilesMain()
+{
+  ivec2 tile = ivec2(texCoord * vec2(aoTileCount));
+  ivec2 first = tile * aoTileSize;
+  ivec2 last = min(first + aoTileSize, aoSize) - 1;
+  float nearest = -1.0e30;  // no geometry
+  float farthest = 1.0e30;
+  for (int y = first.y; y <= last.y; ++y)
+  {
+    for (int x = first.x; x <= last.x; ++x)
+    {
+      vec4 p = texelFetch(aoPositions, ivec2(x, y), 0);
+      float z = p.w > 0.0 ? p.z : -1.0e30; // the background: infinitely far
+      nearest = p.w > 0.0 ? max(nearest, z) : nearest;
+      farthest = min(farthest, z);
+    }
+  }
+  gl_FragData[0] = vec4(nearest, farthest, 0.0, 1.0);
+}
+
+void lineAOCopyMain()
+{
+  ivec2 pixel = aoPixel();
+  gl_FragData[0] = texelFetch(aoColor, pixel, 0);
+  gl_FragDepth = texelFetch(aoDepth, pixel, 0).r;
+}
+
+void lineAOOcclusionMain()
+{
+  ivec2 pixel = aoPixel();
   vec4 p = aoViewPoint(pixel);
-  if (p.w > 0.0 && aoEnabled != 0 && aoStrength > 0.0)
+  float factor = 1.0;
+  if (p.w > 0.0) // (the depth test keeps the background out when there is a depth buffer)
   {
     float occlusion = aoOcclusion(pixel, p.xyz, aoNormal(pixel, p.xyz));
-    color.rgb *= clamp(1.0 - aoStrength * occlusion, 0.0, 1.0);
+    factor = clamp(1.0 - aoStrength * occlusion, 0.0, 1.0);
   }
-  if (aoHalo != 0 && aoHaloWidth > 0.0)
-  {
-    color.rgb = mix(color.rgb, aoHaloColor, aoHaloCoverage(pixel, p));
-  }
-  gl_FragData[0] = color;
-  gl_FragDepth = depth;
+  gl_FragData[0] = vec4(factor, factor, factor, 1.0);
 }
+
+#ifdef LINE_AO_TILES
+flat in float aoTileNearest; // vtkLineAmbientOcclusionTilesVS.glsl: nearest view z within reach
+
+void lineAOHaloMain()
+{
+  ivec2 pixel = aoPixel();
+  gl_FragData[0] = vec4(aoHaloColor, aoHaloCoverage(pixel, aoViewPoint(pixel), aoTileNearest));
+}
+#endif
