@@ -331,6 +331,23 @@ struct Params
   double F = 0.5, G = 0.5;
 };
 
+// The tracker's settings from the filter's (StepLength already computed).
+Params MakeParams(vtkTensorLineTracer* self)
+{
+  Params p;
+  p.Integrator = self->GetIntegratorType();
+  p.H = self->GetStepLength();
+  p.MaxLength = self->GetMaximumPropagation();
+  p.MaxSteps = self->GetMaximumNumberOfSteps();
+  p.StopFA = self->GetStoppingFAThreshold();
+  p.CosMaxAngle = std::cos(vtkMath::RadiansFromDegrees(self->GetMaximumAngle()));
+  p.Tensorlines = self->GetUseTensorlines();
+  p.UseCL = self->GetTensorlineWeightFromLinearAnisotropy();
+  p.F = self->GetTensorlineEigenvectorWeight();
+  p.G = self->GetTensorlineDeflectionWeight();
+  return p;
+}
+
 //------------------------------------------------------------------------------
 // Sylvester's criterion: true when the leading principal minors are positive
 // (then every eigenvalue is positive). A quick test that spares the
@@ -1393,29 +1410,9 @@ int vtkTensorLineTracer::RequestData(
   this->NumberOfSeeds = lastSeed - firstSeed;
   if (this->NumberOfSeeds == 0)
   {
-    if (this->SeedMode == SEEDS_FROM_SOURCE)
-    {
-      vtkWarningMacro(<< "the seed source has no points: no lines");
-    }
-    else
-    {
-      vtkWarningMacro(<< "no voxel has FA >= "
-                      << std::max(this->SeedFAThreshold, this->StoppingFAThreshold)
-                      << (useMask ? " inside the mask" : "") << ": no seeds, no lines");
-    }
+    this->WarnNoSeeds(useMask);
   }
-
-  Params P;
-  P.Integrator = this->IntegratorType;
-  P.H = this->StepLength;
-  P.MaxLength = this->MaximumPropagation;
-  P.MaxSteps = this->MaximumNumberOfSteps;
-  P.StopFA = this->StoppingFAThreshold;
-  P.CosMaxAngle = std::cos(vtkMath::RadiansFromDegrees(this->MaximumAngle));
-  P.Tensorlines = this->UseTensorlines;
-  P.UseCL = this->TensorlineWeightFromLinearAnisotropy;
-  P.F = this->TensorlineEigenvectorWeight;
-  P.G = this->TensorlineDeflectionWeight;
+  const Params P = MakeParams(this);
 
   const bool outDouble = this->UseDoubleOutput(dbl);
   std::unique_ptr<Output<float>> outF;
@@ -1499,6 +1496,36 @@ int vtkTensorLineTracer::RequestData(
   {
     this->NumberOfEvaluations += e;
   }
+  this->ReportRejectedSeeds(rejected);
+  if (outD)
+  {
+    outD->Finish(output);
+  }
+  else
+  {
+    outF->Finish(output);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkTensorLineTracer::WarnNoSeeds(bool useMask)
+{
+  if (this->SeedMode == SEEDS_FROM_SOURCE)
+  {
+    vtkWarningMacro(<< "the seed source has no points: no lines");
+  }
+  else
+  {
+    vtkWarningMacro(<< "no voxel has FA >= "
+                    << std::max(this->SeedFAThreshold, this->StoppingFAThreshold)
+                    << (useMask ? " inside the mask" : "") << ": no seeds, no lines");
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkTensorLineTracer::ReportRejectedSeeds(const std::map<int, vtkIdType>& rejected)
+{
   for (const auto& r : rejected)
   {
     this->NumberOfRejectedSeeds += r.second;
@@ -1513,15 +1540,6 @@ int vtkTensorLineTracer::RequestData(
     vtkWarningMacro(<< this->NumberOfRejectedSeeds << " of " << this->NumberOfSeeds
                     << " seeds gave no line:" << why.str());
   }
-  if (outD)
-  {
-    outD->Finish(output);
-  }
-  else
-  {
-    outF->Finish(output);
-  }
-  return 1;
 }
 
 //------------------------------------------------------------------------------

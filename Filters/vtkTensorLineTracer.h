@@ -115,6 +115,7 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <map>    // for ReportRejectedSeeds
 #include <vector> // for CollectTensorArrays
 
 class vtkDataArray;
@@ -401,6 +402,11 @@ private:
     vtkInformation* outInfo, vtkIdType total, vtkIdType& first, vtkIdType& last) const;
   /// Double output points (OutputPointsPrecision; DEFAULT: as the input tensors).
   bool UseDoubleOutput(bool inputDouble) const;
+  /// The warning for a piece without seeds (useMask: a mask array is set).
+  void WarnNoSeeds(bool useMask);
+  /// Adds the seeds that gave no line to NumberOfRejectedSeeds (`rejected`:
+  /// how many per termination reason) and, for a seed source, warns.
+  void ReportRejectedSeeds(const std::map<int, vtkIdType>& rejected);
 };
 
 #endif

@@ -204,7 +204,8 @@ vtkShaderProgram* vtkLineAmbientOcclusionPass::ReadyStage(vtkOpenGLRenderWindow*
   {
     // Drawn tile by tile: its own vertex shader, the same fragment template.
     std::string vs = vtkLineAmbientOcclusionTilesVS;
-    vtkShaderProgram::Substitute(vs, "//LineAO::Common", vtkLineAmbientOcclusionCommon);
+    vtkShaderProgram::Substitute(
+      vs, "//SV::LineAmbientOcclusionCommon::Dec", vtkLineAmbientOcclusionCommon);
     vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", "#define LINE_AO_TILES\n" + declarations);
     vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", entryPoints[stage]);
     program = window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 //VTK::System::Dec
-//LineAO::Common
+//SV::LineAmbientOcclusionCommon::Dec
 // Tiles for the halo stage of vtkLineAmbientOcclusionPass: the window is cut
 // into aoTileSize x aoTileSize pixel tiles, drawn as two triangles each
 // (glDrawArrays(GL_TRIANGLES, 0, 6 x tiles), no vertex attributes), and a
