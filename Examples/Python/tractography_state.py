@@ -21,7 +21,11 @@ Steps:
      region and the next frame shows the new selection;
    - Direction Coloring colors them RGB = |tangent| (red left-right, green
      front-back, blue up-down);
-   - halos give the depth cue.
+   - the view is a "Render View (Line Depth Cues)": ambient occlusion
+     darkens the fibers where others lie close around them, and
+     depth-dependent halos separate fibers that cross far apart in depth
+     while a tight bundle stays one (they replace the stylized lines' own
+     halos, whose Halo Width stays 0).
 5. Draw the middle axial slice of the fractional anisotropy (Tensor
    Analysis) in grey underneath.
 """
@@ -68,7 +72,10 @@ analysis = TensorAnalysis(Input=dti)  # noqa: F405
 analysis.Tensors = ["POINTS", "DTI"]
 analysis.TensorLayout = "XX XY YY XZ YZ ZZ (NIfTI, DIPY)"
 
-view = CreateRenderView()  # noqa: F405
+# A render view with line depth cues (vtkLineAmbientOcclusionPass).
+view = CreateView("RenderViewWithLineDepthCues")  # noqa: F405
+view.AmbientOcclusion = 1
+view.DepthHalos = 1
 view.ViewSize = [900, 700]
 view.OrientationAxesVisibility = 0
 view.UseColorPaletteForBackground = 0

@@ -45,6 +45,17 @@ for display, representation in expected.items():
         print("ERROR: %s shows '%s', expected the plugin's '%s'" % (display, used, representation))
         sys.exit(1)
 
+if name == "tractography_state":
+    # The depth cues come from the line depth-cue view (ambient occlusion and
+    # depth-dependent halos).
+    view = state["view"]
+    print("view: %s, ambient occlusion %d, depth halos %d"
+          % (view.GetXMLName(), view.AmbientOcclusion, view.DepthHalos))
+    if view.GetXMLName() != "RenderViewWithLineDepthCues" or not view.AmbientOcclusion \
+            or not view.DepthHalos:
+        print("ERROR: the tractography example does not show its depth cues")
+        sys.exit(1)
+
 drawn = drawn_fraction(png)
 print("fraction of the picture that is not background: %.3f" % drawn)
 if drawn < 0.05:
