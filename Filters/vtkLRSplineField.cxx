@@ -6,12 +6,17 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDataObjectTree.h"
+#include "vtkDataObjectTreeIterator.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationDataObjectKey.h"
 #include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineGeometryMap.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
@@ -500,4 +505,36 @@ bool vtkLRSplineField::BuildCached(std::unique_ptr<vtkLRSplineField>& field, std
   field = std::move(fresh);
   key = k.str();
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkInformationKeyMacro(vtkLRSplineField, TRIMMING_SURFACE, DataObject);
+
+vtkPolyData* vtkLRSplineField::GetTrimmingSurface(vtkDataObject* spline)
+{
+  // In the meta-data of a top-level block: it survives the shallow copies a
+  // pipeline makes (ParaView's post filters), which the data object's own
+  // information does not.
+  auto* tree = vtkDataObjectTree::SafeDownCast(spline);
+  if (!tree)
+  {
+    return nullptr;
+  }
+  vtkSmartPointer<vtkDataObjectTreeIterator> it;
+  it.TakeReference(tree->NewTreeIterator());
+  it->TraverseSubTreeOff();
+  it->VisitOnlyLeavesOff();
+  it->SkipEmptyNodesOff();
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    if (it->HasCurrentMetaData())
+    {
+      if (auto* surface =
+            vtkPolyData::SafeDownCast(it->GetCurrentMetaData()->Get(TRIMMING_SURFACE())))
+      {
+        return surface;
+      }
+    }
+  }
+  return nullptr;
 }

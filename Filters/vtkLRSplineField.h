@@ -39,11 +39,26 @@
 
 class vtkAlgorithm;
 class vtkDataObject;
+class vtkInformationDataObjectKey;
 class vtkPointData;
+class vtkPolyData;
 
 class SPLINEVIZ_EXPORT vtkLRSplineField
 {
 public:
+  /**
+   * Key of a spline block's meta-data: the closed surface of the data the
+   * spline was fitted to (vtkPolyData). vtkLRSplineFitter sets it on its
+   * spline output's block when it extracts the data's boundary
+   * (ExtractBoundary), so that vtkLRSplineVolumeMapper and ParaView's
+   * LR-Spline Volume representation trim by it (Fuchs et al. §4.1) when no
+   * trimming surface is connected. Shallow copies keep it; filters that make
+   * new blocks drop it.
+   */
+  static vtkInformationDataObjectKey* TRIMMING_SURFACE();
+  /// The TRIMMING_SURFACE of a top-level block of `spline`; null if none has one.
+  static vtkPolyData* GetTrimmingSurface(vtkDataObject* spline);
+
   /**
    * Build from a data object. `arrayName` null or empty: the active vectors
    * (else scalars) of the first patch; `blocks` the k-d forest resolution

@@ -4,6 +4,7 @@
 #include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineElementLocator.h"
+#include "vtkLRSplineField.h"
 #include "vtkLRSplineFitCore.h"
 #include "vtkLRSplinePatch.h"
 #include "vtkSplineVizLocalOutliers.h"
@@ -1105,10 +1106,19 @@ int vtkLRSplineFitter::RequestData(
   output->SetNumberOfBlocks(1);
   output->SetBlock(0, grid);
   output->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), "Patch 0");
+  output->GetMetaData(0u)->Remove(vtkLRSplineField::TRIMMING_SURFACE());
   if (!this->BuildBoundary(leaves, boundary))
   {
     output->Initialize();
     return 0;
+  }
+  if (boundary && boundary->GetNumberOfPolys() > 0)
+  {
+    // The boundary travels with the spline too, so that a volume mapper or
+    // the LR-Spline Volume representation trims by it without being told.
+    vtkNew<vtkPolyData> trimming;
+    trimming->ShallowCopy(boundary);
+    output->GetMetaData(0u)->Set(vtkLRSplineField::TRIMMING_SURFACE(), trimming);
   }
   this->FitTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   vtkNew<vtkDoubleArray> seconds;

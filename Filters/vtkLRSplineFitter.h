@@ -29,8 +29,10 @@
  * Output port 0: one block in the format of vtkLRSplineReader with the
  * image fitter's "LRFit..." cell and field data (plus "LRFitDomain"), for the
  * volume mapper, probe and stream tracer. Output port 1: the data's boundary
- * surface (triangles, consistently oriented; empty for point clouds), for
- * the volume mapper's trimming input. Output port 2: the outliers left out
+ * surface (triangles, consistently oriented; empty for point clouds), also
+ * attached to port 0's spline as vtkLRSplineField::TRIMMING_SURFACE, so that
+ * vtkLRSplineVolumeMapper trims by it without being connected to it (Fuchs
+ * et al. trim by the mesh's surface). Output port 2: the outliers left out
  * (RemoveOutliers; vertices, empty otherwise). FileName: also write a .lr file (read
  * it back with PhysicalBounds = LRFitDomain). Every piece fits all the data.
  *
@@ -209,7 +211,8 @@ public:
   ///@}
 
   ///@{
-  /// Output port 1 gets the data's boundary surface (default on).
+  /// Output port 1 gets the data's boundary surface, and the spline carries it
+  /// for trimming (default on).
   vtkSetMacro(ExtractBoundary, vtkTypeBool);
   vtkGetMacro(ExtractBoundary, vtkTypeBool);
   vtkBooleanMacro(ExtractBoundary, vtkTypeBool);

@@ -657,6 +657,21 @@ void vtkLRSplineVolumeMapper::SetTrimmingSurfaceData(vtkPolyData* surface)
   this->SetInputDataInternal(1, surface);
 }
 
+vtkPolyData* vtkLRSplineVolumeMapper::GetTrimmingSurface()
+{
+  if (this->GetNumberOfInputConnections(1) > 0)
+  {
+    this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
+  }
+  if (auto* surface = vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0)))
+  {
+    return surface;
+  }
+  return this->TrimByDataBoundary
+    ? vtkLRSplineField::GetTrimmingSurface(this->GetInputDataObject(0, 0))
+    : nullptr;
+}
+
 //------------------------------------------------------------------------------
 vtkIdType vtkLRSplineVolumeMapper::GetNumberOfElements()
 {
@@ -1093,11 +1108,7 @@ bool vtkLRSplineVolumeMapper::RenderTrimmingDepths(
   vtkInternals& in = *this->Internals;
   vtkOpenGLRenderWindow* window = in.Window;
   vtkOpenGLState* state = window->GetState();
-  if (this->GetNumberOfInputConnections(1) > 0)
-  {
-    this->GetInputAlgorithm(1, 0)->Update(this->GetInputConnection(1, 0)->GetIndex());
-  }
-  vtkPolyData* surface = vtkPolyData::SafeDownCast(this->GetInputDataObject(1, 0));
+  vtkPolyData* surface = this->GetTrimmingSurface();
   std::ostringstream key;
   key << surface << ' ' << (surface ? surface->GetMTime() : 0);
   if (key.str() != in.TrimKey)
@@ -1376,10 +1387,10 @@ std::string vtkLRSplineVolumeMapper::BuildFragmentShaderSource(
                  : (this->VectorMode == COMPONENT ? this->VectorComponent : -1))
           << "\n#define LR_BLEND " << this->BlendMode << "\n#define LR_SHADE " << (shade ? 1 : 0)
           << "\n#define LR_FUCHS " << (this->ShadingModel == FUCHS ? 1 : 0) << "\n#define LR_TRIM "
-          << (this->GetNumberOfInputConnections(1) > 0 || this->GetInputDataObject(1, 0) ? 1 : 0)
-          << "\n#define LR_SAMPLE_COUNT " << (this->CountSamples ? 1 : 0) << "\n#define LR_PATCHES "
-          << in.Patches.size() << "\n#define LR_CURVED " << (in.Curved ? 1 : 0)
-          << "\n#define LR_MULTIPASS " << (multiPass ? 1 : 0) << "\n#define LR_SUPERSAMPLING "
+          << (this->GetTrimmingSurface() ? 1 : 0) << "\n#define LR_SAMPLE_COUNT "
+          << (this->CountSamples ? 1 : 0) << "\n#define LR_PATCHES " << in.Patches.size()
+          << "\n#define LR_CURVED " << (in.Curved ? 1 : 0) << "\n#define LR_MULTIPASS "
+          << (multiPass ? 1 : 0) << "\n#define LR_SUPERSAMPLING "
           << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
           << "\n#define LR_LIGHTS " << numberOfLights << "\n#define LR_MAX_PATCHES "
           << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
@@ -2009,6 +2020,7 @@ void vtkLRSplineVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "IsosurfaceBisections: " << this->IsosurfaceBisections << "\n";
   os << indent << "MaximumNumberOfSteps: " << this->MaximumNumberOfSteps << "\n";
   os << indent << "CountSamples: " << this->CountSamples << "\n";
+  os << indent << "TrimByDataBoundary: " << this->TrimByDataBoundary << "\n";
   os << indent << "NumberOfElements: " << this->GetNumberOfElements() << "\n";
   os << indent << "LastErrorMessage: " << this->Internals->Error << "\n";
 }

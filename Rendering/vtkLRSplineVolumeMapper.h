@@ -64,7 +64,9 @@
  *   (SetTrimmingSurfaceConnection, e.g. a vtkSTLReader): only its inside is
  *   rendered, between its nearest front face and its farthest back face
  *   along each ray (a depth pre-pass of both; exact for surfaces that a ray
- *   enters and leaves once).
+ *   enters and leaves once). Without one, a spline that vtkLRSplineFitter
+ *   made is trimmed by the boundary of the data it was fitted to
+ *   (vtkLRSplineField::TRIMMING_SURFACE), as Fuchs et al. trim by the mesh.
  *
  * Bad input (no scalars, a surface spline, rational data over a parameter box
  * (field mode), NaN coefficients,
@@ -311,11 +313,30 @@ public:
   ///@{
   /**
    * The trimming surface (input port 1, optional): a closed vtkPolyData of
-   * polygons in the volume's data coordinates.
+   * polygons in the volume's data coordinates. Without one, the input's
+   * vtkLRSplineField::TRIMMING_SURFACE (the fitted data's boundary) if it
+   * has one (TrimByDataBoundary).
    */
   void SetTrimmingSurfaceConnection(vtkAlgorithmOutput* output);
   void SetTrimmingSurfaceData(vtkPolyData* surface);
   ///@}
+
+  ///@{
+  /**
+   * Trim by the input's vtkLRSplineField::TRIMMING_SURFACE (the boundary of
+   * the data vtkLRSplineFitter fitted) when port 1 has no surface. Default on;
+   * off shows the whole fitted box.
+   */
+  vtkSetMacro(TrimByDataBoundary, bool);
+  vtkGetMacro(TrimByDataBoundary, bool);
+  vtkBooleanMacro(TrimByDataBoundary, bool);
+  ///@}
+
+  /**
+   * The surface the next render trims by (port 1's, brought up to date, else
+   * the input's TRIMMING_SURFACE with TrimByDataBoundary); null: none.
+   */
+  vtkPolyData* GetTrimmingSurface();
 
   /**
    * Debugging and tests: instead of colors, write the number of spline
@@ -380,6 +401,7 @@ protected:
   int MaximumNumberOfSteps = 0;
   int MaximumStepsPerPass = 0;
   bool CountSamples = false;
+  bool TrimByDataBoundary = true;
   int WarnedSteps = 0; // the step count last checked against llvmpipe's loop limit
 
 private:

@@ -121,8 +121,9 @@ def render(p_fit, u_fit, png, trimmed, size=(900, 420)):
     mapper = splineviz.vtkLRSplineVolumeMapper()
     mapper.SetInputConnection(p_fit.GetOutputPort(0))
     mapper.SetFieldArrayName("p")
-    if trimmed:
-        mapper.SetTrimmingSurfaceConnection(p_fit.GetOutputPort(1))
+    # Trimmed by the mesh's boundary, which the fitted spline carries; the
+    # untrimmed picture turns that off.
+    mapper.SetTrimByDataBoundary(trimmed)
     volume = vtkVolume()
     volume.SetMapper(mapper)
     volume.SetProperty(prop)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineVolumeRepresentation.h"
 
+#include "vtkLRSplineField.h"
+
 #include "vtkAlgorithmOutput.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCompositeDataIterator.h"
@@ -176,15 +178,21 @@ int vtkLRSplineVolumeRepresentation::RequestData(
       }
     }
   }
-  if (inputVector[1]->GetNumberOfInformationObjects() == 1)
+  // The Trimming Surface chosen, else the boundary of the data an LR-Spline
+  // Fit fitted (vtkLRSplineField::TRIMMING_SURFACE on its spline).
+  vtkPolyData* surface = inputVector[1]->GetNumberOfInformationObjects() == 1
+    ? vtkPolyData::GetData(inputVector[1], 0)
+    : nullptr;
+  if (!surface && this->TrimByDataBoundary && inputVector[0]->GetNumberOfInformationObjects() == 1)
   {
-    if (vtkPolyData* surface = vtkPolyData::GetData(inputVector[1], 0))
-    {
-      this->TrimmingSurface = vtkSmartPointer<vtkPolyData>::New();
-      this->TrimmingSurface->ShallowCopy(surface);
-      this->HasTrimmingSurface = this->TrimmingSurface->GetNumberOfPolys() > 0 ||
-        this->TrimmingSurface->GetNumberOfStrips() > 0;
-    }
+    surface = vtkLRSplineField::GetTrimmingSurface(vtkDataObject::GetData(inputVector[0], 0));
+  }
+  if (surface)
+  {
+    this->TrimmingSurface = vtkSmartPointer<vtkPolyData>::New();
+    this->TrimmingSurface->ShallowCopy(surface);
+    this->HasTrimmingSurface = this->TrimmingSurface->GetNumberOfPolys() > 0 ||
+      this->TrimmingSurface->GetNumberOfStrips() > 0;
   }
   if (vtkMath::AreBoundsInitialized(this->DataBounds))
   {
@@ -505,6 +513,16 @@ SV_FORWARD(SetMaximumNumberOfSteps, int)
 #undef SV_FORWARD
 
 //------------------------------------------------------------------------------
+void vtkLRSplineVolumeRepresentation::SetTrimByDataBoundary(bool trim)
+{
+  if (this->TrimByDataBoundary != trim)
+  {
+    this->TrimByDataBoundary = trim;
+    this->MarkModified(); // RequestData chooses the surface it delivers
+  }
+}
+
+//------------------------------------------------------------------------------
 // The block selection.
 void vtkLRSplineVolumeRepresentation::SetActiveAssembly(const char* name)
 {
@@ -530,6 +548,7 @@ void vtkLRSplineVolumeRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "RenderingRank: " << GetRenderingRank() << "\n";
   os << indent << "HasTrimmingSurface: " << this->HasTrimmingSurface << "\n";
+  os << indent << "TrimByDataBoundary: " << this->TrimByDataBoundary << "\n";
   os << indent << "VolumeMapper:\n";
   this->VolumeMapper->PrintSelf(os, indent.GetNextIndent());
 }

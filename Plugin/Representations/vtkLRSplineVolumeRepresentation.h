@@ -112,6 +112,12 @@ public:
   void SetMaximumNumberOfSteps(int steps);
   ///@}
 
+  /**
+   * Without a Trimming Surface, trim by the boundary of the data an LR-Spline
+   * Fit fitted (vtkLRSplineField::TRIMMING_SURFACE on its spline). Default on.
+   */
+  void SetTrimByDataBoundary(bool trim);
+
   ///@{
   /**
    * Forwarded to a vtkExtractBlockUsingDataAssembly before the mapper: the
@@ -179,6 +185,7 @@ protected:
   vtkSmartPointer<vtkPolyData> TrimmingSurface; // what this rank delivers on port 1
   vtkSmartPointer<vtkPolyData> Outline;         // the LOD picture
   bool HasTrimmingSurface = false;
+  bool TrimByDataBoundary = true;
   std::string LastWarning;
 
 private:

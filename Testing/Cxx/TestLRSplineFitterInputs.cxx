@@ -14,9 +14,15 @@
 //    fitted domain evaluates like the output;
 //  - output port 1: the mesh's boundary surface, closed (no boundary or
 //    non-manifold edges) with the mesh's bounds; empty for a point cloud;
+//  - the spline carries that surface (vtkLRSplineField::TRIMMING_SURFACE)
+//    and vtkLRSplineVolumeMapper trims by it unconnected; controls: not with
+//    TrimByDataBoundary off, not with ExtractBoundary off, not for a point
+//    cloud, and a connected surface wins;
 //  - pieces split the elements.
+#include "vtkLRSplineField.h"
 #include "vtkLRSplineFitter.h"
 #include "vtkLRSplineReader.h"
+#include "vtkLRSplineVolumeMapper.h"
 
 #include "LRSplineFitTestImages.h"
 #include "SplineVizTestUtilities.h"
@@ -31,6 +37,7 @@
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkSphereSource.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnstructuredGrid.h"
 
@@ -216,7 +223,31 @@ int TestLRSplineFitterInputs(int, char*[])
                 << std::endl;
       SV_CHECK(status, edges->GetOutput()->GetNumberOfLines() == 0);
       SV_CHECK(status, off == 0.0);
+
+      // The spline carries the same surface, which the volume mapper trims by.
+      vtkPolyData* carried = vtkLRSplineField::GetTrimmingSurface(run.Output());
+      SV_CHECK(status, carried && carried != boundary);
+      if (carried)
+      {
+        SV_CHECK(status, carried->GetNumberOfPolys() == boundary->GetNumberOfPolys());
+        SV_CHECK(status, carried->GetPoints()->GetData() == boundary->GetPoints()->GetData());
+      }
+      vtkNew<vtkLRSplineVolumeMapper> mapper;
+      mapper->SetInputConnection(run.Fitter->GetOutputPort(0));
+      mapper->Update();
+      SV_CHECK(status, mapper->GetTrimmingSurface() == carried);
+      mapper->TrimByDataBoundaryOff();
+      SV_CHECK(status, mapper->GetTrimmingSurface() == nullptr);
+      mapper->TrimByDataBoundaryOn();
+      vtkNew<vtkSphereSource> sphere;
+      mapper->SetTrimmingSurfaceConnection(sphere->GetOutputPort());
+      SV_CHECK(status, mapper->GetTrimmingSurface() == sphere->GetOutput());
     }
+    // Without the boundary, nothing to trim by.
+    run.Fitter->ExtractBoundaryOff();
+    run.Fitter->SetFileName(nullptr);
+    SV_CHECK_MSG(status, run.Run(mesh), run.Error());
+    SV_CHECK(status, !vtkLRSplineField::GetTrimmingSurface(run.Output()));
 
     // The file read back in the fitted domain.
     vtkNew<vtkLRSplineReader> reader;
@@ -307,6 +338,7 @@ int TestLRSplineFitterInputs(int, char*[])
     SV_CHECK_MSG(status, run.Run(cloud), run.Error());
     vtkPolyData* boundary = vtkPolyData::SafeDownCast(run.Fitter->GetOutputDataObject(1));
     SV_CHECK(status, boundary && boundary->GetNumberOfCells() == 0);
+    SV_CHECK(status, !vtkLRSplineField::GetTrimmingSurface(run.Output()));
   }
   return status.Result();
 }

@@ -15,7 +15,9 @@ data), fitted by "LR-Spline Fit" to 5 % of the range of p and of |U|:
 - the p spline rendered by the "LR-Spline Volume" representation trimmed by
   the fitter's Boundary Surface port draws no pixel outside the silhouette
   of the mesh within the spline's domain (the box of the cell centres) and
-  fills it; negative control: untrimmed, it draws outside. Its colours
+  fills it; shown without a Trimming Surface it is trimmed the same way
+  (the spline carries the boundary; pixel for pixel the same picture);
+  negative control: Trim By Data Boundary off, it draws outside. Its colours
   match ParaView's own unlit surface of the mesh coloured by the cell values
   (median difference at most 8 of 255, 95th percentile 30); negative
   control: the first time step's fit differs (median above 8)."""
@@ -272,10 +274,19 @@ GetColorTransferFunction("p").RescaleTransferFunction(*p_range)  # noqa: F405
 GetOpacityTransferFunction("p").Points = [p_range[0], 1, 0.5, 0,  # noqa: F405
                                           p_range[1], 1, 0.5, 0]
 display.LRSplineScalarOpacityUnitDistance = 0.0005
+# Trimmed by default: the spline carries the mesh's boundary.
+automatic_rgb = picture_rgb("trimmed-automatic")
+display.TrimByDataBoundary = 0
 untrimmed = picture("untrimmed")
+display.TrimByDataBoundary = 1
 display.TrimmingSurface = boundary
 trimmed_rgb = picture_rgb("trimmed")
 trimmed = drawn_mask(trimmed_rgb)
+automatic_differs = int((abs(automatic_rgb - trimmed_rgb).max(axis=2) > 0).sum())
+print("automatic trimming: %d pixels differ from the Trimming Surface chosen by hand"
+      % automatic_differs)
+if automatic_differs:
+    fail("the automatic trimming differs from the boundary chosen as Trimming Surface")
 # Negative control for the colours: the first time step's fit.
 view.ViewTime = reader.TimestepValues[0]
 first_rgb = picture_rgb("trimmed-first-step")

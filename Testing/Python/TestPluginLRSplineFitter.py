@@ -7,7 +7,9 @@ tolerance met; every property of the proxy is documented; the second output
 port is the mesh's boundary surface; the fitted volume rendered by the
 "LR-Spline Volume" representation with that surface as Trimming Surface draws
 no pixel outside the surface's own silhouette, while the untrimmed volume
-(negative control) does, and leaves no holes in it (a clipped mesh's non-conforming
+(Trim By Data Boundary off, negative control) does, and leaves no holes in it;
+shown without a Trimming Surface it draws the same pixels (the spline carries
+its boundary) (a clipped mesh's non-conforming
 faces once made some); Remove Outliers finds exactly five spiked values and
 shows them on the third port; a bad setting fails with the fitter's error."""
 import os
@@ -100,9 +102,16 @@ Hide(boundary, view)  # noqa: F405
 display = Show(fit, view)  # noqa: F405
 display.SetRepresentationType("LR-Spline Volume")
 ColorBy(display, ("POINTS", "RTData"))  # noqa: F405
+automatic = drawn_mask(picture("trimmed-automatic"))  # the spline carries its boundary
+display.TrimByDataBoundary = 0
 untrimmed = drawn_mask(picture("untrimmed"))
+display.TrimByDataBoundary = 1
 display.TrimmingSurface = boundary
 trimmed = drawn_mask(picture("trimmed"))
+print("automatic trimming: %d pixels differ from the boundary chosen as Trimming Surface"
+      % (automatic != trimmed).sum())
+if (automatic != trimmed).any():
+    fail("the automatic trimming differs from the boundary chosen as Trimming Surface")
 outside = trimmed & ~silhouette
 untrimmed_outside = untrimmed & ~silhouette
 print("silhouette %.3f, trimmed %.3f, drawn outside %d px (untrimmed: %d px)"
