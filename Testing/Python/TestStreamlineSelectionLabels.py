@@ -13,7 +13,8 @@ around its index) by the separating-axis theorem; end points by their
 nearest voxel. Cell-data labels of a vtkImageData are tested the same way
 against world boxes. Negative controls: the reference with the flip left out
 of the affine, and one sampling only the vertices, disagree. Bad input: an
-empty label set, a missing or three-component array, no image.
+empty label set, a missing or three-component array, no image, a singular
+placement (spacing 0), a label array that does not match the extent.
 """
 import os
 import sys
@@ -304,7 +305,23 @@ vec = numpy_to_vtk(np.zeros((image.GetNumberOfPoints(), 3)), deep=True)
 vec.SetName("labels")
 vector_image.GetPointData().RemoveArray("labels")
 vector_image.GetPointData().AddArray(vec)
+# Image spaces that do not fit: a flat placement (spacing 0 along z), and a
+# label array shorter than the image's extent.
+flat_image = vtkImageData()
+flat_image.DeepCopy(image)
+flat_image.SetSpacing(image.GetSpacing()[0], image.GetSpacing()[1], 0.0)
+short_image = vtkImageData()
+short_image.DeepCopy(image)
+short = numpy_to_vtk(np.ones(image.GetNumberOfPoints() - 7), deep=True)
+short.SetName("labels")
+short_image.GetPointData().RemoveArray("labels")
+short_image.GetPointData().AddArray(short)
 for what, add, phrase in (
+        ("a singular placement", lambda f: f.AddLabelImage(flat_image, "labels", one, S.INCLUDE),
+         "placement (spacing, direction) is singular"),
+        ("an array shorter than the extent",
+         lambda f: f.AddLabelImage(short_image, "labels", one, S.INCLUDE),
+         "does not match its extent"),
         ("empty label set", lambda f: f.AddLabelImage(image, "labels", empty, S.INCLUDE), "empty"),
         ("no such array", lambda f: f.AddLabelImage(image, "nothing", one, S.INCLUDE),
          "no one-component point or cell array named 'nothing'"),
