@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineProbeFilter.h"
 
+#include "vtkSplineVizPieces.h"
 #include "vtkLRSplineField.h"
 #include "vtkSplineVizProgress.h"
 
@@ -78,14 +79,8 @@ int vtkLRSplineProbeFilter::RequestUpdateExtent(
     inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
       outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()));
   }
-  vtkInformation* sourceInfo = inputVector[1]->GetInformationObject(0);
-  if (sourceInfo)
-  {
-    // The whole spline everywhere.
-    sourceInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-    sourceInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-    sourceInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-  }
+  // The whole spline everywhere.
+  vtkSplineVizPieces::RequestWholeInput(inputVector[1]->GetInformationObject(0));
   return 1;
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineResampleToImage.h"
 
+#include "vtkSplineVizPieces.h"
 #include "vtkLRSplineField.h"
 #include "vtkSplineVizProgress.h"
 
@@ -64,13 +65,7 @@ int vtkLRSplineResampleToImage::RequestInformation(
 int vtkLRSplineResampleToImage::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
 {
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  if (inInfo)
-  {
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
-  }
+  vtkSplineVizPieces::RequestWholeInput(inputVector[0]->GetInformationObject(0));
   return 1;
 }
 

@@ -2,7 +2,8 @@
 /**
  * The piece of its output an update asks an algorithm for, as ParaView's
  * parallel pipeline sets it (UPDATE_PIECE_NUMBER of UPDATE_NUMBER_OF_PIECES):
- * shared by the readers and filters that make only their piece.
+ * shared by the readers and filters that make only their piece; and the
+ * request for all of an input, shared by those that need all of it.
  *
  * Header-only, private to the module.
  */
@@ -31,6 +32,29 @@ inline void GetRequested(vtkInformation* outInfo, int& piece, int& numberOfPiece
     piece = std::max(0,
       std::min(
         outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()), numberOfPieces - 1));
+  }
+}
+
+/**
+ * Asks an input (`inInfo`, may be null) for all of its data, whatever piece
+ * of the output is requested: piece 0 of 1, no ghost levels, and for
+ * structured data its whole extent. For the algorithms that need the whole
+ * input on every rank (the fitters, the spline sources of probes and
+ * resampling).
+ */
+inline void RequestWholeInput(vtkInformation* inInfo)
+{
+  if (!inInfo)
+  {
+    return;
+  }
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  if (inInfo->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+  {
+    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(),
+      inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()), 6);
   }
 }
 }
