@@ -11,7 +11,9 @@ streamlines add up to the file's; the composited image of two ranks equals
 the single process's (all streamlines, and a random half: the subset does
 not depend on the number of ranks). Negative control: the image of the
 random half differs from the image of all streamlines by far more than the
-tolerance.
+tolerance. Bad input: with a NaN among the numbers in the second rank's
+half, that rank reports the reader's error and holds nothing, the first
+draws its half, and the run finishes.
 """
 import glob
 import json
@@ -37,6 +39,15 @@ if sys.argv[1] == "make":
         lines.append((start + 0.6 * np.cumsum(tangents, axis=0)).astype(np.float32))
     nib.streamlines.save(Tractogram(lines, affine_to_rasmm=np.eye(4)), tck)
     print("wrote %s: %d streamlines, %d points" % (tck, len(lines), sum(len(s) for s in lines)))
+    # The same file damaged in the second rank's half: a NaN among the numbers
+    # of a point at three quarters of the data.
+    data = bytearray(open(tck, "rb").read())
+    offset = nib.streamlines.TckFile._read_header(open(tck, "rb"))["_offset_data"]
+    triplets = np.frombuffer(bytes(data[offset:]), "<f4").reshape(-1, 3)
+    j = len(triplets) * 3 // 4
+    j += int(np.argmax(np.isfinite(triplets[j:, 0])))
+    data[offset + 12 * j:offset + 12 * j + 4] = np.float32(np.nan).tobytes()
+    open(os.path.join(out, "tracts-damaged.tck"), "wb").write(data)
     sys.exit(0)
 
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
@@ -100,6 +111,27 @@ b = read(os.path.join(out, "1rank-half.png"))
 wrong = int((abs(a - b).max(axis=1) > 24).sum())
 check(wrong > 10 * (int((a.min(axis=1) < 250).sum()) // 1000),
       "negative control: the random half's image differs from all streamlines' (%d pixels)" % wrong)
+
+# A piece damaged on the second rank: that rank reports the reader's error
+# and draws nothing, the first draws its half, and the run ends (no rank
+# waits for the other forever).
+damaged = shares("2ranks-damaged", "all")
+log = open(os.path.join(out, "2ranks-damaged.log"), errors="replace").read()
+status = open(os.path.join(out, "2ranks-damaged.status")).read().strip()
+print("damaged piece: exit status %s, ranks %s" % (status, damaged))
+check(status not in ("124", "137"), "damaged piece: the two ranks finish (exit status %s)" % status)
+check(any("vtkTractogramReader" in line and "ERR" in line and "piece 1 of 2" in line
+          and "pvbatch.1" in line for line in log.splitlines()),
+      "damaged piece: the second rank reports the reader's error for its piece")
+# (the damaged rank's reader fails, so the filter after it does not run there)
+check(len(damaged) == 1 and damaged[0]["rank"] == 0 and
+      0.35 * total < damaged[0]["cells"] < 0.65 * total,
+      "damaged piece: the first rank holds its half, the damaged one no output")
+picture = read(os.path.join(out, "2ranks-damaged-all.png"))
+drawn_damaged = int((picture.min(axis=1) < 250).sum())
+drawn_all = int((read(os.path.join(out, "2ranks-all.png")).min(axis=1) < 250).sum())
+check(5000 < drawn_damaged < drawn_all,
+      "damaged piece: the healthy half is drawn (%d pixels, all: %d)" % (drawn_damaged, drawn_all))
 
 checker.finish()
 print("parallel tractogram reading OK")

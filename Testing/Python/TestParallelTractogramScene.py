@@ -15,7 +15,10 @@ from paraview.simple import *  # noqa: F401,F403
 from splineviz_testing import white_view
 
 out, label = sys.argv[1], sys.argv[2]
-reader = OpenDataFile(os.path.join(out, "tracts.tck"))  # noqa: F405
+# LABEL ending in "-damaged": the file damaged in the second rank's half,
+# all streamlines only.
+damaged = label.endswith("-damaged")
+reader = OpenDataFile(os.path.join(out, "tracts-damaged.tck" if damaged else "tracts.tck"))  # noqa: F405
 shares = ProgrammableFilter(Input=reader)  # noqa: F405
 SCRIPT = """
 import json
@@ -34,7 +37,7 @@ self.GetOutput().ShallowCopy(data)
 """
 
 view = white_view((500, 400))
-for subset in ("all", "half"):
+for subset in ("all",) if damaged else ("all", "half"):
     if subset == "half":
         reader.SubsetMode = "Random Fraction"
         reader.SubsetFraction = 0.5
