@@ -26,12 +26,11 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkWindowToImageFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory)
 
 import splineviz
-from splineviz_testing import output_dir
+from splineviz_testing import offscreen_window, output_dir
 
 from splineviz_testing import Checker  # noqa: E402
 
@@ -86,14 +85,7 @@ def render(cls, name):
     prop.SetAmbient(1.0)
     prop.SetDiffuse(0.0)
     prop.SetSpecular(0.0)
-    ren = vtkRenderer()
-    ren.SetBackground(0, 0, 0)
-    ren.AddActor(actor)
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
-    win.SetMultiSamples(0)
-    win.SetSize(W, H)
-    win.AddRenderer(ren)
+    win, ren = offscreen_window(actor, (W, H), background=(0, 0, 0))
     cam = ren.GetActiveCamera()
     cam.ParallelProjectionOn()
     cam.SetParallelScale(SCALE)

@@ -10,21 +10,14 @@ draws none, and at least 20 % fewer pixels than the untrimmed one (negative
 control: without trimming the box shows around the duct)."""
 import os
 import runpy
-import subprocess
 import sys
 
-from splineviz_testing import drawn_mask, output_dir, png_rgb
+from splineviz_testing import drawn_mask, openfoam_case, output_dir, png_rgb
 
 source = os.environ["SPLINEVIZ_SOURCE_DIR"]
-case_dir = os.path.join(output_dir(), "openfoam", "angledDuct")
-run = subprocess.run([os.path.join(source, "scripts", "openfoam-case.sh"), case_dir],
-                     env=dict(os.environ, SPLINEVIZ_NO_INSTALL="1"),
-                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-if run.returncode != 0:
-    print(run.stderr)
-    print("ERROR: scripts/openfoam-case.sh failed")
+foam = openfoam_case(source)
+if foam is None:
     sys.exit(1)
-foam = run.stdout.strip().splitlines()[-1]
 
 out = os.path.join(output_dir(), "TestExampleOpenFOAM")
 pictures = [os.path.join(out, "lr-spline-fit-openfoam%s.png" % s) for s in ("", "-untrimmed")]

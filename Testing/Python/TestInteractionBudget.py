@@ -24,15 +24,14 @@ import statistics
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkIdList
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkWindowToImageFilter
 from vtkmodules.vtkFiltersCore import vtkExtractCells
 from vtkmodules.vtkFiltersGeometry import vtkGeometryFilter
 from vtkmodules.vtkIOImage import vtkPNGWriter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory)
 
 import splineviz
-from splineviz_testing import Checker, output_dir
+from splineviz_testing import Checker, offscreen_window, output_dir
 
 checker = Checker()
 check = checker.check
@@ -98,17 +97,10 @@ for name, cls in (("raycast", splineviz.vtkRayCastTubeMapper),
     mapper = cls()
     mapper.SetInputConnection(source.GetOutputPort())
     mapper.SetRadius(RADIUS)  # thin: the picture is not saturated
-    ren = vtkRenderer()
-    ren.SetBackground(1, 1, 1)
     actor = vtkActor()
     actor.SetMapper(mapper)
     actor.GetProperty().SetColor(0.8, 0.3, 0.2)
-    ren.AddActor(actor)
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
-    win.SetMultiSamples(0)
-    win.SetSize(W, H)
-    win.AddRenderer(ren)
+    win, ren = offscreen_window(actor, (W, H))
     ren.ResetCamera()
     ren.GetActiveCamera().Azimuth(30)
     ren.ResetCameraClippingRange()

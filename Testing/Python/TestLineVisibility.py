@@ -25,12 +25,11 @@ from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkPoints, vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkActor, vtkRenderWindow, vtkRenderer,
-                                         vtkWindowToImageFilter)
+from vtkmodules.vtkRenderingCore import vtkActor, vtkWindowToImageFilter
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory)
 
 import splineviz
-from splineviz_testing import Observed, output_dir
+from splineviz_testing import Observed, offscreen_window, output_dir
 
 from splineviz_testing import Checker  # noqa: E402
 
@@ -77,17 +76,10 @@ def polydata(points, lines, anchors):
 
 
 def render(mapper, camera_from, name):
-    ren = vtkRenderer()
-    ren.SetBackground(1, 1, 1)
     actor = vtkActor()
     actor.SetMapper(mapper)
     actor.GetProperty().SetColor(0.8, 0.3, 0.2)
-    ren.AddActor(actor)
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
-    win.SetMultiSamples(0)
-    win.SetSize(600, 450)
-    win.AddRenderer(ren)
+    win, ren = offscreen_window(actor, (600, 450))
     cam = ren.GetActiveCamera()
     cam.SetFocalPoint(*camera_from["focal"])
     cam.SetPosition(*camera_from["position"])

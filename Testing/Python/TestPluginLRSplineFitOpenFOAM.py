@@ -22,7 +22,6 @@ data), fitted by "LR-Spline Fit" to 5 % of the range of p and of |U|:
   (median difference at most 8 of 255, 95th percentile 30); negative
   control: the first time step's fit differs (median above 8)."""
 import os
-import subprocess
 import sys
 
 import numpy as np
@@ -36,7 +35,7 @@ from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 from vtkmodules.vtkFiltersCore import vtkProbeFilter
 
 import ifem_reference as ref
-from splineviz_testing import drawn_mask, output_dir, png_rgb, white_view
+from splineviz_testing import drawn_mask, openfoam_case, output_dir, png_rgb, white_view
 
 plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -49,15 +48,10 @@ def fail(message):
 
 
 source_dir = os.environ["SPLINEVIZ_SOURCE_DIR"]
-case_dir = os.path.join(output_dir(), "openfoam", "angledDuct")
-run = subprocess.run([os.path.join(source_dir, "scripts", "openfoam-case.sh"), case_dir],
-                     env=dict(os.environ, SPLINEVIZ_NO_INSTALL="1"),
-                     stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-if run.returncode != 0:
-    print(run.stderr)
+foam = openfoam_case(source_dir)
+if foam is None:
     fail("scripts/openfoam-case.sh failed")
     sys.exit(1)
-foam = run.stdout.strip().splitlines()[-1]
 
 reader = OpenFOAMReader(FileName=foam)  # noqa: F405
 reader.MeshRegions = ["internalMesh"]

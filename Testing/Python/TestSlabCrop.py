@@ -20,11 +20,11 @@ here with numpy). Checks:
 import numpy as np
 from vtkmodules.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkCommonCore import vtkFloatArray
-from vtkmodules.vtkRenderingCore import vtkActor, vtkRenderWindow, vtkRenderer
+from vtkmodules.vtkRenderingCore import vtkActor
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory)
 
 import splineviz
-from splineviz_testing import Observed, output_dir
+from splineviz_testing import Observed, offscreen_window, output_dir
 
 from splineviz_testing import Checker  # noqa: E402
 
@@ -58,14 +58,7 @@ def draw(cls, crop, normal_vector=normal):
         mapper.SetSlabThickness(thickness)
     actor = vtkActor()
     actor.SetMapper(mapper)
-    ren = vtkRenderer()
-    ren.SetBackground(1, 1, 1)
-    ren.AddActor(actor)
-    win = vtkRenderWindow()
-    win.SetOffScreenRendering(1)
-    win.SetMultiSamples(0)
-    win.SetSize(W, H)
-    win.AddRenderer(ren)
+    win, ren = offscreen_window(actor, (W, H))
     cam = ren.GetActiveCamera()
     cam.SetFocalPoint(*centre)
     cam.SetPosition(*(centre + np.array([0.9, -1.3, 0.6]) * extent))

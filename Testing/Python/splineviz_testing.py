@@ -156,3 +156,38 @@ def drawn_mask(rgb, background=(255, 255, 255), tolerance=3):
     """Per pixel of `rgb` (as png_rgb returns it): whether it differs from
     `background` by more than `tolerance` in some channel."""
     return abs(rgb - np.asarray(background)).max(axis=2) > tolerance
+
+
+def offscreen_window(actor, size, background=(1, 1, 1)):
+    """A single-sampled offscreen render window of `size` (width, height)
+    whose one renderer, with `background`, holds `actor`: the scene the VTK
+    (not ParaView) image tests draw. Returns (window, renderer)."""
+    from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory)
+
+    ren = vtkRenderer()
+    ren.SetBackground(*background)
+    ren.AddActor(actor)
+    win = vtkRenderWindow()
+    win.SetOffScreenRendering(1)
+    win.SetMultiSamples(0)
+    win.SetSize(*size)
+    win.AddRenderer(ren)
+    return win, ren
+
+
+def openfoam_case(source_dir):
+    """The .foam file of OpenFOAM's porous angled duct, run once by
+    scripts/openfoam-case.sh into the tests' output (SPLINEVIZ_NO_INSTALL: the
+    tests do not install packages); None after printing why it failed."""
+    import subprocess
+
+    case_dir = os.path.join(output_dir(), "openfoam", "angledDuct")
+    run = subprocess.run([os.path.join(source_dir, "scripts", "openfoam-case.sh"), case_dir],
+                         env=dict(os.environ, SPLINEVIZ_NO_INSTALL="1"),
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    if run.returncode != 0:
+        print(run.stderr)
+        print("ERROR: scripts/openfoam-case.sh failed")
+        return None
+    return run.stdout.strip().splitlines()[-1]
