@@ -31,10 +31,11 @@
 // common pixels whose eye depth (linearized with the camera's clipping range)
 // is within a quarter of the radius of the reference's (the radius seen at
 // each pixel: SplineVizTest::RadiusFrame, the reference colored by its radius).
-// Targets at every view: ray-cast IoU >= 0.98 and depth on >= 98 %;
-// tessellated IoU >= 0.95 and depth on >= 95 %; stylized lines IoU >= 0.95
-// (their depth correction is checked in TestStylizedLineReference; here
-// the depth share is printed).
+// Targets at every view: ray-cast tubes and stylized lines IoU >= 0.98 and
+// depth on >= 98 % (issue 26's bound; measured 0.995-0.9997 and 98.9-99.99 %
+// for the stylized lines); tessellated IoU >= 0.95 and depth on >= 95 %
+// (measured 0.979-0.9995 and 95.9-99.99 %: below issue 26's bound on the
+// curls' whole view and the dense bundle).
 // Negative controls, which must fail at the whole view: each renderer with
 // radii 15 % too small (the IoU target; not for the dense bundle, whose
 // coverage is saturated: thinner tubes cover the same pixels), and moved
@@ -229,8 +230,8 @@ int TestTubeFidelity(int, char*[])
       reference->SetInputData(referenceTubes);
       reference->ScalarVisibilityOff();
       auto mapper = MakeMapper(which, lines, scene.ConstantRadius);
-      const double iouTarget = which == RayCast ? 0.98 : 0.95;
-      const double depthTarget = which == RayCast ? 0.98 : (which == Tessellated ? 0.95 : 0.0);
+      const double iouTarget = which == Tessellated ? 0.95 : 0.98;
+      const double depthTarget = which == Tessellated ? 0.95 : 0.98;
       for (const View& view : Views)
       {
         const auto setup = MakeCamera(bounds, scene.Direction, scene.Target, view.Zoom);
@@ -289,7 +290,6 @@ int TestTubeFidelity(int, char*[])
           SV_CHECK_MSG(status, thinMeasure.IoU < iouTarget,
             name << ": radii 15 % too small must fail the IoU target, IoU " << thinMeasure.IoU);
         }
-        if (depthTarget > 0.0)
         {
           double shift[3];
           camera->GetDirectionOfProjection(shift);
