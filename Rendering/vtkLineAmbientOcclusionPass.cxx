@@ -45,6 +45,8 @@ struct vtkLineAmbientOcclusionPass::vtkInternals
   /// The full-screen stages' programs (the halo stage has its own vertex
   /// shader and no quad).
   std::unique_ptr<vtkOpenGLQuadHelper> Quads[StageHalos];
+  /// The halo stage's program (the window's shader cache owns it).
+  vtkShaderProgram* HaloProgram = nullptr;
   vtkNew<vtkOpenGLVertexArrayObject> TileArray;
   int TileSize = 8;
   int TileCount[2] = { 0, 0 };
@@ -102,6 +104,7 @@ struct vtkLineAmbientOcclusionPass::vtkInternals
         quad.reset();
       }
     }
+    this->HaloProgram = nullptr;
     this->TileArray->ReleaseGraphicsResources();
     for (vtkOpenGLFramebufferObject* fbo : { this->Framebuffer, this->StageFramebuffer })
     {
@@ -193,35 +196,49 @@ bool vtkLineAmbientOcclusionPass::RenderStageInto(const vtkRenderState* s,
 //------------------------------------------------------------------------------
 vtkShaderProgram* vtkLineAmbientOcclusionPass::ReadyStage(vtkOpenGLRenderWindow* window, int stage)
 {
-  static const char* const entryPoints[StageHalos + 1] = { "  lineAOPositionsMain();\n",
-    "  lineAOTilesMain();\n", "  lineAOCopyMain();\n", "  lineAOOcclusionMain();\n",
-    "  lineAOHaloMain();\n" };
-  std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
-  const std::string declarations =
-    std::string(vtkLineAmbientOcclusionCommon) + vtkLineAmbientOcclusionFS;
+  // The stage's fragment shader: the full-screen template calling its entry
+  // point (built once per program).
+  auto fragmentShader = [stage]()
+  {
+    static const char* const entryPoints[StageHalos + 1] = { "  lineAOPositionsMain();\n",
+      "  lineAOTilesMain();\n", "  lineAOCopyMain();\n", "  lineAOOcclusionMain();\n",
+      "  lineAOHaloMain();\n" };
+    std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
+    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl",
+      std::string(stage == StageHalos ? "#define LINE_AO_TILES\n" : "") +
+        vtkLineAmbientOcclusionCommon + vtkLineAmbientOcclusionFS);
+    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", entryPoints[stage]);
+    return fs;
+  };
+  vtkInternals& in = *this->Internals;
   vtkShaderProgram* program = nullptr;
   if (stage == StageHalos)
   {
     // Drawn tile by tile: its own vertex shader, the same fragment template.
-    std::string vs = vtkLineAmbientOcclusionTilesVS;
-    vtkShaderProgram::Substitute(
-      vs, "//SV::LineAmbientOcclusionCommon::Dec", vtkLineAmbientOcclusionCommon);
-    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", "#define LINE_AO_TILES\n" + declarations);
-    vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", entryPoints[stage]);
-    program = window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+    if (!in.HaloProgram)
+    {
+      std::string vs = vtkLineAmbientOcclusionTilesVS;
+      vtkShaderProgram::Substitute(
+        vs, "//SV::LineAmbientOcclusionCommon::Dec", vtkLineAmbientOcclusionCommon);
+      in.HaloProgram =
+        window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fragmentShader().c_str(), "");
+    }
+    else
+    {
+      window->GetShaderCache()->ReadyShaderProgram(in.HaloProgram);
+    }
+    program = in.HaloProgram;
     if (program && program->GetCompiled())
     {
-      this->Internals->TileArray->Bind();
+      in.TileArray->Bind();
     }
   }
   else
   {
-    std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Internals->Quads[stage];
+    std::unique_ptr<vtkOpenGLQuadHelper>& quad = in.Quads[stage];
     if (!quad)
     {
-      vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", declarations);
-      vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", entryPoints[stage]);
-      quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fs.c_str(), ""));
+      quad.reset(new vtkOpenGLQuadHelper(window, nullptr, fragmentShader().c_str(), ""));
     }
     else
     {

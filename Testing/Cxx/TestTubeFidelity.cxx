@@ -32,9 +32,9 @@
 // is within a quarter of the radius of the reference's (the radius seen at
 // each pixel: SplineVizTest::RadiusFrame, the reference colored by its radius).
 // Targets at every view: ray-cast tubes and stylized lines IoU >= 0.98 and
-// depth on >= 98 % (issue 26's bound; measured 0.995-0.9997 and 98.9-99.99 %
+// depth on >= 98 % (the whole-brain target; measured 0.995-0.9997 and 98.9-99.99 %
 // for the stylized lines); tessellated IoU >= 0.95 and depth on >= 95 %
-// (measured 0.979-0.9995 and 95.9-99.99 %: below issue 26's bound on the
+// (measured 0.979-0.9995 and 95.9-99.99 %: below that target on the
 // curls' whole view and the dense bundle).
 // Negative controls, which must fail at the whole view: each renderer with
 // radii 15 % too small (the IoU target; not for the dense bundle, whose
