@@ -4,16 +4,20 @@
 // geometry map x(u) and the field f(u) come from the LRSplines text alone
 // (lrtest::ParseLR): on every element each is a polynomial, recovered by
 // tensor-product Lagrange interpolation at Chebyshev points of the exact
-// LR B-spline sum (Cox-de Boor on the local knot vectors of the basis
-// functions whose support covers the element). Rational texts hold
-// homogeneous coefficients (w x, w y, w z, w) and (w f, w): x = X / W and
-// f = F / W, each with its own weight component. A physical point is found
-// by Newton's method on the patch's global parameter (element by element,
-// the boundary elements' polynomials extended outside the domain), started
-// from the linear approximation at the centre of the previous sample's
-// element or else of each element whose box (of the control points of its
-// basis functions: the convex hull property) contains the point; it lies in
-// the patch when Newton converges to a parameter inside the domain.
+// LR B-spline sum over the basis functions whose support covers the element,
+// each univariate B by lrtest::TruncatedPowerBSpline (the Curry-Schoenberg
+// divided difference of truncated powers on the function's local knot
+// vector, in double-double: a different algorithm from the production
+// code's Cox-de Boor recurrence, see LRSplineTestUtilities.h). Rational
+// texts hold homogeneous coefficients (w x, w y, w z, w) and (w f, w):
+// x = X / W and f = F / W, each with its own weight component. A physical
+// point is found by Newton's method on the patch's global parameter (element
+// by element, the boundary elements' polynomials extended outside the
+// domain), started from the linear approximation at the centre of the
+// previous sample's element or else of each element whose box (of the
+// control points of its basis functions: the convex hull property) contains
+// the point; it lies in the patch when Newton converges to a parameter
+// inside the domain.
 // Nothing here uses the SplineViz classes.
 #ifndef LRSplinePhysicalReference_h
 #define LRSplinePhysicalReference_h
@@ -218,7 +222,7 @@ private:
       double b = B.Gamma[i];
       for (int d = 0; d < 3; ++d)
       {
-        b *= CoxDeBoor(B.Knots[i][d], u[d], false);
+        b *= TruncatedPowerBSpline(B.Knots[i][d], u[d], false);
       }
       for (int c = 0; c < B.Dim; ++c)
       {

@@ -174,7 +174,7 @@ int TestLRSplineEvaluator(int, char*[])
         {
           v += bern[i] * basis[i];
         }
-        const double ref = lrtest::CoxDeBoor(t, a + s * (b - a), false);
+        const double ref = lrtest::TruncatedPowerBSpline(t, a + s * (b - a), false);
         worst = std::max(worst, std::abs(v - ref));
       }
       // Not inside one interval: refused.

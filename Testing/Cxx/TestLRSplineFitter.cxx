@@ -105,7 +105,7 @@ struct ReferenceSpline
     {
       for (const auto& t : Knots[d])
       {
-        b[d].push_back(lrtest::CoxDeBoor(t, x[d], x[d] >= Hi[d]));
+        b[d].push_back(lrtest::TruncatedPowerBSpline(t, x[d], x[d] >= Hi[d]));
       }
     }
     double s = 0.0;

@@ -352,7 +352,7 @@ std::vector<double> ProjectPoisson(const std::string& geometryText)
           b[i] = P.Gamma[i];
           for (int d = 0; d < 3 && b[i] != 0.0; ++d)
           {
-            b[i] *= lrtest::CoxDeBoor(P.Knots[i][d], u[d], false);
+            b[i] *= lrtest::TruncatedPowerBSpline(P.Knots[i][d], u[d], false);
           }
           if (b[i] != 0.0)
           {
