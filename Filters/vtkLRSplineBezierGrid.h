@@ -5,42 +5,32 @@
  * (volumes) or VTK_BEZIER_QUADRILATERAL (surfaces) cells with the patch's cell and field data
  * (the output format of vtkLRSplineReader and vtkIFEMReader).
  *
- * Plain C++ (not a vtkObject), the one place that writes this format; used by
- * vtkLRSplineReader (patches read from files), vtkIFEMReader (simulation
- * results) and vtkLRSplineImageFitter (patches fitted to images), so that
- * everything downstream (probe, resampling, stream tracer, the volume mapper,
- * ParaView) sees one format.
- *
- * Every LR element (or those of a piece [FirstElement, LastElement)) becomes
- * one Bezier cell whose control points carry the element's exact Bernstein
- * coefficients (vtkLRSplinePatch::ExtractBezier, Fuchs et al. §3.2.3). The
- * grid has
- * - cells: degrees (p, q, r), at least 1 (a piecewise constant direction is
- *   written as linear; a surface's third degree is 0);
- * - cell data: "HigherOrderDegrees" (set as the degrees array),
- *   "LRParameterBox" (6 values; w in [0, 1] for a surface), "LRElementId"
- *   (index of the element in its patch), "LRElementMinSide" (shortest side
- *   of the parameter box, times the field-mode scale);
- * - point data: by default the coefficients in an array named FieldName (the
- *   active vectors with 3 components, the active scalars with 1), or the
- *   arrays listed in PointArrays (chosen components, zero-padded); in
- *   geometry mode also "LRParameterCoordinates" (the Bezier coefficients of
- *   the parameter map, so that interpolating them gives the parameter) and,
- *   for rational patches, "RationalWeights" (VTK's rational Bezier weights);
- * - field data: "LRPatchIndex", "LRParametricDimension", "LRDegrees",
+ * Plain C++ (not a vtkObject), the one place that writes this format, used
+ * by vtkLRSplineReader, vtkIFEMReader and vtkLRSplineImageFitter, so that
+ * everything downstream (probe, resampling, stream tracer, volume mapper,
+ * ParaView) sees one format. Every LR element (or those of a piece
+ * [FirstElement, LastElement)) becomes one Bezier cell whose control points
+ * carry the element's exact Bernstein coefficients
+ * (vtkLRSplinePatch::ExtractBezier, Fuchs et al. §3.2.3). The grid has
+ * - cells of degrees (p, q, r), at least 1 (a surface's third degree is 0);
+ * - cell data "HigherOrderDegrees", "LRParameterBox" (6 values),
+ *   "LRElementId" (the element's index in its patch), "LRElementMinSide"
+ *   (its shortest parameter side, times the field-mode scale);
+ * - point data: the coefficients in an array named FieldName (or the arrays
+ *   of PointArrays); in geometry mode also "LRParameterCoordinates" (the
+ *   parameter map's coefficients) and, when rational, "RationalWeights";
+ * - field data "LRPatchIndex", "LRParametricDimension", "LRDegrees",
  *   "LRNumberOfBasisFunctions", "LRNumberOfElements",
- *   "LRNumberOfMeshRectangles", "LRRefinementLevels" (per direction, log2 of
- *   largest over smallest element side), "LRParameterDomain", "LRMode" (0
- *   field, 1 geometry), "LRRational" (0 or 1), "LRPhysicalTransform" (field
- *   mode: scale xyz, offset xyz with x = offset + scale * u) and
+ *   "LRNumberOfMeshRectangles", "LRRefinementLevels", "LRParameterDomain",
+ *   "LRMode" (0 field, 1 geometry), "LRRational", "LRPhysicalTransform"
+ *   (field mode: scale xyz, offset xyz, x = offset + scale * u) and
  *   "LRSourceFormat".
  *
  * Field mode places the control points at the equally spaced points of each
- * element's parameter box mapped by x = Offset + Scale * u (the Bezier form
- * of that affine map). Geometry mode takes the control points from the
- * coefficients (PointComponents, or the first 2 or 3 components); rational
- * coefficients must have been made rational Bezier ones first
- * (vtkLRSplineBezierVolume::Dehomogenize), WeightComponent naming the weight.
+ * element's parameter box mapped by x = Offset + Scale * u. Geometry mode
+ * takes them from the coefficients (PointComponents, or the first 2 or 3
+ * components); rational coefficients must have been made rational Bezier
+ * ones first (vtkLRSplineBezierVolume::Dehomogenize; WeightComponent).
  * MergePoints merges coincident control points with equal coefficients.
  */
 

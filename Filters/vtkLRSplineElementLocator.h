@@ -9,41 +9,24 @@
  *
  * - KD_FOREST (§3.2.1, Algorithm 1): the domain is divided into I x J x K
  *   regular blocks; each block holds a depth-balanced k-d tree over the
- *   elements that intersect it (split direction and value chosen by counting
- *   the elements left and right of each candidate element boundary); a block
- *   meeting one element stores that element directly. Works for arbitrary
- *   knot values (irrational ones too).
+ *   elements that intersect it (splits chosen by counting the elements on
+ *   either side of each candidate element boundary); a block meeting one
+ *   element stores it directly. Works for any knot values.
  * - KD_TREE: one such tree over the whole domain (the forest with 1 block).
- * - OCTREE (§3.2.2): for dyadic knots only (every element boundary at
- *   domain_min + k (domain_max - domain_min) / 2^l); regions are halved until
- *   each meets one element. Build() fails for other knots.
- * - TEXTURE: the lookup texture of §3.2 for dyadic knots: the forest whose
- *   blocks are the finest dyadic cells, so every block is a direct leaf
- *   (O(1)); Build() fails when the knots are not dyadic or the texture would
- *   exceed 2048 cells per direction or 2^27 cells.
+ * - OCTREE (§3.2.2): dyadic knots only (every element boundary at domain_min
+ *   + k (domain_max - domain_min) / 2^l); regions are halved until each meets
+ *   one element. Build() fails for other knots.
+ * - TEXTURE: the lookup texture of §3.2 for dyadic knots (the forest whose
+ *   blocks are the finest dyadic cells, O(1)); Build() fails for other knots
+ *   or beyond 2048 cells per direction or 2^27 cells.
  * - LINEAR: a scan over all elements (the reference).
  *
  * All return the same element: elements are half-open boxes [lo, hi) except
  * at the domain's upper faces, which belong to the elements touching them.
- * Points outside the domain (or in a hole of an invalid mesh) give -1.
- *
- * Flat arrays, uploadable to a GPU unchanged (Algorithm 1's layout):
- * - Heads: uint32 per block (i fastest, then j, then k). Bit 31 set: a leaf,
- *   bits 0-30 the element (0x7FFFFFFF: no element); otherwise the index of the
- *   block tree's root node.
- * - NodeWords: uint32 per node. Bit 31 set: a leaf, bits 0-30 the element.
- *   Otherwise bits 29-30 the split direction (0, 1, 2) and bits 0-28 the index
- *   of the LEFT child (points with p[dir] < split); the right child is the
- *   next node (index + 1).
- * - NodeSplits: double per node (the split value; GetNodeSplitsFloat() gives
- *   a float copy for a RG32F texture buffer).
- * - BlockEdges[d]: I+1 (J+1, K+1) block boundaries; the block of p is found
- *   exactly against these values.
- * - OctreeNodes: uint32 per node; bit 31 set: leaf (element in bits 0-30),
- *   else the index of the first of 8 children (child = x>=mid | y>=mid<<1 |
- *   z>=mid<<2, mid the midpoint of the node's region).
- *
- * Thread-safe for lookups (const) after Build().
+ * Points outside the domain (or in a hole of an invalid mesh) give -1. The
+ * structures are flat arrays that go to a GPU unchanged (GetHeads() and the
+ * other accessors, whose comment gives the layout). Thread-safe for lookups
+ * (const) after Build().
  */
 
 #ifndef vtkLRSplineElementLocator_h
@@ -115,7 +98,23 @@ public:
   void FindElementsIntersecting(const double box[6], std::vector<vtkIdType>& out) const;
 
   ///@{
-  /// The flat arrays (see the class documentation).
+  /**
+   * The flat arrays, uploadable to a GPU unchanged (Algorithm 1's layout):
+   * - Heads: uint32 per block (i fastest, then j, then k). Bit 31 set: a leaf,
+   *   bits 0-30 the element (0x7FFFFFFF: no element); otherwise the index of
+   *   the block tree's root node.
+   * - NodeWords: uint32 per node. Bit 31 set: a leaf, bits 0-30 the element.
+   *   Otherwise bits 29-30 the split direction (0, 1, 2) and bits 0-28 the
+   *   index of the LEFT child (points with p[dir] < split); the right child
+   *   is the next node (index + 1).
+   * - NodeSplits: double per node (the split value; GetNodeSplitsFloat()
+   *   gives a float copy for a RG32F texture buffer).
+   * - BlockEdges[d]: I+1 (J+1, K+1) block boundaries; the block of p is found
+   *   exactly against these values.
+   * - OctreeNodes: uint32 per node; bit 31 set: leaf (element in bits 0-30),
+   *   else the index of the first of 8 children (child = x>=mid | y>=mid<<1 |
+   *   z>=mid<<2, mid the midpoint of the node's region).
+   */
   const int* GetNumberOfBlocks() const { return this->Blocks; }
   const std::vector<double>& GetBlockEdges(int d) const { return this->Edges[d]; }
   const std::vector<std::uint32_t>& GetHeads() const { return this->Heads; }

@@ -7,60 +7,36 @@
  *
  * Fuchs et al. render LR volumes that approximate simulation data on
  * unstructured meshes, trimmed by the mesh's boundary. Input: any vtkDataSet
- * or the leaves of a composite data set, fitted together; cell data is taken
- * at the cell centres (vtkCellCenters); a vector array as its magnitude
- * (VectorMode MAGNITUDE) or all components in one spline (COMPONENTS; the
- * error at a point is then the length of the error vector).
+ * or the leaves of a composite data set, fitted together; cell data at the
+ * cell centres; vectors as magnitude or all components (VectorMode).
  *
- * Domain: the data's bounding box, each side widened by Margin times its
- * length; parameters u in [0, m_d] (InitialNumberOfElements), x = offset +
- * scale * u. From a tensor-product spline of tri-degree Degree (coefficients
- * the data mean) it repeats (the loop of GoTools' LRVolApprox): update the
- * coefficients (Method: LEAST_SQUARES, regularized least squares shared with
- * vtkLRSplineImageFitter in vtkLRSplineFitCore, plus a smoothing term on
- * elements with few points, Smoothing; MBA, two sweeps of LR
+ * From a tensor-product spline of degree Degree over the data's bounding box
+ * (widened by Margin; InitialNumberOfElements) it repeats, as GoTools'
+ * LRVolApprox: update the coefficients (Method: LEAST_SQUARES with
+ * Regularization and Smoothing, shared with vtkLRSplineImageFitter; MBA, LR
  * multilevel B-spline approximation, Skytt, Barrowclough and Dokken 2015;
- * HYBRID, both), measure the error at every point (vtkSMPTools), stop when
- * the maximum or RMS error (ToleranceType) is within the tolerance (ABSOLUTE
- * or RELATIVE to the data range), else refine the elements above it that
- * hold at least MinimumPointsPerElement points (vtkLRSplineFitCore::Refine),
- * up to MaximumRefinementLevels halvings and MaximumNumberOfElements.
+ * HYBRID, both); measure the error at every point; stop when the maximum or
+ * RMS error (ToleranceType) is within Tolerance (ToleranceMode ABSOLUTE or
+ * RELATIVE), else refine the elements above it that hold at least
+ * MinimumPointsPerElement points, up to MaximumRefinementLevels and
+ * MaximumNumberOfElements.
  *
- * Output port 0: one block in the format of vtkLRSplineReader with the
- * image fitter's "LRFit..." cell and field data (plus "LRFitDomain"), for the
- * volume mapper, probe and stream tracer. Output port 1: the data's boundary
- * surface (triangles, consistently oriented; empty for point clouds), also
- * attached to port 0's spline as vtkLRSplineField::TRIMMING_SURFACE, so that
- * vtkLRSplineVolumeMapper trims by it without being connected to it (Fuchs
- * et al. trim by the mesh's surface). Output port 2: the outliers left out
- * (RemoveOutliers; vertices, empty otherwise). FileName: also write a .lr file (read
- * it back with PhysicalBounds = LRFitDomain). Every piece fits all the data.
+ * Output port 0: one block in vtkLRSplineReader's format with the "LRFit..."
+ * cell and field data (plus "LRFitDomain"). Port 1: the data's boundary
+ * surface (empty for point clouds), also attached to the spline as
+ * vtkLRSplineField::TRIMMING_SURFACE, so vtkLRSplineVolumeMapper trims by it.
+ * Port 2: the outliers left out. FileName: also write a .lr file (read it back
+ * with PhysicalBounds = LRFitDomain). Every piece fits all the data.
  *
- * Time: the filter fits the time step the pipeline asks for and
- * passes the input's time steps on, so ParaView animates the fitted series.
- * With ReusePreviousMesh (default on), a step whose data has the same
- * domain as the previous update's, with no setting changed in between,
- * starts from the previous step's refined mesh and coefficients instead of
- * the coarse tensor-product spline (GoTools' LRVolApprox likewise continues
- * from a given spline): fewer fit-and-refine rounds per step, and meshes
- * that only ever gain elements along the series.
+ * Time steps pass through; ReusePreviousMesh (on) starts a step from the
+ * previous step's spline when nothing else changed. RemoveOutliers: values that disagree with their
+ * neighbours (vtkSplineVizLocalOutliers, OutlierThreshold) and non-finite
+ * points are left out of the fit.
  *
- * Outliers: with RemoveOutliers, data values that disagree with their
- * neighbours (vtkSplineVizLocalOutliers: a linear model of the 16 nearest
- * data points misses the value by more than OutlierThreshold times
- * max(what it misses at those neighbours, tolerance)) and points with NaN or infinite values or
- * coordinates are left out of the fit, so that the refinement does not chase single wrong values
- * down to its finest level. The detection runs up to three times, the
- * tolerance (when relative) taken from the range of the values still in.
- * Output port 2 gets the detected points with their values and deviations
- * (on piece 0); GetNumberOfOutliers() and the field data "LRFitOutliers"
- * count everything left out.
- *
- * Refused before allocating: no points or array, NaN or infinite values or
- * coordinates (unless RemoveOutliers), points without volume (on a plane,
- * line or point), Tolerance <= 0, degrees outside 1..5,
- * MaximumRefinementLevels outside 0..30, limits whose spline would not fit
- * in memory.
+ * Refused before allocating: no points or array, non-finite values or
+ * coordinates (unless RemoveOutliers), points without volume, Tolerance <= 0,
+ * degrees outside 1..5, MaximumRefinementLevels outside 0..30, limits whose
+ * spline would not fit in memory. Details: docs/lr-fitting.md.
  */
 
 #ifndef vtkLRSplineFitter_h

@@ -7,43 +7,29 @@
  * Plain C++ (not a vtkObject), the one inversion used by vtkLRSplineEvaluator
  * (probing, resampling and tracing on curved geometry) and by the volume
  * mapper's CPU side. Built from a geometry-mode grid of vtkLRSplineReader or
- * vtkIFEMReader (VTK_BEZIER_HEXAHEDRON or VTK_BEZIER_QUADRILATERAL cells whose
- * points are the geometry's Bezier control points, "RationalWeights" where
- * rational, "LRParameterBox"), it keeps per element the Bezier coefficients
- * (x, y, z), or, rational, the homogeneous (w x, w y, w z, w), and the box of
- * the control points, which contains the element (convex hull property; the
- * weights are positive).
+ * vtkIFEMReader, it keeps per element the Bezier coefficients of x
+ * (homogeneous when rational) and the box of its control points, which
+ * contains the element (convex hull property; positive weights).
  *
- * Inversion of x (Invert): the k-d forest of vtkLRSplineElementLocator over
- * the physical boxes (SetAllowOverlap: curved elements' boxes overlap; list
- * leaves) gives the candidate elements; in each, Newton's method on the
- * element's Bezier map s -> x(s), s in local coordinates [0, 1]^3 ([0, 1]^2
- * and w = 0 for a surface), started from the element's linear approximation
- * (the tangent map at its centre) and, failing that, from its centre and
- * corners, with a backtracking line search on |x(s) - x|. Converged when the
- * Newton step is below ConvergenceTolerance (local coordinates; the
- * parameter error is at most that times the element's side) with a residual
- * below 1e-9 of the element's size. A point is inside an element when its
- * solution lies in [0, 1]^3 up to InsideTolerance; inside no candidate means
- * outside the geometry.
+ * Invert(): candidate elements from the k-d forest of
+ * vtkLRSplineElementLocator over the physical boxes (they overlap: list
+ * leaves); in each, Newton's method on s -> x(s) in local coordinates,
+ * started from the element's linear approximation, then from its centre and
+ * corners, with a backtracking line search; converged when the step is below
+ * ConvergenceTolerance and the residual below 1e-9 of the element's size;
+ * inside when s lies in [0, 1]^3 up to InsideTolerance.
  *
- * Surfaces (parametric dimension 2, in the plane or curved in 3D): the
- * closest-point projection. Gauss-Newton on |x(s) - x|^2 (the least-squares
- * step of the 3x2 Jacobian) converges to the foot of x on the element; x is
- * on the surface when the foot lies in the element and |x(s) - x| is at most
- * SurfaceTolerance times the element's size (the diagonal of its control
- * points' box); the boxes are widened by that distance. Points off a planar
- * surface by more, and points beyond its boundary curves, are outside.
- * Gradients of surface fields are tangential (the Jacobian's pseudo-inverse).
+ * Surfaces (in the plane or curved in 3D): the closest-point projection
+ * (Gauss-Newton); a point is on the surface when its foot lies in the
+ * element and its distance is at most SurfaceTolerance times the element's
+ * size. Gradients of surface fields are tangential.
  *
- * IsAffine(): every element's map is the same affine map of the parameter
- * (equal weights, control points at the affine images of the Bezier points
- * of the identity), within 1e-12 of the patch size; then x = A u + b is
- * exact and the callers keep their fast affine paths (volumes only).
+ * IsAffine(): every element's map is one affine map x = A u + b (within 1e-12
+ * of the patch size); callers then keep their fast affine paths (volumes).
  *
- * Limits: degrees up to vtkLRSplineBezierVolume's; on a surface in 3D, points
- * off a convex crease (a C0 line) whose foot is the crease belong to neither
- * side. Thread-safe (const) after Build().
+ * Limits: degrees up to vtkLRSplineBezierVolume's; on a surface in 3D,
+ * points off a convex crease whose foot is the crease belong to neither
+ * side. Thread-safe (const) after Build(). See docs/ifem.md, "Physical space".
  */
 
 #ifndef vtkLRSplineGeometryMap_h

@@ -4,97 +4,38 @@
  * @brief   Fits an LR-spline volume to a scalar image by least squares and local refinement
  * until a tolerance is met at every voxel.
  *
- * The real data path of Fuchs et al., "Direct interactive visualization of
- * locally refined spline volumes": the LR splines they render (an MR brain,
- * simulation fields) are approximations of sampled data, refined locally where
- * the data varies. This filter makes such an approximation from a 3D
- * vtkImageData (a CT/MR scan, a simulation sampled on a grid), so that it can
- * be volume rendered, probed and traced as an exact spline.
+ * The data path of Fuchs et al., "Direct interactive visualization of locally
+ * refined spline volumes": the LR splines they render approximate sampled
+ * data, refined where it varies. This filter makes one from a 3D
+ * vtkImageData (a scan, a simulation on a grid), to be volume rendered,
+ * probed and traced as an exact spline. Input: an image (or a composite of
+ * them, one patch each) with a one-component point array
+ * (SetInputArrayToProcess; default: the active scalars), at least 2 voxels
+ * per direction, an identity direction matrix and finite values.
  *
- * Input: a vtkImageData (or a composite data set of them; each image becomes
- * its own patch) with a one-component point-data array chosen with
- * SetInputArrayToProcess (default: the active scalars), at least 2 voxels in
- * every direction, an identity direction matrix (rotated images are refused:
- * the output's parameter-to-physical map is a per-axis scale and offset) and
- * no NaN or infinite values.
+ * Method: parameters are the voxel index coordinates (x = origin + spacing *
+ * u). From a tensor-product spline of degree Degree (default 2, 2, 2) with
+ * InitialNumberOfElements it repeats: regularized least squares on the voxel
+ * values (conjugate gradients; Regularization pulls basis functions that see
+ * less than one voxel towards the previous fit); the error at every voxel;
+ * on every element above Tolerance (ABSOLUTE, or RELATIVE to the data range:
+ * the default, 2 %), structured mesh refinement of its basis function of
+ * smallest support (Johannessen, Kvamsdal and Dokken 2014), with knots on
+ * voxel faces or centres (AlignKnotsToVoxels). It stops when the tolerance
+ * holds at every voxel, or with a warning at MaximumNumberOfElements,
+ * MaximumRefinementLevels or MinimumElementSize.
  *
- * Method. The spline's parameter domain is the image's structured (voxel
- * index) coordinates, [0, nx-1] x [0, ny-1] x [0, nz-1], so that voxels sit
- * at integer parameters and element sides are measured in voxels; the
- * physical map is x = origin + spacing * u ("LRPhysicalTransform"). It starts
- * from a tensor-product spline of tri-degree Degree (default 2, 2, 2) with
- * InitialNumberOfElements elements per direction and repeats:
+ * Output: a vtkMultiBlockDataSet in vtkLRSplineReader's format (field mode),
+ * the point array FieldName, cell data "LRFitElementMaxError" and field data
+ * "LRFit..." (errors, tolerance, iterations, history), also from the getters.
+ * FileName: also write a .lr file (read it back with PhysicalBounds = the
+ * image's bounds). Every piece fits the whole image and keeps its share of
+ * the elements; progress per iteration, abort after the current one.
  *
- * 1. Least squares on the voxel values: minimize
- *      sum_v (s(x_v) - f_v)^2 + sum_i delta_i (c_i - c_i^prev)^2
- *    over the coefficients c_i. The normal equations are assembled sparse
- *    (one row per basis function, an entry per pair sharing an element; the
- *    voxels form a tensor grid, so every entry is a product of three 1D
- *    sums) and solved by conjugate gradients with a Jacobi preconditioner,
- *    starting from c^prev, until the error the solve leaves in the voxel
- *    values (its energy norm, estimated from the last 10 steps after
- *    Hestenes and Stiefel / Strakos and Tichy) is below 1e-4 times the
- *    tolerance. c^prev is the previous fit carried exactly through the
- *    refinement (refinement does not change the spline) and, on the initial
- *    mesh, the image sampled trilinearly at the Greville points. The
- *    regularization acts on basis functions with little data only: with
- *    w_i the smallest over the three directions of the sum of the function's
- *    1D B-spline over the voxel coordinates (how many voxels it sees along
- *    its worst direction; 1 for a one-voxel element, less only at the image's
- *    faces and below voxel size), delta_i = A_ii (1e-12 + Regularization *
- *    max(0, 1 - w_i)). This pins the null space that appears when there are
- *    more functions than voxels (at the faces of fully refined regions)
- *    to the coarser fit; functions that see a voxel or more are fitted by
- *    plain least squares, so a polynomial of the spline's degree is
- *    reproduced exactly.
- * 2. The error |s(x_v) - f_v| at every voxel, element by element in parallel
- *    (vtkSMPTools); maximum and RMS over all voxels. The final errors are
- *    those of the output's Bezier form (vtkLRSplinePatch::ExtractBezier).
- * 3. Stop when the maximum error is at most the tolerance (Tolerance, in data
- *    units (ABSOLUTE) or as a fraction of the data range (RELATIVE, default,
- *    2 %)). Otherwise every element whose largest voxel error exceeds it is
- *    marked, and on each the basis function of smallest support that can
- *    still be refined (the best centred on the element among equal ones) is
- *    refined by structured mesh refinement (every knot interval of its
- *    support halved, vtkLRSplineBuilder::RefineFunctions; Johannessen,
- *    Kvamsdal and Dokken 2014), which splits the element and its neighbours
- *    only: the refinement is local. A marked element that is already as
- *    small as allowed gets all the functions on it refined that can be. With
- *    AlignKnotsToVoxels (default) the splits are rounded to voxel faces (even
- *    degrees) or centres (odd degrees), so that the finest elements are one
- *    voxel, which the spline can interpolate. No split leaves a side shorter
- *    than MinimumElementSize voxels or finer than MaximumRefinementLevels
- *    halvings of the initial elements.
- *
- * The loop also ends (with a warning saying which limit and the error
- * reached) when MaximumNumberOfElements or MaximumRefinementLevels is
- * reached, or when no marked element can be refined further.
- *
- * Output: a vtkMultiBlockDataSet in the format of vtkLRSplineReader (one
- * block per patch, field mode; see vtkLRSplineBezierGrid), the point array
- * named FieldName (default: the input array's name), plus
- * - cell data "LRFitElementMaxError" (largest voxel error in each element);
- * - field data "LRFitMaximumError", "LRFitRMSError", "LRFitTolerance"
- *   (absolute), "LRFitToleranceMet", "LRFitIterations",
- *   "LRFitRefinementLevels" (halvings of the initial elements),
- *   "LRFitDataRange", "LRFitSeconds" and "LRFitHistory" (per iteration:
- *   elements, basis functions, maximum error, RMS error, solver iterations).
- * The same numbers are available from the getters after an update (for
- * composite input: errors over all voxels, counts summed).
- *
- * With FileName set, the fitted spline is also written as an LRSplines text
- * file (.lr; several patches for composite input). Its parameters are the
- * voxel index coordinates: read it with vtkLRSplineReader and PhysicalBounds
- * set to the image's bounds to get the same output.
- *
- * Piece requests are honoured like the reader does: every piece fits the
- * whole image (it needs all of it) and outputs its share of the elements.
- * Progress is reported per iteration; an abort stops after the current one.
- *
- * Refused with an error before anything large is allocated: no or a
- * multi-component array, cell data, fewer than 2 voxels in a direction, more
- * than 2^27 voxels, a non-identity direction matrix, non-positive spacing,
- * Tolerance <= 0 or not finite, degrees outside 1..5, NaN or infinite voxels.
+ * Refused before allocating: a missing, multi-component or cell array, more
+ * than 2^27 voxels, a rotated image, non-positive spacing, a bad Tolerance,
+ * degrees outside 1..5, NaN or infinite voxels. Details: docs/components.md,
+ * "Fitting an LR spline to an image".
  */
 
 #ifndef vtkLRSplineImageFitter_h

@@ -4,72 +4,37 @@
  * @brief   Streamlines through LR-spline vector fields, integrated on the exact spline (Fuchs et
  * al. §5).
  *
- * Port 0: the vector field, the output of vtkLRSplineReader or vtkIFEMReader
- * (one patch or the whole vtkMultiBlockDataSet; with several patches the
- * first patch containing a point wins). Volumes, or surfaces (in the plane or
- * curved in 3D): there the field (2 or 3 components) is integrated on the
- * surface in physical space: every evaluation is at the foot of the point on
- * the surface (within SurfaceTolerance) and takes the field's tangential
- * part, and every accepted point is moved onto its foot. Port 1 (Source): the seeds, the points of
- * any data set (or composite of them). Like vtkStreamTracer, but every evaluation is an exact
- * evaluation of the spline (k-d forest look-up and Bezier evaluation,
- * vtkLRSplineField, Fuchs et al. §3.2), not an interpolation of samples.
+ * Like vtkStreamTracer, but every evaluation is an exact evaluation of the
+ * spline (k-d forest look-up and Bezier evaluation, vtkLRSplineField, Fuchs
+ * et al. §3.2), not an interpolation of samples. Port 0: the vector field,
+ * the output of vtkLRSplineReader or vtkIFEMReader (one patch or all; the
+ * first patch containing a point wins): volumes, or surfaces in the plane or
+ * curved in 3D, on which the field's tangential part is integrated (points
+ * kept on the surface within SurfaceTolerance). Port 1 (Source): the seeds,
+ * the points of any data set.
  *
- * Integrators (§5.4): explicit Euler (RK1), midpoint (RK2), Kutta's third
- * order (RK3), classic RK4, the 3/8 rule (RK4 3/8), Runge-Kutta-Fehlberg's
- * fifth-order solution (RKF5), and the embedded pairs Heun-Euler (2(1)),
- * Bogacki-Shampine (3(2)) and Runge-Kutta-Fehlberg (4(5), the fifth-order
- * solution is propagated).
+ * Integrators (§5.4, IntegratorType): Euler, midpoint, Kutta's RK3, RK4, the
+ * RK4 3/8 rule, RKF5, and the embedded pairs Heun-Euler, Bogacki-Shampine and
+ * RKF45. StepMode: FIXED_TIME; FIXED_LENGTH (IntegrationStep in space, as
+ * vtkStreamTracer's LENGTH_UNIT); LR_HEURISTIC (§5.2, Eq. 4: IntegrationStep
+ * times the element's shortest side over 2^degree); ADAPTIVE (the embedded
+ * pairs' error estimate below MaximumError, the step between
+ * MinimumIntegrationStep and MaximumIntegrationStep). Precision (§5.6):
+ * double, mixed (double state, single-precision evaluation, as the paper's
+ * GPU solver) or single.
  *
- * Step modes:
- * - FIXED_TIME: the time step is IntegrationStep;
- * - FIXED_LENGTH: each step advances about IntegrationStep in space
- *   (time step IntegrationStep / |v|, like vtkStreamTracer's LENGTH_UNIT);
- * - LR_HEURISTIC (§4.2, §5.2, Eq. 4): the spatial step is IntegrationStep
- *   times (shortest side of the current element) / 2^degree, so the steps
- *   follow the local refinement of the LR mesh;
- * - ADAPTIVE: the embedded integrators' local error estimate keeps the
- *   error per step below MaximumError (step between MinimumIntegrationStep
- *   and MaximumIntegrationStep, in time units).
+ * Termination (vtkStreamTracer's codes): OUT_OF_DOMAIN (the last point on the
+ * boundary), OUT_OF_STEPS, OUT_OF_LENGTH (MaximumPropagation), STAGNATION
+ * (TerminalSpeed), UNEXPECTED_VALUE, OUT_OF_TIME = 7 (MaximumIntegrationTime).
  *
- * Precision (§5.6): DOUBLE_PRECISION (state and evaluation in double),
- * MIXED_PRECISION (the integration state in double, the spline evaluated in
- * single precision, as the paper's GPU solver), SINGLE_PRECISION (both in
- * single precision; for comparison, it stagnates in very small elements).
- *
- * Termination (vtkStreamTracer's ReasonForTermination codes): leaving the
- * domain (OUT_OF_DOMAIN; the last point is placed on the boundary of the
- * spline's box), MaximumNumberOfSteps (OUT_OF_STEPS), MaximumPropagation in
- * arc length (OUT_OF_LENGTH), speed at or below TerminalSpeed (STAGNATION),
- * a non-finite value (UNEXPECTED_VALUE), and MaximumIntegrationTime
- * (OUT_OF_TIME = 7, vtkStreamTracer::FIXED_REASONS_FOR_TERMINATION_COUNT, the
- * first code vtkStreamTracer leaves to custom reasons).
- *
- * Output: one polyline per seed and direction (forward first, in seed order;
- * lines of a single point are left out), point arrays: the velocity (named
- * like the input array), "Speed", "IntegrationTime" (negative backward),
- * optionally "Vorticity" (from the exact Jacobian); cell arrays "SeedIds" and
- * "ReasonForTermination"; field data "SeedReasonForTermination" (per seed:
- * forward and backward reason, -1 when not traced, also for seeds that gave
- * no line). Ready for the tube mappers (radius or colour from "Speed").
- *
- * Parallel over the seeds with vtkSMPTools; the output does not depend on the
- * number of threads. Progress is reported per batch of seeds and abort
- * (AbortExecute, or an abort upstream) is honoured between batches: an
- * aborted run gives an empty output. Seeds whose lines could not fit in
- * this machine's memory are refused before anything is allocated, and the
- * tracing stops with an error when the lines outgrow it.
- *
- * Defaults that differ from vtkStreamTracer's: IntegrationDirection BOTH
- * (vtkStreamTracer: FORWARD), IntegratorType RUNGE_KUTTA4 (RUNGE_KUTTA2),
- * step mode FIXED_LENGTH, i.e. LENGTH_UNIT (CELL_LENGTH_UNIT),
- * IntegrationStep 0.01 (0.5 cell lengths), MaximumPropagation 0 = no limit
- * (1), ComputeVorticity off (on). The ...To... setters vtkStreamTracer users
- * type (SetIntegrationDirectionToForward, SetIntegratorTypeToRungeKutta4,
- * SetIntegrationStepUnit, ...) are here too.
- *
- * ComputeErrorMetric() is the paper's error metric (Eq. 7) of a set of lines
- * against a reference set (e.g. RKF5 with a very small step).
+ * Output: one polyline per seed and direction (forward first); point arrays
+ * the velocity, "Speed", "IntegrationTime", optionally "Vorticity"; cell
+ * arrays "SeedIds", "ReasonForTermination"; field data
+ * "SeedReasonForTermination". Parallel over the seeds (vtkSMPTools; the same
+ * output for any number of threads), with progress, abort and a memory check.
+ * Defaults that differ from vtkStreamTracer's: both directions, RK4,
+ * FIXED_LENGTH steps of 0.01, no propagation limit, no vorticity; its ...To...
+ * setters are here too. ComputeErrorMetric(): the paper's error metric (Eq. 7).
  */
 
 #ifndef vtkLRSplineStreamTracer_h

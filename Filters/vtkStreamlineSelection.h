@@ -12,23 +12,19 @@
  * with AND or OR (IncludeCombination); a streamline is selected when that
  * holds (or there are none) and it touches no EXCLUDE region.
  *
- * Segment tests (regions are closed sets; a single-point streamline is tested
- * as a point):
+ * Segment tests (regions are closed sets; a single-point streamline is a point):
  * - sphere: the closest point of each segment to the centre (exact);
  * - box, axis-aligned or oriented (any invertible affine map of a box): slab
  *   clipping of the segment in the box's frame (exact);
  * - vtkImplicitFunction (inside: value <= 0): a vtkSphere or vtkBox, with no
  *   or a linear Transform, is tested exactly as above; any other function is
  *   evaluated at both ends of each segment and at most ImplicitFunctionStep
- *   apart along it (conservative only to that step: a part of the region
- *   thinner than the step along a segment can be missed);
+ *   apart along it (a part of the region thinner than that can be missed);
  * - label image (vtkImageData with origin, spacing and direction matrix, as
- *   vtkNIfTIVolumeReader places NIfTI volumes in RAS+ mm; a one-component
- *   point array (each voxel the cell of its point) or cell array; a set of
- *   label values): every voxel a segment passes through is visited by a 3D
- *   voxel walk (Amanatides and Woo) in index space, where the segment stays a
- *   straight line (exact up to rounding on voxel faces; a point on a face
- *   belongs to the voxel of higher index).
+ *   vtkNIfTIVolumeReader places NIfTI volumes; a one-component point or cell
+ *   array; a set of label values): every voxel a segment passes through, by
+ *   a 3D voxel walk (Amanatides and Woo) in index space (exact up to rounding
+ *   on voxel faces; a point on a face belongs to the voxel of higher index).
  * A point with a NaN coordinate is inside no region.
  *
  * Output (OutputMode): SELECTED_STREAMLINES, the selected lines with their

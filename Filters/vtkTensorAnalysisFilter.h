@@ -18,41 +18,22 @@
  * | `PlanarAnisotropy`     | 1     | Westin cp = 2 (l2 - l3) / S                   |
  * | `SphericalAnisotropy`  | 1     | Westin cs = 3 l3 / S                          |
  * | `Confidence`           | 1     | only for TEEM_7 input: the leading value      |
- * | `ShapeCoordinates`     | 2     | (u, v): the tensor's shape in the square of   |
- * |                        |       | Schultz and Kindlmann, any signs (see below)  |
+ * | `ShapeCoordinates`     | 2     | (u, v) in Schultz and Kindlmann's square      |
  *
- * with S = l1 + l2 + l3 (the trace normalization Teem uses; all three are 0
- * when S <= 0, and they lie outside [0, 1] for indefinite tensors). These are
- * the quantities the superquadric glyphs are built from (Kindlmann 2004,
- * Hlawitschka et al. §2), for coloring and thresholding in ParaView; the math
- * is vtkSplineVizTensorMath, shared with vtkSuperquadricGlyphMapper.
+ * with S = l1 + l2 + l3 (Teem's trace normalization; 0 when S <= 0). These are
+ * the quantities of the superquadric glyphs (Kindlmann 2004, Hlawitschka et
+ * al. §2); the math is vtkSplineVizTensorMath. ShapeCoordinates (Schultz and
+ * Kindlmann 2010, §4.2; SchultzKindlmannSquare) holds for every sign pattern:
+ * (1, 1) and (0, 0) are the positive and negative isotropic tensors, u + v >=
+ * 1.5 the positive semi-definite ones, u + v <= 0.5 the negative ones; it
+ * separates tension, compression and shear in stress fields.
  *
- * ShapeCoordinates (vtkSplineVizTensorMath::SchultzKindlmannSquare, the
- * paper's placement, the shared code of the Schultz-Kindlmann glyphs) is
- * defined for every sign pattern, unlike the Westin metrics: with the
- * eigenvalues divided by the largest |l_i|, u = (l2 + 1)/2 and v the position
- * along the smallest (positive-dominant tensors) or largest (negative-dominant
- * ones) eigenvalue; (1, 1) and (0, 0) are the positive and negative
- * isotropic tensors, u + v >= 1.5 the positive semi-definite ones,
- * u + v <= 0.5 the negative ones, (1/2, 1/2) diag(1, 0, -1). Coloring by it
- * (or thresholding u + v) separates tension, compression and shear in stress
- * fields.
- *
- * Component layouts (vtkSplineVizTensorMath::TensorLayout): 9-component
- * arrays are read as full 3x3 matrices (symmetrized) and 7-component arrays
- * as Teem/NRRD (confidence first); for 6-component arrays TensorLayout picks
- * the order: SYMMETRIC_VTK (XX YY ZZ XY YZ XZ, VTK and ParaView, the
- * default), SYMMETRIC_LOWER (XX XY YY XZ YZ ZZ, NIfTI and DIPY) or
- * SYMMETRIC_UPPER (XX XY XZ YY YZ ZZ, FSL dtifit and MFEM).
- *
- * Output arrays are double when the tensors are double, float otherwise.
- * Tuples with a NaN or infinite component give NaN in every output (one
- * warning with their count). A missing tensor array, or one whose number of
- * components does not fit the layout, is an error (RequestData returns 0).
- * Composite inputs are processed block by block; pieces pass through.
- * The work is multi-threaded with vtkSMPTools, in batches between which
- * progress is reported and abort honoured (an aborted run gives an empty
- * output).
+ * TensorLayout orders 6-component arrays: SYMMETRIC_VTK (default),
+ * SYMMETRIC_LOWER (NIfTI, DIPY) or SYMMETRIC_UPPER (FSL, MFEM); 9 components
+ * are read as a full matrix (symmetrized), 7 as Teem/NRRD. Outputs are double
+ * for double tensors, else float; non-finite tuples give NaN (one warning); a
+ * missing or ill-sized array is an error. Composite inputs block by block,
+ * pieces pass through; vtkSMPTools with progress and abort.
  */
 #ifndef vtkTensorAnalysisFilter_h
 #define vtkTensorAnalysisFilter_h

@@ -4,109 +4,40 @@
  * @brief   Deterministic fiber tracking (hyperstreamlines, tensorlines) along the principal
  * eigenvector of a symmetric tensor field.
  *
- * Traces lines x(s) with dx/ds = e1(T(x)), the unit principal eigenvector
- * of the interpolated tensor, in arc length s: what diffusion-MRI users call
- * deterministic tractography and engineers call hyperstreamlines (Delmarcelle
- * and Hesselink 1993). The output polylines are the input of the SplineViz
- * tube mappers (Salm's spline tubes, e.g. with the radius from the
- * fractional anisotropy), and the interpolated tensor along the lines the
- * input of the superquadric glyphs (Hlawitschka et al.).
+ * Traces lines x(s) with dx/ds = e1(T(x)), the unit principal eigenvector of
+ * the interpolated tensor, in arc length s: deterministic tractography, or
+ * hyperstreamlines (Delmarcelle and Hesselink 1993). The lines feed the tube
+ * mappers (Salm's spline tubes) and, through the tensor interpolated along
+ * them, the superquadric glyphs (Hlawitschka et al.).
  *
- * **Input (port 0)**: the tensor field, point data of a vtkImageData (fast
- * path: trilinear interpolation, the image's direction matrix honoured) or
- * of any other vtkDataSet VTK can interpolate (cells located with a
- * vtkStaticCellLocator, interpolated with the cells' own weights, so that
- * e.g. tri-quadratic hexahedra interpolate quadratically), or a composite
- * data set of them (the first block containing a point wins). The tensor
- * array is selected with SetInputArrayToProcess(0, ...) (default: the active
- * point tensors); its components are read by vtkSplineVizTensorMath: 9
- * components as a 3x3 matrix (symmetrized), 7 as Teem/NRRD (the confidence
- * is ignored), 6 in the TensorLayout order (VTK's XX YY ZZ XY YZ XZ, the
- * lower triangle of NIfTI and DIPY, the upper triangle of FSL and MFEM). An optional point array
- * MaskArrayName restricts the tracking to where its interpolated value is at
- * least 0.5 (a 0/1 mask ends halfway between voxels).
+ * Input (port 0): point tensors of a vtkImageData (trilinear, direction matrix
+ * honoured), of any vtkDataSet VTK can interpolate, or of a composite of them;
+ * the array of SetInputArrayToProcess(0, ...) (default: active point tensors)
+ * with 9, 7 (Teem) or 6 components in TensorLayout order. Optional
+ * MaskArrayName: tracked where its value is >= 0.5. Seeds: SEEDS_FROM_SOURCE
+ * (the points on port 1) or SEEDS_FROM_VOXELS (every SeedStride-th point with
+ * FA >= SeedFAThreshold, inside the mask).
  *
- * **Seeds**: SEEDS_FROM_SOURCE: the points of the data set on port 1 (any
- * data set or composite of them); SEEDS_FROM_VOXELS: every SeedStride-th
- * point of the input in each index direction (every SeedStride-th point id
- * for non-image data) whose tensor has a fractional anisotropy of at least
- * SeedFAThreshold, inside the mask. A seed that is outside the domain or the
- * mask, whose tensor is invalid or whose FA is below StoppingFAThreshold
- * gives no line (counted by GetNumberOfRejectedSeeds()).
+ * Tracking: tensors, not eigenvectors, are interpolated (Interpolation:
+ * linear or log-Euclidean, Arsigny et al. 2006); e1 is turned to agree with
+ * the incoming direction; RK2 or RK4 with a fixed IntegrationStep in world
+ * units or cell lengths; both directions from each seed, joined into one
+ * polyline. UseTensorlines: Weinstein et al.'s tensorlines (1999).
  *
- * **Tracking**: tensors are interpolated, not eigenvectors: linearly
- * (trilinear on images) or log-Euclidean (Arsigny et al. 2006: the matrix
- * logarithms of the point tensors are interpolated and mapped back with the
- * matrix exponential; eigenvalues below 1e-6 of the largest eigenvalue in
- * the data set, zero tensors included, are raised to that floor first).
- * Eigenvectors have no sign: the principal eigenvector is flipped to agree
- * with the incoming direction (the previous step) at the first Runge-Kutta
- * stage and with the first stage's direction at the others, so lines never
- * U-turn where the eigen-solver's sign changes. RK2
- * (midpoint) or RK4 in arc length with a fixed step IntegrationStep, in world
- * units (LENGTH_UNIT) or in multiples of the cell size (CELL_LENGTH_UNIT: the
- * smallest voxel spacing of an image; for other data sets the cube root of
- * the mean cell volume, from the bounds). Each seed is traced in both
- * directions and the two halves are joined into one polyline (the backward
- * half reversed, then the forward half; the seed is one point of it).
- * Optionally the direction is Weinstein et al.'s tensorline (1999):
- * v_out = f e1 + (1 - f) ((1 - g) v_in + g T v_in / l1) with v_in the
- * incoming direction, f = TensorlineEigenvectorWeight or the linear
- * anisotropy cl (TensorlineWeightFromLinearAnisotropy, the default), and the
- * deflection (puncture) weight g = TensorlineDeflectionWeight; it passes
- * straight through isotropic regions instead of following noise.
+ * Stopping, per half (vtkStreamTracer's ReasonForTermination codes, then
+ * LOW_ANISOTROPY = 8, HIGH_CURVATURE = 9, OUT_OF_MASK = 10,
+ * NEGATIVE_EIGENVALUE = 11): the domain, the mask, StoppingFAThreshold,
+ * MaximumAngle, MaximumPropagation, MaximumNumberOfSteps, invalid tensors,
+ * NegativeEigenvalues. The failing point is not added; lines shorter than
+ * MinimumLength are left out.
  *
- * **Stopping** (per half, vtkStreamTracer's ReasonForTermination codes; 7 is
- * vtkLRSplineStreamTracer's OUT_OF_TIME and not used here): leaving the
- * domain (OUT_OF_DOMAIN, also when a Runge-Kutta stage leaves it), a tensor
- * with a non-finite component among the interpolated ones (UNEXPECTED_VALUE),
- * MaximumPropagation arc length per half (OUT_OF_LENGTH; the last step is
- * shortened to the remaining length, its chord is shorter by O(h^3)),
- * MaximumNumberOfSteps (OUT_OF_STEPS), no direction (STAGNATION: a zero
- * tensor with a zero FA threshold; with a positive threshold a zero tensor
- * stops the line as LOW_ANISOTROPY), FA below StoppingFAThreshold
- * (LOW_ANISOTROPY = 8), a turning angle between two consecutive steps above
- * MaximumAngle degrees or a step whose chord is shorter than half the step
- * (the direction turns by more than about 120 degrees within it)
- * (HIGH_CURVATURE = 9), leaving the mask (OUT_OF_MASK = 10), a tensor with a
- * negative eigenvalue under the NEGATIVE_EIGENVALUES_STOP policy
- * (NEGATIVE_EIGENVALUE = 11; with NEGATIVE_EIGENVALUES_ABSOLUTE the absolute
- * eigenvalues are used). The point that fails a criterion is not added:
- * every output point has FA >= StoppingFAThreshold and lies inside the mask
- * and the domain, and every turn between consecutive steps of a half is at
- * most MaximumAngle. Lines shorter than MinimumLength (total arc length), or
- * of a single point, are left out (GetNumberOfShortLines()).
- *
- * **Output**: one polyline per seed, in seed order. Point data:
- * `FractionalAnisotropy` (active scalars), `Tensors` (the interpolated
- * tensor, 6 components XX YY ZZ XY YZ XZ, active tensors, for glyphs along
- * the lines), `PrincipalDirection` (unit e1, oriented along the line from its
- * first to its last point; active vectors), `DirectionColors` (unsigned char
- * RGB = 255 |e1|, the usual DTI direction colors, for direct color mapping),
- * `ArcLength` (signed arc length from the seed, negative on the backward
- * half). Cell data: `SeedIds` (index of the seed in the seed list),
- * `ReasonForTermination` (2 components: the reason at the first point, i.e.
- * the end of the backward half, and at the last point, the end of the
- * forward half), `Length` (total arc length). Points and arrays are float or
- * double following OutputPointsPrecision (default: the tensor array's).
- *
- * Parallel over seeds (vtkSMPTools); the output is the same for any number
- * of threads and any SMP backend. Seeds are processed in batches, so the
- * temporary memory does not grow with the number of seeds. Piece requests
- * split the seed list (the field is needed whole). Progress is reported and
- * abort honoured after every batch (an aborted run gives an empty output);
- * more seeds than this machine's memory could hold lines for are refused
- * before anything is allocated, and the tracing stops with an error when
- * the output outgrows the memory.
- *
- * Unlike vtkStreamTracer (IntegrationDirection, default FORWARD), every seed
- * is traced in both directions. vtkStreamTracer's setters are here too
- * (SetIntegratorTypeToRungeKutta2/4, SetIntegrationStepUnitToLengthUnit /
- * ToCellLengthUnit), and ...To... setters for the other choices.
- *
- * The tensor math (layouts, eigen-decomposition, FA, Westin metrics, sign
- * policies, matrix log/exp) is vtkSplineVizTensorMath, shared with
- * vtkTensorAnalysisFilter and the superquadric glyph mapper.
+ * Output: one polyline per seed; point data FractionalAnisotropy, Tensors
+ * (XX YY ZZ XY YZ XZ), PrincipalDirection, DirectionColors, ArcLength; cell
+ * data SeedIds, ReasonForTermination (both ends), Length. Parallel over the
+ * seeds (vtkSMPTools; the same output for any number of threads), with
+ * progress, abort and a memory check; pieces split the seeds. Unlike
+ * vtkStreamTracer every seed is traced both ways. Details:
+ * docs/components.md, "Fiber tracking".
  */
 
 #ifndef vtkTensorLineTracer_h

@@ -12,35 +12,28 @@
  * of Bezier cells with the same Bernstein basis, so the grid IS the spline:
  * ParaView shows it natively and every VTK filter can use it;
  * vtkLRSplineProbeFilter, vtkLRSplineResampleToImage and
- * vtkLRSplineStreamTracer evaluate volumes fast and exactly with a k-d forest.
+ * vtkLRSplineStreamTracer evaluate it fast and exactly with a k-d forest.
  *
  * Output: a vtkMultiBlockDataSet, one block per patch ("Patch 0", ...), each a
  * vtkUnstructuredGrid written by vtkLRSplineBezierGrid (see there for the
- * cell, point and field data: "HigherOrderDegrees", "LRParameterBox",
- * "LRElementId", "LRElementMinSide"; the coefficients in an array named
- * FieldName; "LRPatchIndex", "LRParametricDimension", "LRDegrees", ...,
- * "LRMode", "LRRational", "LRPhysicalTransform", "LRSourceFormat").
+ * cell, point and field data; the coefficients in an array named FieldName).
  *
- * Rational patches (g2 patches flagged rational; LRSplines text by
- * RationalMode) hold homogeneous coefficients; in geometry mode they become
- * rational Bezier cells (VTK's "RationalWeights"), in field mode they are an
- * error (a rational map of the parameter box is not the field mode's affine
- * placement).
- *
- * Field mode (default): control points are placed at the equally spaced
- * points of each element's parameter box (that is the Bezier form of the
- * identity map), optionally mapped affinely so that the union of the patches'
- * parameter domains fills PhysicalBounds. Geometry mode: the coefficients ARE
- * the control points (an IFEM-style geometry shows its real shape; it needs 2
- * or 3 components).
+ * Field mode (default): control points at the equally spaced points of each
+ * element's parameter box (the Bezier form of the identity), optionally
+ * mapped affinely so that the patches' parameter domains fill
+ * PhysicalBounds. Geometry mode: the coefficients ARE the control points (an
+ * IFEM-style geometry shows its real shape; 2 or 3 components). Rational
+ * patches (g2 patches flagged rational; LRSplines text by RationalMode)
+ * become rational Bezier cells in geometry mode and are an error in field
+ * mode (a rational map is not the field mode's affine placement).
  *
  * Shared control points with equal coefficients are merged (MergePoints).
- * Piece p of n gets the elements [p N / n, (p + 1) N / n) of every patch
- * (exact too). Progress is reported per patch, abort honoured between patches
- * (empty output). ReadFromInputString reads the text from memory (the fuzz
- * target). Bad input (truncated files, wrong counts, unknown headers,
- * non-finite numbers, inconsistent meshes) gives an error naming the file and
- * the line and an empty output; RequestData returns 0.
+ * Piece p of n gets the elements [p N / n, (p + 1) N / n) of every patch.
+ * Progress per patch, abort between patches (empty output).
+ * ReadFromInputString reads the text from memory (the fuzz target). Bad
+ * input (truncated files, wrong counts, unknown headers, non-finite numbers,
+ * inconsistent meshes) gives an error naming the file and the line and an
+ * empty output; RequestData returns 0.
  */
 
 #ifndef vtkLRSplineReader_h

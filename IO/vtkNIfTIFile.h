@@ -5,43 +5,31 @@
  * validated, the voxel to world affine and the image placement, and the voxel values of
  * chosen volumes and slices; shared by vtkNIfTITensorReader and vtkNIfTIVolumeReader.
  *
- * Plain C++ (not a vtkObject, not wrapped). The NIfTI-1 header is 348 bytes,
- * the NIfTI-2 header 540 (64-bit dimensions and offset, double fields); the
- * byte order is the one in which sizeof_hdr reads 348 or 540. Single files
- * (magic "n+1" / "n+2": the voxels follow the header at vox_offset) and
- * pairs (magic "ni1" / "ni2": the header in name.hdr, the voxels in name.img)
- * are read, each part optionally gzip-compressed (recognised by its first
- * two bytes, whatever the extension says). Voxels are stored x fastest, then
- * y, z and the "volumes" of dimensions 4 to 7 (flattened, 4th fastest).
+ * Plain C++ (not a vtkObject, not wrapped). NIfTI-1 (348-byte header) and
+ * NIfTI-2 (540 bytes, 64-bit dimensions) in either byte order; single files
+ * (magic "n+1" / "n+2") and .hdr/.img pairs ("ni1" / "ni2"), each part
+ * optionally gzip-compressed (recognised by its first two bytes). Voxels are
+ * stored x fastest, then y, z and the "volumes" of dimensions 4 to 7.
  *
  * Everything the readers use is checked before anything is allocated from
- * it, and a failure is a message, never a crash: sizeof_hdr and the magic
- * (Analyze 7.5 headers without the NIfTI magic are refused), dim[0] in
- * 1..7, every used dimension at least 1 and x, y, z within VTK's int
- * extents, a supported datatype whose bitpix agrees, vox_offset whole,
- * non-negative and past the header of a single file, a usable scl_slope with
- * a finite scl_inter, the file holding every voxel the header announces (a
- * compressed part: the most a deflate stream of its size can expand to
- * before decompressing, the real length while decompressing), the values
- * read fitting in this machine's memory, and for the chosen affine finite
- * values, a quaternion of norm at most 1 and a non-singular matrix. A gzip
- * part is decompressed through VTK's zlib to its end whenever voxels are read,
- * so that a damaged stream or a wrong checksum is an error even past the
- * voxels used.
+ * it, and a failure is a message, never a crash: the header size and magic
+ * (Analyze 7.5 files are refused), the dimensions, the datatype and bitpix,
+ * vox_offset, the scaling, that the file (or, compressed, its stream) holds
+ * every voxel announced, that the values fit in memory, and the chosen
+ * affine (finite, a valid quaternion, non-singular). A gzip part is
+ * decompressed to its end whenever voxels are read, so a damaged stream or a
+ * wrong checksum is an error. The full list: docs/reliability.md, "NIfTI".
  *
- * Geometry (ComputeAffine, ComputePlacement): the affine A maps voxel indices
- * to world RAS+ mm: the sform when sform_code > 0, else the qform
- * (quaternion, pixdim, qfac = pixdim[0] sign) when qform_code > 0, else
- * pixdim scaling from the origin (the NIfTI standard's method 1; nibabel
- * centres such images and flips x instead), metres and microns converted to
- * mm. The image gets origin, spacing (the lengths of A's columns) and the
- * direction matrix (the columns divided by them); when det A < 0 the slices
- * are stored in reverse order (output slice k' is the file's nz - 1 - k') so
- * that the direction matrix is a rotation.
+ * Geometry (ComputeAffine, ComputePlacement): the affine maps voxel indices
+ * to world RAS+ mm: the sform when sform_code > 0, else the qform (with qfac)
+ * when qform_code > 0, else pixdim scaling from the origin (the standard's
+ * method 1); metres and microns converted to mm. The image gets origin,
+ * spacing and a direction matrix; when det A < 0 the slices are stored in
+ * reverse order so that the direction matrix is a rotation.
  *
- * Datatypes: (u)int8, (u)int16, (u)int32, (u)int64, float32, float64,
- * complex64, complex128 (2 values per voxel), RGB24 (3 bytes), RGBA32 (4
- * bytes). Not read: binary (1 bit), float128, complex256.
+ * Datatypes: (u)int8 to (u)int64, float32, float64, complex64, complex128 (2
+ * values per voxel), RGB24, RGBA32. Not read: binary (1 bit), float128,
+ * complex256.
  */
 
 #ifndef vtkNIfTIFile_h

@@ -6,21 +6,19 @@
  * places its tensors.
  *
  * The file is read by SplineViz's NIfTI layer (vtkNIfTIFile: NIfTI-1 and -2,
- * either byte order, .nii, .nii.gz and .hdr/.img pairs, each part optionally
- * gzip-compressed; every header field validated before use). **Geometry**
- * (vtkNIfTIReaderBase): the affine chosen by AffineSource (sform, else qform,
- * else pixdim), its rotation as the image's direction matrix, the slices
- * stored in reverse order when the affine flips (det < 0): the placement of
- * the tensor reader, so a volume and tensors of the same grid coincide point
- * by point. Field data: "NIfTIAffine", "NIfTISlicesReversed".
+ * either byte order, .nii, .nii.gz and .hdr/.img pairs; every header field
+ * validated before use). **Geometry** (vtkNIfTIReaderBase): the affine chosen
+ * by AffineSource (sform, else qform, else pixdim), its rotation as the
+ * image's direction matrix, the slices reversed when the affine flips: the
+ * placement of the tensor reader, so a volume and tensors of the same grid
+ * coincide point by point. Field data: "NIfTIAffine", "NIfTISlicesReversed".
  *
  * **Values**: the voxels' own type (uint8 ... uint64, float32, float64) when
  * the file has no scaling, so label volumes stay integers; when it scales
  * (scl_slope finite, not 0, and not slope 1 with intercept 0) value =
  * scl_slope x + scl_inter as float, or double for float64 and 32/64-bit
- * integer voxels (float would round them).
- * complex64/128 voxels become 2 components (real, imaginary), RGB24 and
- * RGBA32 3 and 4 unsigned char components (never scaled).
+ * integer voxels. complex64/128 voxels become 2 components (real,
+ * imaginary), RGB24 and RGBA32 3 and 4 unsigned char components (never scaled).
  *
  * **Dimensions 4 to 7**: the 5th (NIfTI's vector dimension) always gives
  * components. The 4th (with the rarely used 6th and 7th, flattened) gives
@@ -29,16 +27,15 @@
  * COMPONENTS (e.g. 64 diffusion-weighted volumes as 64 components); otherwise
  * (AUTOMATIC with more volumes, or VOLUMES) VolumeIndex chooses one volume
  * (a time point of fMRI), GetVolumeRange() giving the valid indices.
- * Components are in the file's order (4th dimension fastest). At most 65536
- * components.
+ * Components are in the file's order (4th dimension fastest); at most 65536.
  *
  * Piece requests: the reader produces the requested sub-extent and reads only
  * its slices (a .nii.gz is decompressed to its end, to check its integrity).
  * Bad input (no file, not NIfTI, a header field out of range, a truncated or
  * damaged file, a VolumeIndex beyond the file's volumes, a missing qform or
  * sform asked for, a singular affine, sizes beyond this machine's memory) is
- * an error (vtkErrorMacro, RequestInformation/RequestData return 0) with an
- * empty output; vtkNIfTIFile lists every check.
+ * an error (RequestInformation/RequestData return 0) with an empty output;
+ * vtkNIfTIFile lists every check.
  */
 
 #ifndef vtkNIfTIVolumeReader_h

@@ -12,27 +12,23 @@
  *   arrays named after the file (`tracks_FA.tsf` next to `tracks.tck` -> "FA").
  * - **.trk** (versions 1 and 2, either byte order): points mapped from voxel mm
  *   to RAS+ mm as nibabel does (vtkTractogramFormats::TrkVoxmmToRAS); per-point
- *   scalars become point arrays, per-streamline properties cell arrays (named
- *   as in the header); the geometry is kept as "TrackVis..." field data.
+ *   scalars become point arrays, per-streamline properties cell arrays; the
+ *   geometry is kept as "TrackVis..." field data.
  * Empty streamlines are dropped unless KeepEmptyStreamlines is on.
  *
- * **Pieces** (ParaView's parallel pipeline): a piece reads only its share of
- * the file. A .tck's triplets before its end marker are split into n ranges;
- * a piece owns the streamlines whose first point lies in its range, reads
- * from the triplet before it (to know whether a streamline starts there) to
- * the NaN that ends its last streamline, and the same values of each .tsf. A
- * .tck whose end marker is not its last triplet (data after it, or none) is
- * read whole, with the same ownership. A .trk piece gets streamlines
- * [N p / n, N (p + 1) / n) (N = n_count, counted first when not recorded); the
- * records before it are skipped by their 4-byte point counts.
- * GetLastBytesRead() tells how many data bytes a read took.
+ * **Pieces**: a piece reads only its share of the file. A .tck piece owns the
+ * streamlines whose first point lies in its n-th of the triplets and reads
+ * from the triplet before its range to the NaN that ends its last streamline
+ * (the same for each .tsf); a .tck whose end marker is not its last triplet
+ * is read whole. A .trk piece gets streamlines [N p / n, N (p + 1) / n),
+ * skipping the records before it by their point counts. GetLastBytesRead()
+ * tells how many data bytes a read took.
  *
  * **Subsets** at read time (like `tckedit -number`), the same streamlines for
  * any number of pieces: SubsetMode STRIDE keeps every SubsetStride-th
- * streamline of the file (a .tck piece first counts the separators before
- * its range); RANDOM_FRACTION keeps a streamline when a hash of SubsetSeed and
- * its key is below SubsetFraction (key: its index in a .trk, the index of its
- * first triplet in a .tck, so no counting is needed).
+ * streamline; RANDOM_FRACTION keeps a streamline when a hash of SubsetSeed and
+ * its key (its index in a .trk, its first triplet's in a .tck) is below
+ * SubsetFraction.
  *
  * Reads go in 16 MiB chunks in parallel (vtkSMPTools) with progress and
  * abort. Bad input (wrong magic, a missing or misplaced end marker, damaged

@@ -6,87 +6,35 @@
  *
  * Implements Fuchs, Barrowclough, Hjelmervik and Dahl, "Direct interactive
  * visualization of locally refined spline volumes for scalar and vector
- * fields" (Computers & Graphics 2018), §3.2 and §4. A VTK volume mapper:
- * use it with a vtkVolume and a vtkVolumeProperty like any VTK volume mapper.
- * Its input is the output of vtkLRSplineReader or vtkIFEMReader (a
- * vtkMultiBlockDataSet of one VTK_BEZIER_HEXAHEDRON grid per patch; several
- * patches per file; the first patch containing a point wins, as in
- * vtkLRSplineProbeFilter), or one such grid, or anything
- * vtkLRSplineField::Build accepts (e.g. vtkLRSplineImageFitter's output).
- * Curved (non-affine) geometry maps are rendered in physical space: each
- * sample finds its element with a k-d forest over the elements' physical
- * boxes and inverts the map by Newton's method in the shader (the GLSL of
- * vtkLRSplineGeometryMap's inversion); affine ones use the field-mode path.
- * Rational (NURBS) maps too: the shader divides by the weight, and fields on
- * the rational basis are evaluated as sum B w f / sum B w.
+ * fields" (Computers & Graphics 2018), §3.2 and §4. A VTK volume mapper: use
+ * it with a vtkVolume and a vtkVolumeProperty. Input: the output of
+ * vtkLRSplineReader, vtkIFEMReader, vtkLRSplineImageFitter or
+ * vtkLRSplineFitter (one VTK_BEZIER_HEXAHEDRON grid per patch; the first
+ * patch containing a point wins), or anything vtkLRSplineField::Build
+ * accepts. Curved and rational geometry maps are rendered in physical space
+ * (the map inverted per sample, as vtkLRSplineGeometryMap does).
  *
- * - **On the GPU once per data change** (§3.2): the Bernstein coefficients of
- *   every element (float), the element boxes, and the element search
- *   structure of each patch in vtkLRSplineElementLocator's flat arrays
- *   (ElementLocator: the k-d forest of Algorithm 1 with ForestResolution^3
- *   trees, one k-d tree, the octree of §3.2.2 or the look-up texture of §3.2,
- *   the last two for dyadic knots only), so that Fuchs' tables (Figs. 4-6)
- *   can be reproduced. Patches of lower degree are raised to the highest
- *   degree (exactly, by degree elevation). GetGPUMemorySize() counts the
- *   bytes.
- * - **Per ray** (Algorithm 2): from the entry to the exit of the patches'
- *   boxes; each sample finds its element (the previous sample's when it
- *   still contains it, else the search structure) and evaluates the value
- *   and the exact gradient. The step is adaptive (Eq. 4: the element's
- *   shortest side over 2^degree, times StepScale; AdaptiveSteps on, the
- *   default) or fixed (SampleDistance). Composite blending is front to back
- *   with the opacity correction 1 - (1 - a)^(step / ScalarOpacityUnitDistance);
- *   the transfer function is supersampled Supersampling times between two
- *   spline samples along the linear interpolant of their values (§4.1,
- *   against wood-grain; optional jittering of the start as in VTK);
- *   rays stop at 99 % opacity. **Empty-space skipping** (EmptySpaceSkipping,
- *   on): by the convex hull property of the Bezier form an element's values
- *   lie within its coefficients' range; rays jump over the elements whose
- *   range maps to zero opacity (or, for isosurfaces, holds no iso value),
- *   which is exact. Patches may be placed by any invertible affine map
- *   (vtkLRSplineField: "LRPhysicalTransform" with 12 values).
- * - **vtkVolumeProperty**: the color transfer function and scalar opacity
- *   (sampled into a 1D texture over their ranges), Shade with the exact
- *   gradient: VTK's ambient / diffuse / specular model (two-sided, summed
- *   over the renderer's lights, at most 8, as directional lights) or Fuchs'
- *   diffuse model max(0.4, |l.n|) (the first light)
- *   (ShadingModel); the iso values of the isosurface blend mode.
- * - **Blend modes**: composite, maximum and minimum intensity, and
- *   isosurface: the crossings found between samples are refined by
- *   bisection on the exact spline (IsosurfaceBisections steps) and lit by
- *   the exact normal, composited front to back; the first crossing writes
- *   its depth.
- * - **Vector fields**: the magnitude or one component (VectorMode, as
- *   vtkSmartVolumeMapper).
- * - **Opaque geometry** drawn before the volume ends the rays at its depth
- *   (streamline tubes inside the volume look right); **clipping planes**.
- * - **Trimming** (§4.1): an optional closed surface on input port 1
- *   (SetTrimmingSurfaceConnection, e.g. a vtkSTLReader): only its inside is
- *   rendered, between its nearest front face and its farthest back face
- *   along each ray (a depth pre-pass of both; exact for surfaces that a ray
- *   enters and leaves once). Without one, a spline that vtkLRSplineFitter
- *   made is trimmed by the boundary of the data it was fitted to
- *   (vtkLRSplineField::TRIMMING_SURFACE), as Fuchs et al. trim by the mesh.
+ * - Once per data change (§3.2): the Bernstein coefficients of every element,
+ *   the element boxes and the search structure (ElementLocator: k-d forest of
+ *   ForestResolution^3 trees, k-d tree, or for dyadic knots octree or look-up
+ *   texture) go to the GPU; GetGPUMemorySize() counts the bytes.
+ * - Per ray (Algorithm 2): value and exact gradient at every sample; adaptive
+ *   steps (Eq. 4; AdaptiveSteps, StepScale) or SampleDistance; the transfer
+ *   function Supersampling times between samples (§4.1); exact
+ *   EmptySpaceSkipping; UseJittering; MaximumStepsPerPass.
+ * - Shade with the exact gradient (ShadingModel: VTK's or Fuchs'); blend
+ *   modes composite, maximum and minimum intensity, isosurface (crossings
+ *   refined by IsosurfaceBisections); VectorMode for vector fields; opaque
+ *   geometry drawn before ends the rays; clipping planes.
+ * - Trimming (§4.1): a closed surface on input port 1
+ *   (SetTrimmingSurfaceConnection), or, with TrimByDataBoundary, the data
+ *   boundary that a vtkLRSplineFitter spline carries.
  *
- * Bad input (no scalars, a surface spline, rational data over a parameter box
- * (field mode), NaN coefficients,
- * degrees above 3, an empty transfer function) is an error naming the
- * problem; nothing is drawn.
- *
- * Limits: degrees up to 3 per direction; at most 16 patches; the whole
- * spline on each rank in parallel (no ordered compositing of pieces).
- *
- * Performance (Benchmarks/BenchmarkLRSplineVolume against
- * vtkLRSplineResampleToImage + vtkSmartVolumeMapper, one run, 2 shared
- * cores, Mesa llvmpipe, 640x360; docs/performance.md): on a quadratic
- * volume of 33,762 elements refined 8 levels (256x between element sides)
- * the first frame takes 1.9 s with 13 MB on the GPU and an image error of
- * 0.001-0.005 / 255 against the exact CPU reference; resampling to 512^3
- * takes 49 s to its first frame with 512 MB and still errs 0.03-0.73 / 255
- * (256^3: 6.7 s, 64 MB, 0.03-3.4). Frames are 1.0-1.8 s at 640x360 on
- * llvmpipe (VTK's 256^3: 1.8-3.2 s). Adaptive steps take 12-14x fewer
- * samples than uniform steps at equal error on the locally refined volumes
- * (0.6-1.0x on nearly uniform ones).
+ * Bad input (no field, a surface spline, rational data in field mode, NaN
+ * coefficients, degrees above 3, an empty transfer function) is an error
+ * naming the problem; nothing is drawn. Limits: degrees up to 3; at most 16
+ * patches; the whole spline on each rank (no ordered compositing of pieces).
+ * Details: docs/components.md; measurements: docs/performance.md.
  *
  * @sa vtkLRSplineReader vtkLRSplineField vtkLRSplineElementLocator
  */

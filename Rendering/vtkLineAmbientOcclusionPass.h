@@ -5,50 +5,29 @@
  * lines and tubes, from the depth buffer alone.
  *
  * A render pass that draws its delegate (e.g. a vtkRenderStepsPass) into an
- * offscreen color and depth buffer and then darkens each pixel by its ambient
- * occlusion and, optionally, draws depth-dependent halos, in stages
- * (vtkLineAmbientOcclusionFS.glsl): every pixel's view point once into a
- * float texture; the picture copied; the occlusion factor multiplied in
- * where there is geometry only (a far-plane quad behind a GL_GREATER depth
- * test, so the early depth test skips the background); the halos drawn only
- * on tiles where some pixel lies more than HaloDepthOffset in front of
- * another within reach (vtkLineAmbientOcclusionTilesVS.glsl). Each stage has
- * its own program because on a CPU rasterizer (Mesa's llvmpipe) code behind
- * a branch or a uniform switch costs as if it ran; the skipped pixels are
- * exactly those whose result would be unchanged. docs/line-rendering.md has
- * the costs. Only the depth buffer is read for the geometry, so it works for any
- * opaque geometry that writes its depth: the three line mappers
- * (vtkRayCastTubeMapper with its exact per-fragment depth,
- * vtkTessellatedTubeMapper, vtkStylizedLineMapper) and ordinary polygons.
+ * offscreen color and depth buffer, then darkens each pixel by its ambient
+ * occlusion and, optionally, draws depth-dependent halos. Only the depth
+ * buffer is read, so it works for any opaque geometry that writes its depth:
+ * the three line mappers and ordinary polygons.
  *
- * - **Ambient occlusion** (in the spirit of Eichelbaum et al., "LineAO", 2013):
- *   at each pixel the view point and its normal are rebuilt from the depth
- *   buffer; for Levels radii (the largest Radius, each level half the next)
- *   Samples points of a disk around the pixel are read; a sample at Q
- *   occludes the point P by max(0, n.(Q-P)/|Q-P| - Bias)/(1 - Bias), weighted
- *   by max(0, 1 - |Q-P|^2/R^2) where R is the level's radius in view units at
- *   P's distance (occluders further away in depth than that do not count).
- *   The levels are averaged into an occlusion o in [0, 1] and the color is
- *   multiplied by clamp(1 - Strength o, 0, 1). A convex surface (an isolated
- *   tube) does not occlude itself; the background never occludes.
- * - **Depth-dependent halos** (Everts et al., "Depth-dependent halos", 2009),
- *   DepthHalos on: a pixel lies in the halo of a nearer pixel at screen
+ * - Ambient occlusion (in the spirit of Eichelbaum et al., "LineAO", 2013):
+ *   the view point and normal of each pixel are rebuilt from the depth;
+ *   Samples points on each of Levels disks (the largest of Radius, each half
+ *   the next) occlude it by max(0, n.(Q-P)/|Q-P| - Bias)/(1 - Bias), weighted
+ *   by max(0, 1 - |Q-P|^2/R^2); the color is multiplied by
+ *   clamp(1 - Strength o, 0, 1). An isolated tube does not occlude itself.
+ * - Depth-dependent halos (Everts et al., "Depth-dependent halos", 2009;
+ *   DepthHalos): a pixel lies in the halo of a nearer pixel at screen
  *   distance s when s < HaloWidth clamp((gap - HaloDepthOffset) /
- *   HaloDepthRange, 0, 1), gap being its depth behind that pixel (the
- *   background is infinitely far). Lines of a tight bundle (small gaps) merge,
- *   lines far apart in depth are separated by the full halo. Halos are drawn
- *   in HaloColor or the renderer's background. A line's own pixels never get a
- *   halo from the line itself as long as HaloDepthOffset exceeds the line's
- *   radius (its depth varies by at most that much across it).
- * - **Units**: Radius, HaloDepthOffset and HaloDepthRange are pixels (default:
- *   a depth gap is converted into pixels at the nearer point's distance, so
- *   the look does not change with zoom) or world units (UNITS_WORLD, e.g.
- *   millimetres of a tractogram). HaloWidth is always in pixels.
+ *   HaloDepthRange, 0, 1), in HaloColor or the background. A line gets no
+ *   halo from itself while HaloDepthOffset exceeds its radius.
+ * - LengthUnits: Radius, HaloDepthOffset and HaloDepthRange in pixels (the
+ *   default) or world units; HaloWidth always in pixels.
  *
  * Usage: pass->SetDelegatePass(renderSteps); renderer->SetPass(pass).
- * Limits: translucent geometry is composited by the delegate and darkened
- * with what lies behind it; the offscreen buffers are single-sampled (no
- * multisampling inside the pass); hardware picking bypasses the pass.
+ * Limits: translucent geometry is darkened with what lies behind it; the
+ * buffers are single-sampled (no multisampling); hardware picking bypasses
+ * the pass. Its stages and costs: docs/line-rendering.md, "Depth cues".
  *
  * @sa vtkSSAOPass vtkStylizedLineMapper vtkRayCastTubeMapper vtkTessellatedTubeMapper
  */

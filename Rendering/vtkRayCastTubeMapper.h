@@ -6,57 +6,32 @@
  * Implements the ray-casting approach of Salm, "Interactive Rendering of
  * Spline Tubes", §3.2. Each polyline becomes a sphere-swept tube whose
  * centre, radius and color follow cubic Hermite splines through the points
- * (see vtkSplineTubeCore); each cubic segment is approximated by
- * SubSegments quadratic sub-segments (C1 continuous, see
- * vtkSplineTubeMath.h). Per sub-segment, a geometry shader rasterizes a tight
- * oriented bounding box; per fragment, the view ray is intersected with the
- * union of the spheres swept along the sub-segment in ray space: the real
- * intervals from the roots of polyB (degree 4, bracketed through its
- * derivatives, Salm eq. 6), then the minima of the entry distance f_t (eq. 4)
- * on each interval, each root refined by RootIterations bisection steps. The
- * nearest hit gives
- * - the exact depth (gl_FragDepth), so tubes intersect each other and any
- *   other geometry correctly, and parallel compositing (IceT) is exact;
- * - the normal, from the sphere centre to the hit point;
- * - the color, from the color spline at the hit's curve parameter;
- * - rounded caps at the tube ends (the end spheres).
- * Lighting, material, scalar coloring through lookup tables, opacity,
- * clipping planes, depth peeling passes and hardware picking (cell = the
- * polyline, composite block index) go through VTK's usual shader machinery.
+ * (vtkSplineTubeCore); each cubic segment is approximated by SubSegments C1
+ * quadratic sub-segments (vtkSplineTubeMath.h). Per sub-segment a rectangle
+ * in the image plane bounds its projection; per fragment the view ray is
+ * intersected with the spheres swept along the sub-segment: the roots of
+ * polyB (degree 4, Salm eq. 6), then the minima of the entry distance (eq. 4),
+ * each refined by RootIterations bisection steps (RootSamples brackets them).
+ * The nearest hit gives the exact depth (gl_FragDepth: tubes intersect each
+ * other and other geometry correctly, and parallel compositing is exact),
+ * the normal, the color from the color spline, and rounded caps at the tube
+ * ends. Lighting, scalar colors, opacity, clipping planes, depth peeling and
+ * hardware picking (cell = the polyline, block index) go through VTK's usual
+ * shader machinery.
  *
- * The proxy is a rectangle in the image plane per sub-segment, oriented
- * along its projection and bounding the spheres at its control points (its
- * convex hull; the oriented box clipped to the near plane when the camera is
- * among the tubes): set up once per sub-segment in the vertex stage (one
- * point each), emitted as a 4-vertex strip by the geometry stage. On a
- * software rasterizer it costs less than the paper's box (2 triangles
- * against up to 6); the measurements are in docs/performance.md.
+ * StraightTolerance (default 0.02): segments straight to within 2 % of their
+ * radius and a quarter pixel are intersected with the round cone on their
+ * chord in closed form; 0 finds the roots everywhere, as Salm does. Culling
+ * and the interactive subset: see vtkSplineTubeMapper. On the GPU, uploaded
+ * once per data change: the line mappers' node buffers (20 bytes per node,
+ * 16 when all radii are equal, 4 more with scalar colors) and per tube its
+ * cell and block ids (GetGPUMemorySize()). Translucent, every tube is one
+ * layer, its nearest wall.
  *
- * **Straight segments** (StraightTolerance, default 0.02): segments and
- * quadratic sub-segments whose spheres lie within 2 % of their smallest
- * radius and a quarter pixel of the round cone on their chord are
- * intersected with that cone in closed form (svIntersectRoundCone) instead of
- * by root finding; 0 finds the roots everywhere, as Salm does.
- *
- * **Culling**: only the chunks of segments in the view frustum and not
- * hidden behind tubes already drawn are drawn (OcclusionCulling,
- * vtkSplineTubeMapper); while the camera moves, a subset of the tubes that
- * fits the frame budget (InteractiveSubset).
- *
- * Data on the GPU (uploaded once per data change): the line mappers' node
- * buffers (vtkSplineTubeMapper: 20 bytes per node, 16 when all radii are
- * equal, 4 more with scalar colors) and
- * per tube its cell and block ids. See GetGPUMemorySize().
- *
- * Translucent (actor opacity below 1, with VTK's depth peeling or its
- * order-independent translucency), every tube is one layer, its nearest
- * wall: each rectangle keeps only the hits between the planes normal to the
- * curve at its ends, so that neighbouring sub-segments, which share their
- * end spheres, never both draw a point (TestTubeTranslucency).
- *
- * Limitations: point picking is not
- * supported (cell and block picking are); non-uniform actor scaling is
- * treated as the uniform scale with the same volume change.
+ * Limits: no point picking (cell and block picking work); a non-uniform actor
+ * scale is treated as the uniform scale with the same volume change. Why a
+ * rectangle rather than the paper's box: docs/components.md; costs:
+ * docs/performance.md.
  *
  * @sa vtkTessellatedTubeMapper vtkSplineTubeCore
  */

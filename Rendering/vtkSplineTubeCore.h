@@ -8,39 +8,31 @@
  * Spline Tubes", §3 'Commonalities and terminology'). From the polylines of
  * one or more vtkPolyData it makes, once per data change:
  *
- * - the tube table: per tube (a valid polyline) its first node, its input
- *   block and cell; a node is a point of a polyline after repeated
- *   consecutive points are merged. Nodes are read from the input when needed
- *   (the core keeps the inputs, not a copy of their points: one copy of the
- *   data on the CPU); per node the position and radius, and their
- *   derivatives along the tube (svNodeDerivative(): central differences
- *   inside, second-order one-sided at the ends, so that the cubic Hermite
- *   splines through the nodes are C1 and reproduce straight lines and
- *   parabolas; the chord for two-node tubes), the same on the CPU and in the
- *   shaders; colors (mapped scalars, RGBA) and a node scalar likewise;
- * - chunks: runs of at most ChunkSegments consecutive segments with a
- *   bounding sphere of everything drawn for them (the segments' Bezier control
- *   points padded by their radii) and a sphere per segment, the units of the
- *   renderers' per-view work (vtkSplineTubeVisibility, levels of detail), and
- *   the bounds;
- * - the GPU layout, filled range by range for uploads in pieces
- *   (FillNodes(): position relative to a shift and radius, 16 bytes, or the
- *   position alone, 12 bytes, when every node has the same radius
- *   (GetConstantRadius()); FillNodeInfo(): the tube and its end flags, 4 bytes; FillColors():
- * RGBA8; FillFrames(): the rotation-minimizing frames of Salm §3.1, double reflection of Wang et
- *   al. 2008 with sub-steps where the tangent turns more than
- *   MaximumFrameStepAngle, octahedral int16 x 2).
+ * - the tube table: per tube (a valid polyline) its first node, block and
+ *   cell; a node is a point after repeated consecutive points are merged.
+ *   Nodes are read from the inputs when needed (no copy of the points). Node
+ *   derivatives (svNodeDerivative(): central differences inside, second-order
+ *   one-sided at the ends) make the cubic Hermite splines C1 and reproduce
+ *   lines and parabolas, the same on the CPU and in the shaders;
+ * - chunks: runs of at most ChunkSegments segments with a bounding sphere of
+ *   everything drawn for them and a sphere per segment, the units of the
+ *   per-view work (vtkSplineTubeVisibility, levels of detail);
+ * - the GPU layout, filled range by range for uploads in pieces: FillNodes()
+ *   (position and radius, 16 bytes, or the position alone, 12 bytes, when
+ *   every node has the same radius: GetConstantRadius()), FillNodeInfo()
+ *   (tube and end flags, 4 bytes), FillColors() (RGBA8), FillFrames() (the
+ *   rotation-minimizing frames of Salm §3.1, double reflection of Wang et al.
+ *   2008, sub-stepped beyond MaximumFrameStepAngle; octahedral int16 x 2).
  *
  * Segment s (numbered tube by tube) runs from node GetSegmentFirstNode(s) to
  * the next.
  *
- * Bad input is reported, never rendered as garbage: polylines with a NaN or
- * infinite coordinate, or a NaN, infinite, zero or negative radius (or node
- * scalar), are skipped with a warning naming the cell and point; repeated
- * consecutive points are merged (one warning with the count); polylines with
- * fewer than two distinct points are skipped. A missing, non-numeric or
- * multi-component radius (or node scalar) array is an error (AddPolyData()
- * returns false and adds nothing).
+ * Bad input is reported, never drawn as garbage: polylines with a non-finite
+ * coordinate, or a non-finite or non-positive radius (or node scalar), are
+ * skipped with a warning naming the cell and point; repeated points are
+ * merged (one warning); polylines with fewer than two distinct points are
+ * skipped. A missing, non-numeric or multi-component radius (or node scalar)
+ * array is an error (AddPolyData() returns false and adds nothing).
  */
 
 #ifndef vtkSplineTubeCore_h

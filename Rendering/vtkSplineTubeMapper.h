@@ -3,39 +3,35 @@
  * @class   vtkSplineTubeMapper
  * @brief   Base class of the SplineViz spline-tube mappers.
  *
- * What the tube mappers (vtkRayCastTubeMapper, Salm §3.2, and
- * vtkTessellatedTubeMapper, Salm §3.1) share:
+ * What the line mappers (vtkRayCastTubeMapper, Salm §3.2,
+ * vtkTessellatedTubeMapper, Salm §3.1, and vtkStylizedLineMapper) share:
  *
- * - input: vtkPolyData or a composite data set (e.g. a vtkMultiBlockDataSet)
- *   of vtkPolyData, as ParaView gives it; every polyline (VTK_LINE and
- *   VTK_POLY_LINE cells) of every block becomes a tube, and all tubes are drawn
- *   together (one buffer, one draw call);
+ * - input: vtkPolyData or a composite data set of vtkPolyData, as ParaView
+ *   gives it; every polyline (VTK_LINE and VTK_POLY_LINE cells) of every
+ *   block becomes a tube, all drawn together;
  * - radius: a constant Radius (world units; by default a fraction of the
- *   data's diagonal), or the per-point RadiusArray (world units) multiplied
- *   by RadiusScale; never drawn narrower than MinimumPixelWidth pixels;
+ *   data's diagonal), or the per-point RadiusArray times RadiusScale; never
+ *   narrower than MinimumPixelWidth pixels on screen;
  * - color: the actor's property, or scalars mapped through the mapper's usual
  *   settings (ScalarVisibility, ScalarMode, SelectColorArray, lookup table,
- *   ScalarRange, ColorMode: the same as vtkPolyDataMapper). Mapped colors are
- *   interpolated along the tubes by the color spline;
- * - the per-data preparation by vtkSplineTubeCore (nodes, tangents, frames,
- *   segment table), done only when the input, the radius settings or the
- *   coloring change; the per-frame work stays on the GPU;
- * - bounds that include the tubes' radii.
- *
- * - the tubes buffer on the GPU (Salm §3, Fig. 3), as buffer textures read by
- *   the shaders with texelFetch (glsl/vtkSplineTubeNodes.glsl): per node the
- *   position and radius (`tubeNodes`, RGBA32F; the position alone, RGB32F,
- *   when every node has the same radius, which then is a uniform) and its
- *   tube with the flags
- *   first and last node of the tube (`tubeNodeInfo`, R32UI); the derivatives
- *   are the neighbours' differences, computed where they are used (the same
- *   as vtkSplineTubeCore's); per tube the cell and block ids for picking
- *   (`tubeTubes`, RG32I); with scalar coloring, per node the color (RGBA8,
- *   `tubeColors`, R32UI). 20 bytes per node (16 with one radius), 4 more
- *   with colors, uploaded in
- *   pieces from the input (no copy of the data kept on the CPU side);
- * - the fragment-shader code for the color spline and for hardware picking
- *   (cell = polyline, composite index = block).
+ *   ScalarRange, ColorMode, as vtkPolyDataMapper), interpolated along the
+ *   tubes by the color spline;
+ * - the per-data preparation by vtkSplineTubeCore, redone only when the
+ *   input, the radius settings or the coloring change; bounds that include
+ *   the radii;
+ * - the tubes buffer on the GPU (Salm §3, Fig. 3), buffer textures read with
+ *   texelFetch (glsl/vtkSplineTubeNodes.glsl): per node position and radius
+ *   (the position alone when every node has the same radius, then a uniform)
+ *   and the tube with its end flags; per tube the cell and block ids for
+ *   picking; with scalar coloring, per node the color. 20 bytes per node (16
+ *   with one radius), 4 more with colors, uploaded in pieces from the input
+ *   (no copy kept on the CPU side); derivatives are computed from the
+ *   neighbours where they are used;
+ * - per frame, only the chunks in the frustum and not hidden behind what is
+ *   drawn (OcclusionCulling), and while the camera moves a subset of the
+ *   lines sized to the frame budget (InteractiveSubset); VisibilityArray,
+ *   DirectionColoring, EndpointMarkers and a slab crop;
+ * - the fragment-shader code for the color spline and for hardware picking.
  *
  * Subclasses upload what their shaders need (UploadTubes(), usually through
  * UploadTubeBuffers()) and draw (RenderPieceDraw()).

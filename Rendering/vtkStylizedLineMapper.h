@@ -6,98 +6,34 @@
  *
  * Implements Stoll, Gumhold and Seidel, "Visualization with stylized line
  * primitives" (IEEE Visualization 2005). Every polyline of the input
- * (vtkPolyData or a composite data set of them, as for the tube mappers,
- * see vtkSplineTubeMapper) is drawn as a generalized cylinder with a
- * circular profile whose axis is the polyline (straight segments between its
- * points, §3) and whose radius, color, texture coordinate and orientation
- * are given per point.
+ * (vtkPolyData or a composite of them, as for vtkSplineTubeMapper) is drawn
+ * as a generalized cylinder around the polyline (straight between its
+ * points, §3) with radius, color, texture coordinate and orientation per point.
  *
- * - **Per-vertex data, uploaded once per data change** (§3, §4.1): position
- *   and radius (16 bytes; 12, the position alone, when all radii are equal),
- *   unit tangent (octahedral, 4 bytes), with scalar
- *   coloring the color (RGBA8, 4 bytes), with a texture the texture
- *   coordinate along the line and the orientation angle (8 bytes) and a
- *   body-fixed frame vector (4 bytes), plus 12 bytes per polyline: at most
- *   36 bytes per vertex against Stoll's 110 per segment. The polyline scan,
- *   the validation, tangents, radii and colors come from the tube core
- *   (vtkSplineTubeCore), shared with the tube mappers. GetGPUMemorySize()
- *   counts the bytes.
- * - **Silhouette-quad splatting** (§4.1): the vertex stage computes the two
- *   silhouette points of each vertex from Eq. 3-7 (the exact extrusion with
- *   f_i, ExactSilhouette on) or Eq. 8 (off); each polyline is one triangle
- *   strip of two vertices per point, all polylines in one multi-draw, with
- *   no index or vertex attribute data (the stage reads its vertex from the
- *   buffers by gl_VertexID).
- * - **Fragment stage** (§4.2): the normal of Eq. 10 from the interpolated
- *   frame vectors, then VTK's lighting, material, opacity, scalar coloring,
- *   clipping planes (of the corrected surface point), depth peeling and
- *   hardware picking (cell = the polyline, composite index = its block).
- *   Translucent, each line is one layer: quad fragments beyond the plane of
- *   their polyline's end are left to its cap, and the fix-up's joint
- *   spheres are not drawn (TestTubeTranslucency).
- * - **Halo** (§4.2): HaloWidth (a fraction of the radius) widens every quad;
- *   the extra band is drawn in HaloColor (or the renderer's background) at a
- *   depth pushed back by HaloDepthOffset radii, so that it hides lines
- *   further behind and never its own line. The halo is defined in object
- *   space: it scales with the line. DepthDependentHalo tilts the halo away
- *   from the eye (Everts et al. 2009), so that its visible width follows the
- *   depth gap to the lines behind it. The caps have one too; the fix-up's
- *   geometry has none (around a line seen down its length a halo ring
- *   would cut the line's own parts further back).
- * - **Textures along the line** (§4.2, §6, Figs. 10-13): built-in stripes,
- *   arrows or dashes (procedural, anti-aliased), or the actor's vtkTexture,
- *   mapped with u along the line (TextureRepeat, in radii or world units)
- *   and v around the circumference, measured in a rotation-minimizing frame
- *   of the line (so the texture stays on the surface as the camera turns);
- *   the OrientationArray (radians) turns it around the line (Stoll Fig. 11).
- *   With NormalMapping the texture perturbs the normal instead of the color
- *   (the patterns as bumps, an actor texture as a tangent-space normal map,
- *   Fig. 13).
- * - **Depth correction** (§4.3, Eq. 11-12; DepthCorrection on by default):
- *   each fragment's depth is that of the cylinder surface in front of the
- *   quad, d = r / sin(alpha) along the view ray, weighted by the normal's
- *   component toward the eye; lines cross each other and other geometry
- *   plausibly. It is exact for an infinite cylinder seen orthographically;
- *   it stays approximate at the joints of strongly bent lines and where the
- *   tangent turns toward the viewer (where the fix-up takes over).
- * - **Hybrid fix-up** (§4.3-4.4, FixUp on by default): where the tangent
- *   nearly points at the viewer (|t . u| > 1 - FixUpEpsilon, default 0.025
- *   after Stoll's 0.02-0.03) or the eye is at the line, the quads flip and
- *   leave holes. Per view change the CPU tests precomputed batches of up to
- *   16 consecutive segments whose tangents differ by at most 12 degrees
- *   (Stoll: 10-15 degrees) in parallel (vtkSMPTools; a batch is skipped by
- *   one cone test unless the view can meet its tangents), and the batches
- *   with a problem vertex are drawn as real geometry instead of quads:
- *   cylinders per segment, generated on the GPU from the
- *   same vertex buffers (only the list of segments is uploaded, a few bytes
- *   per fixed segment). This is Stoll's method 1 (tessellated geometry, exact
- *   depth) without its alpha blending: the quad strips are split at the
- *   batch boundaries, so nothing is drawn twice and the shading of both
- *   parts is the same fragment code. Method 2 (four quads per segment bent
- *   towards the viewer) was not used: looking along a segment it covers at
- *   most the half of the profile disk facing the eye and its depth is not
- *   continuous (Stoll §4.4). Line ends are closed by flat caps (drawn for the
- *   polylines' ends turned to the eye). See vtkStylizedLineFixUp.
- * - **Shadows** (§4.2), two ways. With Shadows on, the mapper keeps a shadow
- *   map of its own (Stoll's method: the lines rendered from the light, their
- *   quads extruded toward the light, into a ShadowMapResolution^2 depth
- *   texture, redrawn only when the light, the camera of a camera light or
- *   the data change), so that lines shadow each other wherever the mapper
- *   is used, ParaView included: the light is the renderer's first switched-on
- *   light that is not a headlight (a light of ParaView's light kit), else a
- *   virtual light above and right of the camera; it is treated as
- *   directional (an orthographic shadow camera around the lines); in shadow
- *   the diffuse and specular light is dimmed to 40 % (3x3 percentage-closer
- *   filtering). Or, for shadows on other geometry too, the mapper renders
- *   into VTK's vtkShadowMapBakerPass / vtkShadowMapPass like polygonal
- *   geometry: seen from the light its quads extrude toward the light, the
- *   lit pass looks its fragments up at their corrected surface points.
+ * - Silhouette quads (§4.1): one triangle strip per polyline, extruded in
+ *   the vertex stage (Eq. 3-7 with ExactSilhouette, else Eq. 8) from at most
+ *   36 bytes per vertex on the GPU (GetGPUMemorySize()).
+ * - Shading (§4.2): the normal of Eq. 10, VTK's lighting, scalar colors,
+ *   clipping planes, depth peeling (one layer per line when translucent),
+ *   hardware picking (cell = the polyline, block index).
+ * - Halos (§4.2): HaloWidth (radii), HaloColor or the background,
+ *   HaloDepthOffset; DepthDependentHalo (Everts et al. 2009).
+ * - Textures (§4.2, §6, Figs. 10-13): TexturePattern (stripes, arrows,
+ *   dashes) or the actor's vtkTexture, TextureRepeat, OrientationArray,
+ *   NormalMapping.
+ * - Depth correction (§4.3, Eq. 11-12; DepthCorrection, on): the depth of
+ *   the cylinder surface, so lines cross each other and other geometry.
+ * - Hybrid fix-up (§4.3-4.4; FixUp, on): where a tangent nearly points at the
+ *   viewer (FixUpEpsilon), batches of segments are drawn as real cylinders
+ *   (vtkStylizedLineFixUp); flat caps close the line ends (Capping).
+ * - Shadows (§4.2): a shadow map of its own (Shadows, ShadowMapResolution),
+ *   or VTK's vtkShadowMapPass for shadows on other geometry too.
  *
- * Limits: the lines are straight between their points (resample coarse
- * polylines, e.g. with vtkSplineFilter); the depth of the quads is the
- * infinite cylinders' (not the joints'); point picking is not supported
- * (cell and block picking are); a non-uniform actor scale is treated as the
- * uniform scale with the same volume change.
+ * Limits: lines are straight between their points (resample coarse ones,
+ * e.g. with vtkSplineFilter); the corrected depth is that of infinite
+ * cylinders, approximate at sharp joints; no point picking (cell and block
+ * picking work); a non-uniform actor scale is treated as the uniform scale
+ * with the same volume change. Design: docs/components.md, "Stylized lines".
  *
  * @sa vtkSplineTubeMapper vtkSplineTubeCore vtkStylizedLineFixUp vtkRayCastTubeMapper
  */

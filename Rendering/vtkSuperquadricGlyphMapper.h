@@ -4,100 +4,37 @@
  * @brief   Ray-cast superquadric tensor glyphs on the GPU, one per point.
  *
  * Draws Kindlmann's superquadric tensor glyph (Kindlmann, "Superquadric
- * Tensor Glyphs", VisSym 2004) at every point of any vtkDataSet (image data
- * of a DTI volume, unstructured grids, polydata, point clouds) or of every
- * leaf of a composite data set, following Hlawitschka, Eichelbaum and
- * Scheuermann, "Fast and memory efficient GPU-based rendering of tensor data":
+ * Tensor Glyphs", VisSym 2004) at every point of any vtkDataSet or of every
+ * leaf of a composite data set, ray cast on the GPU after Hlawitschka,
+ * Eichelbaum and Scheuermann, "Fast and memory efficient GPU-based rendering
+ * of tensor data" (§3.1-3.6):
  *
- * - Only the raw tensors are uploaded, once per data change: per glyph its
- *   position and the 6 independent tensor components (36 bytes), plus 4
- *   bytes of color when the glyphs may be colored by a scalar array.
- *   Points whose tensor has a NaN/infinite component, is zero, or is masked
- *   out (MaskArrayName) are left out on the CPU (with a warning for the
- *   first two).
- * - The vertex shader does, per glyph and per frame (paper §3.1, §3.6): the
- *   eigen-decomposition (glsl/vtkTensorMathShared.glsl, the same code as
- *   vtkSplineVizTensorMath), the negative-eigenvalue policy, the thresholds,
- *   the trace-normalized Westin metrics cl, cp, Kindlmann's alpha and beta
- *   from Gamma with the symmetry axis x (along e1) when cl > cp and z (along
- *   e3) otherwise, the glyph frame and the color. The geometry shader emits
- *   the sprite: the faces of the glyph's box that face the eye (the box is
- *   the worst case of any gamma, paper §3.2), so each fragment starts where
- *   its ray enters the box. The fragment shader ray-casts the implicit
- *   surface in glyph space (paper §3.3-3.4): clip to the unit box and to a
- *   ball of radius 2^(1-(alpha+beta)/2) containing the glyph, bracket the
- *   first root (entry into the inscribed unit ball, or safe Newton steps on
- *   the convex function, which also prove misses), refine by Newton on
- *   log(1 + f) with a bisection fallback (Teem's echo/sqd.c approach), at
- *   most MaximumIterations evaluations; it writes the exact depth and shades
- *   with VTK's lights and the analytic normal.
- * - So changing Gamma, ScaleFactor, ScaleMode, thresholds, the sign policy or
- *   ColorMode only changes uniforms: no re-upload (GetUploadCount()).
+ * - only the raw tensors are uploaded, once per data change: 36 bytes per
+ *   glyph (+4 with scalar colors); NaN/infinite, zero and masked
+ *   (MaskArrayName) tensors are left out, with one warning per data change;
+ * - per frame on the GPU: eigen-decomposition (the code of
+ *   vtkSplineVizTensorMath), Westin metrics, Kindlmann's shape from Gamma,
+ *   a sprite of the glyph box's front faces and a ray cast of the implicit
+ *   surface (at most MaximumIterations evaluations) with exact depth and
+ *   analytic normal; changing Gamma, the scale, thresholds, sign policy or
+ *   GlyphColorMode sets uniforms only (GetUploadCount());
+ * - size: ScaleMode SCALE_BY_EIGENVALUES, SCALE_NORMALIZED or SCALE_CLAMPED
+ *   (MaximumScale), times ScaleFactor; MinimumThickness, MinimumRoundness;
+ * - colors: COLOR_BY_EIGENVECTOR (|e1| RGB x FA), COLOR_BY_SCALARS (the
+ *   lookup table), COLOR_SOLID, COLOR_BY_QUADRATIC_FORM;
+ * - indefinite tensors (NegativeEigenvaluePolicy SCHULTZ_KINDLMANN): the
+ *   glyphs of Schultz and Kindlmann (IEEE TVCG 2010, §4.2-4.3), blended
+ *   across a zero eigenvalue within ZeroEigenvalueBand;
+ * - clipping planes (up to 6) cut the glyphs as solids; composite inputs
+ *   take per-block colors, opacities and visibility;
+ * - exact occlusion culling (Culling, on for opaque, non-multisampled
+ *   rendering; NumberOfCullingGroups): the same image as without it.
  *
- * Glyph size: the semi-axes are ScaleFactor * l_i (SCALE_BY_EIGENVALUES),
- * ScaleFactor * l_i / l_1 (SCALE_NORMALIZED: the largest semi-axis is
- * ScaleFactor) or ScaleFactor * l_i uniformly shrunk to a largest semi-axis
- * of at most MaximumScale (SCALE_CLAMPED); every semi-axis is then at least
- * MinimumThickness times the largest. (vtkTensorGlyph with a source of size
- * 2 gives the same sizes.) alpha and beta are clamped to
- * [MinimumRoundness, 1] (the paper suggests [0.2, 1]) which bounds the
- * exponents 2/alpha, 2/beta and so the root-finding work.
- *
- * Colors: COLOR_BY_EIGENVECTOR (|e1| as RGB times FA, the usual DTI map),
- * COLOR_BY_SCALARS (the mapper's scalar array through its lookup table, as
- * any vtkMapper: ScalarVisibility, ScalarMode, SelectColorArray,
- * LookupTable; point data only; without scalars the actor's color is used)
- * or COLOR_SOLID (the actor's property). Lighting, ambient/diffuse/specular
- * and opacity come from the actor's property.
- *
- * Indefinite tensors (NegativeEigenvaluePolicy SCHULTZ_KINDLMANN): the
- * superquadric glyphs of Schultz and Kindlmann, "Superquadric Glyphs for
- * Symmetric Second-Order Tensors" (IEEE TVCG 16(6), 2010). Implemented: the
- * shape square of §4.2 (the point (u, v) of the sorted signed eigenvalues,
- * negative-dominant tensors drawn as the glyph of -T, as Teem's
- * tenGlyphBqdUvEval) and the glyph family of §4.3 with its third exponent
- * (alpha, beta, c; Teem's tenGlyphBqdAbcUv), sharpened by Gamma, each axis
- * scaled by |lambda_i|; shared with the CPU in
- * vtkSplineVizTensorMath::SchultzKindlmannSquare/SchultzKindlmannShape.
- * Variation: the definite triangle of the square is placed by the
- * trace-normalized Westin metrics, so positive definite tensors get exactly
- * Kindlmann's glyphs (the paper normalizes by the largest |lambda|). Addition:
- * within ZeroEigenvalueBand of a zero eigenvalue the glyph is blended with the
- * definite side's, so it changes continuously when MinimumThickness > 0 (0:
- * the paper's glyphs). These shapes are not convex in general: a separate
- * ray caster with exact monotonicity bounds finds their first hit
- * (glsl/vtkSuperquadricGlyphShared.glsl). COLOR_BY_QUADRATIC_FORM colors the
- * surface by the sign of x^T T x, as the paper does.
- *
- * Clipping planes (vtkMapper::AddClippingPlane, up to 6): the glyphs are cut
- * as solids on the ray, the cut drawn at the plane's exact depth with the
- * plane's normal; glyphs entirely beyond a plane are dropped in the geometry
- * stage. Composite inputs: per-block colors, opacities and visibility
- * (SetCompositeDataDisplayAttributes, as vtkCompositePolyDataMapper2).
- *
- * Occlusion culling (Culling, default on; opaque, not multisampled): the
- * preparation step sorts the glyphs into bricks of a uniform grid (about 8
- * glyphs per brick). Per frame the CPU orders the bricks into
- * NumberOfCullingGroups visibility groups from the camera (the front layer,
- * the one behind it, ..., all deeper ones); the first group is drawn as
- * usual; before each later group the depth buffer is copied and reduced to a
- * pyramid of maxima (2, 4, 16, 64 pixel tiles). The geometry shader drops a
- * glyph whose box lies behind the pyramid over its screen rectangle, and the
- * fragment shader discards a fragment whose sprite point (on the box, in
- * front of the glyph) lies behind the copied depth, before the ray cast. The
- * box contains the glyph, so this is exact: the image is the same with
- * culling off (TestSuperquadricGlyphCulling). Measurements (up to 5x shorter
- * frames for 1M glyphs on llvmpipe) are in docs/performance.md. A gamma
- * change only sets uniforms (nothing is uploaded again).
- *
- * Picking: vtkHardwareSelector prop picking and point-id selection (the ids
- * of the input points; for composite inputs the ids within the concatenation
- * of the leaves' points). Not supported: texture maps.
- *
- * Bad input: a missing tensor array or one whose number of components does
- * not fit TensorLayout is an error for that block (nothing drawn for it);
- * NaN/infinite and zero tensors are not drawn (one warning with the counts
- * per data change).
+ * Picking: prop picking and point-id selection. Not supported: texture maps.
+ * Bad input: a missing tensor array, or one whose components do not fit
+ * TensorLayout, is an error for that block (nothing drawn for it). Design
+ * and performance: docs/components.md, "Superquadric tensor glyphs", and
+ * docs/performance.md.
  */
 #ifndef vtkSuperquadricGlyphMapper_h
 #define vtkSuperquadricGlyphMapper_h
@@ -120,7 +57,14 @@ public:
   vtkTypeMacro(vtkSuperquadricGlyphMapper, vtkOpenGLPolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Scale modes (see the class documentation).
+  /**
+   * Scale modes: the semi-axes are ScaleFactor * l_i (SCALE_BY_EIGENVALUES),
+   * ScaleFactor * l_i / l_1 (SCALE_NORMALIZED: the largest semi-axis is
+   * ScaleFactor) or ScaleFactor * l_i uniformly shrunk to a largest semi-axis
+   * of at most MaximumScale (SCALE_CLAMPED); every semi-axis is then at least
+   * MinimumThickness times the largest (vtkTensorGlyph with a source of size
+   * 2 gives the same sizes).
+   */
   enum ScaleModes
   {
     SCALE_BY_EIGENVALUES = 0,
@@ -136,7 +80,14 @@ public:
     SCHULTZ_KINDLMANN = 2
   };
 
-  /// Color modes (see the class documentation).
+  /**
+   * Color modes: COLOR_BY_EIGENVECTOR (|e1| as RGB times FA, the usual DTI
+   * map), COLOR_BY_SCALARS (the mapper's point scalars through its lookup
+   * table, as any vtkMapper; without scalars the actor's color),
+   * COLOR_SOLID (the actor's property), COLOR_BY_QUADRATIC_FORM (the sign of
+   * x^T T x on the surface, as Schultz and Kindlmann do). Lighting and
+   * opacity come from the actor's property.
+   */
   enum ColorModes
   {
     COLOR_BY_EIGENVECTOR = 0,
@@ -270,7 +221,7 @@ public:
    * SKIP_NEGATIVE (default, as Teem) does not draw tensors with a negative
    * eigenvalue; ABSOLUTE_VALUES draws the glyph of the absolute values;
    * SCHULTZ_KINDLMANN draws Schultz and Kindlmann's glyph of the signed
-   * eigenvalues (see the class documentation).
+   * eigenvalues (see docs/components.md, "Superquadric tensor glyphs").
    */
   vtkSetClampMacro(NegativeEigenvaluePolicy, int, SKIP_NEGATIVE, SCHULTZ_KINDLMANN);
   vtkGetMacro(NegativeEigenvaluePolicy, int);

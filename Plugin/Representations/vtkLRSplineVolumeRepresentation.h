@@ -4,54 +4,33 @@
  * @brief   ParaView representation "LR-Spline Volume": direct volume rendering of LR-spline
  * volumes with vtkLRSplineVolumeMapper, exact to the spline.
  *
- * ParaView's own unstructured-grid volume representation
- * (vtkUnstructuredGridVolumeRepresentation) tetrahedralizes its input before
- * any mapper sees it (vtkVolumeRepresentationPreprocessor); for the Bezier
- * cells of vtkLRSplineReader that splits the cells through their control
- * points, so a mapper registered with its AddVolumeMapper() hook never sees
- * the spline. This representation is therefore a vtkVolumeRepresentation of
- * its own (the pattern of ParaView's pvNVIDIAIndeX plugin): it hands the
- * reader's vtkMultiBlockDataSet of VTK_BEZIER_HEXAHEDRON patches, unchanged,
- * to vtkLRSplineVolumeMapper (Fuchs et al., "Direct interactive visualization
- * of locally refined spline volumes", §4).
+ * ParaView's unstructured-grid volume representation tetrahedralizes its
+ * input before any mapper sees it, which splits the Bezier cells of
+ * vtkLRSplineReader through their control points. So this is a
+ * vtkVolumeRepresentation of its own (the pattern of ParaView's
+ * pvNVIDIAIndeX plugin): it hands the reader's vtkMultiBlockDataSet of
+ * VTK_BEZIER_HEXAHEDRON patches, unchanged, to vtkLRSplineVolumeMapper
+ * (Fuchs et al., "Direct interactive visualization of locally refined spline
+ * volumes", §4).
  *
- * What ParaView's volume representations offer and this one forwards:
- * - the color map and opacity editor (LookupTable, ScalarOpacityFunction and
- *   ScalarOpacityUnitDistance on the vtkVolumeProperty); the color array
- *   (ColorArrayName, a point array of Bezier coefficients) selects the
- *   mapper's FieldArrayName, and the lookup table's vector mode and
- *   component (Magnitude, X, Y, Z) its VectorMode / VectorComponent, as
- *   ParaView's image and unstructured volume representations do (without a
- *   color array, e.g. when the representation is chosen for a new data set:
- *   the spline's first field -- the mapper's default: active vectors, else
- *   scalars, else the first point array -- through ParaView's default color
- *   map, "Cool to Warm", and opacity ramp, 0 to 1, over its range, the
- *   picture ParaView's own "Volume" shows);
- * - Shade with Ambient, Diffuse, Specular, SpecularPower; BlendMode
- *   (composite, maximum and minimum intensity, isosurface) and the iso values
- *   (IsosurfaceValues, as ParaView's image volume representation names them);
- * - the block selectors of the multiblock inspector (hidden patches are not
- *   rendered), the actor's position, orientation, scale and origin.
+ * Forwarded as ParaView's volume representations do: the color map and
+ * opacity editor (LookupTable, ScalarOpacityFunction,
+ * ScalarOpacityUnitDistance); the color array with its vector mode and
+ * component (Magnitude, X, Y, Z) as the mapper's FieldArrayName, VectorMode
+ * and VectorComponent (without a color array: the spline's first field
+ * through ParaView's default color map and opacity ramp); Shade with
+ * Ambient, Diffuse, Specular, SpecularPower; BlendMode and IsosurfaceValues;
+ * block visibility; the actor's position, orientation, scale and origin. Its
+ * own settings are the mapper's, with the trimming surface on input port 1.
  *
- * Its own settings are the mapper's (see vtkLRSplineVolumeMapper): element
- * search structure, k-d forest resolution, adaptive or fixed steps, step
- * scale, sample distance, supersampling, jittering, shading model, bisection
- * steps, maximum steps, and the trimming surface: input port 1 (optional),
- * any polygonal data (e.g. an STL reader's output).
+ * Parallel: the whole data set is requested on every rank and only the first
+ * rank renders it; the view composites the ranks' images in visibility
+ * order, so the picture equals a single process's. The data is never sent to
+ * the client. Interactive (LOD) renders draw the outline of the patches' box.
  *
- * Parallel rendering (pvserver, pvbatch with MPI): the mapper cannot
- * composite pieces of a spline in visibility order, so this representation
- * asks its inputs for the whole data set (no piece split) and only the first
- * rank renders it; the others render nothing of it, and the view composites
- * the ranks' images in visibility order (ordered compositing), which keeps the
- * translucent picture identical to a single process. The data is never sent
- * to the client (remote rendering is requested), since every rank holds all
- * of it. Interactive (LOD) renders draw the outline of the patches' box.
- *
- * Properties of ParaView's unstructured volume representation that have no
- * meaning here (the mapper choice, the resampling dimensions, data
- * partitions) are accepted and ignored; a separate opacity array and the
- * multi-component mapping are not supported (a warning says so).
+ * Ignored: the mapper choice, the resampling dimensions, data partitions. Not
+ * supported (a warning says so): a separate opacity array, multi-component
+ * mapping. Details: docs/components.md, "LR-Spline Volume in ParaView".
  *
  * @sa vtkLRSplineVolumeMapper vtkLRSplineReader
  */
