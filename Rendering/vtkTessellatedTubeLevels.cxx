@@ -27,7 +27,7 @@ struct ThinView
   double RadiusScale; // model to view
   double Shift[3];
   double SideLength; // pixels per ring edge (2 MaxSilhouetteEdgeLength)
-  double Edge;       // longest edge along the tube, pixels (4 MaxEdgeLength)
+  double Edge;       // longest edge along the tube, pixels (svThinEdgeFactor MaxEdgeLength)
   double MaxLevel;   // MaxTessellationLevel
   bool Parallel;
 };
@@ -109,7 +109,7 @@ bool ThinScreen(const ThinView& v, const ViewNode& n, double p[2])
 
 /// Rings along a thin run of `count` segments from node `first`: the level
 /// the control stage's single-patch mode sets (tubeSinglePatch: edges at
-/// most Edge pixels on screen, chords within half a pixel of the curve on
+/// most Edge pixels on screen, chords within a quarter pixel of the curve on
 /// screen and within a tenth of the radius in space, 1.7 times that inside
 /// runs, whose chords straddle the curve), and the intervals of its first
 /// and last rings. The same bounds, through the same functions
@@ -140,7 +140,7 @@ void ThinChunkLevels(const ThinView& v, const double* P, const double* M, vtkIdT
     const vec4 p1(b.P[0], b.P[1], b.P[2], b.R);
     const vec4 m1(b.D[0], b.D[1], b.D[2], b.DR);
     const vec4 middle = vtkSplineTubeMath::svHermite(p0, m0, p1, m1, 0.5);
-    const double sagitta = vtkSplineTubeMath::svThinSegmentSagitta(m0, m1, 1.0);
+    const double sagitta = vtkSplineTubeMath::svThinSegmentSagitta(p0, m0, p1, m1, 1.0);
     const double w =
       v.Proj[3][0] * middle.x + v.Proj[3][1] * middle.y + v.Proj[3][2] * middle.z + v.Proj[3][3];
     const double radius = std::min({ a.R, b.R, middle.w });

@@ -24,7 +24,7 @@
  *   vtkSplineTubeVisibility), the bins and the instance list. A chunk of a
  *   thin tube at most WholeChunkPixels long on screen whose rings need at most
  *   ThinMaxSides intervals is a thin draw, its rings along the levels the
- *   control stage would choose (ThinChunkLevels: chords within half a pixel on
+ *   control stage would choose (ThinChunkLevels: chords within a quarter pixel on
  *   screen and a tenth of the radius in space, through the shared
  *   svThin... functions of vtkSplineTubeMathShared.glsl) rounded up to the
  *   thin ladder; other chunks of thin tubes are one patch, longer ones a patch

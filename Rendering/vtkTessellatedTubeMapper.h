@@ -34,7 +34,7 @@
  *   grows as 1 / sin of the angle between the tangent and the ray), the
  *   vertices between the silhouettes placed so that the chords straddle the
  *   circle (depth within 0.21 radii for 3 intervals); the level along
- *   keeps the chords within half a pixel of the curve on screen and within
+ *   keeps the chords within a quarter pixel of the curve on screen and within
  *   a tenth of the radius in space (from the curvature of the node chain or
  *   the segment's tangents; inside a run the vertices move out by half a
  *   chord's sagitta so that the chords straddle the curve, and 1.7 times

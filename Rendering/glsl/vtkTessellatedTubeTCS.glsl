@@ -310,7 +310,7 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
     else
     {
       // The cubic's deviation from its chord between tA and tD.
-      float sagitta = svThinSegmentSagitta(seg.m0, seg.m1, tD - tA);
+      float sagitta = svThinSegmentSagitta(seg.p0, seg.m0, seg.p1, seg.m1, tD - tA);
       vec4 middle = svHermite(seg.p0, seg.m0, seg.p1, seg.m1, 0.5 * (tA + tD));
       float w = (VCDCMatrix * vec4(middle.xyz, 1.0)).w;
       along = clamp(max(min(screen / (svThinEdgeFactor * tubeMaxEdgeLength), tubeMaxLevel),

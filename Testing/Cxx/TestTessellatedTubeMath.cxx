@@ -308,34 +308,83 @@ int TestTessellatedTubeMath(int, char*[])
   // The levels of thin tubes (shared by the control stage and the CPU
   // classification of the thin-tube draws).
   // - svThinSagittaLevel: the fewest chords n whose sagitta s / n^2 is within
-  //   the bound (half a pixel on screen, a tenth of the radius in space).
+  //   the bound (svThinSagittaPixels on screen, svThinDepthSagitta radii in
+  //   space).
   for (int i = 0; i < 200; ++i)
   {
     const double sagitta = uniform(1e-4, 10.0);
     const double w = uniform(0.5, 50.0);
     const double radius = uniform(1e-3, 1.0);
     const double pixelScale = uniform(100.0, 2000.0);
-    const double bound = std::min(0.5 * w / pixelScale, 0.1 * radius);
+    const double bound =
+      std::min(sm::svThinSagittaPixels * w / pixelScale, sm::svThinDepthSagitta * radius);
     const double n = sm::svThinSagittaLevel(sagitta, w, radius, pixelScale);
     SV_CHECK(status, n >= 1.0 && n == std::floor(n));
     SV_CHECK(status, sagitta / (n * n) <= bound * (1.0 + 1e-12));
     SV_CHECK(status, n == 1.0 || sagitta / ((n - 1.0) * (n - 1.0)) > bound);
   }
-  // - svThinSegmentSagitta: over the whole segment, the distance of the
-  //   segment's middle from the chord's middle (Hermite weights +-1/8 for
-  //   the derivatives there), whatever the end points; a quarter of it over
-  //   half the segment.
-  for (int i = 0; i < 100; ++i)
+  // - svThinSegmentSagitta: a bound on how far the segment strays from the
+  //   linear interpolation between its points at the ends of a piece (what
+  //   the thin walls' rings interpolate), measured by sampling each of n
+  //   pieces 64 times: never above the bound, and within 8 times of it at
+  //   the worst piece (quadratic segments: equal to it). Random segments,
+  //   and S-shaped ones (m0 = m1 off the chord), whose middle lies on the
+  //   chord: the deviation of the middle alone (|m0 - m1| / 8, the negative
+  //   control) says 0 there and must fail the measured deviation.
   {
     using vec4 = vtkSplineTubeMath::vec4;
-    const vec4 p0(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0), 0.1);
-    const vec4 p1(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0), 0.1);
-    const vec4 m0(uniform(-3.0, 3.0), uniform(-3.0, 3.0), uniform(-3.0, 3.0), 0.0);
-    const vec4 m1(uniform(-3.0, 3.0), uniform(-3.0, 3.0), uniform(-3.0, 3.0), 0.0);
-    const vec4 middle = sm::svHermite(p0, m0, p1, m1, 0.5);
-    const double deviation = glm::length(vec3(middle) - 0.5 * (vec3(p0) + vec3(p1)));
-    SV_CHECK_NEAR(status, sm::svThinSegmentSagitta(m0, m1, 1.0), deviation, 1e-12);
-    SV_CHECK_NEAR(status, sm::svThinSegmentSagitta(m0, m1, 0.5), 0.25 * deviation, 1e-12);
+    auto measured = [](const vec4& p0, const vec4& m0, const vec4& p1, const vec4& m1, int n)
+    {
+      double worst = 0.0;
+      for (int k = 0; k < n; ++k)
+      {
+        const double t0 = static_cast<double>(k) / n;
+        const double t1 = static_cast<double>(k + 1) / n;
+        const vec3 a(sm::svHermite(p0, m0, p1, m1, t0));
+        const vec3 b(sm::svHermite(p0, m0, p1, m1, t1));
+        for (int j = 1; j < 64; ++j)
+        {
+          const double f = j / 64.0;
+          const vec3 c(sm::svHermite(p0, m0, p1, m1, t0 + f * (t1 - t0)));
+          worst = std::max(worst, glm::length(c - ((1.0 - f) * a + f * b)));
+        }
+      }
+      return worst;
+    };
+    double loosest = 0.0;
+    int controlFailures = 0;
+    for (int i = 0; i < 200; ++i)
+    {
+      const vec4 p0(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0), 0.1);
+      const vec4 p1(uniform(-1.0, 1.0), uniform(-1.0, 1.0), uniform(-1.0, 1.0), 0.1);
+      const vec4 m0(uniform(-3.0, 3.0), uniform(-3.0, 3.0), uniform(-3.0, 3.0), 0.0);
+      const bool sShaped = i % 2 == 1;
+      const vec4 m1 =
+        sShaped ? m0 : vec4(uniform(-3.0, 3.0), uniform(-3.0, 3.0), uniform(-3.0, 3.0), 0.0);
+      for (int n : { 1, 2, 5 })
+      {
+        const double bound = sm::svThinSegmentSagitta(p0, m0, p1, m1, 1.0 / n);
+        const double deviation = measured(p0, m0, p1, m1, n);
+        SV_CHECK_MSG(status, deviation <= bound * (1.0 + 1e-9),
+          "svThinSegmentSagitta " << bound << " below the measured deviation " << deviation << " ("
+                                  << n << " pieces)");
+        if (deviation > 1e-9)
+        {
+          loosest = std::max(loosest, bound / deviation);
+        }
+        const double middleOnly = 0.125 * glm::length(vec3(m0) - vec3(m1)) / (n * n);
+        if (sShaped && n == 1 && deviation > middleOnly * (1.0 + 1e-9))
+        {
+          ++controlFailures;
+        }
+      }
+    }
+    std::cout << "svThinSegmentSagitta: at most " << loosest
+              << " times the measured deviation; the middle-only control fails on "
+              << controlFailures << " of 100 S-shaped segments" << std::endl;
+    SV_CHECK_MSG(status, loosest <= 8.0, "svThinSegmentSagitta too loose: " << loosest << "x");
+    SV_CHECK_MSG(status, controlFailures == 100,
+      "the middle-only control passed on " << 100 - controlFailures << " S-shaped segments");
   }
   // - svCylinderFrontDistance (the thin walls' depth per fragment): from
   //   random points inside random cylinders along random rays (from
