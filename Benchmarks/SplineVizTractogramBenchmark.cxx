@@ -16,7 +16,9 @@
 // with vtkTractogramReader and reports:
 //  - read: the reader's time and the peak RSS after reading,
 //  - first: from the polylines in memory to the first finished frame,
-//  - still: the median frame of an orbit (camera 10 degrees per frame),
+//  - still: the median frame of an orbit (camera 10 degrees per frame), its
+//    per-view CPU work (view s) and, for the stylized lines, the part of it
+//    their fix-up takes (fixup s),
 //  - interactive: the median frame while the render window asks for 15
 //    frames per second (as VTK's interactors do while the camera moves), and
 //    the fraction of the lines the SplineViz renderers drew,
@@ -167,6 +169,8 @@ int Child(const std::string& file, const std::string& renderer, int width, int h
 
   std::vector<double> still;
   std::vector<double> perView;
+  std::vector<double> fixUp;
+  auto* stylized = vtkStylizedLineMapper::SafeDownCast(tubes);
   for (int f = 0; f < frames; ++f)
   {
     ren->GetActiveCamera()->Azimuth(10.0);
@@ -174,6 +178,7 @@ int Child(const std::string& file, const std::string& renderer, int width, int h
     window->Render();
     still.push_back(Now() - s);
     perView.push_back(tubes ? tubes->GetLastPerViewTime() : 0.0);
+    fixUp.push_back(stylized ? stylized->GetLastFixUpTime() : 0.0);
   }
   std::vector<double> interactive;
   double fraction = 1.0;
@@ -205,9 +210,9 @@ int Child(const std::string& file, const std::string& renderer, int width, int h
   {
     gpu = 12.0 * lines->GetNumberOfPoints() + 8.0 * segments; // points, line indices
   }
-  std::printf("RESULT %lld %.3f %.3f %.3f %.3f %.3f %.4f %.1f %.3f %.3f\n",
+  std::printf("RESULT %lld %.3f %.3f %.3f %.3f %.3f %.4f %.1f %.3f %.3f %.3f\n",
     static_cast<long long>(segments), readTime, readRSS, first, Median(still), Median(interactive),
-    fraction, gpu / std::max<vtkIdType>(segments, 1), PeakRSSGB(), Median(perView));
+    fraction, gpu / std::max<vtkIdType>(segments, 1), PeakRSSGB(), Median(perView), Median(fixUp));
   return 0;
 }
 
@@ -218,6 +223,7 @@ struct Result
   double Read = 0, ReadRSS = 0, First = 0, Still = 0, Interactive = 0, Fraction = 1, GPU = 0,
          RSS = 0;
   double PerView = 0; ///< of the still frames: per-view CPU work (our renderers)
+  double FixUp = 0;   ///< of the still frames: the stylized lines' fix-up, part of PerView
 };
 
 /// Run this program as a child for one (file, renderer); parse its RESULT line.
@@ -236,9 +242,9 @@ Result RunChild(const char* self, const std::string& file, const std::string& re
   char line[1024];
   while (std::fgets(line, sizeof(line), pipe))
   {
-    if (std::sscanf(line, "RESULT %lld %lf %lf %lf %lf %lf %lf %lf %lf %lf", &r.Segments, &r.Read,
-          &r.ReadRSS, &r.First, &r.Still, &r.Interactive, &r.Fraction, &r.GPU, &r.RSS,
-          &r.PerView) == 10)
+    if (std::sscanf(line, "RESULT %lld %lf %lf %lf %lf %lf %lf %lf %lf %lf %lf", &r.Segments,
+          &r.Read, &r.ReadRSS, &r.First, &r.Still, &r.Interactive, &r.Fraction, &r.GPU, &r.RSS,
+          &r.PerView, &r.FixUp) == 11)
     {
       r.Ok = true;
     }
@@ -340,7 +346,7 @@ int main(int argc, char* argv[])
   {
     std::fprintf(csv,
       "data,renderer,segments,read_s,read_rss_gb,first_s,still_s,interactive_s,"
-      "fraction,gpu_bytes_per_segment,peak_rss_gb,per_view_s\n");
+      "fraction,gpu_bytes_per_segment,peak_rss_gb,per_view_s,fixup_s\n");
   }
   std::printf("Tractograms at %s, radius %g mm, %d still and %d interactive frames; each "
               "renderer in a process of its own. Ratios to VTK's plain lines.\n",
@@ -350,9 +356,9 @@ int main(int argc, char* argv[])
     MakeData(Split(options["--data"]), Split(options["--streamlines"]), options["--dir"]))
   {
     std::printf("\n== %s\n", data.first.c_str());
-    std::printf("%-13s %10s %7s %7s %8s %7s %8s %9s %8s %7s %7s %7s\n", "renderer", "segments",
-      "read s", "first s", "still s", "view s", "inter s", "fraction", "GPU B/s", "RSS GB",
-      "first x", "still x");
+    std::printf("%-13s %10s %7s %7s %8s %7s %7s %8s %9s %8s %7s %7s %7s\n", "renderer", "segments",
+      "read s", "first s", "still s", "view s", "fixup s", "inter s", "fraction", "GPU B/s",
+      "RSS GB", "first x", "still x");
     std::map<std::string, Result> results;
     // VTK's lines first: the reference of the ratios.
     std::vector<std::string> order = renderers;
@@ -376,17 +382,17 @@ int main(int argc, char* argv[])
       }
       const Result* lines =
         results.count("lines") && results["lines"].Ok ? &results["lines"] : nullptr;
-      std::printf("%-13s %10lld %7.2f %7.2f %8.3f %7.3f %8.3f %9.4f %8.1f %7.2f %7s %7s\n",
-        renderer.c_str(), r.Segments, r.Read, r.First, r.Still, r.PerView, r.Interactive,
-        r.Fraction, r.GPU,
-        r.RSS, lines ? std::to_string(r.First / lines->First).substr(0, 5).c_str() : "-",
+      std::printf("%-13s %10lld %7.2f %7.2f %8.3f %7.3f %7.3f %8.3f %9.4f %8.1f %7.2f %7s %7s\n",
+        renderer.c_str(), r.Segments, r.Read, r.First, r.Still, r.PerView, r.FixUp, r.Interactive,
+        r.Fraction, r.GPU, r.RSS,
+        lines ? std::to_string(r.First / lines->First).substr(0, 5).c_str() : "-",
         lines ? std::to_string(r.Still / lines->Still).substr(0, 5).c_str() : "-");
       std::fflush(stdout);
       if (csv)
       {
-        std::fprintf(csv, "%s,%s,%lld,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.1f,%.3f,%.3f\n",
+        std::fprintf(csv, "%s,%s,%lld,%.3f,%.3f,%.3f,%.3f,%.3f,%.4f,%.1f,%.3f,%.3f,%.3f\n",
           data.first.c_str(), renderer.c_str(), r.Segments, r.Read, r.ReadRSS, r.First, r.Still,
-          r.Interactive, r.Fraction, r.GPU, r.RSS, r.PerView);
+          r.Interactive, r.Fraction, r.GPU, r.RSS, r.PerView, r.FixUp);
         std::fflush(csv);
       }
     }

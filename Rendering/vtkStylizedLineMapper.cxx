@@ -31,6 +31,8 @@
 #include "vtkTexture.h"
 #include "vtkTypeUInt32Array.h"
 
+#include <chrono>
+
 #include "vtkSplineVizShaderPrelude.h"
 #include "vtkSplineTubeMathShared.h"
 #include "vtkStylizedLineFS.h"
@@ -950,7 +952,10 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   {
     return;
   }
+  using Clock = std::chrono::steady_clock;
+  const auto viewStart = Clock::now();
   this->UpdateDraws(ren, act);
+  this->LastFixUpTime = std::chrono::duration<double>(Clock::now() - viewStart).count();
   if (!this->BuildMeshes())
   {
     return;
@@ -1044,8 +1049,10 @@ void vtkStylizedLineMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   this->DrawVisibleChunks(ren, act,
     [&](const std::vector<std::uint32_t>& batches)
     {
+      const auto drawsStart = Clock::now();
       in.FixUp.BuildDraws(
         batches, in.StripFirsts, in.StripCounts, in.Caps, in.FixedSegments, in.Joints);
+      this->LastFixUpTime += std::chrono::duration<double>(Clock::now() - drawsStart).count();
       program->SetUniformi("lineMode", STRIPS);
       program->SetUniformi("lineHaloPass", 0);
       if (!in.StripFirsts.empty())

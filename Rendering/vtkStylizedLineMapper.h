@@ -286,6 +286,13 @@ public:
   vtkIdType GetNumberOfFixUpBatches();
 
   /**
+   * Seconds the last render spent in the fix-up on the CPU (its per-view
+   * classification and the draw lists of the visible batches), part of
+   * GetLastPerViewTime().
+   */
+  double GetLastFixUpTime() const { return this->LastFixUpTime; }
+
+  /**
    * Bytes of line data on the GPU: the vertex buffers, the polyline table,
    * the fix-up's segment list and the cap and cylinder index patterns.
    */
@@ -327,6 +334,7 @@ protected:
   bool FixUp = true;
   double FixUpEpsilon = 0.025;
   int FixUpSides = 64;
+  double LastFixUpTime = 0.0;
   bool Capping = true;
   bool Shadows = false;
   int ShadowMapResolution = 1024;
