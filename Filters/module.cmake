@@ -55,3 +55,6 @@ list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkSplineVizSeeds.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizTermination.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizRandom.h")
+# The explicit Runge-Kutta tableaux and step both tracers integrate with.
+list(APPEND splineviz_private_headers
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizRungeKutta.h")

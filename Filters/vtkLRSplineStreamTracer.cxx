@@ -3,6 +3,7 @@
 
 #include "vtkLRSplineField.h"
 #include "vtkSplineVizProgress.h"
+#include "vtkSplineVizRungeKutta.h"
 #include "vtkSplineVizSeeds.h"
 #include "vtkSplineVizTermination.h"
 
@@ -51,6 +52,20 @@ static_assert(static_cast<int>(vtkLRSplineStreamTracer::OUT_OF_DOMAIN) ==
     static_cast<int>(vtkLRSplineStreamTracer::STAGNATION) == vtkSplineVizTermination::STAGNATION &&
     static_cast<int>(vtkLRSplineStreamTracer::OUT_OF_TIME) == vtkSplineVizTermination::OUT_OF_TIME,
   "vtkLRSplineStreamTracer's termination codes must be vtkSplineVizTermination's");
+// The integrators are the shared Runge-Kutta methods (vtkSplineVizRungeKutta.h).
+static_assert(static_cast<int>(vtkLRSplineStreamTracer::EULER) == vtkSplineVizRungeKutta::EULER &&
+    static_cast<int>(vtkLRSplineStreamTracer::MIDPOINT) == vtkSplineVizRungeKutta::MIDPOINT &&
+    static_cast<int>(vtkLRSplineStreamTracer::KUTTA3) == vtkSplineVizRungeKutta::KUTTA3 &&
+    static_cast<int>(vtkLRSplineStreamTracer::RUNGE_KUTTA4) ==
+      vtkSplineVizRungeKutta::RUNGE_KUTTA4 &&
+    static_cast<int>(vtkLRSplineStreamTracer::RUNGE_KUTTA4_38) ==
+      vtkSplineVizRungeKutta::RUNGE_KUTTA4_38 &&
+    static_cast<int>(vtkLRSplineStreamTracer::RKF5) == vtkSplineVizRungeKutta::RKF5 &&
+    static_cast<int>(vtkLRSplineStreamTracer::HEUN_EULER) == vtkSplineVizRungeKutta::HEUN_EULER &&
+    static_cast<int>(vtkLRSplineStreamTracer::BOGACKI_SHAMPINE) ==
+      vtkSplineVizRungeKutta::BOGACKI_SHAMPINE &&
+    static_cast<int>(vtkLRSplineStreamTracer::RKF45) == vtkSplineVizRungeKutta::RKF45,
+  "vtkLRSplineStreamTracer's integrators must be vtkSplineVizRungeKutta's methods");
 
 //------------------------------------------------------------------------------
 const char* vtkLRSplineStreamTracer::GetReasonName(int reason)
@@ -60,138 +75,11 @@ const char* vtkLRSplineStreamTracer::GetReasonName(int reason)
 
 namespace
 {
-//------------------------------------------------------------------------------
-// Butcher tableaux (explicit). b: the propagated solution; e: b - b_hat, the
-// error estimate's weights (embedded pairs only).
-struct Tableau
-{
-  int Stages;
-  double A[6][6];
-  double B[6];
-  double E[6];
-  int Order;      // of the propagated solution
-  int ErrorOrder; // order of the lower solution (controller exponent 1/(q+1))
-  bool Embedded;
-};
-
-Tableau MakeTableau(int type)
-{
-  Tableau t{};
-  switch (type)
-  {
-    case vtkLRSplineStreamTracer::EULER:
-      t.Stages = 1;
-      t.B[0] = 1.0;
-      t.Order = 1;
-      break;
-    case vtkLRSplineStreamTracer::MIDPOINT:
-      t.Stages = 2;
-      t.A[1][0] = 0.5;
-      t.B[1] = 1.0;
-      t.Order = 2;
-      break;
-    case vtkLRSplineStreamTracer::KUTTA3:
-      t.Stages = 3;
-      t.A[1][0] = 0.5;
-      t.A[2][0] = -1.0;
-      t.A[2][1] = 2.0;
-      t.B[0] = 1.0 / 6.0;
-      t.B[1] = 2.0 / 3.0;
-      t.B[2] = 1.0 / 6.0;
-      t.Order = 3;
-      break;
-    case vtkLRSplineStreamTracer::RUNGE_KUTTA4:
-      t.Stages = 4;
-      t.A[1][0] = 0.5;
-      t.A[2][1] = 0.5;
-      t.A[3][2] = 1.0;
-      t.B[0] = t.B[3] = 1.0 / 6.0;
-      t.B[1] = t.B[2] = 1.0 / 3.0;
-      t.Order = 4;
-      break;
-    case vtkLRSplineStreamTracer::RUNGE_KUTTA4_38:
-      t.Stages = 4;
-      t.A[1][0] = 1.0 / 3.0;
-      t.A[2][0] = -1.0 / 3.0;
-      t.A[2][1] = 1.0;
-      t.A[3][0] = 1.0;
-      t.A[3][1] = -1.0;
-      t.A[3][2] = 1.0;
-      t.B[0] = t.B[3] = 1.0 / 8.0;
-      t.B[1] = t.B[2] = 3.0 / 8.0;
-      t.Order = 4;
-      break;
-    case vtkLRSplineStreamTracer::HEUN_EULER:
-      t.Stages = 2;
-      t.A[1][0] = 1.0;
-      t.B[0] = t.B[1] = 0.5;
-      // b_hat = (1, 0)
-      t.E[0] = 0.5 - 1.0;
-      t.E[1] = 0.5;
-      t.Order = 2;
-      t.ErrorOrder = 1;
-      t.Embedded = true;
-      break;
-    case vtkLRSplineStreamTracer::BOGACKI_SHAMPINE:
-    {
-      t.Stages = 4;
-      t.A[1][0] = 0.5;
-      t.A[2][1] = 0.75;
-      t.A[3][0] = 2.0 / 9.0;
-      t.A[3][1] = 1.0 / 3.0;
-      t.A[3][2] = 4.0 / 9.0;
-      const double b3[4] = { 2.0 / 9.0, 1.0 / 3.0, 4.0 / 9.0, 0.0 };
-      const double b2[4] = { 7.0 / 24.0, 1.0 / 4.0, 1.0 / 3.0, 1.0 / 8.0 };
-      for (int i = 0; i < 4; ++i)
-      {
-        t.B[i] = b3[i];
-        t.E[i] = b3[i] - b2[i];
-      }
-      t.Order = 3;
-      t.ErrorOrder = 2;
-      t.Embedded = true;
-      break;
-    }
-    case vtkLRSplineStreamTracer::RKF5:
-    case vtkLRSplineStreamTracer::RKF45:
-    default:
-    {
-      t.Stages = 6;
-      t.A[1][0] = 1.0 / 4.0;
-      t.A[2][0] = 3.0 / 32.0;
-      t.A[2][1] = 9.0 / 32.0;
-      t.A[3][0] = 1932.0 / 2197.0;
-      t.A[3][1] = -7200.0 / 2197.0;
-      t.A[3][2] = 7296.0 / 2197.0;
-      t.A[4][0] = 439.0 / 216.0;
-      t.A[4][1] = -8.0;
-      t.A[4][2] = 3680.0 / 513.0;
-      t.A[4][3] = -845.0 / 4104.0;
-      t.A[5][0] = -8.0 / 27.0;
-      t.A[5][1] = 2.0;
-      t.A[5][2] = -3544.0 / 2565.0;
-      t.A[5][3] = 1859.0 / 4104.0;
-      t.A[5][4] = -11.0 / 40.0;
-      const double b5[6] = { 16.0 / 135.0, 0.0, 6656.0 / 12825.0, 28561.0 / 56430.0, -9.0 / 50.0,
-        2.0 / 55.0 };
-      const double b4[6] = { 25.0 / 216.0, 0.0, 1408.0 / 2565.0, 2197.0 / 4104.0, -1.0 / 5.0, 0.0 };
-      for (int i = 0; i < 6; ++i)
-      {
-        t.B[i] = b5[i];
-        t.E[i] = b5[i] - b4[i];
-      }
-      t.Order = 5;
-      t.ErrorOrder = 4;
-      t.Embedded = (type == vtkLRSplineStreamTracer::RKF45);
-      break;
-    }
-  }
-  return t;
-}
+namespace RK = vtkSplineVizRungeKutta;
 
 struct Params
 {
-  Tableau T;
+  RK::Tableau T;
   int StepMode;
   double Step, MinStep, MaxStep, Tolerance;
   vtkIdType MaxSteps;
@@ -291,44 +179,17 @@ public:
   // One step of size h (signed) from x with k1 = f(x).
   StepStatus Step(const S x[3], const S k1[3], S h, S out[3], S& error)
   {
-    const Tableau& T = this->P.T;
-    S k[6][3];
-    for (int d = 0; d < 3; ++d)
+    auto f = [this, k1](int stage, const S xs[3], const S*, S k[3]) -> int
     {
-      k[0][d] = k1[d];
-    }
-    for (int s = 1; s < T.Stages; ++s)
-    {
-      S xs[3];
-      for (int d = 0; d < 3; ++d)
+      if (stage == 0)
       {
-        S acc = S(0);
-        for (int j = 0; j < s; ++j)
-        {
-          acc += static_cast<S>(T.A[s][j]) * k[j][d];
-        }
-        xs[d] = x[d] + h * acc;
+        std::copy(k1, k1 + 3, k);
+        return STEP_OK;
       }
       bool nan;
-      if (!this->Eval(xs, k[s], nan))
-      {
-        return nan ? STEP_NAN : STEP_OUTSIDE;
-      }
-    }
-    S err2 = S(0);
-    for (int d = 0; d < 3; ++d)
-    {
-      S acc = S(0), e = S(0);
-      for (int j = 0; j < T.Stages; ++j)
-      {
-        acc += static_cast<S>(T.B[j]) * k[j][d];
-        e += static_cast<S>(T.E[j]) * k[j][d];
-      }
-      out[d] = x[d] + h * acc;
-      err2 += (h * e) * (h * e);
-    }
-    error = std::sqrt(err2);
-    return STEP_OK;
+      return this->Eval(xs, k, nan) ? STEP_OK : (nan ? STEP_NAN : STEP_OUTSIDE);
+    };
+    return static_cast<StepStatus>(RK::Step(this->P.T, x, k1, h, f, out, &error));
   }
 
   void Append(Line& line, const S x[3], const S v[3], double t)
@@ -801,39 +662,17 @@ vtkLRSplineStreamTracer::~vtkLRSplineStreamTracer()
 //------------------------------------------------------------------------------
 int vtkLRSplineStreamTracer::GetIntegratorOrder(int integrator)
 {
-  return MakeTableau(integrator).Order;
+  return vtkSplineVizRungeKutta::MakeTableau(integrator).Order;
 }
 
 bool vtkLRSplineStreamTracer::IsEmbedded(int integrator)
 {
-  return MakeTableau(integrator).Embedded;
+  return vtkSplineVizRungeKutta::MakeTableau(integrator).Embedded;
 }
 
 const char* vtkLRSplineStreamTracer::GetIntegratorName(int integrator)
 {
-  switch (integrator)
-  {
-    case EULER:
-      return "RK1 (explicit Euler)";
-    case MIDPOINT:
-      return "RK2 (midpoint)";
-    case KUTTA3:
-      return "RK3 (Kutta)";
-    case RUNGE_KUTTA4:
-      return "RK4 (classic)";
-    case RUNGE_KUTTA4_38:
-      return "RK4 3/8 rule";
-    case RKF5:
-      return "RKF5 (Fehlberg, 5th order)";
-    case HEUN_EULER:
-      return "Heun-Euler 2(1)";
-    case BOGACKI_SHAMPINE:
-      return "Bogacki-Shampine 3(2)";
-    case RKF45:
-      return "RKF45 (Fehlberg 4(5))";
-    default:
-      return "unknown";
-  }
+  return vtkSplineVizRungeKutta::Name(integrator);
 }
 
 //------------------------------------------------------------------------------
@@ -968,7 +807,7 @@ int vtkLRSplineStreamTracer::RequestData(
   }
 
   Params P;
-  P.T = MakeTableau(this->IntegratorType);
+  P.T = RK::MakeTableau(this->IntegratorType);
   P.StepMode = this->StepMode;
   P.Step = this->IntegrationStep;
   P.MinStep = this->MinimumIntegrationStep;

@@ -3,6 +3,7 @@
 
 #include "vtkSplineVizError.h"
 #include "vtkSplineVizProgress.h"
+#include "vtkSplineVizRungeKutta.h"
 #include "vtkSplineVizSeeds.h"
 #include "vtkSplineVizTensorMath.h"
 #include "vtkSplineVizTermination.h"
@@ -69,6 +70,7 @@ static_assert(
 namespace
 {
 namespace TM = vtkSplineVizTensorMath;
+namespace RK = vtkSplineVizRungeKutta;
 
 // Per-point flags of the precomputed tensors.
 enum : unsigned char
@@ -320,7 +322,7 @@ struct Line
 
 struct Params
 {
-  int Integrator = vtkTensorLineTracer::RUNGE_KUTTA4;
+  RK::Tableau Integrator; // midpoint (RUNGE_KUTTA2) or classic RK4
   double H = 0.1;
   double MaxLength = 0.0;
   vtkIdType MaxSteps = 10000;
@@ -335,7 +337,11 @@ struct Params
 Params MakeParams(vtkTensorLineTracer* self)
 {
   Params p;
-  p.Integrator = self->GetIntegratorType();
+  // RK4's weights over their denominator, h / 6 (k1 + 2 k2 + 2 k3 + k4), as
+  // this filter has always summed them.
+  p.Integrator = self->GetIntegratorType() == vtkTensorLineTracer::RUNGE_KUTTA2
+    ? RK::MakeTableau(RK::MIDPOINT)
+    : RK::OverDenominator(RK::MakeTableau(RK::RUNGE_KUTTA4), 6.0);
   p.H = self->GetStepLength();
   p.MaxLength = self->GetMaximumPropagation();
   p.MaxSteps = self->GetMaximumNumberOfSteps();
@@ -557,6 +563,21 @@ private:
     Sample s = s0, stage, next;
     double x[3] = { seed[0], seed[1], seed[2] };
     double in[3] = { sign * s0.E[0][0], sign * s0.E[0][1], sign * s0.E[0][2] };
+    // Stage i of a step: the direction at its sample (stage 0: at x),
+    // turned like `ref` (see Direction()); 0 or why the line ends there.
+    auto direction = [&](int i, const double xs[3], const double ref[3], double k[3]) -> int
+    {
+      if (i == 0)
+      {
+        return this->Direction(s, in, ref, k) ? 0 : vtkTensorLineTracer::STAGNATION;
+      }
+      const int reason = this->Evaluate(xs, stage);
+      if (reason != 0)
+      {
+        return reason;
+      }
+      return this->Direction(stage, in, ref, k) ? 0 : NoDirection(stage);
+    };
     for (vtkIdType step = 0;; ++step)
     {
       if (step >= P.MaxSteps)
@@ -578,49 +599,11 @@ private:
           last = true;
         }
       }
-      double k1[3], k2[3], k3[3], k4[3], xs[3], xn[3];
-      if (!this->Direction(s, in, in, k1))
+      double xn[3];
+      int r = RK::Step(P.Integrator, x, in, h, direction, xn);
+      if (r != 0)
       {
-        return vtkTensorLineTracer::STAGNATION;
-      }
-      int r = 0;
-      // One stage: the direction at x + f h k, oriented like k1; 0 or why
-      // the line ends there.
-      auto stageDirection = [&](double f, const double* k, double* out) -> int
-      {
-        for (int d = 0; d < 3; ++d)
-        {
-          xs[d] = x[d] + f * h * k[d];
-        }
-        const int reason = this->Evaluate(xs, stage);
-        if (reason != 0)
-        {
-          return reason;
-        }
-        return this->Direction(stage, in, k1, out) ? 0 : NoDirection(stage);
-      };
-      if (P.Integrator == vtkTensorLineTracer::RUNGE_KUTTA2)
-      {
-        if ((r = stageDirection(0.5, k1, k2)) != 0)
-        {
-          return r;
-        }
-        for (int d = 0; d < 3; ++d)
-        {
-          xn[d] = x[d] + h * k2[d];
-        }
-      }
-      else
-      {
-        if ((r = stageDirection(0.5, k1, k2)) != 0 || (r = stageDirection(0.5, k2, k3)) != 0 ||
-          (r = stageDirection(1.0, k3, k4)) != 0)
-        {
-          return r;
-        }
-        for (int d = 0; d < 3; ++d)
-        {
-          xn[d] = x[d] + h / 6.0 * (k1[d] + 2.0 * k2[d] + 2.0 * k3[d] + k4[d]);
-        }
+        return r;
       }
       if ((r = this->Evaluate(xn, next)) != 0)
       {
