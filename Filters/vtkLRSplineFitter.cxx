@@ -44,7 +44,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -64,8 +63,6 @@ constexpr double LittleData = 1.0;
 constexpr double SolverAccuracy = 1e-2;
 // MBA sweeps per level (GoTools runs LR-MBA twice per level).
 constexpr int MBASweeps = 2;
-// Safety bound on fit-and-refine rounds.
-constexpr int MaximumRounds = 64;
 // RemoveOutliers: detection rounds at most (each with the tolerance of the
 // values still in), and their share of the progress bar.
 constexpr int OutlierRounds = 3;
@@ -645,6 +642,8 @@ struct LoopSettings
   int MaximumRefinementLevels = 10;
   vtkIdType MaximumNumberOfElements = 500000;
   vtkIdType MinimumPointsPerElement = 2;
+  // The most fit-and-refine rounds (vtkLRSplineFitterBase::GetMaximumRounds()).
+  int MaximumRounds = 33;
   // Progress already reported before the loop (outlier detection).
   double ProgressStart = 0.0;
 };
@@ -656,7 +655,7 @@ bool FitLoop(PointFit& fit, const LoopSettings& settings, double tolerance, vtkA
   std::vector<double>& residual, std::vector<double>& history, bool& met, int& iteration,
   std::string& stopReason, std::string* error)
 {
-  const int rounds = std::min(MaximumRounds, 3 * (settings.MaximumRefinementLevels + 1));
+  const int rounds = settings.MaximumRounds;
   const vtkIdType np = fit.Data->Size();
   met = false;
   iteration = 0;
@@ -877,15 +876,9 @@ void vtkLRSplineFitter::RememberFit(
 vtkLRSplineFitter::vtkLRSplineFitter()
 {
   this->SetNumberOfOutputPorts(3);
-  this->SetInputArrayToProcess(
-    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
 }
 
-vtkLRSplineFitter::~vtkLRSplineFitter()
-{
-  this->SetFieldName(nullptr);
-  this->SetFileName(nullptr);
-}
+vtkLRSplineFitter::~vtkLRSplineFitter() = default;
 
 //------------------------------------------------------------------------------
 int vtkLRSplineFitter::FillInputPortInformation(int, vtkInformation* info)
@@ -903,30 +896,10 @@ int vtkLRSplineFitter::FillOutputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-int vtkLRSplineFitter::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
-  for (int port = 0; port < 3; ++port)
-  {
-    outputVector->GetInformationObject(port)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
-  }
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkLRSplineFitter::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
-{
-  // Every piece fits all the data.
-  vtkSplineVizPieces::RequestWholeInput(inputVector[0]->GetInformationObject(0));
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 int vtkLRSplineFitter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  const auto start = std::chrono::steady_clock::now();
+  this->ResetResults();
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outInfo);
@@ -936,13 +909,6 @@ int vtkLRSplineFitter::RequestData(
   {
     outliers->Initialize();
   }
-  this->MaximumError = this->RMSError = this->AbsoluteTolerance = this->FitTime = 0.0;
-  this->ToleranceMet = false;
-  this->ReusedPreviousMesh = false;
-  this->NumberOfElements = this->NumberOfBasisFunctions = this->NumberOfDataPoints = 0;
-  this->NumberOfOutliers = 0;
-  this->NumberOfRefinementLevels = this->NumberOfIterations = 0;
-  std::fill(this->Domain, this->Domain + 6, 0.0);
 
   if (!this->CheckSettings())
   {
@@ -1027,6 +993,7 @@ int vtkLRSplineFitter::RequestData(
   settings.MaximumRefinementLevels = this->MaximumRefinementLevels;
   settings.MaximumNumberOfElements = this->MaximumNumberOfElements;
   settings.MinimumPointsPerElement = this->MinimumPointsPerElement;
+  settings.MaximumRounds = this->GetMaximumRounds();
   settings.ProgressStart = this->RemoveOutliers ? OutlierProgress : 0.0;
   std::vector<double> residual;
   vtkLRSplineFitCore::Report report;
@@ -1060,10 +1027,11 @@ int vtkLRSplineFitter::RequestData(
     stopReason = "the Bezier form differs from the basis form by rounding";
   }
   const char* methods[] = { "LR-MBA", "least squares", "least squares + LR-MBA" };
-  vtkSmartPointer<vtkUnstructuredGrid> grid = vtkLRSplineFitCore::BuildBlock(
-    fit.Core.Builder.GetPatch(), result.Volume, 0, piece, numPieces, scale, lo, fieldName,
-    std::string("vtkLRSplineFitter (") + methods[this->Method] + ", local refinement)",
-    fit.ElementError, report, &error);
+  vtkSmartPointer<vtkUnstructuredGrid> grid =
+    vtkLRSplineFitCore::BuildBlock(fit.Core.Builder.GetPatch(), result.Volume, 0, piece, numPieces,
+      scale, lo, this->GetOutputFieldName(fieldName.c_str()),
+      std::string("vtkLRSplineFitter (") + methods[this->Method] + ", local refinement)",
+      fit.ElementError, report, &error);
   if (!grid)
   {
     vtkErrorMacro(<< "cannot build the output: " << error);
@@ -1109,12 +1077,17 @@ int vtkLRSplineFitter::RequestData(
     trimming->ShallowCopy(boundary);
     output->GetMetaData(0u)->Set(vtkLRSplineField::TRIMMING_SURFACE(), trimming);
   }
-  this->FitTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  vtkNew<vtkDoubleArray> seconds;
-  seconds->SetName(vtkLRSplineArrayNames::FitSeconds);
-  seconds->InsertNextValue(this->FitTime);
-  grid->GetFieldData()->AddArray(seconds);
+  this->RecordFitTime(output);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineFitter::ResetResults()
+{
+  this->Superclass::ResetResults();
+  this->ReusedPreviousMesh = false;
+  this->NumberOfDataPoints = this->NumberOfOutliers = 0;
+  std::fill(this->Domain, this->Domain + 6, 0.0);
 }
 
 //------------------------------------------------------------------------------
@@ -1159,40 +1132,21 @@ bool vtkLRSplineFitter::ComputeDomain(
 //------------------------------------------------------------------------------
 bool vtkLRSplineFitter::CheckSettings()
 {
-  if (!(this->Tolerance > 0) || !std::isfinite(this->Tolerance))
+  if (!this->Superclass::CheckSettings())
   {
-    vtkErrorMacro(<< "Tolerance must be positive and finite (it is " << this->Tolerance << ")");
     return false;
   }
   for (int d = 0; d < 3; ++d)
   {
-    if (this->Degree[d] < 1 || this->Degree[d] > 5)
-    {
-      vtkErrorMacro(<< "Degree must be 1 to 5 in every direction (it is " << this->Degree[0] << " "
-                    << this->Degree[1] << " " << this->Degree[2] << ")");
-      return false;
-    }
-    if (this->InitialNumberOfElements[d] < 1 || this->InitialNumberOfElements[d] > 1024)
+    if (this->InitialNumberOfElements[d] > 1024)
     {
       vtkErrorMacro(<< "InitialNumberOfElements must be 1 to 1024 in every direction");
       return false;
     }
   }
-  if (this->MaximumRefinementLevels < 0 || this->MaximumRefinementLevels > 30)
+  if (!std::isfinite(this->Smoothing))
   {
-    vtkErrorMacro(<< "MaximumRefinementLevels must be 0 to 30 (it is "
-                  << this->MaximumRefinementLevels
-                  << "): 30 halvings already make elements a billionth of the initial ones");
-    return false;
-  }
-  if (this->MaximumNumberOfElements < 1)
-  {
-    vtkErrorMacro(<< "MaximumNumberOfElements must be at least 1");
-    return false;
-  }
-  if (!std::isfinite(this->Regularization) || !std::isfinite(this->Smoothing))
-  {
-    vtkErrorMacro(<< "Regularization and Smoothing must be finite");
+    vtkErrorMacro(<< "Smoothing must be finite");
     return false;
   }
   // The most elements the limits allow, and the memory they would take: the
@@ -1403,10 +1357,7 @@ double vtkLRSplineFitter::ComputeAbsoluteTolerance(
   const std::vector<double>& values, int dim, double range[2])
 {
   DataRange(values, dim, range);
-  const double tolerance = this->ToleranceMode == RELATIVE_TOLERANCE
-    ? this->Tolerance * (range[1] - range[0])
-    : this->Tolerance;
-  return std::max(tolerance, 1e-10 * std::max(std::abs(range[0]), std::abs(range[1])));
+  return this->Superclass::ComputeAbsoluteTolerance(range);
 }
 
 //------------------------------------------------------------------------------
@@ -1559,42 +1510,21 @@ bool vtkLRSplineFitter::BuildBoundary(const std::vector<vtkDataSet*>& leaves, vt
 void vtkLRSplineFitter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Degree: " << this->Degree[0] << " " << this->Degree[1] << " " << this->Degree[2]
-     << "\n";
-  os << indent << "InitialNumberOfElements: " << this->InitialNumberOfElements[0] << " "
-     << this->InitialNumberOfElements[1] << " " << this->InitialNumberOfElements[2] << "\n";
   os << indent << "Method: "
      << (this->Method == MBA ? "MBA" : (this->Method == LEAST_SQUARES ? "LeastSquares" : "Hybrid"))
-     << "\n";
-  os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent
-     << "ToleranceMode: " << (this->ToleranceMode == RELATIVE_TOLERANCE ? "Relative" : "Absolute")
      << "\n";
   os << indent << "ToleranceType: " << (this->ToleranceType == RMS_ERROR ? "RMS" : "Maximum")
      << "\n";
   os << indent << "VectorMode: " << (this->VectorMode == COMPONENTS ? "Components" : "Magnitude")
      << "\n";
-  os << indent << "MaximumRefinementLevels: " << this->MaximumRefinementLevels << "\n";
-  os << indent << "MaximumNumberOfElements: " << this->MaximumNumberOfElements << "\n";
   os << indent << "Margin: " << this->Margin << "\n";
   os << indent << "MinimumPointsPerElement: " << this->MinimumPointsPerElement << "\n";
-  os << indent << "Regularization: " << this->Regularization << "\n";
   os << indent << "Smoothing: " << this->Smoothing << "\n";
   os << indent << "ExtractBoundary: " << this->ExtractBoundary << "\n";
   os << indent << "ReusePreviousMesh: " << this->ReusePreviousMesh << "\n";
   os << indent << "ReusedPreviousMesh: " << this->ReusedPreviousMesh << "\n";
   os << indent << "RemoveOutliers: " << this->RemoveOutliers << "\n";
   os << indent << "OutlierThreshold: " << this->OutlierThreshold << "\n";
-  os << indent << "FieldName: " << (this->FieldName ? this->FieldName : "(input array's)") << "\n";
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
-  os << indent << "MaximumError: " << this->MaximumError << "\n";
-  os << indent << "RMSError: " << this->RMSError << "\n";
-  os << indent << "ToleranceMet: " << this->ToleranceMet << "\n";
-  os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
-  os << indent << "NumberOfBasisFunctions: " << this->NumberOfBasisFunctions << "\n";
   os << indent << "NumberOfDataPoints: " << this->NumberOfDataPoints << "\n";
   os << indent << "NumberOfOutliers: " << this->NumberOfOutliers << "\n";
-  os << indent << "NumberOfRefinementLevels: " << this->NumberOfRefinementLevels << "\n";
-  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
-  os << indent << "FitTime: " << this->FitTime << "\n";
 }

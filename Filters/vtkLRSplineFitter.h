@@ -33,17 +33,19 @@
  * neighbours (vtkSplineVizLocalOutliers, OutlierThreshold) and non-finite
  * points are left out of the fit.
  *
- * Refused before allocating: no points or array, non-finite values or
- * coordinates (unless RemoveOutliers), points without volume, Tolerance <= 0,
- * degrees outside 1..5, MaximumRefinementLevels outside 0..30, limits whose
- * spline would not fit in memory. Details: docs/lr-fitting.md.
+ * The settings, checks and results it shares with vtkLRSplineImageFitter
+ * (Degree, Tolerance, the limits, Regularization, FieldName, FileName, the
+ * errors) are vtkLRSplineFitterBase's. Also refused before allocating: no
+ * points or array, non-finite values or coordinates (unless RemoveOutliers),
+ * points without volume, limits whose spline would not fit in memory.
+ * Details: docs/lr-fitting.md.
  */
 
 #ifndef vtkLRSplineFitter_h
 #define vtkLRSplineFitter_h
 
 #include "SplineVizModule.h" // for export macro
-#include "vtkMultiBlockDataSetAlgorithm.h"
+#include "vtkLRSplineFitterBase.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
@@ -54,11 +56,11 @@ class vtkLRSplineBuilder;
 class vtkLRSplineBezierVolume;
 class vtkPolyData;
 
-class SPLINEVIZ_EXPORT vtkLRSplineFitter : public vtkMultiBlockDataSetAlgorithm
+class SPLINEVIZ_EXPORT vtkLRSplineFitter : public vtkLRSplineFitterBase
 {
 public:
   static vtkLRSplineFitter* New();
-  vtkTypeMacro(vtkLRSplineFitter, vtkMultiBlockDataSetAlgorithm);
+  vtkTypeMacro(vtkLRSplineFitter, vtkLRSplineFitterBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Methods
@@ -66,11 +68,6 @@ public:
     MBA = 0,           ///< LR multilevel B-spline approximation, two sweeps per level
     LEAST_SQUARES = 1, ///< regularized least squares (conjugate gradients)
     HYBRID = 2         ///< least squares, then two MBA sweeps on its residual
-  };
-  enum ToleranceModes
-  {
-    ABSOLUTE_TOLERANCE = 0, ///< in the data's units
-    RELATIVE_TOLERANCE = 1  ///< a fraction of the data range
   };
   enum ToleranceTypes
   {
@@ -84,38 +81,12 @@ public:
   };
 
   ///@{
-  /// Polynomial degree per direction, 1 to 5. Default 2 2 2.
-  vtkSetVector3Macro(Degree, int);
-  vtkGetVector3Macro(Degree, int);
-  ///@}
-
-  ///@{
-  /// Elements per direction of the initial tensor-product spline. Default 4 4 4.
-  vtkSetVector3Macro(InitialNumberOfElements, int);
-  vtkGetVector3Macro(InitialNumberOfElements, int);
-  ///@}
-
-  ///@{
   /// How the coefficients are updated on every level. Default LEAST_SQUARES.
   vtkSetClampMacro(Method, int, MBA, HYBRID);
   vtkGetMacro(Method, int);
   void SetMethodToMBA() { this->SetMethod(MBA); }
   void SetMethodToLeastSquares() { this->SetMethod(LEAST_SQUARES); }
   void SetMethodToHybrid() { this->SetMethod(HYBRID); }
-  ///@}
-
-  ///@{
-  /// The tolerance. Default 0.02 (relative: 2 % of the data range).
-  vtkSetMacro(Tolerance, double);
-  vtkGetMacro(Tolerance, double);
-  ///@}
-
-  ///@{
-  /// How Tolerance is meant. Default RELATIVE_TOLERANCE.
-  vtkSetClampMacro(ToleranceMode, int, ABSOLUTE_TOLERANCE, RELATIVE_TOLERANCE);
-  vtkGetMacro(ToleranceMode, int);
-  void SetToleranceModeToAbsolute() { this->SetToleranceMode(ABSOLUTE_TOLERANCE); }
-  void SetToleranceModeToRelative() { this->SetToleranceMode(RELATIVE_TOLERANCE); }
   ///@}
 
   ///@{
@@ -135,18 +106,6 @@ public:
   ///@}
 
   ///@{
-  /// Most halvings of an initial element side, 0 to 30 (more is refused). Default 10.
-  vtkSetMacro(MaximumRefinementLevels, int);
-  vtkGetMacro(MaximumRefinementLevels, int);
-  ///@}
-
-  ///@{
-  /// Refinement stops when the spline has this many elements. Default 500000.
-  vtkSetMacro(MaximumNumberOfElements, vtkIdType);
-  vtkGetMacro(MaximumNumberOfElements, vtkIdType);
-  ///@}
-
-  ///@{
   /**
    * An element is split only when it holds at least this many data points
    * (finer functions would have no data to determine them). Default 2.
@@ -159,12 +118,6 @@ public:
   /// Each side of the data's bounding box is widened by Margin times its length. Default 0.
   vtkSetClampMacro(Margin, double, 0.0, 10.0);
   vtkGetMacro(Margin, double);
-  ///@}
-
-  ///@{
-  /// Least squares: pull of functions with little data towards the previous fit. Default 0.1.
-  vtkSetClampMacro(Regularization, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Regularization, double);
   ///@}
 
   ///@{
@@ -192,12 +145,6 @@ public:
   vtkSetMacro(ExtractBoundary, vtkTypeBool);
   vtkGetMacro(ExtractBoundary, vtkTypeBool);
   vtkBooleanMacro(ExtractBoundary, vtkTypeBool);
-  ///@}
-
-  ///@{
-  /// Name of the output's point array; empty (default): the input array's name.
-  vtkSetStringMacro(FieldName);
-  vtkGetStringMacro(FieldName);
   ///@}
 
   ///@{
@@ -237,25 +184,10 @@ public:
   ///@}
 
   ///@{
-  /// If set, the fitted spline is also written to this .lr file.
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
-
-  ///@{
-  /// Results of the last update.
-  double GetMaximumError() const { return this->MaximumError; }
-  double GetRMSError() const { return this->RMSError; }
-  double GetAbsoluteTolerance() const { return this->AbsoluteTolerance; }
-  bool GetToleranceMet() const { return this->ToleranceMet; }
-  vtkIdType GetNumberOfElements() const { return this->NumberOfElements; }
-  vtkIdType GetNumberOfBasisFunctions() const { return this->NumberOfBasisFunctions; }
+  /// Results of the last update beyond those of vtkLRSplineFitterBase.
   vtkIdType GetNumberOfDataPoints() const { return this->NumberOfDataPoints; }
   /// Data points left out of the last fit (RemoveOutliers): detected and non-finite.
   vtkIdType GetNumberOfOutliers() const { return this->NumberOfOutliers; }
-  int GetNumberOfRefinementLevels() const { return this->NumberOfRefinementLevels; }
-  int GetNumberOfIterations() const { return this->NumberOfIterations; }
-  double GetFitTime() const { return this->FitTime; }
   /// Whether the last update started from the previous update's mesh (ReusePreviousMesh).
   bool GetReusedPreviousMesh() const { return this->ReusedPreviousMesh; }
   /// The fitted domain (xmin, xmax, ymin, ymax, zmin, zmax).
@@ -268,19 +200,21 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  // Refuse bad settings (false with an error).
-  bool CheckSettings();
+  // Refuse bad settings (false with an error): the shared ones, then
+  // InitialNumberOfElements above 1024, a non-finite Smoothing and limits
+  // whose spline would not fit in memory.
+  bool CheckSettings() override;
+  // The shared results and those of this class.
+  void ResetResults() override;
   // The positions (3 per point) and values (dim per point) of every leaf.
   // With RemoveOutliers, points with non-finite values or coordinates are
   // left out and counted in `invalid`; without, they are refused.
   bool GatherData(const std::vector<vtkDataSet*>& leaves, std::vector<double>& positions,
     std::vector<double>& values, int& dim, std::string& fieldName, vtkIdType& invalid);
   // The absolute tolerance for `values` (dim per point) and their range (of
-  // the lengths, for vectors).
+  // the lengths, for vectors): Superclass::ComputeAbsoluteTolerance of the range.
   double ComputeAbsoluteTolerance(const std::vector<double>& values, int dim, double range[2]);
   // RemoveOutliers: take the outliers out of `positions` and `values`, into
   // `outliers` (may be null) with their deviations; false when aborted.
@@ -306,37 +240,19 @@ protected:
   // The boundary surface of the leaves (output port 1).
   bool BuildBoundary(const std::vector<vtkDataSet*>& leaves, vtkPolyData* boundary);
 
-  int Degree[3] = { 2, 2, 2 };
-  int InitialNumberOfElements[3] = { 4, 4, 4 };
   int Method = LEAST_SQUARES;
-  double Tolerance = 0.02;
-  int ToleranceMode = RELATIVE_TOLERANCE;
   int ToleranceType = MAXIMUM_ERROR;
   int VectorMode = MAGNITUDE;
-  int MaximumRefinementLevels = 10;
-  vtkIdType MaximumNumberOfElements = 500000;
   vtkIdType MinimumPointsPerElement = 2;
   double Margin = 0.0;
-  double Regularization = 0.1;
   double Smoothing = 1e-4;
   vtkTypeBool ExtractBoundary = 1;
-  char* FieldName = nullptr;
-  char* FileName = nullptr;
   vtkTypeBool ReusePreviousMesh = 1;
   vtkTypeBool RemoveOutliers = 0;
   double OutlierThreshold = 5.0;
 
-  double MaximumError = 0.0;
-  double RMSError = 0.0;
-  double AbsoluteTolerance = 0.0;
-  bool ToleranceMet = false;
-  vtkIdType NumberOfElements = 0;
-  vtkIdType NumberOfBasisFunctions = 0;
   vtkIdType NumberOfDataPoints = 0;
   vtkIdType NumberOfOutliers = 0;
-  int NumberOfRefinementLevels = 0;
-  int NumberOfIterations = 0;
-  double FitTime = 0.0;
   double Domain[6] = { 0, 0, 0, 0, 0, 0 };
   bool ReusedPreviousMesh = false;
 

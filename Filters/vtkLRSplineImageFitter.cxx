@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineImageFitter.h"
 
-#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineFitCore.h"
 #include "vtkLRSplinePatch.h"
@@ -12,15 +11,11 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
-#include "vtkDataSetAttributes.h"
-#include "vtkDoubleArray.h"
-#include "vtkFieldData.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMultiBlockDataSet.h"
-#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
@@ -30,7 +25,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <chrono>
 #include <cmath>
 #include <string>
 #include <unordered_map>
@@ -47,8 +41,6 @@ constexpr double LittleData = 1.0;
 constexpr double SolverAccuracy = 1e-4;
 constexpr int SolverDelay = 10;
 constexpr int SolverMaximumIterations = 2000;
-// Safety bound on fit-and-refine rounds (each halves the marked intervals).
-constexpr int MaximumRounds = 64;
 
 // Copy a one-component array to doubles; false at the first NaN/infinity.
 struct CopyWorker
@@ -468,21 +460,6 @@ private:
     return s;
   }
 };
-
-// The fit's duration in the field data of the output's first block.
-void AddFitSeconds(vtkMultiBlockDataSet* output, double seconds)
-{
-  vtkFieldData* fd = output->GetNumberOfBlocks() > 0
-    ? vtkDataObject::SafeDownCast(output->GetBlock(0))->GetFieldData()
-    : nullptr;
-  if (fd)
-  {
-    vtkNew<vtkDoubleArray> array;
-    array->SetName(vtkLRSplineArrayNames::FitSeconds);
-    array->InsertNextValue(seconds);
-    fd->AddArray(array);
-  }
-}
 }
 
 //------------------------------------------------------------------------------
@@ -511,17 +488,9 @@ struct vtkLRSplineImageFitter::BlockFit
 };
 
 //------------------------------------------------------------------------------
-vtkLRSplineImageFitter::vtkLRSplineImageFitter()
-{
-  this->SetInputArrayToProcess(
-    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
-}
+vtkLRSplineImageFitter::vtkLRSplineImageFitter() = default;
 
-vtkLRSplineImageFitter::~vtkLRSplineImageFitter()
-{
-  this->SetFieldName(nullptr);
-  this->SetFileName(nullptr);
-}
+vtkLRSplineImageFitter::~vtkLRSplineImageFitter() = default;
 
 //------------------------------------------------------------------------------
 int vtkLRSplineImageFitter::FillInputPortInformation(int, vtkInformation* info)
@@ -532,47 +501,15 @@ int vtkLRSplineImageFitter::FillInputPortInformation(int, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
-int vtkLRSplineImageFitter::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
-  outputVector->GetInformationObject(0)->Set(CAN_HANDLE_PIECE_REQUEST(), 1);
-  return 1;
-}
-
-//------------------------------------------------------------------------------
-int vtkLRSplineImageFitter::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
-{
-  // Every piece fits the whole image.
-  vtkSplineVizPieces::RequestWholeInput(inputVector[0]->GetInformationObject(0));
-  return 1;
-}
-
-//------------------------------------------------------------------------------
 bool vtkLRSplineImageFitter::CheckSettings()
 {
-  if (!(this->Tolerance > 0) || !std::isfinite(this->Tolerance))
+  if (!this->Superclass::CheckSettings())
   {
-    vtkErrorMacro(<< "Tolerance must be positive and finite (it is " << this->Tolerance << ")");
     return false;
   }
-  for (int d = 0; d < 3; ++d)
+  if (!std::isfinite(this->MinimumElementSize))
   {
-    if (this->Degree[d] < 1 || this->Degree[d] > 5)
-    {
-      vtkErrorMacro(<< "Degree must be 1 to 5 in every direction (it is " << this->Degree[0] << " "
-                    << this->Degree[1] << " " << this->Degree[2] << ")");
-      return false;
-    }
-    if (this->InitialNumberOfElements[d] < 1)
-    {
-      vtkErrorMacro(<< "InitialNumberOfElements must be at least 1 in every direction");
-      return false;
-    }
-  }
-  if (!std::isfinite(this->MinimumElementSize) || !std::isfinite(this->Regularization))
-  {
-    vtkErrorMacro(<< "MinimumElementSize and Regularization must be finite");
+    vtkErrorMacro(<< "MinimumElementSize must be finite");
     return false;
   }
   return true;
@@ -754,11 +691,10 @@ bool vtkLRSplineImageFitter::ReadValues(const std::vector<vtkDataArray*>& arrays
 int vtkLRSplineImageFitter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  const auto start = std::chrono::steady_clock::now();
+  this->ResetResults();
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0], 0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkMultiBlockDataSet* output = vtkMultiBlockDataSet::GetData(outInfo);
-  this->ResetResults();
 
   // Everything is checked before anything large is allocated.
   std::vector<vtkImageData*> images;
@@ -826,18 +762,8 @@ int vtkLRSplineImageFitter::RequestData(
     output->Initialize();
     return 0;
   }
-  this->FitTime = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  AddFitSeconds(output, this->FitTime);
+  this->RecordFitTime(output);
   return 1;
-}
-
-//------------------------------------------------------------------------------
-void vtkLRSplineImageFitter::ResetResults()
-{
-  this->MaximumError = this->RMSError = this->AbsoluteTolerance = this->FitTime = 0.0;
-  this->ToleranceMet = false;
-  this->NumberOfElements = this->NumberOfBasisFunctions = 0;
-  this->NumberOfRefinementLevels = this->NumberOfIterations = 0;
 }
 
 //------------------------------------------------------------------------------
@@ -856,16 +782,6 @@ bool vtkLRSplineImageFitter::PrepareJobs(
     jobs.push_back(job);
   }
   return true;
-}
-
-//------------------------------------------------------------------------------
-double vtkLRSplineImageFitter::ComputeAbsoluteTolerance(const double range[2]) const
-{
-  const double tolerance = this->ToleranceMode == RELATIVE_TOLERANCE
-    ? this->Tolerance * (range[1] - range[0])
-    : this->Tolerance;
-  // A constant image: its constant, up to rounding.
-  return std::max(tolerance, 1e-10 * std::max(std::abs(range[0]), std::abs(range[1])));
 }
 
 //------------------------------------------------------------------------------
@@ -888,7 +804,7 @@ bool vtkLRSplineImageFitter::FitBlock(
   }
   // Least squares, then refinement of the elements out of tolerance, until
   // the tolerance is met or the refinement stops.
-  const int rounds = std::min(MaximumRounds, 3 * (this->MaximumRefinementLevels + 1));
+  const int rounds = this->GetMaximumRounds();
   const double voxels = static_cast<double>(job.Values->size());
   for (result.Iterations = 1;; ++result.Iterations)
   {
@@ -983,10 +899,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkLRSplineImageFitter::BuildOutputBlock(
   report.DataRange[0] = range[0];
   report.DataRange[1] = range[1];
   report.History = std::move(result.History);
-  const char* arrayName = job.Array->GetName();
-  const std::string fieldName = (this->FieldName && *this->FieldName)
-    ? this->FieldName
-    : ((arrayName && *arrayName) ? arrayName : "Field");
+  const std::string fieldName = this->GetOutputFieldName(job.Array->GetName());
   std::string error;
   // This piece's elements, in the reader's format.
   vtkSmartPointer<vtkUnstructuredGrid> grid = vtkLRSplineFitCore::BuildBlock(
@@ -1004,28 +917,6 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkLRSplineImageFitter::BuildOutputBlock(
 void vtkLRSplineImageFitter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Degree: " << this->Degree[0] << " " << this->Degree[1] << " " << this->Degree[2]
-     << "\n";
-  os << indent << "InitialNumberOfElements: " << this->InitialNumberOfElements[0] << " "
-     << this->InitialNumberOfElements[1] << " " << this->InitialNumberOfElements[2] << "\n";
-  os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent
-     << "ToleranceMode: " << (this->ToleranceMode == RELATIVE_TOLERANCE ? "Relative" : "Absolute")
-     << "\n";
-  os << indent << "MaximumNumberOfElements: " << this->MaximumNumberOfElements << "\n";
-  os << indent << "MaximumRefinementLevels: " << this->MaximumRefinementLevels << "\n";
   os << indent << "MinimumElementSize: " << this->MinimumElementSize << "\n";
   os << indent << "AlignKnotsToVoxels: " << this->AlignKnotsToVoxels << "\n";
-  os << indent << "Regularization: " << this->Regularization << "\n";
-  os << indent << "FieldName: " << (this->FieldName ? this->FieldName : "(input array's)") << "\n";
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
-  os << indent << "MaximumError: " << this->MaximumError << "\n";
-  os << indent << "RMSError: " << this->RMSError << "\n";
-  os << indent << "AbsoluteTolerance: " << this->AbsoluteTolerance << "\n";
-  os << indent << "ToleranceMet: " << this->ToleranceMet << "\n";
-  os << indent << "NumberOfElements: " << this->NumberOfElements << "\n";
-  os << indent << "NumberOfBasisFunctions: " << this->NumberOfBasisFunctions << "\n";
-  os << indent << "NumberOfRefinementLevels: " << this->NumberOfRefinementLevels << "\n";
-  os << indent << "NumberOfIterations: " << this->NumberOfIterations << "\n";
-  os << indent << "FitTime: " << this->FitTime << "\n";
 }

@@ -15,7 +15,8 @@
  *
  * Method: parameters are the voxel index coordinates (x = origin + spacing *
  * u). From a tensor-product spline of degree Degree (default 2, 2, 2) with
- * InitialNumberOfElements it repeats: regularized least squares on the voxel
+ * InitialNumberOfElements (at most one per voxel interval, or one per voxel
+ * with knots on voxel faces) it repeats: regularized least squares on the voxel
  * values (conjugate gradients; Regularization pulls basis functions that see
  * less than one voxel towards the previous fit); the error at every voxel;
  * on every element above Tolerance (ABSOLUTE, or RELATIVE to the data range:
@@ -32,9 +33,10 @@
  * image's bounds). Every piece fits the whole image and keeps its share of
  * the elements; progress per iteration, abort after the current one.
  *
- * Refused before allocating: a missing, multi-component or cell array, more
- * than 2^27 voxels, a rotated image, non-positive spacing, a bad Tolerance,
- * degrees outside 1..5, NaN or infinite voxels. Details: docs/components.md,
+ * The settings, checks and results it shares with vtkLRSplineFitter are
+ * vtkLRSplineFitterBase's. Also refused before allocating: a missing,
+ * multi-component or cell array, more than 2^27 voxels, a rotated image,
+ * non-positive spacing, NaN or infinite voxels. Details: docs/components.md,
  * "Fitting an LR spline to an image".
  */
 
@@ -42,7 +44,7 @@
 #define vtkLRSplineImageFitter_h
 
 #include "SplineVizModule.h" // for export macro
-#include "vtkMultiBlockDataSetAlgorithm.h"
+#include "vtkLRSplineFitterBase.h"
 #include "vtkSmartPointer.h" // for BuildOutputBlock
 
 #include <cstddef> // for std::size_t
@@ -54,60 +56,12 @@ class vtkImageData;
 class vtkMultiBlockDataSet;
 class vtkUnstructuredGrid;
 
-class SPLINEVIZ_EXPORT vtkLRSplineImageFitter : public vtkMultiBlockDataSetAlgorithm
+class SPLINEVIZ_EXPORT vtkLRSplineImageFitter : public vtkLRSplineFitterBase
 {
 public:
   static vtkLRSplineImageFitter* New();
-  vtkTypeMacro(vtkLRSplineImageFitter, vtkMultiBlockDataSetAlgorithm);
+  vtkTypeMacro(vtkLRSplineImageFitter, vtkLRSplineFitterBase);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// Polynomial degree per direction, 1 to 5. Default 2 2 2 (Fuchs' splines are quadratic).
-  vtkSetVector3Macro(Degree, int);
-  vtkGetVector3Macro(Degree, int);
-  ///@}
-
-  ///@{
-  /**
-   * Elements per direction of the initial tensor-product spline: at most one
-   * per voxel interval, or one per voxel when the knots are on voxel faces
-   * (AlignKnotsToVoxels with an even degree). Default 4 4 4.
-   */
-  vtkSetVector3Macro(InitialNumberOfElements, int);
-  vtkGetVector3Macro(InitialNumberOfElements, int);
-  ///@}
-
-  enum ToleranceModes
-  {
-    ABSOLUTE_TOLERANCE = 0, ///< Tolerance in the data's units
-    RELATIVE_TOLERANCE = 1  ///< Tolerance as a fraction of the data range (max - min)
-  };
-
-  ///@{
-  /// Largest allowed |spline - voxel| at any voxel. Default 0.02 (relative: 2 % of the range).
-  vtkSetMacro(Tolerance, double);
-  vtkGetMacro(Tolerance, double);
-  ///@}
-
-  ///@{
-  /// How Tolerance is meant. Default RELATIVE_TOLERANCE.
-  vtkSetClampMacro(ToleranceMode, int, ABSOLUTE_TOLERANCE, RELATIVE_TOLERANCE);
-  vtkGetMacro(ToleranceMode, int);
-  void SetToleranceModeToAbsolute() { this->SetToleranceMode(ABSOLUTE_TOLERANCE); }
-  void SetToleranceModeToRelative() { this->SetToleranceMode(RELATIVE_TOLERANCE); }
-  ///@}
-
-  ///@{
-  /// Refinement stops when a patch has this many elements. Default 500000.
-  vtkSetClampMacro(MaximumNumberOfElements, vtkIdType, 1, VTK_ID_MAX);
-  vtkGetMacro(MaximumNumberOfElements, vtkIdType);
-  ///@}
-
-  ///@{
-  /// Most halvings of an initial element side. Default 10.
-  vtkSetClampMacro(MaximumRefinementLevels, int, 0, 30);
-  vtkGetMacro(MaximumRefinementLevels, int);
-  ///@}
 
   ///@{
   /**
@@ -132,83 +86,23 @@ public:
   vtkBooleanMacro(AlignKnotsToVoxels, vtkTypeBool);
   ///@}
 
-  ///@{
-  /**
-   * Weight of the pull towards the previous fit for basis functions that see
-   * less than one voxel along some direction (see the class documentation).
-   * Default 0.1 (stronger pulls converge a little faster and bias the fit at
-   * the image's faces more).
-   */
-  vtkSetClampMacro(Regularization, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(Regularization, double);
-  ///@}
-
-  ///@{
-  /// Name of the output's point array; empty (default): the input array's name.
-  vtkSetStringMacro(FieldName);
-  vtkGetStringMacro(FieldName);
-  ///@}
-
-  ///@{
-  /// If set, the fitted spline is also written to this .lr file.
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
-
-  ///@{
-  /// Results of the last update (errors over all voxels, counts over all patches).
-  double GetMaximumError() const { return this->MaximumError; }
-  double GetRMSError() const { return this->RMSError; }
-  /// The tolerance in data units that was applied.
-  double GetAbsoluteTolerance() const { return this->AbsoluteTolerance; }
-  bool GetToleranceMet() const { return this->ToleranceMet; }
-  vtkIdType GetNumberOfElements() const { return this->NumberOfElements; }
-  vtkIdType GetNumberOfBasisFunctions() const { return this->NumberOfBasisFunctions; }
-  /// Halvings of the initial element sides reached (largest over directions).
-  int GetNumberOfRefinementLevels() const { return this->NumberOfRefinementLevels; }
-  /// Fit-and-refine rounds (1: the initial spline was good enough).
-  int GetNumberOfIterations() const { return this->NumberOfIterations; }
-  /// Wall time of the fit in seconds.
-  double GetFitTime() const { return this->FitTime; }
-  ///@}
-
 protected:
   vtkLRSplineImageFitter();
   ~vtkLRSplineImageFitter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int Degree[3] = { 2, 2, 2 };
-  int InitialNumberOfElements[3] = { 4, 4, 4 };
-  double Tolerance = 0.02;
-  int ToleranceMode = RELATIVE_TOLERANCE;
-  vtkIdType MaximumNumberOfElements = 500000;
-  int MaximumRefinementLevels = 10;
+  /// The shared settings and a finite MinimumElementSize (else an error, false).
+  bool CheckSettings() override;
+
   double MinimumElementSize = 0.5;
   vtkTypeBool AlignKnotsToVoxels = 1;
-  double Regularization = 0.1;
-  char* FieldName = nullptr;
-  char* FileName = nullptr;
-
-  double MaximumError = 0.0;
-  double RMSError = 0.0;
-  double AbsoluteTolerance = 0.0;
-  bool ToleranceMet = false;
-  vtkIdType NumberOfElements = 0;
-  vtkIdType NumberOfBasisFunctions = 0;
-  int NumberOfRefinementLevels = 0;
-  int NumberOfIterations = 0;
-  double FitTime = 0.0;
 
 private:
   vtkLRSplineImageFitter(const vtkLRSplineImageFitter&) = delete;
   void operator=(const vtkLRSplineImageFitter&) = delete;
 
-  /// The fit settings are usable (else an error, false).
-  bool CheckSettings();
   /// The input image, or the leaves of a composite input (all images); false after an error.
   bool CollectImages(vtkDataObject* input, std::vector<vtkImageData*>& images);
   /**
@@ -227,12 +121,8 @@ private:
 
   struct Job;
   struct BlockFit;
-  /// Zero results before an update.
-  void ResetResults();
   /// Every image checked (CheckImage), one job each; false after an error.
   bool PrepareJobs(const std::vector<vtkImageData*>& images, std::vector<Job>& jobs);
-  /// The tolerance in data units for the data range `range`.
-  double ComputeAbsoluteTolerance(const double range[2]) const;
   /**
    * Fit job `b`: least squares on the initial spline, then refinement of
    * the elements out of tolerance until it is met or the refinement stops;

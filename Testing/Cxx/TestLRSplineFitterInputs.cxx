@@ -12,6 +12,7 @@
 //    vectors, MAGNITUDE a scalar one reproducing their length;
 //  - the .lr file read back by vtkLRSplineReader with PhysicalBounds = the
 //    fitted domain evaluates like the output;
+//  - the output's point array has the input array's name, or FieldName's;
 //  - output port 1: the mesh's boundary surface, closed (no boundary or
 //    non-manifold edges) with the mesh's bounds; empty for a point cloud;
 //  - the spline carries that surface (vtkLRSplineField::TRIMMING_SURFACE)
@@ -248,6 +249,18 @@ int TestLRSplineFitterInputs(int, char*[])
     run.Fitter->SetFileName(nullptr);
     SV_CHECK_MSG(status, run.Run(mesh), run.Error());
     SV_CHECK(status, !vtkLRSplineField::GetTrimmingSurface(run.Output()));
+
+    // The output's point array: the input array's name, or FieldName.
+    auto outputArray = [&run](const char* name) -> vtkDataArray*
+    {
+      vtkDataSet* block = vtkDataSet::SafeDownCast(run.Output()->GetBlock(0));
+      return block ? block->GetPointData()->GetArray(name) : nullptr;
+    };
+    SV_CHECK(status, outputArray("f") != nullptr);
+    run.Fitter->SetFieldName("renamed");
+    SV_CHECK_MSG(status, run.Run(mesh), run.Error());
+    SV_CHECK(status, outputArray("renamed") != nullptr && outputArray("f") == nullptr);
+    run.Fitter->SetFieldName(nullptr);
 
     // The file read back in the fitted domain.
     vtkNew<vtkLRSplineReader> reader;

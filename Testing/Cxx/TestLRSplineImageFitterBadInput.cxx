@@ -2,7 +2,8 @@
 // vtkLRSplineImageFitter on bad input and at its limits. Every bad case must
 // fail with a clear message (RequestData returns 0, an error names the
 // problem) and an empty output, never crash or hang: Tolerance <= 0 or NaN,
-// degrees outside 1..5, no initial elements, a NaN or an infinite voxel, a
+// degrees outside 1..5, no initial elements, MaximumRefinementLevels outside
+// 0..30, MaximumNumberOfElements below 1, a NaN or an infinite voxel, a
 // 1-voxel-thick image, no scalars, an unknown array name, a 3-component
 // array, a cell-data array, a huge image (refused before anything is
 // allocated: the image has no array at all), a rotated image (direction
@@ -96,6 +97,17 @@ int TestLRSplineImageFitterBadInput(int, char*[])
     FitRun run;
     run.Fitter->SetInitialNumberOfElements(4, 0, 4);
     Expect(status, "no initial elements", run, Good(), "InitialNumberOfElements");
+  }
+  {
+    FitRun run;
+    run.Fitter->SetMaximumRefinementLevels(31);
+    Expect(status, "31 levels", run, Good(), "MaximumRefinementLevels must be 0 to 30");
+    run.Fitter->SetMaximumRefinementLevels(-1);
+    Expect(status, "-1 levels", run, Good(), "MaximumRefinementLevels must be 0 to 30");
+    run.Fitter->SetMaximumRefinementLevels(10);
+    run.Fitter->SetMaximumNumberOfElements(0);
+    Expect(
+      status, "no elements allowed", run, Good(), "MaximumNumberOfElements must be at least 1");
   }
 
   // The voxels.
