@@ -107,7 +107,7 @@ int main(int argc, char* argv[])
   const std::string& path = file.GetPath();
   vtkNew<vtkLRSplineReader> reader;
   reader->SetFileName(path.c_str());
-  reader->SetFieldName("velocity");
+  reader->SetOutputFieldName("velocity");
   auto t0 = Clock::now();
   reader->Update();
   std::cout << "read the field in " << Seconds(t0) << " s\n";

@@ -324,7 +324,7 @@ vtkSmartPointer<vtkDataObject> FitScan(
   fitter->SetDegree(2, 2, 2);
   fitter->SetToleranceModeToRelative();
   fitter->SetTolerance(tolerance);
-  fitter->SetFieldName("intensity");
+  fitter->SetOutputFieldName("intensity");
   fitter->Update();
   seconds = Now() - t0;
   vtkMultiBlockDataSet* out = fitter->GetOutput();

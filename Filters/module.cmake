@@ -45,10 +45,11 @@ list(APPEND splineviz_private_headers
 list(APPEND splineviz_shaders
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineVizPrelude.glsl"
   "${SPLINEVIZ_FOLDER}/glsl/vtkSplineVizCommonShared.glsl")
-# The LR arrays' names; progress, abort, output-size checks and requested
-# pieces shared by the filters and readers.
+# The LR arrays' names; input arrays selected by name; progress, abort,
+# output-size checks and requested pieces shared by the filters and readers.
 list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkLRSplineArrayNames.h"
+  "${SPLINEVIZ_FOLDER}/vtkSplineVizInputArrays.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizPieces.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizPolyLines.h"
   "${SPLINEVIZ_FOLDER}/vtkSplineVizProgress.h"

@@ -2,12 +2,14 @@
 #include "vtkLRSplineField.h"
 #include "vtkSplineVizError.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCharArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataObjectTree.h"
 #include "vtkDataObjectTreeIterator.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
@@ -505,6 +507,60 @@ bool vtkLRSplineField::BuildCached(std::unique_ptr<vtkLRSplineField>& field, std
   field = std::move(fresh);
   key = k.str();
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineField::SelectedFieldName(vtkAlgorithm* algorithm, int idx, int port,
+  vtkDataObject* source, std::string& name, std::string* error)
+{
+  name.clear();
+  vtkInformation* info = algorithm->GetInputArrayInformation(idx);
+  const bool named = info->Has(vtkDataObject::FIELD_NAME());
+  const bool byAttribute = !named && info->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE());
+  if (!named && !byAttribute)
+  {
+    return true; // nothing selected: the active vectors, else scalars
+  }
+  if (info->Has(vtkAlgorithm::INPUT_PORT()) && info->Get(vtkAlgorithm::INPUT_PORT()) != port)
+  {
+    return Fail(error,
+      "the field is selected on input port " +
+        std::to_string(info->Get(vtkAlgorithm::INPUT_PORT())) + ", but the spline is on port " +
+        std::to_string(port) + ": use SetInputArrayToProcess(" + std::to_string(idx) + ", " +
+        std::to_string(port) + ", 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name)");
+  }
+  const int association = info->Has(vtkDataObject::FIELD_ASSOCIATION())
+    ? info->Get(vtkDataObject::FIELD_ASSOCIATION())
+    : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  if (association != vtkDataObject::FIELD_ASSOCIATION_POINTS &&
+    association != vtkDataObject::FIELD_ASSOCIATION_POINTS_THEN_CELLS)
+  {
+    return Fail(error,
+      std::string("the field must be selected as point data (the spline's coefficients are point "
+                  "data), not ") +
+        vtkDataObject::GetAssociationTypeAsString(association));
+  }
+  if (named)
+  {
+    const char* selected = info->Get(vtkDataObject::FIELD_NAME());
+    name = selected ? selected : "";
+    return true;
+  }
+  const int attribute = info->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE());
+  std::vector<vtkUnstructuredGrid*> grids;
+  CollectGrids(source, grids);
+  for (vtkUnstructuredGrid* grid : grids)
+  {
+    vtkDataArray* array = grid->GetPointData()->GetAttribute(attribute);
+    if (array && array->GetName() && array->GetName()[0])
+    {
+      name = array->GetName();
+      return true;
+    }
+  }
+  return Fail(error,
+    std::string("no patch of the spline has active ") +
+      vtkDataSetAttributes::GetAttributeTypeAsString(attribute) + " point data to evaluate");
 }
 
 //------------------------------------------------------------------------------

@@ -79,6 +79,21 @@ public:
     bool parameterSpace, std::string* error,
     double surfaceTolerance = vtkLRSplineGeometryMap::DefaultSurfaceTolerance);
 
+  /**
+   * The field a filter evaluates is its input array `idx`, selected the VTK
+   * way: SetInputArrayToProcess(idx, port, 0,
+   * vtkDataObject::FIELD_ASSOCIATION_POINTS, name), `port` the input port
+   * of the spline. SelectedFieldName() gives the name to pass to Build():
+   * "" when nothing is selected or the name is empty (the active vectors,
+   * else scalars); with a selection by attribute type (e.g.
+   * vtkDataSetAttributes::SCALARS) the name of that point attribute in the
+   * first patch of `source` that has one. False with a message when the
+   * selection is on another input port or not point data (the coefficients
+   * are point data), or names an attribute no patch has.
+   */
+  static bool SelectedFieldName(vtkAlgorithm* algorithm, int idx, int port, vtkDataObject* source,
+    std::string& name, std::string* error);
+
   int GetNumberOfPatches() const { return static_cast<int>(this->Patches.size()); }
   const vtkLRSplineEvaluator& GetPatch(int i) const { return *this->Patches[i]; }
   int GetNumberOfComponents() const { return this->NumberOfComponents; }

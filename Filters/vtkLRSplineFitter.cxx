@@ -1029,7 +1029,7 @@ int vtkLRSplineFitter::RequestData(
   const char* methods[] = { "LR-MBA", "least squares", "least squares + LR-MBA" };
   vtkSmartPointer<vtkUnstructuredGrid> grid =
     vtkLRSplineFitCore::BuildBlock(fit.Core.Builder.GetPatch(), result.Volume, 0, piece, numPieces,
-      scale, lo, this->GetOutputFieldName(fieldName.c_str()),
+      scale, lo, this->ResolveOutputFieldName(fieldName.c_str()),
       std::string("vtkLRSplineFitter (") + methods[this->Method] + ", local refinement)",
       fit.ElementError, report, &error);
   if (!grid)

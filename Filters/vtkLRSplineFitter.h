@@ -34,7 +34,7 @@
  * points are left out of the fit.
  *
  * The settings, checks and results it shares with vtkLRSplineImageFitter
- * (Degree, Tolerance, the limits, Regularization, FieldName, FileName, the
+ * (Degree, Tolerance, the limits, Regularization, OutputFieldName, FileName, the
  * errors) are vtkLRSplineFitterBase's. Also refused before allocating: no
  * points or array, non-finite values or coordinates (unless RemoveOutliers),
  * points without volume, limits whose spline would not fit in memory.

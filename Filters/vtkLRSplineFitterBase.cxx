@@ -37,7 +37,7 @@ vtkLRSplineFitterBase::vtkLRSplineFitterBase()
 
 vtkLRSplineFitterBase::~vtkLRSplineFitterBase()
 {
-  this->SetFieldName(nullptr);
+  this->SetOutputFieldName(nullptr);
   this->SetFileName(nullptr);
 }
 
@@ -140,11 +140,11 @@ double vtkLRSplineFitterBase::ComputeAbsoluteTolerance(const double range[2]) co
 }
 
 //------------------------------------------------------------------------------
-std::string vtkLRSplineFitterBase::GetOutputFieldName(const char* arrayName) const
+std::string vtkLRSplineFitterBase::ResolveOutputFieldName(const char* arrayName) const
 {
-  if (this->FieldName && *this->FieldName)
+  if (this->OutputFieldName && *this->OutputFieldName)
   {
-    return this->FieldName;
+    return this->OutputFieldName;
   }
   return (arrayName && *arrayName) ? arrayName : "Field";
 }
@@ -170,7 +170,9 @@ void vtkLRSplineFitterBase::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumNumberOfElements: " << this->MaximumNumberOfElements << "\n";
   os << indent << "MaximumRefinementLevels: " << this->MaximumRefinementLevels << "\n";
   os << indent << "Regularization: " << this->Regularization << "\n";
-  os << indent << "FieldName: " << (this->FieldName ? this->FieldName : "(input array's)") << "\n";
+  os << indent
+     << "OutputFieldName: " << (this->OutputFieldName ? this->OutputFieldName : "(input array's)")
+     << "\n";
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "MaximumError: " << this->MaximumError << "\n";
   os << indent << "RMSError: " << this->RMSError << "\n";

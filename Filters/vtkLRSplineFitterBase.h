@@ -22,7 +22,7 @@
  * at the update with an error: Tolerance not positive and finite, degrees
  * outside 1..5, InitialNumberOfElements below 1, MaximumRefinementLevels
  * outside 0..30, MaximumNumberOfElements below 1, Regularization not
- * finite); FieldName and FileName; the array to fit (SetInputArrayToProcess,
+ * finite); OutputFieldName and FileName; the array to fit (SetInputArrayToProcess,
  * default the active point scalars); the results of the last update
  * (GetMaximumError() ... GetFitTime(), and "LRFitSeconds" in the output's
  * field data); every piece fits all the data. Abstract: use a subclass.
@@ -35,7 +35,7 @@
 #include "SplineVizModule.h" // for export macro
 #include "vtkMultiBlockDataSetAlgorithm.h"
 
-#include <string> // for GetOutputFieldName
+#include <string> // for ResolveOutputFieldName
 
 class vtkMultiBlockDataSet;
 
@@ -110,9 +110,19 @@ public:
   ///@}
 
   ///@{
-  /// Name of the output's point array; empty (default): the input array's name.
-  vtkSetStringMacro(FieldName);
-  vtkGetStringMacro(FieldName);
+  /**
+   * Name of the output's point array of coefficients (as vtkLRSplineReader's
+   * OutputFieldName); empty (default): the input array's name. The array to
+   * fit is selected with SetInputArrayToProcess.
+   */
+  vtkSetStringMacro(OutputFieldName);
+  vtkGetStringMacro(OutputFieldName);
+  ///@}
+
+  ///@{
+  /// Deprecated: use SetOutputFieldName / GetOutputFieldName; kept for one release.
+  void SetFieldName(const char* name) { this->SetOutputFieldName(name); }
+  char* GetFieldName() { return this->GetOutputFieldName(); }
   ///@}
 
   ///@{
@@ -158,8 +168,8 @@ protected:
   // The tolerance in data units for data in [range[0], range[1]] (at least
   // the rounding level of the values, for constant data).
   double ComputeAbsoluteTolerance(const double range[2]) const;
-  // The output's array name: FieldName, else the input array's, else "Field".
-  std::string GetOutputFieldName(const char* arrayName) const;
+  // The output's array name: OutputFieldName, else the input array's, else "Field".
+  std::string ResolveOutputFieldName(const char* arrayName) const;
   // The most fit-and-refine rounds of an update: 3 per refinement level
   // allowed, at most 64 (a safety bound; each round halves the marked intervals).
   int GetMaximumRounds() const;
@@ -171,7 +181,7 @@ protected:
   vtkIdType MaximumNumberOfElements = 500000;
   int MaximumRefinementLevels = 10;
   double Regularization = 0.1;
-  char* FieldName = nullptr;
+  char* OutputFieldName = nullptr;
   char* FileName = nullptr;
 
   double MaximumError = 0.0;

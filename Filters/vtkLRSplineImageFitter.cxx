@@ -899,7 +899,7 @@ vtkSmartPointer<vtkUnstructuredGrid> vtkLRSplineImageFitter::BuildOutputBlock(
   report.DataRange[0] = range[0];
   report.DataRange[1] = range[1];
   report.History = std::move(result.History);
-  const std::string fieldName = this->GetOutputFieldName(job.Array->GetName());
+  const std::string fieldName = this->ResolveOutputFieldName(job.Array->GetName());
   std::string error;
   // This piece's elements, in the reader's format.
   vtkSmartPointer<vtkUnstructuredGrid> grid = vtkLRSplineFitCore::BuildBlock(

@@ -27,7 +27,7 @@
  * MaximumRefinementLevels or MinimumElementSize.
  *
  * Output: a vtkMultiBlockDataSet in vtkLRSplineReader's format (field mode),
- * the point array FieldName, cell data "LRFitElementMaxError" and field data
+ * the point array OutputFieldName, cell data "LRFitElementMaxError" and field data
  * "LRFit..." (errors, tolerance, iterations, history), also from the getters.
  * FileName: also write a .lr file (read it back with PhysicalBounds = the
  * image's bounds). Every piece fits the whole image and keeps its share of

@@ -3,6 +3,7 @@
 
 #include "vtkSplineVizPieces.h"
 #include "vtkLRSplineField.h"
+#include "vtkSplineVizInputArrays.h"
 #include "vtkSplineVizProgress.h"
 
 #include "vtkCellData.h"
@@ -28,7 +29,6 @@ vtkLRSplineProbeFilter::vtkLRSplineProbeFilter()
 
 vtkLRSplineProbeFilter::~vtkLRSplineProbeFilter()
 {
-  this->SetArrayName(nullptr);
   this->SetGradientArrayName(nullptr);
   this->SetValidPointMaskArrayName(nullptr);
 }
@@ -51,6 +51,17 @@ vtkDataObject* vtkLRSplineProbeFilter::GetSource()
     return nullptr;
   }
   return this->GetExecutive()->GetInputData(1, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineProbeFilter::SetArrayName(const char* name)
+{
+  vtkSplineVizInputArrays::SetName(this, 0, 1, name);
+}
+
+const char* vtkLRSplineProbeFilter::GetArrayName()
+{
+  return vtkSplineVizInputArrays::GetName(this, 0);
 }
 
 //------------------------------------------------------------------------------
@@ -101,8 +112,13 @@ int vtkLRSplineProbeFilter::RequestData(
     vtkErrorMacro(<< "no spline source: connect the output of vtkLRSplineReader to port 1");
     return 0;
   }
-  std::string error;
-  if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, source, this->ArrayName,
+  std::string error, fieldName;
+  if (!vtkLRSplineField::SelectedFieldName(this, 0, 1, source, fieldName, &error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, source, fieldName.c_str(),
         this->LocatorType, this->ForestResolution, this->UseParameterCoordinates != 0, &error,
         this->SurfaceTolerance))
   {
@@ -147,7 +163,9 @@ int vtkLRSplineProbeFilter::RequestData(
 void vtkLRSplineProbeFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(active)") << "\n";
+  const char* field = vtkSplineVizInputArrays::GetName(this, 0);
+  os << indent << "Field (input array 0, port 1): "
+     << (field && *field ? field : "(active vectors, else scalars)") << "\n";
   os << indent << "ComputeGradient: " << this->ComputeGradient << "\n";
   os << indent
      << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)")

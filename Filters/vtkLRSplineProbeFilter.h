@@ -12,6 +12,10 @@
  * 3D). With several patches the first patch (in block order) that contains a
  * point wins.
  *
+ * The field: the source's point array selected with
+ * SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+ * name) (port 1, the spline), by default its active vectors, else scalars.
+ *
  * Output: a copy of the input with point arrays
  * - the field, under the source array's name (double, same components);
  * - optionally its exact gradient (ComputeGradient; GradientArrayName,
@@ -60,10 +64,20 @@ public:
   vtkDataObject* GetSource();
   ///@}
 
+  // The field to evaluate is input array 0, a point array of the spline on
+  // port 1: SetInputArrayToProcess(0, 1, 0,
+  // vtkDataObject::FIELD_ASSOCIATION_POINTS, name). Nothing selected (the
+  // default) or an empty name: the spline's active vectors, else scalars.
+
   ///@{
-  /// Point-data array of the source to evaluate; empty: its active vectors, else scalars.
-  vtkSetStringMacro(ArrayName);
-  vtkGetStringMacro(ArrayName);
+  /**
+   * Deprecated: use SetInputArrayToProcess(0, 1, 0,
+   * vtkDataObject::FIELD_ASSOCIATION_POINTS, name) and
+   * GetInputArrayInformation(0); kept for one release. nullptr clears the
+   * selection.
+   */
+  void SetArrayName(const char* name);
+  const char* GetArrayName();
   ///@}
 
   ///@{
@@ -128,7 +142,6 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  char* ArrayName = nullptr;
   vtkTypeBool ComputeGradient = 0;
   char* GradientArrayName = nullptr;
   char* ValidPointMaskArrayName = nullptr;

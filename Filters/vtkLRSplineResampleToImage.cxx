@@ -3,6 +3,7 @@
 
 #include "vtkSplineVizPieces.h"
 #include "vtkLRSplineField.h"
+#include "vtkSplineVizInputArrays.h"
 #include "vtkSplineVizProgress.h"
 
 #include "vtkImageData.h"
@@ -18,11 +19,24 @@
 vtkStandardNewMacro(vtkLRSplineResampleToImage);
 
 //------------------------------------------------------------------------------
-vtkLRSplineResampleToImage::vtkLRSplineResampleToImage() = default;
-
-vtkLRSplineResampleToImage::~vtkLRSplineResampleToImage()
+vtkLRSplineResampleToImage::vtkLRSplineResampleToImage()
 {
-  this->SetArrayName(nullptr);
+  // vtkImageAlgorithm selects the active scalars; nothing selected is the
+  // active vectors, else scalars, here.
+  vtkSplineVizInputArrays::SetName(this, 0, 0, nullptr);
+}
+
+vtkLRSplineResampleToImage::~vtkLRSplineResampleToImage() = default;
+
+//------------------------------------------------------------------------------
+void vtkLRSplineResampleToImage::SetArrayName(const char* name)
+{
+  vtkSplineVizInputArrays::SetName(this, 0, 0, name);
+}
+
+const char* vtkLRSplineResampleToImage::GetArrayName()
+{
+  return vtkSplineVizInputArrays::GetName(this, 0);
 }
 
 //------------------------------------------------------------------------------
@@ -89,8 +103,13 @@ int vtkLRSplineResampleToImage::RequestData(
       return 0;
     }
   }
-  std::string error;
-  if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, source, this->ArrayName,
+  std::string error, fieldName;
+  if (!vtkLRSplineField::SelectedFieldName(this, 0, 0, source, fieldName, &error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, source, fieldName.c_str(),
         this->LocatorType, this->ForestResolution, false, &error))
   {
     vtkErrorMacro(<< "cannot evaluate the spline: " << error);
@@ -198,7 +217,10 @@ void vtkLRSplineResampleToImage::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SamplingBounds: " << this->SamplingBounds[0] << " " << this->SamplingBounds[1]
      << " " << this->SamplingBounds[2] << " " << this->SamplingBounds[3] << " "
      << this->SamplingBounds[4] << " " << this->SamplingBounds[5] << "\n";
-  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(active)") << "\n";
+  const char* field = vtkSplineVizInputArrays::GetName(this, 0);
+  os << indent
+     << "Field (input array 0): " << (field && *field ? field : "(active vectors, else scalars)")
+     << "\n";
   os << indent << "ComputeGradient: " << this->ComputeGradient << "\n";
   os << indent << "LocatorType: " << this->LocatorType << "\n";
   os << indent << "ForestResolution: " << this->ForestResolution << "\n";

@@ -7,7 +7,10 @@
  * The convenience counterpart of vtkResampleToImage for LR splines: the
  * output is a vtkImageData with SamplingDimensions points spanning the
  * spline's bounds (UseInputBounds, default) or SamplingBounds, whose point
- * data holds the field evaluated exactly (vtkLRSplineField: k-d forest
+ * data holds the field (the spline's point array selected with
+ * SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+ * name), by default its active vectors, else scalars) evaluated exactly
+ * (vtkLRSplineField: k-d forest
  * look-up and Bezier evaluation, Fuchs et al. §3.2), optionally its gradient,
  * and "vtkValidPointMask". Parallel over the samples (vtkSMPTools); honours
  * update extents (each piece samples only its extent). Reports progress and
@@ -57,10 +60,20 @@ public:
   vtkGetVector6Macro(SamplingBounds, double);
   ///@}
 
+  // The field to sample is input array 0, a point array of the spline:
+  // SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+  // name). Nothing selected (the default) or an empty name: the spline's
+  // active vectors, else scalars.
+
   ///@{
-  /// Point-data array of the spline to sample; empty: active vectors, else scalars.
-  vtkSetStringMacro(ArrayName);
-  vtkGetStringMacro(ArrayName);
+  /**
+   * Deprecated: use SetInputArrayToProcess(0, 0, 0,
+   * vtkDataObject::FIELD_ASSOCIATION_POINTS, name) and
+   * GetInputArrayInformation(0); kept for one release. nullptr clears the
+   * selection.
+   */
+  void SetArrayName(const char* name);
+  const char* GetArrayName();
   ///@}
 
   ///@{
@@ -90,7 +103,6 @@ protected:
   int SamplingDimensions[3] = { 64, 64, 64 };
   vtkTypeBool UseInputBounds = 1;
   double SamplingBounds[6] = { 0, 1, 0, 1, 0, 1 };
-  char* ArrayName = nullptr;
   vtkTypeBool ComputeGradient = 0;
   int LocatorType = 2;
   int ForestResolution = 0;

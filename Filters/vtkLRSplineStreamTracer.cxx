@@ -2,6 +2,7 @@
 #include "vtkLRSplineStreamTracer.h"
 
 #include "vtkLRSplineField.h"
+#include "vtkSplineVizInputArrays.h"
 #include "vtkSplineVizProgress.h"
 #include "vtkSplineVizRungeKutta.h"
 #include "vtkSplineVizSeeds.h"
@@ -654,9 +655,17 @@ vtkLRSplineStreamTracer::vtkLRSplineStreamTracer()
   this->SetNumberOfInputPorts(2);
 }
 
-vtkLRSplineStreamTracer::~vtkLRSplineStreamTracer()
+vtkLRSplineStreamTracer::~vtkLRSplineStreamTracer() = default;
+
+//------------------------------------------------------------------------------
+void vtkLRSplineStreamTracer::SetArrayName(const char* name)
 {
-  this->SetArrayName(nullptr);
+  vtkSplineVizInputArrays::SetName(this, 0, 0, name);
+}
+
+const char* vtkLRSplineStreamTracer::GetArrayName()
+{
+  return vtkSplineVizInputArrays::GetName(this, 0);
 }
 
 //------------------------------------------------------------------------------
@@ -762,8 +771,13 @@ int vtkLRSplineStreamTracer::RequestData(
   {
     return 0;
   }
-  std::string error;
-  if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, spline, this->ArrayName,
+  std::string error, fieldName;
+  if (!vtkLRSplineField::SelectedFieldName(this, 0, 0, spline, fieldName, &error))
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  if (!vtkLRSplineField::BuildCached(this->Field, this->FieldKey, spline, fieldName.c_str(),
         this->LocatorType, this->ForestResolution, false, &error, this->SurfaceTolerance))
   {
     vtkErrorMacro(<< "cannot evaluate the vector field: " << error);
@@ -973,7 +987,9 @@ double vtkLRSplineStreamTracer::ComputeErrorMetric(
 void vtkLRSplineStreamTracer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ArrayName: " << (this->ArrayName ? this->ArrayName : "(active vectors)") << "\n";
+  const char* field = vtkSplineVizInputArrays::GetName(this, 0);
+  os << indent << "Field (input array 0): " << (field && *field ? field : "(active vectors)")
+     << "\n";
   os << indent << "IntegratorType: " << GetIntegratorName(this->IntegratorType) << "\n";
   os << indent << "StepMode: " << this->StepMode << "\n";
   os << indent << "IntegrationStep: " << this->IntegrationStep << "\n";

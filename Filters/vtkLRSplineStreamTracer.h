@@ -6,8 +6,10 @@
  *
  * Like vtkStreamTracer, but every evaluation is an exact evaluation of the
  * spline (k-d forest look-up and Bezier evaluation, vtkLRSplineField, Fuchs
- * et al. §3.2), not an interpolation of samples. Port 0: the vector field,
- * the output of vtkLRSplineReader or vtkIFEMReader (one patch or all; the
+ * et al. §3.2), not an interpolation of samples. Port 0: the vector field
+ * (the point array selected with SetInputArrayToProcess(0, 0, 0,
+ * vtkDataObject::FIELD_ASSOCIATION_POINTS, name), by default the active
+ * vectors) of the output of vtkLRSplineReader or vtkIFEMReader (one patch or all; the
  * first patch containing a point wins): volumes, or surfaces in the plane or
  * curved in 3D, on which the field's tangential part is integrated (points
  * kept on the surface within SurfaceTolerance). Port 1 (Source): the seeds,
@@ -113,10 +115,20 @@ public:
   void SetSourceData(vtkDataObject* source);
   ///@}
 
+  // The vector field is input array 0, a point array of the spline:
+  // SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+  // name). Nothing selected (the default) or an empty name: the spline's
+  // active vectors.
+
   ///@{
-  /// The point-data vector array of the spline; empty: its active vectors.
-  vtkSetStringMacro(ArrayName);
-  vtkGetStringMacro(ArrayName);
+  /**
+   * Deprecated: use SetInputArrayToProcess(0, 0, 0,
+   * vtkDataObject::FIELD_ASSOCIATION_POINTS, name) and
+   * GetInputArrayInformation(0); kept for one release. nullptr clears the
+   * selection.
+   */
+  void SetArrayName(const char* name);
+  const char* GetArrayName();
   ///@}
 
   ///@{
@@ -293,7 +305,6 @@ protected:
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  char* ArrayName = nullptr;
   int IntegratorType = RUNGE_KUTTA4;
   int StepMode = FIXED_LENGTH;
   double IntegrationStep = 0.01;

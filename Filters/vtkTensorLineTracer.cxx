@@ -2,6 +2,7 @@
 #include "vtkTensorLineTracer.h"
 
 #include "vtkSplineVizError.h"
+#include "vtkSplineVizInputArrays.h"
 #include "vtkSplineVizProgress.h"
 #include "vtkSplineVizRungeKutta.h"
 #include "vtkSplineVizSeeds.h"
@@ -14,6 +15,7 @@
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
 #include "vtkDataSet.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkGenericCell.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -1106,9 +1108,17 @@ vtkTensorLineTracer::vtkTensorLineTracer()
     0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::TENSORS);
 }
 
-vtkTensorLineTracer::~vtkTensorLineTracer()
+vtkTensorLineTracer::~vtkTensorLineTracer() = default;
+
+//------------------------------------------------------------------------------
+void vtkTensorLineTracer::SetMaskArrayName(const char* name)
 {
-  this->SetMaskArrayName(nullptr);
+  vtkSplineVizInputArrays::SetName(this, 1, 0, name);
+}
+
+const char* vtkTensorLineTracer::GetMaskArrayName()
+{
+  return vtkSplineVizInputArrays::GetName(this, 1);
 }
 
 //------------------------------------------------------------------------------
@@ -1180,9 +1190,29 @@ bool vtkTensorLineTracer::CollectTensorArrays(vtkDataObject* input,
                      "point tensor array to port 0");
     return false;
   }
-  // "None" is ParaView's no-array choice (unless an array has that name).
-  useMask = this->MaskArrayName && this->MaskArrayName[0] &&
-    !(std::string(this->MaskArrayName) == "None" && !dataSets[0]->GetPointData()->GetArray("None"));
+  // The mask: input array 1, by name or attribute type. No selection, an
+  // empty name or "None" (ParaView's no-array choice, unless an array has
+  // that name): none.
+  vtkInformation* maskInfo = this->GetInputArrayInformation(1);
+  std::string maskLabel; // for messages
+  if (maskInfo->Has(vtkDataObject::FIELD_NAME()))
+  {
+    const char* maskName = maskInfo->Get(vtkDataObject::FIELD_NAME());
+    maskLabel = maskName ? maskName : "";
+    useMask = !maskLabel.empty() &&
+      !(maskLabel == "None" && !dataSets[0]->GetPointData()->GetArray("None"));
+  }
+  else if (maskInfo->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
+  {
+    maskLabel = std::string("active ") +
+      vtkDataSetAttributes::GetAttributeTypeAsString(
+        maskInfo->Get(vtkDataObject::FIELD_ATTRIBUTE_TYPE()));
+    useMask = true;
+  }
+  else
+  {
+    useMask = false;
+  }
   tensorArrays.assign(dataSets.size(), nullptr);
   maskArrays.assign(dataSets.size(), nullptr);
   layouts.assign(dataSets.size(), 0);
@@ -1219,10 +1249,17 @@ bool vtkTensorLineTracer::CollectTensorArrays(vtkDataObject* input,
     tensorArrays[b] = tensors;
     if (useMask)
     {
-      vtkDataArray* mask = ds->GetPointData()->GetArray(this->MaskArrayName);
+      int maskAssociation = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+      vtkDataArray* mask = this->GetInputArrayToProcess(1, ds, maskAssociation);
+      if (mask &&
+        (maskAssociation != vtkDataObject::FIELD_ASSOCIATION_POINTS ||
+          mask->GetNumberOfTuples() != ds->GetNumberOfPoints()))
+      {
+        mask = nullptr; // cell data: not a point array
+      }
       if (!mask || mask->GetNumberOfComponents() != 1)
       {
-        vtkErrorMacro(<< "the mask array '" << this->MaskArrayName
+        vtkErrorMacro(<< "the mask array '" << maskLabel
                       << (mask ? "' must have one component" : "' is not a point array of ")
                       << (mask ? "" : ds->GetClassName()));
         return false;
@@ -1531,8 +1568,8 @@ void vtkTensorLineTracer::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "TensorLayout: " << this->TensorLayout << " ("
      << TM::GetLayoutName(this->TensorLayout) << ")\n";
-  os << indent << "MaskArrayName: " << (this->MaskArrayName ? this->MaskArrayName : "(none)")
-     << "\n";
+  const char* mask = vtkSplineVizInputArrays::GetName(this, 1);
+  os << indent << "Mask (input array 1): " << (mask && *mask ? mask : "(none)") << "\n";
   os << indent << "SeedMode: " << this->SeedMode << "\n";
   os << indent << "SeedStride: " << this->SeedStride << "\n";
   os << indent << "SeedFAThreshold: " << this->SeedFAThreshold << "\n";

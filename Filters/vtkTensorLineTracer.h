@@ -13,8 +13,9 @@
  * Input (port 0): point tensors of a vtkImageData (trilinear, direction matrix
  * honoured), of any vtkDataSet VTK can interpolate, or of a composite of them;
  * the array of SetInputArrayToProcess(0, ...) (default: active point tensors)
- * with 9, 7 (Teem) or 6 components in TensorLayout order. Optional
- * MaskArrayName: tracked where its value is >= 0.5. Seeds: SEEDS_FROM_SOURCE
+ * with 9, 7 (Teem) or 6 components in TensorLayout order. Optional mask,
+ * the point array of SetInputArrayToProcess(1, ...): tracked where its value
+ * is >= 0.5. Seeds: SEEDS_FROM_SOURCE
  * (the points on port 1) or SEEDS_FROM_VOXELS (every SeedStride-th point with
  * FA >= SeedFAThreshold, inside the mask).
  *
@@ -120,15 +121,21 @@ public:
   vtkGetMacro(TensorLayout, int);
   ///@}
 
+  // The mask is input array 1: SetInputArrayToProcess(1, 0, 0,
+  // vtkDataObject::FIELD_ASSOCIATION_POINTS, name), a 1-component point
+  // array restricting the tracking to where its interpolated value is >= 0.5.
+  // Nothing selected (the default), an empty name or "None" (ParaView's
+  // choice of no array, unless a point array has that name): no mask.
+
   ///@{
   /**
-   * Name of a 1-component point array restricting the tracking to where its
-   * interpolated value is >= 0.5. Empty, nullptr (default) or "None"
-   * (ParaView's choice of no array, unless a point array has that name): no
-   * mask.
+   * Deprecated: use SetInputArrayToProcess(1, 0, 0,
+   * vtkDataObject::FIELD_ASSOCIATION_POINTS, name) and
+   * GetInputArrayInformation(1); kept for one release. nullptr clears the
+   * selection.
    */
-  vtkSetStringMacro(MaskArrayName);
-  vtkGetStringMacro(MaskArrayName);
+  void SetMaskArrayName(const char* name);
+  const char* GetMaskArrayName();
   ///@}
 
   ///@{
@@ -284,7 +291,6 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int TensorLayout = 1;
-  char* MaskArrayName = nullptr;
   int SeedMode = SEEDS_FROM_SOURCE;
   int SeedStride = 1;
   double SeedFAThreshold = 0.3;

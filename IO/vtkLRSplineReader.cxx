@@ -59,13 +59,13 @@ bool ReadWholeFile(const char* name, std::string& text, std::string& error)
 vtkLRSplineReader::vtkLRSplineReader()
 {
   this->SetNumberOfInputPorts(0);
-  this->SetFieldName("Field");
+  this->SetOutputFieldName("Field");
 }
 
 vtkLRSplineReader::~vtkLRSplineReader()
 {
   this->SetFileName(nullptr);
-  this->SetFieldName(nullptr);
+  this->SetOutputFieldName(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -231,7 +231,8 @@ int vtkLRSplineReader::RequestData(
   options.MergePoints = this->MergePoints != 0;
   std::copy(scale, scale + 3, options.Scale);
   std::copy(offset, offset + 3, options.Offset);
-  options.FieldName = (this->FieldName && *this->FieldName) ? this->FieldName : "Field";
+  options.FieldName =
+    (this->OutputFieldName && *this->OutputFieldName) ? this->OutputFieldName : "Field";
   options.SourceFormat = formatName;
   output->SetNumberOfBlocks(static_cast<unsigned int>(patches.size()));
   this->UpdateProgress(0.1);
@@ -284,7 +285,8 @@ void vtkLRSplineReader::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PhysicalBounds: " << this->PhysicalBounds[0] << " " << this->PhysicalBounds[1]
      << " " << this->PhysicalBounds[2] << " " << this->PhysicalBounds[3] << " "
      << this->PhysicalBounds[4] << " " << this->PhysicalBounds[5] << "\n";
-  os << indent << "FieldName: " << (this->FieldName ? this->FieldName : "(none)") << "\n";
+  os << indent << "OutputFieldName: " << (this->OutputFieldName ? this->OutputFieldName : "(none)")
+     << "\n";
   os << indent << "MergePoints: " << this->MergePoints << "\n";
   os << indent << "RationalMode: " << this->RationalMode << "\n";
 }

@@ -16,7 +16,8 @@
  *
  * Output: a vtkMultiBlockDataSet, one block per patch ("Patch 0", ...), each a
  * vtkUnstructuredGrid written by vtkLRSplineBezierGrid (see there for the
- * cell, point and field data; the coefficients in an array named FieldName).
+ * cell, point and field data; the coefficients in an array named
+ * OutputFieldName).
  *
  * Field mode (default): control points at the equally spaced points of each
  * element's parameter box (the Bezier form of the identity), optionally
@@ -118,9 +119,18 @@ public:
   ///@}
 
   ///@{
-  /// Name of the point-data array of coefficients. Default "Field".
-  vtkSetStringMacro(FieldName);
-  vtkGetStringMacro(FieldName);
+  /**
+   * Name of the output's point-data array of coefficients (the name the
+   * fitters' OutputFieldName sets too). Default "Field".
+   */
+  vtkSetStringMacro(OutputFieldName);
+  vtkGetStringMacro(OutputFieldName);
+  ///@}
+
+  ///@{
+  /// Deprecated: use SetOutputFieldName / GetOutputFieldName; kept for one release.
+  void SetFieldName(const char* name) { this->SetOutputFieldName(name); }
+  char* GetFieldName() { return this->GetOutputFieldName(); }
   ///@}
 
   ///@{
@@ -149,7 +159,7 @@ protected:
   int FileFormat = AUTOMATIC;
   vtkTypeBool GeometryMode = 0;
   double PhysicalBounds[6] = { 0, -1, 0, -1, 0, -1 };
-  char* FieldName = nullptr;
+  char* OutputFieldName = nullptr;
   vtkTypeBool MergePoints = 1;
   int RationalMode = 0;
   std::string LastError;

@@ -613,7 +613,7 @@ vtkLRSplineVolumeMapper::vtkLRSplineVolumeMapper()
 //------------------------------------------------------------------------------
 vtkLRSplineVolumeMapper::~vtkLRSplineVolumeMapper()
 {
-  this->SetFieldArrayName(nullptr);
+  this->SetFieldArray(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -733,9 +733,8 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
                         "vtkLRSplineImageFitter) to the mapper"));
   }
   std::ostringstream key;
-  key << input << ' ' << input->GetMTime() << ' '
-      << (this->FieldArrayName ? this->FieldArrayName : "") << ' ' << this->ElementLocator << ' '
-      << this->ForestResolution;
+  key << input << ' ' << input->GetMTime() << ' ' << (this->FieldArray ? this->FieldArray : "")
+      << ' ' << this->ElementLocator << ' ' << this->ForestResolution;
   if (key.str() == in.BuildKey)
   {
     return done(in.Valid);
@@ -762,7 +761,7 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
 
   std::string message;
   const int blocks[3] = { this->ForestResolution, this->ForestResolution, this->ForestResolution };
-  if (!in.Field.Build(input, this->FieldArrayName, this->ElementLocator,
+  if (!in.Field.Build(input, this->FieldArray, this->ElementLocator,
         this->ForestResolution > 0 ? blocks : nullptr, false, &message))
   {
     return done(in.Fail(message));
@@ -864,11 +863,12 @@ bool vtkLRSplineVolumeMapper::UploadSpline(vtkOpenGLRenderWindow* window)
   // The spline's data on the GPU, once per change.
   if (in.UploadTime < in.BuildTime)
   {
-    GLint maxTexels = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    // One message for the whole spline before any upload (the buffers would
+    // each refuse their own part).
+    const std::size_t maxTexels = vtkSplineVizGPUBuffer::GetMaximumNumberOfTexels(window);
     const std::size_t largest = std::max({ in.Coefficients.size(), in.Boxes.size() / 4,
       in.NodeWords.size(), in.Heads.size(), in.Octree.size() });
-    if (maxTexels > 0 && largest > static_cast<std::size_t>(maxTexels))
+    if (largest > maxTexels)
     {
       in.Fail("the spline needs a buffer texture of " + std::to_string(largest) +
         " texels; this OpenGL allows " + std::to_string(maxTexels));
@@ -2002,8 +2002,7 @@ void vtkLRSplineVolumeMapper::PrintSelf(ostream& os, vtkIndent indent)
     : this->BlendMode == MINIMUM_INTENSITY_BLEND         ? "MinimumIntensity"
                                                          : "IsoSurface";
   os << indent << "BlendMode: " << blend << "\n";
-  os << indent << "FieldArrayName: " << (this->FieldArrayName ? this->FieldArrayName : "(auto)")
-     << "\n";
+  os << indent << "FieldArray: " << (this->FieldArray ? this->FieldArray : "(auto)") << "\n";
   os << indent << "VectorMode: " << (this->VectorMode == MAGNITUDE ? "Magnitude" : "Component")
      << "\n";
   os << indent << "VectorComponent: " << this->VectorComponent << "\n";

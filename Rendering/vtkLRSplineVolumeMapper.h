@@ -88,12 +88,19 @@ public:
 
   ///@{
   /**
-   * Name of the point-data array of coefficients (the reader's FieldName,
-   * "Field" by default). nullptr or "" (default): the active vectors, else the
-   * active scalars, else the first array.
+   * Name of the point-data array of coefficients to render (the reader's and
+   * the fitters' OutputFieldName, "Field" by default). nullptr or ""
+   * (default): the active vectors, else the active scalars, else the first
+   * array.
    */
-  vtkSetStringMacro(FieldArrayName);
-  vtkGetStringMacro(FieldArrayName);
+  vtkSetStringMacro(FieldArray);
+  vtkGetStringMacro(FieldArray);
+  ///@}
+
+  ///@{
+  /// Deprecated: use SetFieldArray / GetFieldArray; kept for one release.
+  void SetFieldArrayName(const char* name) { this->SetFieldArray(name); }
+  char* GetFieldArrayName() { return this->GetFieldArray(); }
   ///@}
 
   enum VectorModes
@@ -333,7 +340,7 @@ protected:
   virtual std::string GetFragmentShaderSource();
 
   int BlendMode = COMPOSITE_BLEND;
-  char* FieldArrayName = nullptr;
+  char* FieldArray = nullptr;
   int VectorMode = MAGNITUDE;
   int VectorComponent = 0;
   int ElementLocator = KD_FOREST;

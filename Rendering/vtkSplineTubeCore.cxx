@@ -432,10 +432,10 @@ vtkSplineTubeCore::vtkSplineTubeCore()
 //------------------------------------------------------------------------------
 vtkSplineTubeCore::~vtkSplineTubeCore()
 {
-  this->SetRadiusArrayName(nullptr);
-  this->SetNodeScalarArrayName(nullptr);
+  this->SetRadiusArray(nullptr);
+  this->SetNodeScalarArray(nullptr);
   this->SetNodeScalarRole(nullptr);
-  this->SetCellIdArrayName(nullptr);
+  this->SetCellIdArray(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -571,9 +571,9 @@ bool vtkSplineTubeCore::FindPointArray(
 vtkDataArray* vtkSplineTubeCore::FindOriginalIds(vtkPolyData* input) const
 {
   vtkDataArray* originalIds = nullptr;
-  if (this->CellIdArrayName && this->CellIdArrayName[0])
+  if (this->CellIdArray && this->CellIdArray[0])
   {
-    originalIds = input->GetCellData()->GetArray(this->CellIdArrayName);
+    originalIds = input->GetCellData()->GetArray(this->CellIdArray);
     if (originalIds &&
       (originalIds->GetNumberOfComponents() != 1 ||
         vtkDataArray::GetDataTypeMin(originalIds->GetDataType()) == VTK_DOUBLE_MIN ||
@@ -600,8 +600,8 @@ bool vtkSplineTubeCore::AddPolyData(
   const char* role = this->NodeScalarRole ? this->NodeScalarRole : "node scalar";
   vtkDataArray* radiusArray = nullptr;
   vtkDataArray* scalarArray = nullptr;
-  if (!this->FindPointArray(input, this->RadiusArrayName, "radius", radiusArray) ||
-    !this->FindPointArray(input, this->NodeScalarArrayName, role, scalarArray))
+  if (!this->FindPointArray(input, this->RadiusArray, "radius", radiusArray) ||
+    !this->FindPointArray(input, this->NodeScalarArray, role, scalarArray))
   {
     return false;
   }
@@ -683,7 +683,7 @@ bool vtkSplineTubeCore::AddPolyData(
     {
       vtkWarningMacro(<< "Polyline " << cellId << " skipped: point " << scan.BadPoint
                       << " has a NaN or infinite value in the " << role << " array \""
-                      << this->NodeScalarArrayName << "\".");
+                      << this->NodeScalarArray << "\".");
       ++this->NumberOfSkippedLines;
       continue;
     }
@@ -1305,8 +1305,10 @@ void vtkSplineTubeCore::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Radius: " << this->Radius << "\n";
-  os << indent << "RadiusArrayName: " << (this->RadiusArrayName ? this->RadiusArrayName : "(none)")
+  os << indent << "RadiusArray: " << (this->RadiusArray ? this->RadiusArray : "(none)") << "\n";
+  os << indent << "NodeScalarArray: " << (this->NodeScalarArray ? this->NodeScalarArray : "(none)")
      << "\n";
+  os << indent << "CellIdArray: " << (this->CellIdArray ? this->CellIdArray : "(none)") << "\n";
   os << indent << "RadiusScale: " << this->RadiusScale << "\n";
   os << indent << "MaximumFrameStepAngle: " << this->MaximumFrameStepAngle << "\n";
   os << indent << "ChunkTables: " << (this->ChunkTables ? "On" : "Off") << "\n";

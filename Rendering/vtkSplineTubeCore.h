@@ -85,8 +85,8 @@ public:
    * Name of a one-component point array giving the radius in world units
    * (multiplied by RadiusScale). nullptr (default): the constant Radius.
    */
-  vtkSetStringMacro(RadiusArrayName);
-  vtkGetStringMacro(RadiusArrayName);
+  vtkSetStringMacro(RadiusArray);
+  vtkGetStringMacro(RadiusArray);
   ///@}
 
   ///@{
@@ -100,8 +100,8 @@ public:
    * Name of a one-component point array whose values the nodes carry
    * (GetNodeScalar()). nullptr (default): none.
    */
-  vtkSetStringMacro(NodeScalarArrayName);
-  vtkGetStringMacro(NodeScalarArrayName);
+  vtkSetStringMacro(NodeScalarArray);
+  vtkGetStringMacro(NodeScalarArray);
   ///@}
 
   ///@{
@@ -111,8 +111,21 @@ public:
    * picking reports) are its values instead of the cell's index in the block.
    * nullptr (default): the index.
    */
-  vtkSetStringMacro(CellIdArrayName);
-  vtkGetStringMacro(CellIdArrayName);
+  vtkSetStringMacro(CellIdArray);
+  vtkGetStringMacro(CellIdArray);
+  ///@}
+
+  ///@{
+  /**
+   * Deprecated: use SetRadiusArray, SetNodeScalarArray, SetCellIdArray (and
+   * their Get methods), the names the mappers use; kept for one release.
+   */
+  void SetRadiusArrayName(const char* name) { this->SetRadiusArray(name); }
+  char* GetRadiusArrayName() { return this->GetRadiusArray(); }
+  void SetNodeScalarArrayName(const char* name) { this->SetNodeScalarArray(name); }
+  char* GetNodeScalarArrayName() { return this->GetNodeScalarArray(); }
+  void SetCellIdArrayName(const char* name) { this->SetCellIdArray(name); }
+  char* GetCellIdArrayName() { return this->GetCellIdArray(); }
   ///@}
 
   ///@{
@@ -174,7 +187,7 @@ public:
   ///@{
   /**
    * The tube table: first node, number of nodes, the polyline's cell id in
-   * its input (or its original id, see CellIdArrayName) and block; the tube
+   * its input (or its original id, see CellIdArray) and block; the tube
    * of a node, the first segment of a tube.
    */
   vtkIdType GetTubeFirstNode(vtkIdType tube) const;
@@ -194,7 +207,7 @@ public:
   /**
    * A node's position and radius (x, y, z, r; the input's coordinates), their
    * derivatives along the tube (see the class comment), its color (RGBA in
-   * [0, 1], white without colors) and scalar (0 without NodeScalarArrayName).
+   * [0, 1], white without colors) and scalar (0 without NodeScalarArray).
    */
   void GetNode(vtkIdType node, double xyzr[4]) const;
   /// Node k of a tube (0 its first): the same as GetNode() without finding the tube.
@@ -275,13 +288,13 @@ public:
 
   /**
    * True when every node has the same radius: no piece took its radii from
-   * RadiusArrayName and all pieces were added with the same Radius, which
+   * RadiusArray and all pieces were added with the same Radius, which
    * `radius` receives. The GPU layout may then leave the radius out
    * (FillNodes() with 3 components): 4 bytes per node less.
    */
   bool GetConstantRadius(double& radius) const;
 
-  /// True when the nodes carry scalars (NodeScalarArrayName was found).
+  /// True when the nodes carry scalars (NodeScalarArray was found).
   bool HasNodeScalars() const;
 
   /**
@@ -311,11 +324,11 @@ protected:
   ~vtkSplineTubeCore() override;
 
   double Radius = 0.01;
-  char* RadiusArrayName = nullptr;
+  char* RadiusArray = nullptr;
   double RadiusScale = 1.0;
-  char* NodeScalarArrayName = nullptr;
+  char* NodeScalarArray = nullptr;
   char* NodeScalarRole = nullptr;
-  char* CellIdArrayName = nullptr;
+  char* CellIdArray = nullptr;
   double MaximumFrameStepAngle = 0.1;
   bool ChunkTables = true;
 
@@ -340,7 +353,7 @@ private:
 
   /// The named one-component numeric point array (nullptr without a name); false after an error.
   bool FindPointArray(vtkPolyData* input, const char* name, const char* what, vtkDataArray*& array);
-  /// The input's original cell ids (CellIdArrayName: one integer component per cell), or nullptr.
+  /// The input's original cell ids (CellIdArray: one integer component per cell), or nullptr.
   vtkDataArray* FindOriginalIds(vtkPolyData* input) const;
   /// The chunk table, the bounds and the centre.
   void BuildChunks();

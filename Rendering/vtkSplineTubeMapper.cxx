@@ -78,7 +78,7 @@ vtkSplineTubeMapper::~vtkSplineTubeMapper()
 {
   this->SetRadiusArray(nullptr);
   this->SetVisibilityArray(nullptr);
-  this->SetCellIdArrayName(nullptr);
+  this->SetCellIdArray(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -111,7 +111,7 @@ std::string vtkSplineTubeMapper::BuildSignature()
     << this->AutomaticRadiusBounds[1] << ',' << this->AutomaticRadiusBounds[2] << ','
     << this->AutomaticRadiusBounds[3] << ',' << this->AutomaticRadiusBounds[4] << ','
     << this->AutomaticRadiusBounds[5] << '|' << (this->RadiusArray ? this->RadiusArray : "") << '|'
-    << this->RadiusScale << '|' << (this->CellIdArrayName ? this->CellIdArrayName : "") << '|'
+    << this->RadiusScale << '|' << (this->CellIdArray ? this->CellIdArray : "") << '|'
     << this->DirectionColoring << '|' << this->ScalarVisibility << '|' << this->ScalarMode << '|'
     << this->ArrayAccessMode << '|' << this->ArrayId << '|' << this->ArrayName << '|'
     << this->ArrayComponent << '|' << this->ColorMode << '|' << this->UseLookupTableScalarRange
@@ -220,10 +220,10 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
     this->EffectiveRadius = ComputeAutomaticRadius(bounds);
   }
   this->Core->SetRadius(this->EffectiveRadius);
-  this->Core->SetRadiusArrayName(
+  this->Core->SetRadiusArray(
     this->RadiusArray && this->RadiusArray[0] ? this->RadiusArray : nullptr);
   this->Core->SetRadiusScale(this->RadiusScale);
-  this->Core->SetCellIdArrayName(this->CellIdArrayName);
+  this->Core->SetCellIdArray(this->CellIdArray);
   this->ConfigureTubeCore(this->Core);
 
   vtkIdType inputCells = 0;
@@ -358,7 +358,7 @@ std::string vtkSplineTubeMapper::InputContentKey(vtkDataObject* input)
       // Original cell ids are often made anew by each execution (ParaView's
       // geometry filter): compared by value.
       vtkDataArray* ids =
-        this->CellIdArrayName ? pd->GetCellData()->GetArray(this->CellIdArrayName) : nullptr;
+        this->CellIdArray ? pd->GetCellData()->GetArray(this->CellIdArray) : nullptr;
       if (ids)
       {
         const vtkIdType n = ids->GetNumberOfValues();
@@ -1357,8 +1357,7 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "VisibilityArray: " << (this->VisibilityArray ? this->VisibilityArray : "(none)")
      << "\n";
   os << indent << "RadiusScale: " << this->RadiusScale << "\n";
-  os << indent << "CellIdArrayName: " << (this->CellIdArrayName ? this->CellIdArrayName : "(none)")
-     << "\n";
+  os << indent << "CellIdArray: " << (this->CellIdArray ? this->CellIdArray : "(none)") << "\n";
   os << indent << "Segments: " << this->Core->GetNumberOfSegments() << "\n";
   os << indent << "OcclusionCulling: " << this->OcclusionCulling << "\n";
   os << indent << "InteractiveSubset: " << this->InteractiveSubset << "\n";

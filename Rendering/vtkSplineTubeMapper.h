@@ -220,8 +220,14 @@ public:
    * "vtkOriginalCellIds" through vtkPVDataRepresentation::SetArrayIdNames).
    * nullptr (default): the index.
    */
-  vtkSetStringMacro(CellIdArrayName);
-  vtkGetStringMacro(CellIdArrayName);
+  vtkSetStringMacro(CellIdArray);
+  vtkGetStringMacro(CellIdArray);
+  ///@}
+
+  ///@{
+  /// Deprecated: use SetCellIdArray / GetCellIdArray; kept for one release.
+  void SetCellIdArrayName(const char* name) { this->SetCellIdArray(name); }
+  char* GetCellIdArrayName() { return this->GetCellIdArray(); }
   ///@}
 
   ///@{
@@ -553,7 +559,7 @@ protected:
   double SlabNormal[3] = { 0.0, 0.0, 1.0 };
   double SlabThickness = 0.0;
   double RadiusScale = 1.0;
-  char* CellIdArrayName = nullptr;
+  char* CellIdArray = nullptr;
   bool OcclusionCulling = true;
   bool InteractiveSubset = true;
   double InteractiveUpdateRate = 1.0;

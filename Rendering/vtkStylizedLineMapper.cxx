@@ -134,7 +134,7 @@ void vtkStylizedLineMapper::ConfigureTubeCore(vtkSplineTubeCore* core)
   core->SetNodeScalarRole("orientation");
   // The fix-up's batches are what the visibility culls (SetVisibilityChunks()).
   core->ChunkTablesOff();
-  core->SetNodeScalarArrayName(texture && this->OrientationArray && this->OrientationArray[0]
+  core->SetNodeScalarArray(texture && this->OrientationArray && this->OrientationArray[0]
       ? this->OrientationArray
       : nullptr);
 }

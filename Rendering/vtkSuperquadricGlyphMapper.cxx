@@ -565,8 +565,8 @@ vtkSuperquadricGlyphMapper::vtkSuperquadricGlyphMapper()
 //------------------------------------------------------------------------------
 vtkSuperquadricGlyphMapper::~vtkSuperquadricGlyphMapper()
 {
-  this->SetTensorArrayName(nullptr);
-  this->SetMaskArrayName(nullptr);
+  this->SetTensorArray(nullptr);
+  this->SetMaskArray(nullptr);
 }
 
 //------------------------------------------------------------------------------
@@ -607,9 +607,9 @@ void vtkSuperquadricGlyphMapper::SetInputDataObject(int port, vtkDataObject* inp
 void vtkSuperquadricGlyphMapper::UpdatePreparer()
 {
   vtkSuperquadricGlyphPreparer* prep = this->Internal->Preparer;
-  prep->SetTensorArrayName(this->TensorArrayName);
+  prep->SetTensorArray(this->TensorArray);
   prep->SetTensorLayout(this->TensorLayout);
-  prep->SetMaskArrayName(this->MaskArrayName);
+  prep->SetMaskArray(this->MaskArray);
   prep->SetColorArraySelection(this->ScalarVisibility != 0, this->ScalarMode, this->ArrayAccessMode,
     this->ArrayId, this->ArrayName);
 }
@@ -671,8 +671,7 @@ bool vtkSuperquadricGlyphMapper::ComputeGlyphBounds(vtkDataObject* data, double 
   for (vtkDataSet* leaf : leaves)
   {
     vtkPointData* pd = leaf->GetPointData();
-    vtkDataArray* tensors =
-      this->TensorArrayName ? pd->GetArray(this->TensorArrayName) : pd->GetTensors();
+    vtkDataArray* tensors = this->TensorArray ? pd->GetArray(this->TensorArray) : pd->GetTensors();
     const int layout =
       tensors ? TM::ResolveLayout(this->TensorLayout, tensors->GetNumberOfComponents()) : -1;
     if (layout < 0 || leaf->GetNumberOfPoints() == 0)
@@ -1397,12 +1396,10 @@ void vtkSuperquadricGlyphMapper::ReleaseGraphicsResources(vtkWindow* win)
 void vtkSuperquadricGlyphMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "TensorArrayName: " << (this->TensorArrayName ? this->TensorArrayName : "(none)")
-     << "\n";
+  os << indent << "TensorArray: " << (this->TensorArray ? this->TensorArray : "(none)") << "\n";
   os << indent << "TensorLayout: " << this->TensorLayout << " ("
      << TM::GetLayoutName(this->TensorLayout) << ")\n";
-  os << indent << "MaskArrayName: " << (this->MaskArrayName ? this->MaskArrayName : "(none)")
-     << "\n";
+  os << indent << "MaskArray: " << (this->MaskArray ? this->MaskArray : "(none)") << "\n";
   os << indent << "Gamma: " << this->Gamma << "\n";
   os << indent << "MinimumRoundness: " << this->MinimumRoundness << "\n";
   os << indent << "ScaleFactor: " << this->ScaleFactor << "\n";

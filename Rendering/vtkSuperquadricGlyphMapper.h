@@ -11,7 +11,7 @@
  *
  * - only the raw tensors are uploaded, once per data change: 36 bytes per
  *   glyph (+4 with scalar colors); NaN/infinite, zero and masked
- *   (MaskArrayName) tensors are left out, with one warning per data change;
+ *   (MaskArray) tensors are left out, with one warning per data change;
  * - per frame on the GPU: eigen-decomposition (the code of
  *   vtkSplineVizTensorMath), Westin metrics, Kindlmann's shape from Gamma,
  *   a sprite of the glyph box's front faces and a ray cast of the implicit
@@ -125,8 +125,8 @@ public:
    * Name of the point tensor array; nullptr (default) uses the active point
    * tensors of each data set.
    */
-  vtkSetStringMacro(TensorArrayName);
-  vtkGetStringMacro(TensorArrayName);
+  vtkSetStringMacro(TensorArray);
+  vtkGetStringMacro(TensorArray);
   ///@}
 
   ///@{
@@ -147,8 +147,19 @@ public:
    * Optional point array: points where its (first component) value is 0 are
    * not drawn (and not uploaded). nullptr (default): no mask.
    */
-  vtkSetStringMacro(MaskArrayName);
-  vtkGetStringMacro(MaskArrayName);
+  vtkSetStringMacro(MaskArray);
+  vtkGetStringMacro(MaskArray);
+  ///@}
+
+  ///@{
+  /**
+   * Deprecated: use SetTensorArray, SetMaskArray (and their Get methods);
+   * kept for one release.
+   */
+  void SetTensorArrayName(const char* name) { this->SetTensorArray(name); }
+  char* GetTensorArrayName() { return this->GetTensorArray(); }
+  void SetMaskArrayName(const char* name) { this->SetMaskArray(name); }
+  char* GetMaskArrayName() { return this->GetMaskArray(); }
   ///@}
 
   ///@{
@@ -414,9 +425,9 @@ protected:
   void ProcessSelectorPixelBuffers(
     vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
 
-  char* TensorArrayName = nullptr;
+  char* TensorArray = nullptr;
   int TensorLayout = 1;
-  char* MaskArrayName = nullptr;
+  char* MaskArray = nullptr;
   double Gamma = 3.0;
   double MinimumRoundness = 0.2;
   double ScaleFactor = 1.0;

@@ -381,23 +381,23 @@ void AddFieldData(vtkPolyData* output, const BrickGrid& grid, double maxNorm, vt
 }
 
 //------------------------------------------------------------------------------
-void vtkSuperquadricGlyphPreparer::SetTensorArrayName(const char* name)
+void vtkSuperquadricGlyphPreparer::SetTensorArray(const char* name)
 {
   const std::string value = name ? name : "";
-  if (value != this->TensorArrayName)
+  if (value != this->TensorArray)
   {
-    this->TensorArrayName = value;
+    this->TensorArray = value;
     this->Modified();
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkSuperquadricGlyphPreparer::SetMaskArrayName(const char* name)
+void vtkSuperquadricGlyphPreparer::SetMaskArray(const char* name)
 {
   const std::string value = name ? name : "";
-  if (value != this->MaskArrayName)
+  if (value != this->MaskArray)
   {
-    this->MaskArrayName = value;
+    this->MaskArray = value;
     this->Modified();
   }
 }
@@ -433,13 +433,13 @@ bool vtkSuperquadricGlyphPreparer::FindLeafArrays(vtkDataSet* leaf, const std::s
   vtkDataArray*& tensors, int& layout, vtkDataArray*& mask, vtkDataArray*& scalars)
 {
   vtkPointData* pd = leaf->GetPointData();
-  const bool named = !this->TensorArrayName.empty();
-  tensors = named ? pd->GetArray(this->TensorArrayName.c_str()) : pd->GetTensors();
+  const bool named = !this->TensorArray.empty();
+  tensors = named ? pd->GetArray(this->TensorArray.c_str()) : pd->GetTensors();
   if (!tensors)
   {
     if (named)
     {
-      vtkErrorMacro("No point tensor array named '" << this->TensorArrayName << "'" << where
+      vtkErrorMacro("No point tensor array named '" << this->TensorArray << "'" << where
                                                     << ": no glyphs drawn for it.");
     }
     else
@@ -460,12 +460,12 @@ bool vtkSuperquadricGlyphPreparer::FindLeafArrays(vtkDataSet* leaf, const std::s
     return false;
   }
   mask = nullptr;
-  if (!this->MaskArrayName.empty())
+  if (!this->MaskArray.empty())
   {
-    mask = pd->GetArray(this->MaskArrayName.c_str());
+    mask = pd->GetArray(this->MaskArray.c_str());
     if (!mask)
     {
-      vtkErrorMacro("No point mask array named '" << this->MaskArrayName << "'" << where
+      vtkErrorMacro("No point mask array named '" << this->MaskArray << "'" << where
                                                   << ": no glyphs drawn for it.");
       return false;
     }
@@ -641,7 +641,7 @@ int vtkSuperquadricGlyphPreparer::RequestData(
 void vtkSuperquadricGlyphPreparer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "TensorArrayName: " << this->TensorArrayName << "\n";
+  os << indent << "TensorArray: " << this->TensorArray << "\n";
   os << indent << "TensorLayout: " << this->TensorLayout << "\n";
-  os << indent << "MaskArrayName: " << this->MaskArrayName << "\n";
+  os << indent << "MaskArray: " << this->MaskArray << "\n";
 }

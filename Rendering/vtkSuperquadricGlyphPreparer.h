@@ -45,13 +45,13 @@ public:
   vtkTypeMacro(vtkSuperquadricGlyphPreparer, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// Tensor array name (empty: active point tensors) and layout.
-  void SetTensorArrayName(const char* name);
+  /// Tensor array (empty: active point tensors) and layout.
+  void SetTensorArray(const char* name);
   vtkSetMacro(TensorLayout, int);
   vtkGetMacro(TensorLayout, int);
 
-  /// Mask array name (empty: none).
-  void SetMaskArrayName(const char* name);
+  /// Mask array (empty: none).
+  void SetMaskArray(const char* name);
 
   /**
    * The point array to carry for coloring, selected as vtkMapper does
@@ -67,9 +67,9 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  std::string TensorArrayName;
+  std::string TensorArray;
   int TensorLayout = 1;
-  std::string MaskArrayName;
+  std::string MaskArray;
   bool ColorVisible = false;
   int ColorScalarMode = 0;
   int ColorAccessMode = 0;
@@ -81,8 +81,8 @@ private:
   void operator=(const vtkSuperquadricGlyphPreparer&) = delete;
 
   /**
-   * A leaf's point arrays: the tensors (TensorArrayName or the active ones)
-   * and their layout, the mask (MaskArrayName) and the coloring scalars
+   * A leaf's point arrays: the tensors (TensorArray or the active ones)
+   * and their layout, the mask (MaskArray) and the coloring scalars
    * (point scalars only); false after an error (`where` names the block).
    */
   bool FindLeafArrays(vtkDataSet* leaf, const std::string& where, vtkDataArray*& tensors,

@@ -421,7 +421,7 @@ middle.Update()
 if hasattr(splineviz, "vtkSuperquadricGlyphMapper"):
     slice_mapper = splineviz.vtkSuperquadricGlyphMapper()
     slice_mapper.SetInputConnection(middle.GetOutputPort())
-    slice_mapper.SetTensorArrayName("DTI")
+    slice_mapper.SetTensorArray("DTI")
     slice_mapper.SetTensorLayout(2)
     slice_mapper.SetScaleMode(slice_mapper.SCALE_NORMALIZED)
     slice_mapper.SetScaleFactor(0.95)

@@ -83,7 +83,7 @@ def fit_scan(path, tolerance=0.02, file_name=None):
     fitter.SetDegree(2, 2, 2)                  # Fuchs' splines are quadratic
     fitter.SetToleranceModeToRelative()        # a fraction of the data range ...
     fitter.SetTolerance(tolerance)             # ... at every voxel
-    fitter.SetFieldName("intensity")
+    fitter.SetOutputFieldName("intensity")
     if file_name:
         fitter.SetFileName(file_name)          # also write the .lr file
     start = time.perf_counter()
@@ -211,7 +211,7 @@ def volume_picture(reader, fitter, png, size=(720, 380)):
     voxels.SetRequestedRenderModeToGPU()
     spline = splineviz.vtkLRSplineVolumeMapper()
     spline.SetInputConnection(fitter.GetOutputPort())
-    spline.SetFieldArrayName("intensity")
+    spline.SetFieldArray("intensity")
 
     window = vtkRenderWindow()
     window.SetOffScreenRendering(1)
@@ -288,7 +288,7 @@ def main():
     back = splineviz.vtkLRSplineReader()
     back.SetFileName(lr_file)
     back.SetPhysicalBounds(image.GetBounds())
-    back.SetFieldName("intensity")
+    back.SetOutputFieldName("intensity")
     back.Update()
     probe_a = splineviz.vtkLRSplineProbeFilter()
     probe_a.SetInputConnection(reader.GetOutputPort())   # at the voxels

@@ -120,7 +120,7 @@ def render(p_fit, u_fit, png, trimmed, size=(900, 420)):
     prop.SetScalarOpacityUnitDistance(0.004)
     mapper = splineviz.vtkLRSplineVolumeMapper()
     mapper.SetInputConnection(p_fit.GetOutputPort(0))
-    mapper.SetFieldArrayName("p")
+    mapper.SetFieldArray("p")
     # Trimmed by the mesh's boundary, which the fitted spline carries; the
     # untrimmed picture turns that off.
     mapper.SetTrimByDataBoundary(trimmed)

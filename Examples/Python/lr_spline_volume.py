@@ -44,7 +44,7 @@ data = os.path.join(here, "..", "..", "Testing", "Data", "External", "cube-3patc
 
 reader = splineviz.vtkLRSplineReader()
 reader.SetFileName(data)
-reader.SetFieldName("velocity")
+reader.SetOutputFieldName("velocity")
 reader.Update()
 patch = vtkMultiBlockDataSet()  # patch 1 alone: v = (-y, x, z)
 patch.SetBlock(0, reader.GetOutput().GetBlock(1))

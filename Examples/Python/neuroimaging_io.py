@@ -75,7 +75,7 @@ middle.SetInputConnection(reader.GetOutputPort())
 middle.SetVOI(0, 9, 0, 9, 5, 5)
 glyphs = splineviz.vtkSuperquadricGlyphMapper()
 glyphs.SetInputConnection(middle.GetOutputPort())
-glyphs.SetTensorArrayName("Tensors")  # VTK order: the default layout, nothing to choose
+glyphs.SetTensorArray("Tensors")  # VTK order: the default layout, nothing to choose
 glyphs.SetScaleMode(glyphs.SCALE_NORMALIZED)
 glyphs.SetScaleFactor(0.9)
 glyphs.SetGamma(3.0)

@@ -91,7 +91,7 @@ volume = dti_volume()
 # -- VTK: the mapper on the image data --------------------------------------
 mapper = splineviz.vtkSuperquadricGlyphMapper()
 mapper.SetInputData(volume)
-mapper.SetTensorArrayName("DTI")
+mapper.SetTensorArray("DTI")
 mapper.SetTensorLayout(2)  # vtkSplineVizTensorMath::SYMMETRIC_LOWER (NIfTI, DIPY)
 mapper.SetScaleMode(mapper.SCALE_NORMALIZED)  # every glyph 2 mm long: shape only
 mapper.SetScaleFactor(0.95)

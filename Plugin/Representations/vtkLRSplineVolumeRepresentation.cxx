@@ -316,7 +316,7 @@ void vtkLRSplineVolumeRepresentation::UpdateMapperParameters(vtkDataObject* data
       name + "\" is not one: the spline's default field is rendered instead.";
     name = nullptr;
   }
-  this->VolumeMapper->SetFieldArrayName(name && name[0] ? name : nullptr);
+  this->VolumeMapper->SetFieldArray(name && name[0] ? name : nullptr);
   if (!name || !name[0])
   {
     // No color array (ParaView picks one for its own "Volume" only): the

@@ -16,7 +16,7 @@
  * Forwarded as ParaView's volume representations do: the color map and
  * opacity editor (LookupTable, ScalarOpacityFunction,
  * ScalarOpacityUnitDistance); the color array with its vector mode and
- * component (Magnitude, X, Y, Z) as the mapper's FieldArrayName, VectorMode
+ * component (Magnitude, X, Y, Z) as the mapper's FieldArray, VectorMode
  * and VectorComponent (without a color array: the spline's first field
  * through ParaView's default color map and opacity ramp); Shade with
  * Ambient, Diffuse, Specular, SpecularPower; BlendMode and IsosurfaceValues;

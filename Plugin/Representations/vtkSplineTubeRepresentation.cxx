@@ -211,8 +211,8 @@ void vtkSplineTubeRepresentation::SetMinimumPixelWidth(double width)
 void vtkSplineTubeRepresentation::SetArrayIdNames(const char*, const char* cellArray)
 {
   const char* name = cellArray ? cellArray : "vtkOriginalCellIds";
-  this->GetTubeMapper()->SetCellIdArrayName(name);
-  this->GetLODTubeMapper()->SetCellIdArrayName(name);
+  this->GetTubeMapper()->SetCellIdArray(name);
+  this->GetLODTubeMapper()->SetCellIdArray(name);
 }
 
 //------------------------------------------------------------------------------

@@ -282,15 +282,15 @@ void vtkSuperquadricGlyphRepresentation::SetGlyphScaleMode(int mode)
 //------------------------------------------------------------------------------
 void vtkSuperquadricGlyphRepresentation::SetTensorArray(const char* name)
 {
-  static_cast<vtkSuperquadricGlyphMapper*>(this->Mapper)->SetTensorArrayName(ArrayOrNull(name));
-  static_cast<vtkSuperquadricGlyphMapper*>(this->LODMapper)->SetTensorArrayName(ArrayOrNull(name));
+  static_cast<vtkSuperquadricGlyphMapper*>(this->Mapper)->SetTensorArray(ArrayOrNull(name));
+  static_cast<vtkSuperquadricGlyphMapper*>(this->LODMapper)->SetTensorArray(ArrayOrNull(name));
 }
 
 //------------------------------------------------------------------------------
 void vtkSuperquadricGlyphRepresentation::SetMaskArray(const char* name)
 {
-  static_cast<vtkSuperquadricGlyphMapper*>(this->Mapper)->SetMaskArrayName(ArrayOrNull(name));
-  static_cast<vtkSuperquadricGlyphMapper*>(this->LODMapper)->SetMaskArrayName(ArrayOrNull(name));
+  static_cast<vtkSuperquadricGlyphMapper*>(this->Mapper)->SetMaskArray(ArrayOrNull(name));
+  static_cast<vtkSuperquadricGlyphMapper*>(this->LODMapper)->SetMaskArray(ArrayOrNull(name));
 }
 
 //------------------------------------------------------------------------------

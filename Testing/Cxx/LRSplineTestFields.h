@@ -56,7 +56,7 @@ inline vtkSmartPointer<vtkMultiBlockDataSet> LinearField(const double A[9], cons
   }
   vtkNew<vtkLRSplineReader> reader;
   reader->SetFileName(path.c_str());
-  reader->SetFieldName(fieldName);
+  reader->SetOutputFieldName(fieldName);
   reader->Update();
   vtkSmartPointer<vtkMultiBlockDataSet> out = reader->GetOutput();
   return out;

@@ -250,17 +250,17 @@ int TestLRSplineFitterInputs(int, char*[])
     SV_CHECK_MSG(status, run.Run(mesh), run.Error());
     SV_CHECK(status, !vtkLRSplineField::GetTrimmingSurface(run.Output()));
 
-    // The output's point array: the input array's name, or FieldName.
+    // The output's point array: the input array's name, or OutputFieldName.
     auto outputArray = [&run](const char* name) -> vtkDataArray*
     {
       vtkDataSet* block = vtkDataSet::SafeDownCast(run.Output()->GetBlock(0));
       return block ? block->GetPointData()->GetArray(name) : nullptr;
     };
     SV_CHECK(status, outputArray("f") != nullptr);
-    run.Fitter->SetFieldName("renamed");
+    run.Fitter->SetOutputFieldName("renamed");
     SV_CHECK_MSG(status, run.Run(mesh), run.Error());
     SV_CHECK(status, outputArray("renamed") != nullptr && outputArray("f") == nullptr);
-    run.Fitter->SetFieldName(nullptr);
+    run.Fitter->SetOutputFieldName(nullptr);
 
     // The file read back in the fitted domain.
     vtkNew<vtkLRSplineReader> reader;

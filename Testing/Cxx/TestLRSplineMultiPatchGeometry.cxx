@@ -106,7 +106,7 @@ double Probe(vtkMultiBlockDataSet* data, int& hit)
   vtkNew<vtkLRSplineProbeFilter> probe;
   probe->SetInputData(cloud);
   probe->SetSourceData(data);
-  probe->SetArrayName("Field");
+  probe->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Field");
   probe->Update();
   vtkDataSet* out = vtkDataSet::SafeDownCast(probe->GetOutputDataObject(0));
   vtkDataArray* f = out ? out->GetPointData()->GetArray("Field") : nullptr;
@@ -151,7 +151,7 @@ void Trace(vtkMultiBlockDataSet* data, double& offRay, double& minX, bool& cross
   vtkNew<vtkLRSplineStreamTracer> tracer;
   tracer->SetInputData(data);
   tracer->SetSourceData(seeds);
-  tracer->SetArrayName("Field");
+  tracer->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Field");
   tracer->SetIntegratorTypeToRungeKutta4();
   tracer->SetStepModeToFixedLength();
   tracer->SetIntegrationStep(0.01);
@@ -190,7 +190,7 @@ double Render(vtkMultiBlockDataSet* data, const std::string& tag)
   const double background[3] = { 0.1, 0.1, 0.12 };
   vtkNew<vtkLRSplineVolumeMapper> mapper;
   mapper->SetInputDataObject(data);
-  mapper->SetFieldArrayName("Field");
+  mapper->SetFieldArray("Field");
   vtkNew<vtkColorTransferFunction> ctf;
   ctf->AddRGBPoint(0.0, 0.1, 0.2, 0.9);
   ctf->AddRGBPoint(1.2, 0.2, 0.9, 0.3);

@@ -5,7 +5,9 @@
 // match the evaluator's; the valid-point mask is 0 outside the spline; the
 // first of overlapping patches wins; a single patch block works as source;
 // resampling covers the bounds exactly (last samples on the upper faces) and
-// honours sub-extents; bad setups give clear errors.
+// honours sub-extents; the field selected by attribute type gives the same
+// values; bad setups (a missing field, a field selected on the wrong port or
+// as cell data) give clear errors.
 #include "vtkLRSplineProbeFilter.h"
 #include "vtkLRSplineReader.h"
 #include "vtkLRSplineResampleToImage.h"
@@ -15,6 +17,7 @@
 
 #include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
 #include "vtkLineSource.h"
@@ -86,7 +89,7 @@ int TestLRSplineProbeFilter(int, char*[])
   vtkNew<vtkLRSplineReader> reader;
   reader->SetFileName(file.c_str());
   reader->SetPhysicalBounds(const_cast<double*>(Bounds));
-  reader->SetFieldName("velocity");
+  reader->SetOutputFieldName("velocity");
 
   //--- Random points (some outside), the whole multiblock as source: patch 0 wins.
   vtkNew<vtkPolyData> cloud;
@@ -204,6 +207,19 @@ int TestLRSplineProbeFilter(int, char*[])
   worst = WorstError(resample->GetOutput(), brute[0], "velocity", invalid);
   SV_CHECK(status, worst < 1e-12 && invalid == 0);
 
+  //--- The field selected by attribute type (the reader's 3-component field
+  // is the active vectors): the same values.
+  {
+    vtkNew<vtkLRSplineProbeFilter> byType;
+    byType->SetInputData(cloud);
+    byType->SetSourceConnection(reader->GetOutputPort());
+    byType->SetInputArrayToProcess(
+      0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::VECTORS);
+    byType->Update();
+    worst = WorstError(byType->GetOutput(), brute[0], "velocity", invalid);
+    SV_CHECK_MSG(status, worst < 1e-12, "field selected by attribute type: worst " << worst);
+  }
+
   //--- Errors.
   {
     vtkNew<vtkTest::ErrorObserver> obs;
@@ -212,15 +228,26 @@ int TestLRSplineProbeFilter(int, char*[])
     bad->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, obs);
     bad->SetInputData(cloud);
     bad->SetSourceConnection(reader->GetOutputPort());
-    bad->SetArrayName("nope");
+    bad->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "nope");
     bad->Update();
     SV_CHECK(
       status, obs->GetError() && obs->GetErrorMessage().find("\"nope\"") != std::string::npos);
     obs->Clear();
+    // The field is point data of port 1 (the spline), not of the probed points.
+    bad->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "velocity");
+    bad->Update();
+    SV_CHECK(status, obs->GetError() && obs->GetErrorMessage().find("port 1") != std::string::npos);
+    obs->Clear();
+    bad->SetInputArrayToProcess(0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "velocity");
+    bad->Update();
+    SV_CHECK(
+      status, obs->GetError() && obs->GetErrorMessage().find("point data") != std::string::npos);
+    obs->Clear();
     vtkNew<vtkLRSplineReader> geometry;
     geometry->SetFileName(file.c_str());
     geometry->GeometryModeOn();
-    bad->SetArrayName(nullptr);
+    bad->SetInputArrayToProcess(
+      0, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, ""); // the default field
     bad->SetSourceConnection(geometry->GetOutputPort());
     bad->Update();
     // Geometry mode is evaluated in physical space (by inversion) now.

@@ -44,7 +44,7 @@ int TestLRSplineStreamTracerTubes(int argc, char* argv[])
   vtkNew<vtkLRSplineReader> reader;
   reader->SetFileName(
     (std::string(SPLINEVIZ_EXTERNAL_DATA_DIR) + "/cube-3patch-refined.lr").c_str());
-  reader->SetFieldName("velocity");
+  reader->SetOutputFieldName("velocity");
   reader->Update();
   vtkDataObject* patch1 = reader->GetOutput()->GetBlock(1);
   SV_CHECK(status, patch1 != nullptr);

@@ -248,7 +248,7 @@ int TestLRSplineVolumeBadInput(int, char*[])
     vtkNew<vtkLRSplineVolumeMapper> mapper;
     Expect(status, "missing field name",
       Render(mapper, good, property,
-        [](vtkLRSplineVolumeMapper* m) { m->SetFieldArrayName("Temperature"); }),
+        [](vtkLRSplineVolumeMapper* m) { m->SetFieldArray("Temperature"); }),
       "Temperature");
   }
   {

@@ -179,7 +179,7 @@ Result Compare(vtkMultiBlockDataSet* data, const Reference& reference, const std
     ? vtkSmartPointer<vtkLRSplineVolumeMapper>(vtkSmartPointer<NoWeightMapper>::New())
     : vtkSmartPointer<vtkLRSplineVolumeMapper>::New();
   mapper->SetInputDataObject(data);
-  mapper->SetFieldArrayName("f");
+  mapper->SetFieldArray("f");
   mapper->SetMaximumStepsPerPass(stepsPerPass);
   if (sampleDistance > 0)
   {

@@ -507,7 +507,7 @@ void TestSplit(SplineVizTestStatus& status)
   source->SetMaximumTurn(0.8);
   source->Update();
   vtkNew<vtkSplineTubeCore> core;
-  core->SetRadiusArrayName("Radius");
+  core->SetRadiusArray("Radius");
   core->AddPolyData(source->GetOutput(), nullptr);
   core->Build();
   double worst = 0.0;
@@ -600,7 +600,7 @@ void TestBoxes(SplineVizTestStatus& status)
   source->SetNumberOfSegments(300);
   source->Update();
   vtkNew<vtkSplineTubeCore> core;
-  core->SetRadiusArrayName("Radius");
+  core->SetRadiusArray("Radius");
   core->AddPolyData(source->GetOutput(), nullptr);
   core->Build();
   for (vtkIdType s = 0; s < core->GetNumberOfSegments(); ++s)
@@ -749,7 +749,7 @@ void TestDegenerateInput(SplineVizTestStatus& status)
   SV_CHECK(status, observer->CheckWarningMessage("NaN or infinite coordinate") == 0);
 
   // Zero, negative, NaN radii.
-  core->SetRadiusArrayName("R");
+  core->SetRadiusArray("R");
   for (double bad : { 0.0, -1.0, nan })
   {
     core->Initialize();
@@ -771,7 +771,7 @@ void TestDegenerateInput(SplineVizTestStatus& status)
 
   // Missing radius array: an error, nothing added.
   core->Initialize();
-  core->SetRadiusArrayName("NoSuchArray");
+  core->SetRadiusArray("NoSuchArray");
   SV_CHECK(status, !core->AddPolyData(MakeLine({ { 0, 0, 0 }, { 1, 0, 0 } }), nullptr));
   SV_CHECK(status, observer->CheckErrorMessage("is not a point array") == 0);
   SV_CHECK(status, core->GetNumberOfTubes() == 0);
@@ -784,12 +784,12 @@ void TestDegenerateInput(SplineVizTestStatus& status)
   vectors->InsertNextTuple3(1, 1, 1);
   vectors->InsertNextTuple3(1, 1, 1);
   line->GetPointData()->AddArray(vectors);
-  core->SetRadiusArrayName("V");
+  core->SetRadiusArray("V");
   SV_CHECK(status, !core->AddPolyData(line, nullptr));
   SV_CHECK(status, observer->CheckErrorMessage("components") == 0);
 
   // Bad colors: an error.
-  core->SetRadiusArrayName(nullptr);
+  core->SetRadiusArray(nullptr);
   vtkNew<vtkUnsignedCharArray> rgb;
   rgb->SetNumberOfComponents(3);
   rgb->SetNumberOfTuples(2);
@@ -810,7 +810,7 @@ void TestDegenerateInput(SplineVizTestStatus& status)
 }
 
 //------------------------------------------------------------------------------
-// The optional per-node values (NodeScalarArrayName): carried through the
+// The optional per-node values (NodeScalarArray): carried through the
 // merge of repeated points, NaN skips the line, a missing or 3-component
 // array is an error naming the role.
 void TestNodeScalars(SplineVizTestStatus& status)
@@ -819,7 +819,7 @@ void TestNodeScalars(SplineVizTestStatus& status)
   vtkNew<vtkSplineTubeCore> core;
   core->AddObserver(vtkCommand::ErrorEvent, observer);
   core->AddObserver(vtkCommand::WarningEvent, observer);
-  core->SetNodeScalarArrayName("Angle");
+  core->SetNodeScalarArray("Angle");
   core->SetNodeScalarRole("orientation");
   auto withAngles = [](vtkPolyData* line, const std::vector<double>& angles)
   {

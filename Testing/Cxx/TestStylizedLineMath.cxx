@@ -227,7 +227,7 @@ void TestFixUp(SplineVizTestStatus& status)
 {
   Random random(3);
   vtkNew<vtkSplineTubeCore> core;
-  core->SetRadiusArrayName("Radius");
+  core->SetRadiusArray("Radius");
   core->AddPolyData(RandomLines(random), nullptr);
   core->Build();
   const double shift[3] = { 0.3, -0.2, 0.1 };
@@ -247,7 +247,8 @@ void TestFixUp(SplineVizTestStatus& status)
     std::copy(p, p + 3, &P[3 * i]);
     R[2 * i] = p[3];
     fixUp.GetTangent(i, &T[3 * i]);
-    SV_CHECK(status, std::abs(glm::length(vec3(T[3 * i], T[3 * i + 1], T[3 * i + 2])) - 1.0) < 1e-9);
+    SV_CHECK(
+      status, std::abs(glm::length(vec3(T[3 * i], T[3 * i + 1], T[3 * i + 2])) - 1.0) < 1e-9);
   }
 
   // Batches tile the polylines: consecutive, sharing their end points, at

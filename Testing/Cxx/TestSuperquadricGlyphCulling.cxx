@@ -279,14 +279,14 @@ int TestSuperquadricGlyphCulling(int argc, char* argv[])
       const vtkIdType corner = (N - 1) + static_cast<vtkIdType>(N) * N * (N - 1);
       mask->SetValue(corner, 0);
       mask->Modified();
-      mapper->SetMaskArrayName("mask");
+      mapper->SetMaskArray("mask");
       const Picture masked = Grab(window);
       const Difference control = Compare(on, masked);
       std::cout << "one glyph left out: " << control.Pixels << " pixels differ, worst depth "
                 << control.WorstDepth << ", image error " << control.ImageError << std::endl;
       SV_CHECK_MSG(status, control.Pixels > 3 * bound,
         "the comparison cannot see a missing glyph (" << control.Pixels << " pixels)");
-      mapper->SetMaskArrayName(nullptr);
+      mapper->SetMaskArray(nullptr);
     }
   }
   return status.Result();

@@ -231,7 +231,7 @@ int TestSuperquadricGlyphMapperInputs(int, char*[])
       lp->SetPoints(GridPoints(0, 12));
       lp->GetPointData()->AddArray(Encode(tensors, layout, 0, 12));
       scene.Mapper->SetInputData(lp);
-      scene.Mapper->SetTensorArrayName("T");
+      scene.Mapper->SetTensorArray("T");
       scene.Mapper->SetTensorLayout(layout);
       SV_CHECK_MSG(status, Differ(scene.Render(), reference) == 0,
         "layout " << TM::GetLayoutName(layout) << " differs");
@@ -243,7 +243,7 @@ int TestSuperquadricGlyphMapperInputs(int, char*[])
     scene.Mapper->SetInputData(lp);
     scene.Mapper->SetTensorLayout(TM::SYMMETRIC_VTK);
     SV_CHECK(status, Differ(scene.Render(), reference) > 500);
-    scene.Mapper->SetTensorArrayName(nullptr);
+    scene.Mapper->SetTensorArray(nullptr);
   }
 
   //----------------------------------------------------------------------------
@@ -255,10 +255,10 @@ int TestSuperquadricGlyphMapperInputs(int, char*[])
 
     auto image = sqtest::TensorImage(tensors, 4);
     scene.Mapper->SetInputData(image);
-    scene.Mapper->SetTensorArrayName("Nope");
+    scene.Mapper->SetTensorArray("Nope");
     SV_CHECK(status, Covered(scene.Render()) == 0);
     SV_CHECK(status, observer->CheckErrorMessage("No point tensor array named 'Nope'") == 0);
-    scene.Mapper->SetTensorArrayName(nullptr);
+    scene.Mapper->SetTensorArray(nullptr);
 
     vtkNew<vtkImageData> noTensors;
     noTensors->SetDimensions(4, 3, 1);
@@ -275,10 +275,10 @@ int TestSuperquadricGlyphMapperInputs(int, char*[])
     v3->SetName("V");
     vectors->GetPointData()->AddArray(v3);
     scene.Mapper->SetInputData(vectors);
-    scene.Mapper->SetTensorArrayName("V");
+    scene.Mapper->SetTensorArray("V");
     SV_CHECK(status, Covered(scene.Render()) == 0);
     SV_CHECK(status, observer->CheckErrorMessage("has 3 components") == 0);
-    scene.Mapper->SetTensorArrayName(nullptr);
+    scene.Mapper->SetTensorArray(nullptr);
 
     // NaN, infinite and zero tensors: not drawn, the others are.
     auto bad = sqtest::TensorImage(tensors, 4);
@@ -391,7 +391,7 @@ int TestSuperquadricGlyphMapperInputs(int, char*[])
       mask->InsertNextValue(i % 2);
     }
     image->GetPointData()->AddArray(mask);
-    scene.Mapper->SetMaskArrayName("Mask");
+    scene.Mapper->SetMaskArray("Mask");
     const int half = Covered(scene.Render());
     SV_CHECK(status, scene.Mapper->GetNumberOfGlyphs() == 6);
     SV_CHECK(status, scene.Mapper->GetNumberOfMaskedPoints() == 6);
@@ -410,7 +410,7 @@ int TestSuperquadricGlyphMapperInputs(int, char*[])
     ToDisplay(scene.Renderer, 2.0, 1.0, 0.0, dx, dy);
     picked = PickPoints(scene, dx - 1, dy - 1, dx + 1, dy + 1);
     SV_CHECK(status, picked.empty() || picked.count(6) == 0);
-    scene.Mapper->SetMaskArrayName(nullptr);
+    scene.Mapper->SetMaskArray(nullptr);
 
     // Normalized sizes do not depend on the tensors' magnitude.
     std::vector<std::array<double, 6>> big = tensors;

@@ -403,7 +403,7 @@ void TestVoxelSeeding(SplineVizTestStatus& status)
       tracer->SetStoppingFAThreshold(0.2);
       if (useMask)
       {
-        tracer->SetMaskArrayName("Mask");
+        tracer->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Mask");
       }
       tracer->Update();
       vtkPolyData* out = tracer->GetOutput();

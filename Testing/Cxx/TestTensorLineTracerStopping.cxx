@@ -23,6 +23,7 @@
 
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkImageData.h"
@@ -259,7 +260,8 @@ void TestDomainMaskLengthSteps(SplineVizTestStatus& status)
   }
 
   Run masked(img, { { 0.1, 0.2, 0.3 }, { 2.0, 0.0, 0.0 } }, h,
-    [](vtkTensorLineTracer* t) { t->SetMaskArrayName("Mask"); });
+    [](vtkTensorLineTracer* t)
+    { t->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Mask"); });
   SV_CHECK(status, masked.Lines.size() == 1);
   SV_CHECK(status, masked.Tracer->GetNumberOfRejectedSeeds() == 1);
   SV_CHECK(status, masked.Observer->CheckWarningMessage("1 out of mask") == 0);
@@ -274,6 +276,19 @@ void TestDomainMaskLengthSteps(SplineVizTestStatus& status)
       SV_CHECK(status, std::abs((*p)[0]) <= 1.5 && std::abs((*p)[0]) > 1.5 - h);
     }
   }
+  // The mask selected by attribute type (the active point scalars): the same line.
+  img->GetPointData()->SetActiveScalars("Mask");
+  Run maskedByType(img, { { 0.1, 0.2, 0.3 }, { 2.0, 0.0, 0.0 } }, h,
+    [](vtkTensorLineTracer* t)
+    {
+      t->SetInputArrayToProcess(
+        1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
+    });
+  SV_CHECK(status,
+    maskedByType.Lines.size() == 1 && masked.Lines.size() == 1 &&
+      maskedByType.Lines[0].Points == masked.Lines[0].Points);
+  SV_CHECK(status, maskedByType.Tracer->GetNumberOfRejectedSeeds() == 1);
+  img->GetPointData()->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
 
   Run length(
     img, { { 0.1, 0.2, 0.3 } }, h, [](vtkTensorLineTracer* t) { t->SetMaximumPropagation(1.0); });
@@ -311,7 +326,7 @@ void TestDomainMaskLengthSteps(SplineVizTestStatus& status)
   Run shortLines(img, { { 2.0, 0.0, 0.0 }, { -1.0, 0.0, 0.0 }, { 2.2, 0.0, 0.0 } }, 0.2,
     [](vtkTensorLineTracer* t)
     {
-      t->SetMaskArrayName("Islands");
+      t->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Islands");
       t->SetMinimumLength(1.5);
     });
   SV_CHECK(status, shortLines.Lines.size() == 1);
@@ -475,7 +490,8 @@ void TestBadInput(SplineVizTestStatus& status)
     { "has 6 components, which does not fit",
       [](vtkImageData*, vtkTensorLineTracer* t) { t->SetTensorLayout(TM::FULL_9); } },
     { "the mask array 'Missing' is not a point array",
-      [](vtkImageData*, vtkTensorLineTracer* t) { t->SetMaskArrayName("Missing"); } },
+      [](vtkImageData*, vtkTensorLineTracer* t)
+      { t->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Missing"); } },
     { "must have one component",
       [](vtkImageData* im, vtkTensorLineTracer* t)
       {
@@ -485,7 +501,17 @@ void TestBadInput(SplineVizTestStatus& status)
         v->SetNumberOfTuples(im->GetNumberOfPoints());
         v->Fill(1.0);
         im->GetPointData()->AddArray(v);
-        t->SetMaskArrayName("M3");
+        t->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "M3");
+      } },
+    { "the mask array 'CellMask' is not a point array",
+      [](vtkImageData* im, vtkTensorLineTracer* t)
+      {
+        vtkNew<vtkDoubleArray> m;
+        m->SetName("CellMask");
+        m->SetNumberOfTuples(im->GetNumberOfCells());
+        m->Fill(1.0);
+        im->GetCellData()->AddArray(m);
+        t->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "CellMask");
       } },
     { "IntegrationStep must be a positive number",
       [](vtkImageData*, vtkTensorLineTracer* t) { t->SetIntegrationStep(0.0); } },

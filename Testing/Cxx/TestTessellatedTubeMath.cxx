@@ -124,7 +124,7 @@ vtkSmartPointer<vtkSplineTubeCore> MakeCore(
   pd->SetLines(lines);
   pd->GetPointData()->AddArray(r);
   auto core = vtkSmartPointer<vtkSplineTubeCore>::New();
-  core->SetRadiusArrayName("R");
+  core->SetRadiusArray("R");
   core->AddPolyData(pd, nullptr);
   core->Build();
   return core;

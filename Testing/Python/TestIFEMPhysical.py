@@ -34,7 +34,7 @@ from ifem_poisson import PI, analytic, bend, flux  # noqa: E402
 
 from splineviz import vtkIFEMReader, vtkLRSplineProbeFilter, vtkLRSplineStreamTracer  # noqa: E402
 from vtkmodules.vtkCommonCore import vtkPoints  # noqa: E402
-from vtkmodules.vtkCommonDataModel import vtkPolyData  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkPolyData  # noqa: E402
 
 OUT = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
 RNG = np.random.default_rng(27)
@@ -56,7 +56,7 @@ def probe(reader, X, name):
     f = vtkLRSplineProbeFilter()
     f.SetInputData(pd)
     f.SetSourceConnection(reader.GetOutputPort())
-    f.SetArrayName(name)
+    f.SetInputArrayToProcess(0, 1, 0, vtkDataObject.FIELD_ASSOCIATION_POINTS, name)  # port 1
     f.Update()
     out = f.GetOutput()
     a = out.GetPointData().GetArray(name)
@@ -151,7 +151,7 @@ def check(curved):
     tracer = vtkLRSplineStreamTracer()
     tracer.SetInputConnection(reader.GetOutputPort())
     tracer.SetSourceData(seeds)
-    tracer.SetArrayName("q")
+    tracer.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_POINTS, "q")
     tracer.SetIntegrationDirection(0)  # forward
     tracer.SetStepMode(0)  # fixed time steps
     tracer.SetIntegrationStep(0.002)

@@ -46,7 +46,8 @@ from splineviz_testing import Observed  # noqa: E402
 from splineviz import (vtkIFEMReader, vtkLRSplineProbeFilter, vtkLRSplineReader,  # noqa: E402
                        vtkLRSplineStreamTracer)
 from vtkmodules.vtkCommonCore import vtkPoints  # noqa: E402
-from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet, vtkPolyData  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkMultiBlockDataSet  # noqa: E402
+from vtkmodules.vtkCommonDataModel import vtkPolyData  # noqa: E402
 from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid  # noqa: E402
 
 SOURCE = os.environ.get("SPLINEVIZ_SOURCE_DIR",
@@ -93,7 +94,7 @@ def probe(source, X, name, tolerance=None):
     f = vtkLRSplineProbeFilter()
     f.SetInputData(points(X))
     f.SetSourceData(source)
-    f.SetArrayName(name)
+    f.SetInputArrayToProcess(0, 1, 0, vtkDataObject.FIELD_ASSOCIATION_POINTS, name)  # port 1
     if tolerance is not None:
         f.SetSurfaceTolerance(tolerance)
     f.Update()
@@ -279,7 +280,7 @@ def trace(source, seeds, array, h, steps, direction=0, tolerance=None):
     t = vtkLRSplineStreamTracer()
     t.SetInputData(source)
     t.SetSourceData(points(seeds))
-    t.SetArrayName(array)
+    t.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_POINTS, array)
     t.SetIntegrationDirection(direction)
     t.SetStepModeToFixedTime()
     t.SetIntegrationStep(h)
@@ -429,7 +430,7 @@ expect_error("surface without a field (tracer)", t, ["no point-data array"])
 t = vtkLRSplineStreamTracer()
 t.SetInputData(cyl)
 t.SetSourceData(points([[-6, 0.3, 0]]))
-t.SetArrayName("p")
+t.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_POINTS, "p")
 expect_error("scalar field (tracer)", t, ["1 components", "2-component"])
 bad = vtkUnstructuredGrid()
 bad.DeepCopy(square.GetBlock(0).GetBlock(0))
@@ -437,12 +438,12 @@ bad.GetPoints().SetPoint(3, float("nan"), 0.2, 0.0)
 f = vtkLRSplineProbeFilter()
 f.SetInputData(points([[0.5, 0.5, 0]]))
 f.SetSourceData(bad)
-f.SetArrayName("u")
+f.SetInputArrayToProcess(0, 1, 0, vtkDataObject.FIELD_ASSOCIATION_POINTS, "u")
 expect_error("NaN control point (probe)", f, ["non-finite"])
 t = vtkLRSplineStreamTracer()
 t.SetInputData(bad)
 t.SetSourceData(points([[0.5, 0.5, 0]]))
-t.SetArrayName("q")
+t.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_POINTS, "q")
 expect_error("NaN control point (tracer)", t, ["non-finite"])
 
 checker.finish()

@@ -14,7 +14,7 @@ import splineviz
 data = os.path.join(os.environ["SPLINEVIZ_SOURCE_DIR"], "Testing", "Data", "External")
 reader = splineviz.vtkLRSplineReader()
 reader.SetFileName(os.path.join(data, "cube-3patch-refined.lr"))
-reader.SetFieldName("position")
+reader.SetOutputFieldName("position")
 reader.Update()
 mb = reader.GetOutput()
 assert mb.GetNumberOfBlocks() == 3, mb.GetNumberOfBlocks()

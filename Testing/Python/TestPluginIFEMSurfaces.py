@@ -58,12 +58,13 @@ if mask is None or u is None:
     fail("the probe gave no u or mask")
 else:
     from splineviz import vtkLRSplineProbeFilter  # noqa: E402
+    from vtkmodules.vtkCommonDataModel import vtkDataObject  # noqa: E402
 
     data = servermanager.Fetch(reader)
     f = vtkLRSplineProbeFilter()
     f.SetInputData(servermanager.Fetch(line))
     f.SetSourceData(data)
-    f.SetArrayName("u")
+    f.SetInputArrayToProcess(0, 1, 0, vtkDataObject.FIELD_ASSOCIATION_POINTS, "u")
     f.Update()
     ref = f.GetOutput().GetPointData().GetArray("u")
     m = np.array([mask.GetTuple1(i) for i in range(mask.GetNumberOfTuples())])

@@ -1,12 +1,16 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """pvbatch: the SplineViz plugin's LR-spline proxies in a ParaView pipeline:
 open a .lr file through the reader factory, probe it along a line, resample
-it to an image, render the spline's surface and check the picture."""
+it to an image, render the spline's surface and check the picture; a state
+saved before the field became SetInputArrayToProcess (1-element ArrayName and
+Vectors properties) still selects its field."""
 import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
-from splineviz_testing import coverage, white_view
+from splineviz_testing import coverage, load_pre_rename_state, output_dir, white_view
+
+import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
 
 plugin = sys.argv[1]
 LoadPlugin(plugin, remote=False, ns=globals())
@@ -106,3 +110,21 @@ print("fraction of non-background pixels:", fraction)
 if fraction < 0.1 or fraction > 0.9:
     print("ERROR: the LR spline did not render as a cube in the middle of the view")
     sys.exit(1)
+
+# A state saved before this release holds the field as the 1-element ArrayName
+# (probe, resample) and Vectors (tracer); the hidden deprecated properties of
+# those names (kept for one release) pass it to the filters.
+probe.ArrayName = "Field"
+image.ArrayName = "Field"
+tracer.Vectors = "Field"
+loaded = load_pre_rename_state(
+    {"SelectInputField": "ArrayName", "SelectInputVectors": "Vectors"},
+    os.path.join(output_dir(), "TestPluginLRSpline-pre-rename.pvsm"))
+for xml_name in ("LRSplineProbe", "LRSplineResampleToImage", "LRSplineStreamTracer"):
+    proxies = loaded.get(xml_name, [])
+    fields = [p.GetClientSideObject().GetArrayName() for p in proxies]
+    print("old state:", xml_name, fields)
+    if len(proxies) != 1 or fields != ["Field"]:
+        print("ERROR: the old state's field of %s does not reach the filter: %s"
+              % (xml_name, fields))
+        sys.exit(1)

@@ -195,7 +195,7 @@ def vtk_image(name, blend=0, component=-1, iso=(), shade=False, unit=None, block
         data = subset
     m = REFERENCE["mapper"]  # builds its GPU data again only when the data changes
     m.SetInputDataObject(data)
-    m.SetFieldArrayName("Field")
+    m.SetFieldArray("Field")
     if component >= 0:
         m.SetVectorModeToComponent()
         m.SetVectorComponent(component)
@@ -431,8 +431,8 @@ def serial_checks():
     cell_colored = paraview_image("cell-array")
     vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_INFO)
     print("colored by a cell array: field %r, drawn %.3f" % (
-        mapper.GetFieldArrayName(), drawn(cell_colored).mean()))
-    if mapper.GetFieldArrayName() is not None or drawn(cell_colored).mean() < 0.15:
+        mapper.GetFieldArray(), drawn(cell_colored).mean()))
+    if mapper.GetFieldArray() is not None or drawn(cell_colored).mean() < 0.15:
         fail("coloring by a cell array does not fall back to the spline's field")
     # No color array at all: the default field through ParaView's default maps over its
     # range (TestPluginLRSplineVolumeDefault compares that picture with ParaView's colouring).
@@ -440,7 +440,7 @@ def serial_checks():
     uncolored = paraview_image("no-color-array")
     shown = uncolored[drawn(uncolored)]
     print("no color array: field %r, drawn %.3f, mean color %s, darkest %d" % (
-        mapper.GetFieldArrayName(), drawn(uncolored).mean(), shown.mean(axis=0).round(1),
+        mapper.GetFieldArray(), drawn(uncolored).mean(), shown.mean(axis=0).round(1),
         shown.min()))
     if drawn(uncolored).mean() < 0.15 or shown.min() < 60:
         fail("without a color array the volume is not drawn as a translucent volume")

@@ -84,7 +84,7 @@ if mapper.GetNumberOfGlyphs() != 216:
 if cov3 < 0.1:
     print("ERROR: the glyphs did not render")
     sys.exit(1)
-checks = [(mapper.GetTensorArrayName(), "DTI"), (mapper.GetTensorLayout(), 2),
+checks = [(mapper.GetTensorArray(), "DTI"), (mapper.GetTensorLayout(), 2),
           (round(mapper.GetScaleFactor(), 6), 0.45), (mapper.GetGamma(), 3.0)]
 for got, expected in checks:
     if got != expected:

@@ -3,12 +3,14 @@
 DIPY tensors (read through ParaView's reader factory): voxel seeding and a
 point-cloud seed source, documented properties reaching the filter, and the
 lines shown with the "Ray-Cast Tubes" representation (radius from FA, direct
-RGB direction colors); the picture must be covered by tubes."""
+RGB direction colors); the picture must be covered by tubes. A state saved
+before the mask became SetInputArrayToProcess (a 1-element MaskArray) still
+selects its mask."""
 import os
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
-from splineviz_testing import coverage, white_view
+from splineviz_testing import coverage, load_pre_rename_state, output_dir, white_view
 from paraview import servermanager
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
@@ -81,4 +83,20 @@ if not sub.GetActor().GetMapper().IsA("vtkRayCastTubeMapper"):
     sys.exit(1)
 if cover < 0.15 or colored < 0.05:
     print("ERROR: the tubes did not render with direction colors")
+    sys.exit(1)
+
+# A state saved before this release holds the mask as the 1-element MaskArray;
+# the hidden deprecated property of that name (kept for one release) passes it
+# to the filter.
+cloud.MaskArray = "FA_DIPY"
+cloud.UpdatePipeline()
+if cloud.GetClientSideObject().GetMaskArrayName() != "FA_DIPY":
+    print("ERROR: Mask Array does not reach the filter")
+    sys.exit(1)
+loaded = load_pre_rename_state({"SelectMaskArray": "MaskArray"},
+                               os.path.join(output_dir(), "TestPluginTensorLines-pre-rename.pvsm"))
+masks = [p.GetClientSideObject().GetMaskArrayName() for p in loaded.get("TensorLineTracer", [])]
+print("old state: masks", masks)
+if sorted(masks) != ["FA_DIPY", "None"]:
+    print("ERROR: the old state's mask does not reach the filter:", masks)
     sys.exit(1)

@@ -70,6 +70,42 @@ def set_translation(display, translation):
     setattr(display, name, list(translation))
 
 
+def load_pre_rename_state(renames, path):
+    """Saves the session's state to `path` rewritten as a state saved before
+    the filters' field and mask became SetInputArrayToProcess properties
+    (`renames`: new XML property name -> old one; the old properties held the
+    array name alone), loads it, and returns the proxies it made (the
+    "sources" group) by XML name. Remove with the deprecated names."""
+    import xml.etree.ElementTree as ET
+
+    from paraview import simple
+
+    def ids():
+        return set(p.GetGlobalIDAsString() for p in simple.GetSources().values())
+
+    before = ids()
+    simple.SaveState(path)
+    tree = ET.parse(path)
+    for prop in tree.iter("Property"):
+        old = renames.get(prop.get("name"))
+        if old is None:
+            continue
+        name = [e.get("value") for e in prop.findall("Element") if e.get("index") == "4"]
+        for child in list(prop):
+            prop.remove(child)
+        prop.set("name", old)
+        prop.set("id", prop.get("id").rsplit(".", 1)[0] + "." + old)
+        prop.set("number_of_elements", "1")
+        ET.SubElement(prop, "Element", index="0", value=name[0] if name else "")
+    tree.write(path)
+    simple.LoadState(path)
+    loaded = {}
+    for proxy in simple.GetSources().values():
+        if proxy.GetGlobalIDAsString() not in before:
+            loaded.setdefault(proxy.GetXMLName(), []).append(proxy)
+    return loaded
+
+
 def output_dir():
     """Where the tests write their images (ctest: build/Testing/Temporary)."""
     out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")

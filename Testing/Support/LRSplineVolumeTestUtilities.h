@@ -682,7 +682,7 @@ inline vtkSmartPointer<vtkMultiBlockDataSet> RefinedScalarVolume(
   }
   vtkNew<vtkLRSplineReader> reader;
   reader->SetFileName(path.c_str());
-  reader->SetFieldName("density");
+  reader->SetOutputFieldName("density");
   reader->Update();
   return reader->GetOutput();
 }
