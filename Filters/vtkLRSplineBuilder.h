@@ -28,7 +28,7 @@
 #ifndef vtkLRSplineBuilder_h
 #define vtkLRSplineBuilder_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkLRSplinePatch.h"
 
 #include <functional>
@@ -37,7 +37,7 @@
 #include <unordered_map>
 #include <vector>
 
-class SPLINEVIZ_EXPORT vtkLRSplineBuilder
+class SPLINEVIZFILTERS_EXPORT vtkLRSplineBuilder
 {
 public:
   /**

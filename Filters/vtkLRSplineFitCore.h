@@ -37,7 +37,7 @@
 #ifndef vtkLRSplineFitCore_h
 #define vtkLRSplineFitCore_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkLRSplineBuilder.h"
 #include "vtkSmartPointer.h"
 
@@ -47,7 +47,7 @@
 class vtkLRSplineBezierVolume;
 class vtkUnstructuredGrid;
 
-class SPLINEVIZ_EXPORT vtkLRSplineFitCore
+class SPLINEVIZFILTERS_EXPORT vtkLRSplineFitCore
 {
 public:
   vtkLRSplineBuilder Builder;

@@ -44,7 +44,7 @@
 #ifndef vtkLRSplineFitter_h
 #define vtkLRSplineFitter_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkLRSplineFitterBase.h"
 
 #include <memory> // for std::unique_ptr
@@ -56,7 +56,7 @@ class vtkLRSplineBuilder;
 class vtkLRSplineBezierVolume;
 class vtkPolyData;
 
-class SPLINEVIZ_EXPORT vtkLRSplineFitter : public vtkLRSplineFitterBase
+class SPLINEVIZFILTERS_EXPORT vtkLRSplineFitter : public vtkLRSplineFitterBase
 {
 public:
   static vtkLRSplineFitter* New();

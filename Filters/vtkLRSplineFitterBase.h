@@ -32,14 +32,14 @@
 #ifndef vtkLRSplineFitterBase_h
 #define vtkLRSplineFitterBase_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkMultiBlockDataSetAlgorithm.h"
 
 #include <string> // for ResolveOutputFieldName
 
 class vtkMultiBlockDataSet;
 
-class SPLINEVIZ_EXPORT vtkLRSplineFitterBase : public vtkMultiBlockDataSetAlgorithm
+class SPLINEVIZFILTERS_EXPORT vtkLRSplineFitterBase : public vtkMultiBlockDataSetAlgorithm
 {
 public:
   vtkTypeMacro(vtkLRSplineFitterBase, vtkMultiBlockDataSetAlgorithm);

@@ -43,7 +43,7 @@
 #ifndef vtkLRSplineImageFitter_h
 #define vtkLRSplineImageFitter_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkLRSplineFitterBase.h"
 #include "vtkSmartPointer.h" // for BuildOutputBlock
 
@@ -56,7 +56,7 @@ class vtkImageData;
 class vtkMultiBlockDataSet;
 class vtkUnstructuredGrid;
 
-class SPLINEVIZ_EXPORT vtkLRSplineImageFitter : public vtkLRSplineFitterBase
+class SPLINEVIZFILTERS_EXPORT vtkLRSplineImageFitter : public vtkLRSplineFitterBase
 {
 public:
   static vtkLRSplineImageFitter* New();

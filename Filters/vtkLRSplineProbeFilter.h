@@ -42,7 +42,7 @@
 #ifndef vtkLRSplineProbeFilter_h
 #define vtkLRSplineProbeFilter_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkDataSetAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
@@ -50,7 +50,7 @@
 
 class vtkLRSplineField;
 
-class SPLINEVIZ_EXPORT vtkLRSplineProbeFilter : public vtkDataSetAlgorithm
+class SPLINEVIZFILTERS_EXPORT vtkLRSplineProbeFilter : public vtkDataSetAlgorithm
 {
 public:
   static vtkLRSplineProbeFilter* New();

@@ -26,7 +26,7 @@
 #ifndef vtkLRSplineResampleToImage_h
 #define vtkLRSplineResampleToImage_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
@@ -34,7 +34,7 @@
 
 class vtkLRSplineField;
 
-class SPLINEVIZ_EXPORT vtkLRSplineResampleToImage : public vtkImageAlgorithm
+class SPLINEVIZFILTERS_EXPORT vtkLRSplineResampleToImage : public vtkImageAlgorithm
 {
 public:
   static vtkLRSplineResampleToImage* New();

@@ -42,7 +42,7 @@
 #ifndef vtkLRSplineStreamTracer_h
 #define vtkLRSplineStreamTracer_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
@@ -50,7 +50,7 @@
 
 class vtkLRSplineField;
 
-class SPLINEVIZ_EXPORT vtkLRSplineStreamTracer : public vtkPolyDataAlgorithm
+class SPLINEVIZFILTERS_EXPORT vtkLRSplineStreamTracer : public vtkPolyDataAlgorithm
 {
 public:
   static vtkLRSplineStreamTracer* New();

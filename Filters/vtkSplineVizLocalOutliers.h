@@ -31,14 +31,14 @@
 #ifndef vtkSplineVizLocalOutliers_h
 #define vtkSplineVizLocalOutliers_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkType.h"
 
 #include <vector>
 
 class vtkAlgorithm;
 
-class SPLINEVIZ_EXPORT vtkSplineVizLocalOutliers
+class SPLINEVIZFILTERS_EXPORT vtkSplineVizLocalOutliers
 {
 public:
   /// Neighbours a value is compared with (at least 8).

@@ -39,7 +39,7 @@
 #ifndef vtkStreamlineSelection_h
 #define vtkStreamlineSelection_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkPassInputTypeAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
@@ -50,7 +50,7 @@ class vtkImplicitFunction;
 class vtkMatrix4x4;
 class vtkPolyData;
 
-class SPLINEVIZ_EXPORT vtkStreamlineSelection : public vtkPassInputTypeAlgorithm
+class SPLINEVIZFILTERS_EXPORT vtkStreamlineSelection : public vtkPassInputTypeAlgorithm
 {
 public:
   static vtkStreamlineSelection* New();

@@ -36,10 +36,10 @@
 #ifndef vtkSyntheticFibersSource_h
 #define vtkSyntheticFibersSource_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class SPLINEVIZ_EXPORT vtkSyntheticFibersSource : public vtkPolyDataAlgorithm
+class SPLINEVIZFILTERS_EXPORT vtkSyntheticFibersSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkSyntheticFibersSource* New();

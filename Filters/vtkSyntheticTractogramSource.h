@@ -27,10 +27,10 @@
 #ifndef vtkSyntheticTractogramSource_h
 #define vtkSyntheticTractogramSource_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class SPLINEVIZ_EXPORT vtkSyntheticTractogramSource : public vtkPolyDataAlgorithm
+class SPLINEVIZFILTERS_EXPORT vtkSyntheticTractogramSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkSyntheticTractogramSource* New();

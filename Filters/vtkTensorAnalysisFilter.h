@@ -38,10 +38,10 @@
 #ifndef vtkTensorAnalysisFilter_h
 #define vtkTensorAnalysisFilter_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkDataSetAlgorithm.h"
 
-class SPLINEVIZ_EXPORT vtkTensorAnalysisFilter : public vtkDataSetAlgorithm
+class SPLINEVIZFILTERS_EXPORT vtkTensorAnalysisFilter : public vtkDataSetAlgorithm
 {
 public:
   static vtkTensorAnalysisFilter* New();

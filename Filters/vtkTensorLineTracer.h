@@ -44,7 +44,7 @@
 #ifndef vtkTensorLineTracer_h
 #define vtkTensorLineTracer_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <map>    // for ReportRejectedSeeds
@@ -53,7 +53,7 @@
 class vtkDataArray;
 class vtkDataSet;
 
-class SPLINEVIZ_EXPORT vtkTensorLineTracer : public vtkPolyDataAlgorithm
+class SPLINEVIZFILTERS_EXPORT vtkTensorLineTracer : public vtkPolyDataAlgorithm
 {
 public:
   static vtkTensorLineTracer* New();

@@ -39,7 +39,7 @@
 #ifndef vtkIFEMBlockBuilder_h
 #define vtkIFEMBlockBuilder_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 #include "vtkIFEMLagrangePatch.h"
 #include "vtkLRSplineBezierGrid.h"
 #include "vtkLRSplinePatch.h"
@@ -50,7 +50,7 @@
 
 class vtkUnstructuredGrid;
 
-class SPLINEVIZ_EXPORT vtkIFEMBlockBuilder
+class SPLINEVIZIO_EXPORT vtkIFEMBlockBuilder
 {
 public:
   /// A field as written: its name and its values (all components, interleaved).

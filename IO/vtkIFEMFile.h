@@ -32,14 +32,14 @@
 #ifndef vtkIFEMFile_h
 #define vtkIFEMFile_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 
 #include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
-class SPLINEVIZ_EXPORT vtkIFEMFile
+class SPLINEVIZIO_EXPORT vtkIFEMFile
 {
 public:
   vtkIFEMFile() = default;

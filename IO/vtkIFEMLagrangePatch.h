@@ -24,7 +24,7 @@
 #ifndef vtkIFEMLagrangePatch_h
 #define vtkIFEMLagrangePatch_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
@@ -33,7 +33,7 @@
 
 class vtkUnstructuredGrid;
 
-class SPLINEVIZ_EXPORT vtkIFEMLagrangePatch
+class SPLINEVIZIO_EXPORT vtkIFEMLagrangePatch
 {
 public:
   /// 3 coordinates per node.

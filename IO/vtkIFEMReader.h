@@ -38,7 +38,7 @@
 #ifndef vtkIFEMReader_h
 #define vtkIFEMReader_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 #include "vtkMultiBlockDataSetAlgorithm.h"
 
 #include <memory> // for std::unique_ptr
@@ -46,7 +46,7 @@
 
 class vtkDataArraySelection;
 
-class SPLINEVIZ_EXPORT vtkIFEMReader : public vtkMultiBlockDataSetAlgorithm
+class SPLINEVIZIO_EXPORT vtkIFEMReader : public vtkMultiBlockDataSetAlgorithm
 {
 public:
   static vtkIFEMReader* New();

@@ -26,13 +26,13 @@
 #ifndef vtkLRSplineParser_h
 #define vtkLRSplineParser_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 #include "vtkLRSplinePatch.h"
 
 #include <string>
 #include <vector>
 
-class SPLINEVIZ_EXPORT vtkLRSplineParser
+class SPLINEVIZIO_EXPORT vtkLRSplineParser
 {
 public:
   enum Format

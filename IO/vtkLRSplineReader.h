@@ -40,12 +40,12 @@
 #ifndef vtkLRSplineReader_h
 #define vtkLRSplineReader_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 #include "vtkMultiBlockDataSetAlgorithm.h"
 
 #include <string> // for std::string
 
-class SPLINEVIZ_EXPORT vtkLRSplineReader : public vtkMultiBlockDataSetAlgorithm
+class SPLINEVIZIO_EXPORT vtkLRSplineReader : public vtkMultiBlockDataSetAlgorithm
 {
 public:
   static vtkLRSplineReader* New();

@@ -35,7 +35,7 @@
 #ifndef vtkNIfTIFile_h
 #define vtkNIfTIFile_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 
 #include <cstddef>
 #include <cstdint>
@@ -47,7 +47,7 @@ class vtkFieldData;
 class vtkImageData;
 class vtkInformation;
 
-class SPLINEVIZ_EXPORT vtkNIfTIFile
+class SPLINEVIZIO_EXPORT vtkNIfTIFile
 {
 public:
   /// NIfTI datatype codes.
@@ -259,7 +259,7 @@ private:
  * An open file placed as an output image: what the NIfTI readers
  * (vtkNIfTIReaderBase) keep from RequestInformation to RequestData.
  */
-struct SPLINEVIZ_EXPORT vtkNIfTIImage
+struct SPLINEVIZIO_EXPORT vtkNIfTIImage
 {
   vtkNIfTIFile File;
   double A[4][4] = { { 1, 0, 0, 0 }, { 0, 1, 0, 0 }, { 0, 0, 1, 0 }, { 0, 0, 0, 1 } };

@@ -23,7 +23,7 @@
 #ifndef vtkNIfTIReaderBase_h
 #define vtkNIfTIReaderBase_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 #include "vtkImageAlgorithm.h"
 
 #include <functional> // for std::function
@@ -32,7 +32,7 @@
 
 struct vtkNIfTIImage;
 
-class SPLINEVIZ_EXPORT vtkNIfTIReaderBase : public vtkImageAlgorithm
+class SPLINEVIZIO_EXPORT vtkNIfTIReaderBase : public vtkImageAlgorithm
 {
 public:
   vtkTypeMacro(vtkNIfTIReaderBase, vtkImageAlgorithm);

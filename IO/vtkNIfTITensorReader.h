@@ -43,13 +43,13 @@
 #ifndef vtkNIfTITensorReader_h
 #define vtkNIfTITensorReader_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 #include "vtkNIfTIReaderBase.h"
 
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-class SPLINEVIZ_EXPORT vtkNIfTITensorReader : public vtkNIfTIReaderBase
+class SPLINEVIZIO_EXPORT vtkNIfTITensorReader : public vtkNIfTIReaderBase
 {
 public:
   static vtkNIfTITensorReader* New();

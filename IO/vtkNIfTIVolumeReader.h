@@ -41,12 +41,12 @@
 #ifndef vtkNIfTIVolumeReader_h
 #define vtkNIfTIVolumeReader_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 #include "vtkNIfTIReaderBase.h"
 
 #include <memory> // for std::unique_ptr
 
-class SPLINEVIZ_EXPORT vtkNIfTIVolumeReader : public vtkNIfTIReaderBase
+class SPLINEVIZIO_EXPORT vtkNIfTIVolumeReader : public vtkNIfTIReaderBase
 {
 public:
   static vtkNIfTIVolumeReader* New();

@@ -32,7 +32,7 @@
 #ifndef vtkTractogramFormats_h
 #define vtkTractogramFormats_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 
 #include <cstddef>
 #include <cstdint>
@@ -40,7 +40,7 @@
 #include <utility>
 #include <vector>
 
-class SPLINEVIZ_EXPORT vtkTractogramFormats
+class SPLINEVIZIO_EXPORT vtkTractogramFormats
 {
 public:
   enum Format

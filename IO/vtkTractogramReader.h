@@ -40,7 +40,7 @@
 #ifndef vtkTractogramReader_h
 #define vtkTractogramReader_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <cstdint> // for std::uint64_t
@@ -48,7 +48,7 @@
 #include <string>  // for std::string
 #include <vector>  // for std::vector
 
-class SPLINEVIZ_EXPORT vtkTractogramReader : public vtkPolyDataAlgorithm
+class SPLINEVIZIO_EXPORT vtkTractogramReader : public vtkPolyDataAlgorithm
 {
 public:
   static vtkTractogramReader* New();

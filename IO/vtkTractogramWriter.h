@@ -43,7 +43,7 @@
 #ifndef vtkTractogramWriter_h
 #define vtkTractogramWriter_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizIOModule.h" // for export macro
 #include "vtkWriter.h"
 
 #include <memory> // for std::unique_ptr
@@ -52,7 +52,7 @@
 class vtkImageData;
 class vtkPolyData;
 
-class SPLINEVIZ_EXPORT vtkTractogramWriter : public vtkWriter
+class SPLINEVIZIO_EXPORT vtkTractogramWriter : public vtkWriter
 {
 public:
   static vtkTractogramWriter* New();

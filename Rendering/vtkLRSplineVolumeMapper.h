@@ -41,7 +41,7 @@
 #ifndef vtkLRSplineVolumeMapper_h
 #define vtkLRSplineVolumeMapper_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizRenderingModule.h" // for export macro
 #include "vtkAbstractVolumeMapper.h"
 
 #include <array>  // for std::array
@@ -58,7 +58,7 @@ class vtkVolume;
 class vtkVolumeProperty;
 class vtkWindow;
 
-class SPLINEVIZ_EXPORT vtkLRSplineVolumeMapper : public vtkAbstractVolumeMapper
+class SPLINEVIZRENDERING_EXPORT vtkLRSplineVolumeMapper : public vtkAbstractVolumeMapper
 {
 public:
   static vtkLRSplineVolumeMapper* New();

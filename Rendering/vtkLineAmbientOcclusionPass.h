@@ -34,7 +34,7 @@
 #ifndef vtkLineAmbientOcclusionPass_h
 #define vtkLineAmbientOcclusionPass_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizRenderingModule.h" // for export macro
 #include "vtkImageProcessingPass.h"
 
 #include <memory> // for std::unique_ptr
@@ -43,7 +43,7 @@ class vtkOpenGLRenderWindow;
 class vtkShaderProgram;
 class vtkTextureObject;
 
-class SPLINEVIZ_EXPORT vtkLineAmbientOcclusionPass : public vtkImageProcessingPass
+class SPLINEVIZRENDERING_EXPORT vtkLineAmbientOcclusionPass : public vtkImageProcessingPass
 {
 public:
   static vtkLineAmbientOcclusionPass* New();

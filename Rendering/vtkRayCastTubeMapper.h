@@ -38,12 +38,12 @@
 #ifndef vtkRayCastTubeMapper_h
 #define vtkRayCastTubeMapper_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizRenderingModule.h" // for export macro
 #include "vtkSplineTubeMapper.h"
 
 #include <memory> // for std::unique_ptr
 
-class SPLINEVIZ_EXPORT vtkRayCastTubeMapper : public vtkSplineTubeMapper
+class SPLINEVIZRENDERING_EXPORT vtkRayCastTubeMapper : public vtkSplineTubeMapper
 {
 public:
   static vtkRayCastTubeMapper* New();

@@ -38,8 +38,8 @@
 #ifndef vtkSplineTubeCore_h
 #define vtkSplineTubeCore_h
 
-#include "SplineVizModule.h" // for export macro
-#include "vtkNew.h"          // for vtkNew
+#include "SplineVizRenderingModule.h" // for export macro
+#include "vtkNew.h"                   // for vtkNew
 #include "vtkObject.h"
 
 #include <functional> // for std::function
@@ -52,7 +52,7 @@ class vtkPolyData;
 class vtkTypeUInt32Array;
 class vtkUnsignedCharArray;
 
-class SPLINEVIZ_EXPORT vtkSplineTubeCore : public vtkObject
+class SPLINEVIZRENDERING_EXPORT vtkSplineTubeCore : public vtkObject
 {
 public:
   static vtkSplineTubeCore* New();

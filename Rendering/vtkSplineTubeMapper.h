@@ -39,10 +39,10 @@
 #ifndef vtkSplineTubeMapper_h
 #define vtkSplineTubeMapper_h
 
-#include "SplineVizModule.h" // for export macro
-#include "vtkNew.h"          // for vtkNew
-#include "vtkPlane.h"        // for vtkNew<vtkPlane>
-#include "vtkSmartPointer.h" // for the endpoint markers
+#include "SplineVizRenderingModule.h" // for export macro
+#include "vtkNew.h"                   // for vtkNew
+#include "vtkPlane.h"                 // for vtkNew<vtkPlane>
+#include "vtkSmartPointer.h"          // for the endpoint markers
 #include "vtkOpenGLPolyDataMapper.h"
 
 #include <chrono>     // for std::chrono::steady_clock
@@ -63,7 +63,7 @@ class vtkSplineTubeCore;
 class vtkSplineTubeVisibility;
 class vtkSplineVizGPUBuffer;
 
-class SPLINEVIZ_EXPORT vtkSplineTubeMapper : public vtkOpenGLPolyDataMapper
+class SPLINEVIZRENDERING_EXPORT vtkSplineTubeMapper : public vtkOpenGLPolyDataMapper
 {
 public:
   vtkTypeMacro(vtkSplineTubeMapper, vtkOpenGLPolyDataMapper);

@@ -34,13 +34,13 @@
 #ifndef vtkSplineTubeVisibility_h
 #define vtkSplineTubeVisibility_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizRenderingModule.h" // for export macro
 #include "vtkType.h"
 
 #include <cstdint>
 #include <vector>
 
-class SPLINEVIZ_EXPORT vtkSplineTubeVisibility
+class SPLINEVIZRENDERING_EXPORT vtkSplineTubeVisibility
 {
 public:
   /// What the projection of the chunks depends on.
@@ -53,7 +53,7 @@ public:
   };
 
   /// Maxima of a depth image over square tiles of 1, 2, 4, ... pixels.
-  class SPLINEVIZ_EXPORT DepthPyramid
+  class SPLINEVIZRENDERING_EXPORT DepthPyramid
   {
   public:
     /// From a window-depth image (row 0 at the bottom, as glReadPixels gives it).

@@ -31,8 +31,8 @@
 #ifndef vtkStylizedLineFixUp_h
 #define vtkStylizedLineFixUp_h
 
-#include "SplineVizModule.h"     // for export macro
-#include "vtkStylizedLineMath.h" // for vec3
+#include "SplineVizRenderingModule.h" // for export macro
+#include "vtkStylizedLineMath.h"      // for vec3
 #include "vtkType.h"
 
 #include <atomic>
@@ -42,7 +42,7 @@
 class vtkSplineTubeCore;
 class vtkSplineTubeVisibility;
 
-class SPLINEVIZ_EXPORT vtkStylizedLineFixUp
+class SPLINEVIZRENDERING_EXPORT vtkStylizedLineFixUp
 {
 public:
   /// Longest batch, in segments.

@@ -40,14 +40,14 @@
 #ifndef vtkStylizedLineMapper_h
 #define vtkStylizedLineMapper_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizRenderingModule.h" // for export macro
 #include "vtkSplineTubeMapper.h"
 
 #include <iosfwd> // for std::ostream
 #include <memory> // for std::unique_ptr
 #include <string> // for std::string
 
-class SPLINEVIZ_EXPORT vtkStylizedLineMapper : public vtkSplineTubeMapper
+class SPLINEVIZRENDERING_EXPORT vtkStylizedLineMapper : public vtkSplineTubeMapper
 {
 public:
   static vtkStylizedLineMapper* New();

@@ -39,8 +39,8 @@
 #ifndef vtkSuperquadricGlyphMapper_h
 #define vtkSuperquadricGlyphMapper_h
 
-#include "SplineVizModule.h" // for export macro
-#include "vtkNew.h"          // for vtkNew
+#include "SplineVizRenderingModule.h" // for export macro
+#include "vtkNew.h"                   // for vtkNew
 #include "vtkOpenGLPolyDataMapper.h"
 
 #include <memory> // for unique_ptr
@@ -50,7 +50,7 @@ class vtkCompositeDataDisplayAttributes;
 class vtkDataSet;
 class vtkFloatArray;
 
-class SPLINEVIZ_EXPORT vtkSuperquadricGlyphMapper : public vtkOpenGLPolyDataMapper
+class SPLINEVIZRENDERING_EXPORT vtkSuperquadricGlyphMapper : public vtkOpenGLPolyDataMapper
 {
 public:
   static vtkSuperquadricGlyphMapper* New();

@@ -30,7 +30,7 @@
 #ifndef vtkSuperquadricGlyphPreparer_h
 #define vtkSuperquadricGlyphPreparer_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizRenderingModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string> // for std::string
@@ -38,7 +38,7 @@
 class vtkDataArray;
 class vtkDataSet;
 
-class SPLINEVIZ_EXPORT vtkSuperquadricGlyphPreparer : public vtkPolyDataAlgorithm
+class SPLINEVIZRENDERING_EXPORT vtkSuperquadricGlyphPreparer : public vtkPolyDataAlgorithm
 {
 public:
   static vtkSuperquadricGlyphPreparer* New();

@@ -40,7 +40,7 @@
 #ifndef vtkTessellatedTubeLevels_h
 #define vtkTessellatedTubeLevels_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizRenderingModule.h" // for export macro
 #include "vtkType.h"
 
 #include <cstdint>
@@ -51,7 +51,7 @@
 
 class vtkSplineTubeCore;
 
-class SPLINEVIZ_EXPORT vtkTessellatedTubeLevels
+class SPLINEVIZRENDERING_EXPORT vtkTessellatedTubeLevels
 {
 public:
   static constexpr unsigned char Culled = 255;

@@ -170,8 +170,8 @@
 #ifndef vtkTessellatedTubeMapper_h
 #define vtkTessellatedTubeMapper_h
 
-#include "SplineVizModule.h" // for export macro
-#include "vtkSmartPointer.h" // for vtkSmartPointer
+#include "SplineVizRenderingModule.h" // for export macro
+#include "vtkSmartPointer.h"          // for vtkSmartPointer
 #include "vtkSplineTubeMapper.h"
 
 #include <memory> // for std::unique_ptr
@@ -183,7 +183,7 @@ class vtkRenderWindow;
 class vtkSplineVizGPUBuffer;
 class vtkTessellatedTubeLevels;
 
-class SPLINEVIZ_EXPORT vtkTessellatedTubeMapper : public vtkSplineTubeMapper
+class SPLINEVIZRENDERING_EXPORT vtkTessellatedTubeMapper : public vtkSplineTubeMapper
 {
 public:
   static vtkTessellatedTubeMapper* New();

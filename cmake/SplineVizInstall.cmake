@@ -2,8 +2,9 @@
 # Installation of the CMake package: SplineVizConfig.cmake and its version
 # file, so that another project can use the installed SplineViz with
 #
-#   find_package(SplineViz REQUIRED)                       # SplineViz::SplineViz
-#   find_package(SplineViz REQUIRED COMPONENTS ParaView)   # + SplineViz::SplineVizParaView
+#   find_package(SplineViz REQUIRED)                    # all modules
+#   find_package(SplineViz REQUIRED COMPONENTS IO)      # SplineViz::IO (+ Core)
+#   find_package(SplineViz REQUIRED COMPONENTS ParaView) # + SplineViz::SplineVizParaView
 #
 # (vtk_module_build() and vtk_module_wrap_python() install the libraries,
 # headers, the targets files and the Python package; paraview_plugin_build()
@@ -13,24 +14,39 @@ include(CMakePackageConfigHelpers)
 
 set(splineviz_cmake_destination "${CMAKE_INSTALL_LIBDIR}/cmake/splineviz")
 
-# The VTK packages the installed modules need (their public dependencies):
-# the config file finds exactly these components of the VTK SplineViz was
-# built against.
-set(SPLINEVIZ_CONFIG_VTK_COMPONENTS)
-foreach (splineviz_module IN LISTS splineviz_modules splineviz_paraview_modules)
-  get_target_property(splineviz_links "${splineviz_module}" INTERFACE_LINK_LIBRARIES)
-  foreach (splineviz_link IN LISTS splineviz_links)
+# The VTK components each installed module needs (its public VTK
+# dependencies and those of the SplineViz modules it links publicly): the
+# config file finds exactly those of the components asked for, in the VTK
+# SplineViz was built against.
+function (_splineviz_vtk_components var module)
+  set(components)
+  get_target_property(links "${module}" INTERFACE_LINK_LIBRARIES)
+  foreach (link IN LISTS links)
+    if (link MATCHES "^SplineViz::" AND TARGET "${link}")
+      _splineviz_vtk_components(link_components "${link}")
+      list(APPEND components ${link_components})
     # Only modules are components (not helper targets such as VTK::PythonUsed).
-    if (splineviz_link MATCHES "^VTK::([A-Za-z0-9_]+)$" AND TARGET "${splineviz_link}")
-      get_property(splineviz_is_module TARGET "${splineviz_link}"
+    elseif (link MATCHES "^VTK::([A-Za-z0-9_]+)$" AND TARGET "${link}")
+      get_property(is_module TARGET "${link}"
         PROPERTY INTERFACE_vtk_module_library_name SET)
-      if (splineviz_is_module)
-        list(APPEND SPLINEVIZ_CONFIG_VTK_COMPONENTS "${CMAKE_MATCH_1}")
+      if (is_module)
+        list(APPEND components "${CMAKE_MATCH_1}")
       endif ()
     endif ()
   endforeach ()
+  list(REMOVE_DUPLICATES components)
+  set("${var}" "${components}" PARENT_SCOPE)
+endfunction ()
+set(SPLINEVIZ_CONFIG_COMPONENTS "")
+foreach (splineviz_module IN LISTS splineviz_modules splineviz_paraview_modules)
+  _splineviz_vtk_components(splineviz_vtk "${splineviz_module}")
+  string(REPLACE "SplineViz::" "" splineviz_component "${splineviz_module}")
+  if (splineviz_component STREQUAL "SplineVizParaView")
+    set(splineviz_component ParaView)
+  endif ()
+  string(APPEND SPLINEVIZ_CONFIG_COMPONENTS
+    "set(_splineviz_vtk_components_${splineviz_component} \"${splineviz_vtk}\")\n")
 endforeach ()
-list(REMOVE_DUPLICATES SPLINEVIZ_CONFIG_VTK_COMPONENTS)
 
 # The find_package() calls of the modules' non-private third-party packages.
 vtk_module_export_find_packages(

@@ -4,7 +4,7 @@
 // This file is written in the common subset of GLSL and C++ (with GLM):
 // it is embedded into the tube shaders and also compiled as C++ through
 // vtkSplineTubeMath.h, so the CPU reference, the unit tests and the GPU run
-// the same algorithm (the rules of the subset: Filters/vtkSplineVizSharedGLSL.h).
+// the same algorithm (the rules of the subset: Core/vtkSplineVizSharedGLSL.h).
 //
 // Contents:
 //  - cubic Hermite evaluation of (x, y, z, radius) splines (Salm §3);

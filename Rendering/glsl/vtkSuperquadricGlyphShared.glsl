@@ -2,7 +2,7 @@
 // Superquadric glyph math shared, as one source, by the glyph shaders and the
 // CPU code (vtkSuperquadricGlyphMath.h compiles this text as C++ in double
 // precision for the unit tests). Same GLSL/C++ subset rules as
-// Filters/glsl/vtkTensorMathShared.glsl; names start with `svq`.
+// Core/glsl/vtkTensorMathShared.glsl; names start with `svq`.
 //
 // Glyph space: the glyph of a tensor with semi-axes s (along its frame) is the
 // image of the canonical superquadric
@@ -17,7 +17,7 @@
 // function, so along a ray f(t) = q(o + t d) is convex.
 //
 // The Schultz-Kindlmann glyphs of indefinite tensors
-// (Filters/glsl/vtkTensorMathShared.glsl, svtSchultzKindlmannShape) add a
+// (Core/glsl/vtkTensorMathShared.glsl, svtSchultzKindlmannShape) add a
 // third exponent c and exponents beta, c up to 1/minimumRoundness: the solid
 //   |w| < 1 and g(u, v, w) = |u|^(2/alpha) / A(|w|) + |v|^(2/alpha) / B(|w|) < 1,
 //   A(W) = (1 - W^(2/beta))^(beta/alpha), B(W) = (1 - W^(2/c))^(c/alpha),

@@ -5,9 +5,11 @@
 #   TestInstall.sh install    CMAKE BUILD PREFIX
 #       cmake --install into PREFIX (emptied first); the layout is checked.
 #   TestInstall.sh downstream CMAKE BUILD PREFIX WORK PYTHON
-#       builds Downstream/ with find_package(SplineViz) against PREFIX only,
-#       runs it on .tck files written by write_tck.py (3 and 7 streamlines)
-#       and on a damaged file (must fail: negative control).
+#       builds Downstream/ with find_package(SplineViz) against PREFIX only
+#       (one program linking SplineViz::SplineViz, one only SplineViz::IO,
+#       which must not load any rendering library), runs them on .tck files
+#       written by write_tck.py (3 and 7 streamlines) and on a damaged file
+#       (must fail: negative control).
 #   TestInstall.sh plugin     CMAKE BUILD PREFIX WORK PYTHON PVBATCH
 #       pvbatch loads the installed plugin through its .plugins file
 #       (PV_PLUGIN_CONFIG_FILE) and, without it, by the path the installed
@@ -31,10 +33,12 @@ install)
   "$cmake" --install "$build" --prefix "$prefix" >/dev/null
   for f in lib/cmake/splineviz/SplineVizConfig.cmake lib/cmake/splineviz/SplineVizConfigVersion.cmake \
     lib/cmake/splineviz/SplineViz-targets.cmake include/splineviz/vtkTractogramReader.h \
-    include/splineviz/SplineVizModule.h; do
+    include/splineviz/SplineVizIOModule.h include/splineviz/vtkTessellatedTubeMapper.h; do
     [ -e "$prefix/$f" ] || fail "not installed: $f"
   done
-  ls "$prefix"/lib/libSplineViz.so.* >/dev/null || fail "libSplineViz not installed"
+  for m in Core Filters IO Rendering; do
+    ls "$prefix"/lib/libSplineViz$m.so.* >/dev/null || fail "libSplineViz$m not installed"
+  done
   ls "$prefix"/lib/python3*/site-packages/splineviz/__init__.py >/dev/null ||
     fail "Python package not installed"
   echo "installed into $prefix"
@@ -49,24 +53,31 @@ downstream)
   found="$(config_var DIR)"
   [ "$found" = "$prefix/lib/cmake/splineviz" ] || fail "SplineViz found in '$found', not in $prefix"
   "$cmake" --build "$work/build" >"$work/build.log" 2>&1 || { cat "$work/build.log"; fail "build failed"; }
-  program="$work/build/CountStreamlines"
-  # ldd's output kept whole first: `ldd | grep -q` under pipefail fails at
-  # random when grep stops reading at its match and ldd dies of SIGPIPE.
-  libs="$(ldd "$program")" || fail "ldd $program failed"
-  if grep -q "$build/lib/" <<<"$libs"; then fail "the program loads libraries from the build tree: $libs"; fi
-  grep -q "$prefix/lib/libSplineViz.so" <<<"$libs" || fail "libSplineViz not loaded from $prefix: $libs"
   for n in 3 7; do
     "$python" "$here/write_tck.py" "$work/lines$n.tck" "$n"
-    out="$("$program" "$work/lines$n.tck")"
-    echo "$n written: $out"
-    # streamline i has i + 2 points: n(n+3)/2 in all
-    [ "$out" = "streamlines: $n points: $((n * (n + 3) / 2))" ] || fail "read '$out' from $n streamlines"
   done
-  # Negative control: a file cut inside its data must be refused.
   head -c 100 "$work/lines7.tck" >"$work/cut.tck"
-  if "$program" "$work/cut.tck" >"$work/cut.log" 2>&1; then
-    fail "a truncated file was read: $(cat "$work/cut.log")"
-  fi
+  for name in CountStreamlines CountStreamlinesIO; do
+    program="$work/build/$name"
+    # ldd's output kept whole first: `ldd | grep -q` under pipefail fails at
+    # random when grep stops reading at its match and ldd dies of SIGPIPE.
+    libs="$(ldd "$program")" || fail "ldd $program failed"
+    if grep -q "$build/lib/" <<<"$libs"; then fail "$name loads libraries from the build tree: $libs"; fi
+    grep -q "$prefix/lib/libSplineVizIO.so" <<<"$libs" || fail "$name: libSplineVizIO not loaded from $prefix: $libs"
+    if [ "$name" = CountStreamlinesIO ] && grep -q "libSplineVizRendering\|libvtkRendering" <<<"$libs"; then
+      fail "$name (SplineViz::IO only) loads a rendering library: $libs"
+    fi
+    for n in 3 7; do
+      out="$("$program" "$work/lines$n.tck")"
+      echo "$name, $n written: $out"
+      # streamline i has i + 2 points: n(n+3)/2 in all
+      [ "$out" = "streamlines: $n points: $((n * (n + 3) / 2))" ] || fail "$name read '$out' from $n streamlines"
+    done
+    # Negative control: a file cut inside its data must be refused.
+    if "$program" "$work/cut.tck" >"$work/cut.log" 2>&1; then
+      fail "$name read a truncated file: $(cat "$work/cut.log")"
+    fi
+  done
   echo "truncated file refused"
   ;;
 plugin)

@@ -39,7 +39,7 @@
 #ifndef vtkLRSplinePatch_h
 #define vtkLRSplinePatch_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizCoreModule.h" // for export macro
 #include "vtkType.h"
 
 #include <iosfwd>
@@ -49,7 +49,7 @@
 class vtkLRSplineBezierVolume;
 class vtkLRSplineElementLocator;
 
-class SPLINEVIZ_EXPORT vtkLRSplinePatch
+class SPLINEVIZCORE_EXPORT vtkLRSplinePatch
 {
 public:
   /// 3 for a volume, 2 for a surface (then Order[2] is 1 and w spans [0, 1]).

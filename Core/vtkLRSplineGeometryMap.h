@@ -35,7 +35,7 @@
 #ifndef vtkLRSplineGeometryMap_h
 #define vtkLRSplineGeometryMap_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizCoreModule.h" // for export macro
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineElementLocator.h"
 
@@ -44,7 +44,7 @@
 
 class vtkUnstructuredGrid;
 
-class SPLINEVIZ_EXPORT vtkLRSplineGeometryMap
+class SPLINEVIZCORE_EXPORT vtkLRSplineGeometryMap
 {
 public:
   /// Newton's convergence in local coordinates.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Helpers of the shared GLSL/C++ subset used by more than one *Shared.glsl
-// file (rules: Filters/vtkSplineVizSharedGLSL.h): embedded after the prelude
+// file (rules: Core/vtkSplineVizSharedGLSL.h): embedded after the prelude
 // in the shaders, compiled as C++ next to the file that needs it.
 
 // Any unit vector orthogonal to the unit vector n.

@@ -37,7 +37,7 @@
 #ifndef vtkLRSplineBezierGrid_h
 #define vtkLRSplineBezierGrid_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizCoreModule.h" // for export macro
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
@@ -48,7 +48,7 @@ class vtkLRSplineBezierVolume;
 class vtkLRSplinePatch;
 class vtkUnstructuredGrid;
 
-class SPLINEVIZ_EXPORT vtkLRSplineBezierGrid
+class SPLINEVIZCORE_EXPORT vtkLRSplineBezierGrid
 {
 public:
   struct Options

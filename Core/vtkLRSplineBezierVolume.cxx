@@ -259,9 +259,9 @@ void Dispatch(
 }
 }
 
-template SPLINEVIZ_EXPORT void vtkLRSplineBezierVolume::Bernstein<double>(
+template SPLINEVIZCORE_EXPORT void vtkLRSplineBezierVolume::Bernstein<double>(
   int, double, double*, double*);
-template SPLINEVIZ_EXPORT void vtkLRSplineBezierVolume::Bernstein<float>(
+template SPLINEVIZCORE_EXPORT void vtkLRSplineBezierVolume::Bernstein<float>(
   int, float, float*, float*);
 
 //------------------------------------------------------------------------------

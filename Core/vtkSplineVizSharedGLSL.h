@@ -5,7 +5,7 @@
  *
  * The *Shared.glsl files (glsl/vtkSplineTubeMathShared.glsl,
  * glsl/vtkStylizedLineMathShared.glsl, glsl/vtkSuperquadricGlyphShared.glsl,
- * glsl/vtkLRSplineVolumeShared.glsl, Filters/glsl/vtkTensorMathShared.glsl)
+ * glsl/vtkLRSplineVolumeShared.glsl, Core/glsl/vtkTensorMathShared.glsl)
  * are written in the common subset of GLSL and C++ with GLM, so that the
  * shaders and the CPU code (references, preparers, unit tests) run one
  * algorithm from one text. Rules of the subset:

@@ -4,7 +4,7 @@
 // double precision with GLM; the superquadric glyph shaders embed it in float).
 //
 // Written in the common subset of GLSL and C++ (the rules:
-// Filters/vtkSplineVizSharedGLSL.h). Every name starts with `svt` so that it
+// Core/vtkSplineVizSharedGLSL.h). Every name starts with `svt` so that it
 // can be embedded next to other SplineViz GLSL.
 //
 // A symmetric tensor is passed as diag = (xx, yy, zz) and off = (xy, yz, xz)

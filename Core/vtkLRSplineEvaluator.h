@@ -32,7 +32,7 @@
 #ifndef vtkLRSplineEvaluator_h
 #define vtkLRSplineEvaluator_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizCoreModule.h" // for export macro
 #include "vtkLRSplineBezierVolume.h"
 #include "vtkLRSplineElementLocator.h"
 
@@ -41,7 +41,7 @@
 
 class vtkLRSplineGeometryMap;
 
-class SPLINEVIZ_EXPORT vtkLRSplineEvaluator
+class SPLINEVIZCORE_EXPORT vtkLRSplineEvaluator
 {
 public:
   /**

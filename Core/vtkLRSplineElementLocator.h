@@ -32,14 +32,14 @@
 #ifndef vtkLRSplineElementLocator_h
 #define vtkLRSplineElementLocator_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizCoreModule.h" // for export macro
 #include "vtkType.h"
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
-class SPLINEVIZ_EXPORT vtkLRSplineElementLocator
+class SPLINEVIZCORE_EXPORT vtkLRSplineElementLocator
 {
 public:
   enum LocatorType

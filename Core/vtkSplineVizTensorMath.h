@@ -40,8 +40,8 @@
 #ifndef vtkSplineVizTensorMath_h
 #define vtkSplineVizTensorMath_h
 
-#include "SplineVizModule.h" // for export macro
-#include "vtkType.h"         // for vtkIdType
+#include "SplineVizCoreModule.h" // for export macro
+#include "vtkType.h"             // for vtkIdType
 
 class vtkDataArray;
 
@@ -80,16 +80,16 @@ enum TensorLayout
 };
 
 /// Number of components of a layout (0 for an unknown layout).
-SPLINEVIZ_EXPORT int GetNumberOfComponents(int layout);
+SPLINEVIZCORE_EXPORT int GetNumberOfComponents(int layout);
 
 /// Human-readable name of a layout ("unknown" for an unknown layout).
-SPLINEVIZ_EXPORT const char* GetLayoutName(int layout);
+SPLINEVIZCORE_EXPORT const char* GetLayoutName(int layout);
 
 /**
  * The default layout for a number of components: 9 -> FULL_9,
  * 6 -> SYMMETRIC_VTK, 7 -> TEEM_7, anything else -> -1.
  */
-SPLINEVIZ_EXPORT int GuessLayout(int numberOfComponents);
+SPLINEVIZCORE_EXPORT int GuessLayout(int numberOfComponents);
 
 /**
  * The layout to read an array of `numberOfComponents` components with, when
@@ -100,7 +100,7 @@ SPLINEVIZ_EXPORT int GuessLayout(int numberOfComponents);
  * Returns -1 when the array cannot be read that way (another component count,
  * or a 6-component array with FULL_9 or TEEM_7 requested).
  */
-SPLINEVIZ_EXPORT int ResolveLayout(int requestedLayout, int numberOfComponents);
+SPLINEVIZCORE_EXPORT int ResolveLayout(int requestedLayout, int numberOfComponents);
 
 /**
  * Converts one tuple in the given layout to `t = {xx, yy, zz, xy, yz, xz}`.
@@ -108,7 +108,7 @@ SPLINEVIZ_EXPORT int ResolveLayout(int requestedLayout, int numberOfComponents);
  * component is NaN or infinite. For TEEM_7, `confidence` (if given) receives
  * the leading confidence value; for the other layouts it is set to 1.
  */
-SPLINEVIZ_EXPORT bool ToSymmetric(
+SPLINEVIZCORE_EXPORT bool ToSymmetric(
   int layout, const double* components, double t[6], double* confidence = nullptr);
 
 /**
@@ -116,14 +116,14 @@ SPLINEVIZ_EXPORT bool ToSymmetric(
  * GetNumberOfComponents(layout) components; not checked here). Same return
  * value as ToSymmetric(). Thread-safe for concurrent reads.
  */
-SPLINEVIZ_EXPORT bool ReadSymmetric(
+SPLINEVIZCORE_EXPORT bool ReadSymmetric(
   vtkDataArray* array, vtkIdType id, int layout, double t[6], double* confidence = nullptr);
 
 /// The full matrix of t.
-SPLINEVIZ_EXPORT void ToMatrix(const double t[6], double m[3][3]);
+SPLINEVIZCORE_EXPORT void ToMatrix(const double t[6], double m[3][3]);
 
 /// y = T x.
-SPLINEVIZ_EXPORT void Multiply(const double t[6], const double x[3], double y[3]);
+SPLINEVIZCORE_EXPORT void Multiply(const double t[6], const double x[3], double y[3]);
 
 /**
  * Eigen-decomposition of the symmetric tensor t: values[0] >= values[1] >=
@@ -132,7 +132,7 @@ SPLINEVIZ_EXPORT void Multiply(const double t[6], const double x[3], double y[3]
  * repeated eigenvalues any orthonormal basis of the eigenspace is returned.
  * Relative accuracy ~1e-14 of the largest |eigenvalue|. t must be finite.
  */
-SPLINEVIZ_EXPORT void EigenDecomposition(const double t[6], double values[3], double vectors[3][3]);
+SPLINEVIZCORE_EXPORT void EigenDecomposition(const double t[6], double values[3], double vectors[3][3]);
 
 /**
  * The eigenvalues (values[0] >= values[1] >= values[2]) and the unit
@@ -146,13 +146,13 @@ SPLINEVIZ_EXPORT void EigenDecomposition(const double t[6], double values[3], do
  * the eigenspace when l1 is repeated; (1, 0, 0) for multiples of the
  * identity). For tracking along e1 (vtkTensorLineTracer). t must be finite.
  */
-SPLINEVIZ_EXPORT void PrincipalEigen(const double t[6], double values[3], double e1[3]);
+SPLINEVIZCORE_EXPORT void PrincipalEigen(const double t[6], double values[3], double e1[3]);
 
 /// Fractional anisotropy from eigenvalues, in [0, 1]; 0 for the zero tensor.
-SPLINEVIZ_EXPORT double FractionalAnisotropy(const double values[3]);
+SPLINEVIZCORE_EXPORT double FractionalAnisotropy(const double values[3]);
 
 /// Mean diffusivity (l1 + l2 + l3) / 3.
-SPLINEVIZ_EXPORT double MeanDiffusivity(const double values[3]);
+SPLINEVIZCORE_EXPORT double MeanDiffusivity(const double values[3]);
 
 /**
  * Westin metrics from sorted eigenvalues (l1 >= l2 >= l3), trace-normalized
@@ -160,7 +160,7 @@ SPLINEVIZ_EXPORT double MeanDiffusivity(const double values[3]);
  * S = l1 + l2 + l3; all three 0 when S <= 0. cl + cp + cs = 1 when S > 0;
  * each is in [0, 1] for positive semi-definite tensors.
  */
-SPLINEVIZ_EXPORT void WestinMetrics(const double values[3], double& cl, double& cp, double& cs);
+SPLINEVIZCORE_EXPORT void WestinMetrics(const double values[3], double& cl, double& cp, double& cs);
 
 /// Policies for negative eigenvalues.
 enum SignPolicy
@@ -180,7 +180,7 @@ enum SignPolicy
  * by EigenDecomposition()). Returns false when the tensor is not to be shown.
  * The frame stays right-handed.
  */
-SPLINEVIZ_EXPORT bool ApplySignPolicy(int policy, double values[3], double vectors[3][3]);
+SPLINEVIZCORE_EXPORT bool ApplySignPolicy(int policy, double values[3], double vectors[3][3]);
 
 /**
  * Kindlmann's superquadric exponents. With cl, cp clamped to [0, 1]:
@@ -191,7 +191,7 @@ SPLINEVIZ_EXPORT bool ApplySignPolicy(int policy, double values[3], double vecto
  * other glyph axes, in their cyclic order) is
  * (|u|^(2/alpha) + |v|^(2/alpha))^(alpha/beta) + |w|^(2/beta) = 1.
  */
-SPLINEVIZ_EXPORT bool KindlmannShape(
+SPLINEVIZCORE_EXPORT bool KindlmannShape(
   double cl, double cp, double gamma, double minimumRoundness, double& alpha, double& beta);
 
 /**
@@ -205,7 +205,7 @@ SPLINEVIZ_EXPORT bool KindlmannShape(
  * definite triangle follows Westin's trace-normalized cl, cp (so that
  * definite glyphs equal KindlmannShape()'s); false gives the paper's.
  */
-SPLINEVIZ_EXPORT bool SchultzKindlmannSquare(
+SPLINEVIZCORE_EXPORT bool SchultzKindlmannSquare(
   const double values[3], bool traceNormalized, double uv[2]);
 
 /**
@@ -222,14 +222,14 @@ SPLINEVIZ_EXPORT bool SchultzKindlmannSquare(
  * definite tensors the result is KindlmannShape()'s (alpha, beta, beta) and
  * axis. T and -T give the same glyph.
  */
-SPLINEVIZ_EXPORT bool SchultzKindlmannShape(
+SPLINEVIZCORE_EXPORT bool SchultzKindlmannShape(
   const double values[3], double gamma, double minimumRoundness, double abc[3]);
 
 /**
  * t = sum_i values[i] vectors[i] vectors[i]^T (vectors[i] the unit
  * eigenvector of values[i], as returned by EigenDecomposition()).
  */
-SPLINEVIZ_EXPORT void FromEigenSystem(
+SPLINEVIZCORE_EXPORT void FromEigenSystem(
   const double values[3], const double vectors[3][3], double t[6]);
 
 /**
@@ -240,7 +240,7 @@ SPLINEVIZ_EXPORT void FromEigenSystem(
  * least minimumEigenvalue. Returns false (logT unspecified) when t has a
  * non-finite component or minimumEigenvalue is not a positive number.
  */
-SPLINEVIZ_EXPORT bool Log(const double t[6], double minimumEigenvalue, double logT[6]);
+SPLINEVIZCORE_EXPORT bool Log(const double t[6], double minimumEigenvalue, double logT[6]);
 
 /**
  * Matrix exponential of the symmetric tensor t (finite components):
@@ -248,7 +248,7 @@ SPLINEVIZ_EXPORT bool Log(const double t[6], double minimumEigenvalue, double lo
  * eigen-decomposition (exp l1 >= exp l2 >= exp l3 and the eigenvectors of t,
  * the same order and handedness as EigenDecomposition()).
  */
-SPLINEVIZ_EXPORT void Exp(
+SPLINEVIZCORE_EXPORT void Exp(
   const double t[6], double expT[6], double values[3] = nullptr, double vectors[3][3] = nullptr);
 }
 

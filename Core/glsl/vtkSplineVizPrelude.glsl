@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The GLSL side of the shared GLSL/C++ subset (the rules and the C++ side:
-// Filters/vtkSplineVizSharedGLSL.h). vtkSplineVizShaderPrelude::Get() puts it,
+// Core/vtkSplineVizSharedGLSL.h). vtkSplineVizShaderPrelude::Get() puts it,
 // with the common helpers, before the shared code of every shader that embeds
 // a *Shared.glsl file.
 #define real float

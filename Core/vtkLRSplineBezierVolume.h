@@ -27,7 +27,7 @@
 #ifndef vtkLRSplineBezierVolume_h
 #define vtkLRSplineBezierVolume_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizCoreModule.h" // for export macro
 #include "vtkType.h"
 
 #include <string>
@@ -35,7 +35,7 @@
 
 class vtkUnstructuredGrid;
 
-class SPLINEVIZ_EXPORT vtkLRSplineBezierVolume
+class SPLINEVIZCORE_EXPORT vtkLRSplineBezierVolume
 {
 public:
   /// Largest supported degree per direction.

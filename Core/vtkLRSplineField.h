@@ -28,7 +28,7 @@
 #ifndef vtkLRSplineField_h
 #define vtkLRSplineField_h
 
-#include "SplineVizModule.h" // for export macro
+#include "SplineVizCoreModule.h" // for export macro
 #include "vtkLRSplineEvaluator.h"
 #include "vtkLRSplineGeometryMap.h" // for DefaultSurfaceTolerance
 
@@ -43,7 +43,7 @@ class vtkInformationDataObjectKey;
 class vtkPointData;
 class vtkPolyData;
 
-class SPLINEVIZ_EXPORT vtkLRSplineField
+class SPLINEVIZCORE_EXPORT vtkLRSplineField
 {
 public:
   /**
