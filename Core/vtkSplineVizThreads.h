@@ -8,10 +8,11 @@
  * compiles the STDThread backend but selects Sequential unless the
  * environment variable VTK_SMP_BACKEND_IN_USE names another, and ParaView
  * 5.11 does not change it: in the ParaView GUI, pvpython or plain Python,
- * every vtkSMPTools loop would run on one core. When the SplineViz library
- * loads, UseAllCoresByDefault() therefore switches a process that runs the
- * Sequential default to STDThread, with one thread per core, or per core and
- * MPI rank on this node when the MPI launcher says how many ranks share it
+ * every vtkSMPTools loop would run on one core. When SplineViz::Core's
+ * library loads (every SplineViz module links it), UseAllCoresByDefault()
+ * therefore switches a process that runs the Sequential default to
+ * STDThread, with one thread per core, or per core and MPI rank on this node
+ * when the MPI launcher says how many ranks share it
  * (OMPI_COMM_WORLD_LOCAL_SIZE, MPI_LOCALNRANKS), so that ranks do not
  * oversubscribe the cores (one core per rank keeps Sequential).
  *
