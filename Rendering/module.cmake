@@ -73,6 +73,10 @@ list(APPEND splineviz_shaders
 # glsl/vtkLRSplineVolumeShared.glsl as C++).
 list(APPEND splineviz_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineVolumeMapper")
+# Its shader sources for a set of options, without OpenGL (as VTK's
+# vtkVolumeShaderComposer for the GPU ray caster).
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineVolumeShaderBuilder")
 list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkLRSplineVolumeMath.h")
 list(APPEND splineviz_shaders

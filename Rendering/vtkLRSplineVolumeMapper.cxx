@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineVolumeMapper.h"
 
-#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineField.h"
 #include "vtkLRSplineGeometryMap.h"
+#include "vtkLRSplineVolumeShaderBuilder.h"
 #include "vtkSplineVizGPUBuffer.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -11,18 +11,17 @@
 #include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkContourValues.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkExecutive.h"
-#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLCamera.h"
@@ -42,16 +41,8 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkTimeStamp.h"
-#include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-
-#include "vtkLRSplineVolumeCompositeFS.h"
-#include "vtkLRSplineVolumeFS.h"
-#include "vtkSplineVizShaderPrelude.h"
-#include "vtkLRSplineVolumeShared.h"
-#include "vtkLRSplineVolumeTrimFS.h"
-#include "vtkLRSplineVolumeVS.h"
 
 #include <vtk_glew.h>
 
@@ -86,10 +77,12 @@ void BindPositions(vtkSmartPointer<vtkOpenGLVertexArrayObject>& array, vtkShader
   }
 }
 
-constexpr int MaximumPatches = 16;
-constexpr int MaximumIsoValues = 8;
+// The limits the shaders are compiled for.
+constexpr int MaximumPatches = vtkLRSplineVolumeShaderBuilder::MaximumPatches;
+constexpr int MaximumIsoValues = vtkLRSplineVolumeShaderBuilder::MaximumIsoValues;
+constexpr int MaximumClipPlanes = vtkLRSplineVolumeShaderBuilder::MaximumClipPlanes;
+constexpr int MaximumLights = vtkLRSplineVolumeShaderBuilder::MaximumLights;
 constexpr int TransferFunctionSize = 1024;
-constexpr int MaximumClipPlanes = 6;
 
 // Per patch: what the shader needs to map data points to parameters and to
 // find elements.
@@ -121,48 +114,16 @@ void SetMatrix(vtkShaderProgram* program, const char* name, vtkMatrix4x4* m)
   program->SetUniformMatrix4x4(name, columnMajor);
 }
 
-// Collect the VTK_BEZIER_HEXAHEDRON grids (and tell what else was found).
-void CollectGrids(vtkDataObject* input, std::vector<vtkUnstructuredGrid*>& grids, bool& surface)
-{
-  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(input))
-  {
-    if (grid->GetNumberOfCells() > 0)
-    {
-      const int type = grid->GetCellType(0);
-      if (type == VTK_BEZIER_QUADRILATERAL || type == VTK_BEZIER_TRIANGLE ||
-        type == VTK_LAGRANGE_QUADRILATERAL || type == VTK_QUAD || type == VTK_TRIANGLE)
-      {
-        surface = true;
-      }
-      grids.push_back(grid);
-    }
-    return;
-  }
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      CollectGrids(it->GetCurrentDataObject(), grids, surface);
-    }
-    return;
-  }
-  if (input && input->IsA("vtkPolyData"))
-  {
-    surface = true;
-  }
-}
-
 // The lights (VTK's volume mappers sum them): every switched-on light,
 // directional (toward the light from its focal point; direction and
-// intensity times color), at most 8; none: a headlight.
+// intensity times color), at most MaximumLights; none: a headlight.
 std::vector<std::array<float, 6>> CollectLights(vtkRenderer* ren)
 {
   std::vector<std::array<float, 6>> lightList;
   vtkLightCollection* lights = ren->GetLights();
   lights->InitTraversal();
-  for (vtkLight* l = lights->GetNextItem(); l && lightList.size() < 8; l = lights->GetNextItem())
+  for (vtkLight* l = lights->GetNextItem(); l && static_cast<int>(lightList.size()) < MaximumLights;
+       l = lights->GetNextItem())
   {
     if (!l->GetSwitch() || !(l->GetIntensity() > 0))
     {
@@ -221,6 +182,8 @@ struct vtkLRSplineVolumeMapper::vtkInternals
   std::string SkipKey; // what the skip flags in Boxes were computed for
   vtkIdType SkippedElements = 0;
   vtkTimeStamp BuildTime;
+  // The shaders' sources for the current options.
+  vtkNew<vtkLRSplineVolumeShaderBuilder> Shaders;
 
   // GPU side.
   vtkOpenGLRenderWindow* Window = nullptr;
@@ -333,80 +296,6 @@ struct vtkLRSplineVolumeMapper::vtkInternals
     this->Window = nullptr;
   }
 
-  // The input holds 1 to MaximumPatches polynomial LR-spline volume patches
-  // with point data (else Fail()).
-  bool CheckInput(vtkDataObject* input)
-  {
-    std::vector<vtkUnstructuredGrid*> grids;
-    bool surface = false;
-    CollectGrids(input, grids, surface);
-    if (surface)
-    {
-      return this->Fail("the input is a surface (2D) spline or a polygonal data set: the volume "
-                        "mapper renders trivariate LR-spline volumes only");
-    }
-    if (grids.empty())
-    {
-      return this->Fail(std::string("the input (") + input->GetClassName() +
-        ") holds no LR-spline patch: expected the output of vtkLRSplineReader, a "
-        "vtkMultiBlockDataSet of VTK_BEZIER_HEXAHEDRON grids");
-    }
-    if (static_cast<int>(grids.size()) > MaximumPatches)
-    {
-      return this->Fail("the input has " + std::to_string(grids.size()) +
-        " patches; the volume mapper renders at most " + std::to_string(MaximumPatches));
-    }
-    for (std::size_t g = 0; g < grids.size(); ++g)
-    {
-      vtkPointData* pd = grids[g]->GetPointData();
-      vtkFieldData* fd = grids[g]->GetFieldData();
-      vtkDataArray* rational = fd ? fd->GetArray(vtkLRSplineArrayNames::Rational) : nullptr;
-      vtkDataArray* mode = fd ? fd->GetArray(vtkLRSplineArrayNames::Mode) : nullptr;
-      const bool geometryMode =
-        mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1;
-      // (Rational geometry maps are rendered by inversion, their fields as
-      // rational splines; a rational field over a parameter box is not.)
-      if (!geometryMode &&
-        (pd->GetRationalWeights() || pd->GetArray(vtkLRSplineArrayNames::RationalWeights) ||
-          (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0)))
-      {
-        return this->Fail("patch " + std::to_string(g) +
-          " is rational (it has rational weights): the volume mapper renders polynomial "
-          "LR splines only");
-      }
-      if (pd->GetNumberOfArrays() == 0)
-      {
-        return this->Fail("patch " + std::to_string(g) +
-          " has no point-data array: there is no scalar or vector field to render");
-      }
-    }
-    return true;
-  }
-
-  // The patches' common degrees (the largest per direction; patches of
-  // lower degree are raised exactly), at most 3 (else Fail()).
-  bool CommonDegrees(int degree[3])
-  {
-    degree[0] = degree[1] = degree[2] = 1;
-    for (int p = 0; p < this->Field.GetNumberOfPatches(); ++p)
-    {
-      const int* d = this->Field.GetPatch(p).GetVolume().Degree;
-      for (int k = 0; k < 3; ++k)
-      {
-        degree[k] = std::max(degree[k], d[k]);
-      }
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      if (degree[k] > 3)
-      {
-        return this->Fail("the spline has degree " + std::to_string(degree[k]) + " in direction " +
-          std::to_string(k) + "; the volume mapper renders degrees up to 3");
-      }
-    }
-    return true;
-  }
-
   // Element e of a patch (its Bezier volume at the common degree, the raised
   // homogeneous geometry of a curved patch) into the GPU arrays: its box
   // (curved: the physical box and shortest side), coefficients and value
@@ -504,14 +393,6 @@ struct vtkLRSplineVolumeMapper::vtkInternals
         return this->Fail("patch " + std::to_string(p) + ": degree elevation failed");
       }
       volume = &raised;
-    }
-    for (double c : volume->Coefficients)
-    {
-      if (!std::isfinite(c))
-      {
-        return this->Fail("patch " + std::to_string(p) + " has NaN or infinite coefficients in \"" +
-          this->Field.GetArrayName() + "\"");
-      }
     }
     // A curved patch: its geometry's Bezier coefficients follow the
     // field's per element, its search structure is the geometry map's.
@@ -754,25 +635,24 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   in.SkipKey.clear();
   in.BuildTime.Modified();
 
-  if (!in.CheckInput(input))
-  {
-    return done(false);
-  }
-
+  // The spline's checks (vtkLRSplineField): what the shaders can render.
+  vtkLRSplineField::Requirements needs;
+  needs.Consumer = "the volume mapper";
+  needs.Volume = true;
+  needs.MaximumPatches = MaximumPatches;
+  needs.PolynomialField = true;
+  needs.MaximumComponents = 3;
+  needs.MaximumDegree = 3;
+  needs.FiniteCoefficients = true;
   std::string message;
   const int blocks[3] = { this->ForestResolution, this->ForestResolution, this->ForestResolution };
   if (!in.Field.Build(input, this->FieldArray, this->ElementLocator,
-        this->ForestResolution > 0 ? blocks : nullptr, false, &message))
+        this->ForestResolution > 0 ? blocks : nullptr, needs, &message))
   {
     return done(in.Fail(message));
   }
   const int np = in.Field.GetNumberOfPatches();
   const int nc = in.Field.GetNumberOfComponents();
-  if (nc > 3)
-  {
-    return done(in.Fail("the field \"" + in.Field.GetArrayName() + "\" has " + std::to_string(nc) +
-      " components; the volume mapper renders scalars and 2- or 3-vectors"));
-  }
   if (this->VectorMode == COMPONENT && this->VectorComponent >= nc)
   {
     return done(in.Fail("VectorComponent " + std::to_string(this->VectorComponent) +
@@ -780,10 +660,7 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
   }
   // Common degrees (raised exactly to the largest per direction).
   int degree[3];
-  if (!in.CommonDegrees(degree))
-  {
-    return done(false);
-  }
+  in.Field.GetCommonDegrees(degree);
   std::copy(degree, degree + 3, in.Degree);
   in.NumberOfComponents = nc;
   in.Field.GetBounds(in.Bounds);
@@ -839,15 +716,12 @@ double* vtkLRSplineVolumeMapper::GetBounds()
 //------------------------------------------------------------------------------
 std::string vtkLRSplineVolumeMapper::GetVertexShaderSource()
 {
-  return vtkLRSplineVolumeVS;
+  return this->Internals->Shaders->GetVertexShaderSource();
 }
 
 std::string vtkLRSplineVolumeMapper::GetFragmentShaderSource()
 {
-  std::string fs = vtkLRSplineVolumeFS;
-  vtkShaderProgram::Substitute(fs, "//SV::Prelude::Dec", vtkSplineVizShaderPrelude::Get());
-  vtkShaderProgram::Substitute(fs, "//SV::LRSplineVolumeShared::Dec", vtkLRSplineVolumeShared);
-  return fs;
+  return this->Internals->Shaders->GetFragmentShaderTemplate();
 }
 
 //------------------------------------------------------------------------------
@@ -1149,8 +1023,10 @@ bool vtkLRSplineVolumeMapper::RenderTrimmingDepths(
     in.TrimArrayProgram = nullptr;
     in.TrimKey = key.str();
   }
+  const std::string vs = in.Shaders->GetVertexShaderSource();
+  const std::string fs = in.Shaders->GetTrimmingFragmentShaderSource();
   vtkShaderProgram* trimProgram =
-    window->GetShaderCache()->ReadyShaderProgram(vtkLRSplineVolumeVS, vtkLRSplineVolumeTrimFS, "");
+    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
   if (!trimProgram)
   {
     in.Error = "the trimming shader did not compile or link";
@@ -1372,33 +1248,6 @@ void vtkLRSplineVolumeMapper::DrawSinglePass()
 }
 
 //------------------------------------------------------------------------------
-std::string vtkLRSplineVolumeMapper::BuildFragmentShaderSource(
-  bool shade, bool multiPass, size_t numberOfLights)
-{
-  vtkInternals& in = *this->Internals;
-  std::string fs = this->GetFragmentShaderSource();
-  std::ostringstream defines;
-  defines << "//VTK::System::Dec\n"
-          << "#define LR_DU " << in.Degree[0] << "\n#define LR_DV " << in.Degree[1]
-          << "\n#define LR_DW " << in.Degree[2] << "\n#define LR_NC " << in.NumberOfComponents
-          << "\n#define LR_COMPONENT "
-          << (in.NumberOfComponents == 1
-                 ? 0
-                 : (this->VectorMode == COMPONENT ? this->VectorComponent : -1))
-          << "\n#define LR_BLEND " << this->BlendMode << "\n#define LR_SHADE " << (shade ? 1 : 0)
-          << "\n#define LR_FUCHS " << (this->ShadingModel == FUCHS ? 1 : 0) << "\n#define LR_TRIM "
-          << (this->GetTrimmingSurface() ? 1 : 0) << "\n#define LR_SAMPLE_COUNT "
-          << (this->CountSamples ? 1 : 0) << "\n#define LR_PATCHES " << in.Patches.size()
-          << "\n#define LR_CURVED " << (in.Curved ? 1 : 0) << "\n#define LR_MULTIPASS "
-          << (multiPass ? 1 : 0) << "\n#define LR_SUPERSAMPLING "
-          << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
-          << "\n#define LR_LIGHTS " << numberOfLights << "\n#define LR_MAX_PATCHES "
-          << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
-  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str());
-  return fs;
-}
-
-//------------------------------------------------------------------------------
 void vtkLRSplineVolumeMapper::UpdateProxyBox(const double box[6])
 {
   vtkInternals& in = *this->Internals;
@@ -1558,6 +1407,115 @@ void vtkLRSplineVolumeMapper::DeactivateTextures(bool trim)
 }
 
 //------------------------------------------------------------------------------
+vtkShaderProgram* vtkLRSplineVolumeMapper::ReadyProgram(
+  vtkOpenGLRenderWindow* window, bool shade, bool multiPass, int numberOfLights)
+{
+  // The options that change the shader text; the sources from the builder
+  // (through the virtual hooks, which tests override).
+  vtkInternals& in = *this->Internals;
+  vtkLRSplineVolumeShaderBuilder* shaders = in.Shaders;
+  shaders->SetDegree(in.Degree);
+  shaders->SetNumberOfComponents(in.NumberOfComponents);
+  shaders->SetVectorMode(this->VectorMode);
+  shaders->SetVectorComponent(this->VectorComponent);
+  shaders->SetNumberOfPatches(static_cast<int>(in.Patches.size()));
+  shaders->SetCurved(in.Curved);
+  shaders->SetBlendMode(this->BlendMode);
+  shaders->SetShade(shade);
+  shaders->SetFuchsShading(this->ShadingModel == FUCHS);
+  shaders->SetTrim(this->GetTrimmingSurface() != nullptr);
+  shaders->SetCountSamples(this->CountSamples);
+  shaders->SetMultiPass(multiPass);
+  shaders->SetSupersampling(this->Supersampling);
+  shaders->SetNumberOfLights(numberOfLights);
+  const std::string fs = shaders->BuildFragmentShaderSource(this->GetFragmentShaderSource());
+  const std::string vs = this->GetVertexShaderSource();
+  // A source that failed once is not compiled again every frame.
+  vtkShaderProgram* program = (vs + fs) == in.FailedShader
+    ? nullptr
+    : window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  if (!program)
+  {
+    in.FailedShader = vs + fs;
+    in.Error = "the volume shader did not compile or link (see the message above)";
+  }
+  return program;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::SetTransformUniforms(vtkShaderProgram* program,
+  vtkMatrix4x4* dataToWorld, vtkMatrix4x4* dataToClip, const int viewport[4], const double box[6])
+{
+  vtkNew<vtkMatrix4x4> clipToData;
+  vtkMatrix4x4::Invert(dataToClip, clipToData);
+  float a3[9], n3[9];
+  vtkNew<vtkMatrix3x3> linear, normal;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      linear->SetElement(r, c, dataToWorld->GetElement(r, c));
+    }
+  }
+  vtkMatrix3x3::Invert(linear, normal);
+  normal->Transpose();
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      // Column-major for GLSL.
+      a3[3 * c + r] = static_cast<float>(linear->GetElement(r, c));
+      n3[3 * c + r] = static_cast<float>(normal->GetElement(r, c));
+    }
+  }
+  SetMatrix(program, "lrMCDCMatrix", dataToClip);
+  SetMatrix(program, "lrDCMCMatrix", clipToData);
+  program->SetUniformMatrix3x3("lrDataToWorld", a3);
+  program->SetUniformMatrix3x3("lrNormalMatrix", n3);
+  const float viewportF[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
+    static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
+  program->SetUniform4f("lrViewport", viewportF);
+  const float boxLo[3] = { static_cast<float>(box[0]), static_cast<float>(box[1]),
+    static_cast<float>(box[2]) };
+  const float boxHi[3] = { static_cast<float>(box[3]), static_cast<float>(box[4]),
+    static_cast<float>(box[5]) };
+  program->SetUniform3f("lrBoxLo", boxLo);
+  program->SetUniform3f("lrBoxHi", boxHi);
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineVolumeMapper::SetSamplingUniforms(
+  vtkShaderProgram* program, vtkVolume* vol, bool multiPass, int stepsPerPass)
+{
+  double sampleDistance = 0.0;
+  const int maxSteps = this->ComputeStepCount(vol, sampleDistance);
+  program->SetUniformi("lrAdaptive", this->AdaptiveSteps ? 1 : 0);
+  program->SetUniformf("lrStepScale", static_cast<float>(this->StepScale));
+  program->SetUniformf("lrSampleDistance", static_cast<float>(sampleDistance));
+  // Mesa's llvmpipe ends a fragment's loops after 65,535 iterations in all
+  // (about 4,000 samples with the element look-up): say so, once per
+  // setting, when fixed steps need more (adaptive estimates are the worst
+  // case, finest everywhere, and rarely reached).
+  if (!multiPass && !this->AdaptiveSteps && maxSteps > 4000 && maxSteps != this->WarnedSteps)
+  {
+    // checked once per setting, not every frame
+    this->WarnedSteps = maxSteps;
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (renderer && std::string(renderer).find("llvmpipe") != std::string::npos)
+    {
+      vtkWarningMacro(<< "rays need up to " << maxSteps << " samples at SampleDistance "
+                      << sampleDistance
+                      << ", but Mesa's llvmpipe ends a fragment's loops after 65,535 "
+                         "iterations (about 4,000 samples): long rays are cut short; use a "
+                         "larger SampleDistance or adaptive steps");
+    }
+  }
+  program->SetUniformi("lrMaxSteps", multiPass ? stepsPerPass : maxSteps);
+  program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
+  return maxSteps;
+}
+
+//------------------------------------------------------------------------------
 void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   vtkInternals& in = *this->Internals;
@@ -1607,22 +1565,16 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   // The program.
   const bool shade = property->GetShade(0) != 0 && !this->CountSamples;
-  const std::string fs = this->BuildFragmentShaderSource(shade, multiPass, lightList.size());
-  const bool trim = fs.find("#define LR_TRIM 1") != std::string::npos;
-  const std::string vs = this->GetVertexShaderSource();
-  // A source that failed once is not compiled again every frame.
-  vtkShaderProgram* program = (vs + fs) == in.FailedShader
-    ? nullptr
-    : window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  vtkShaderProgram* program =
+    this->ReadyProgram(window, shade, multiPass, static_cast<int>(lightList.size()));
   if (!program)
   {
-    in.FailedShader = vs + fs;
-    in.Error = "the volume shader did not compile or link (see the message above)";
     report();
     return;
   }
+  const bool trim = in.Shaders->GetTrim();
 
-  // Matrices: data (the volume's model coordinates) to clip space and back.
+  // Matrices: data (the volume's model coordinates) to clip space.
   int viewport[4];
   ren->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
   if (viewport[2] < 1 || viewport[3] < 1)
@@ -1640,32 +1592,6 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   vtkMatrix4x4* dataToWorld = vol->GetMatrix();
   vtkNew<vtkMatrix4x4> dataToClip;
   vtkMatrix4x4::Multiply4x4(worldToClip, dataToWorld, dataToClip);
-  vtkNew<vtkMatrix4x4> clipToData;
-  vtkMatrix4x4::Invert(dataToClip, clipToData);
-  float a3[9], n3[9];
-  {
-    vtkNew<vtkMatrix3x3> linear, normal;
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        linear->SetElement(r, c, dataToWorld->GetElement(r, c));
-      }
-    }
-    vtkMatrix3x3::Invert(linear, normal);
-    normal->Transpose();
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        // Column-major for GLSL.
-        a3[3 * c + r] = static_cast<float>(linear->GetElement(r, c));
-        n3[3 * c + r] = static_cast<float>(normal->GetElement(r, c));
-      }
-    }
-  }
-
-  vtkOpenGLState* state = window->GetState();
 
   // The opaque geometry's depth (rays end there).
   this->CopyOpaqueDepth(viewport);
@@ -1683,50 +1609,10 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // Uniforms.
-  SetMatrix(program, "lrMCDCMatrix", dataToClip);
-  SetMatrix(program, "lrDCMCMatrix", clipToData);
-  program->SetUniformMatrix3x3("lrDataToWorld", a3);
-  program->SetUniformMatrix3x3("lrNormalMatrix", n3);
-  const float viewportF[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
-    static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
-  program->SetUniform4f("lrViewport", viewportF);
-  const float boxLo[3] = { static_cast<float>(box[0]), static_cast<float>(box[1]),
-    static_cast<float>(box[2]) };
-  const float boxHi[3] = { static_cast<float>(box[3]), static_cast<float>(box[4]),
-    static_cast<float>(box[5]) };
-  program->SetUniform3f("lrBoxLo", boxLo);
-  program->SetUniform3f("lrBoxHi", boxHi);
+  this->SetTransformUniforms(program, dataToWorld, dataToClip, viewport, box);
   this->SetPatchUniforms(program);
-
   this->SetClippingPlaneUniforms(program, dataToWorld);
-
-  // Sampling.
-  double sampleDistance = 0.0;
-  const int maxSteps = this->ComputeStepCount(vol, sampleDistance);
-  program->SetUniformi("lrAdaptive", this->AdaptiveSteps ? 1 : 0);
-  program->SetUniformf("lrStepScale", static_cast<float>(this->StepScale));
-  program->SetUniformf("lrSampleDistance", static_cast<float>(sampleDistance));
-  // Mesa's llvmpipe ends a fragment's loops after 65,535 iterations in all
-  // (about 4,000 samples with the element look-up): say so, once per
-  // setting, when fixed steps need more (adaptive estimates are the worst
-  // case, finest everywhere, and rarely reached).
-  if (!multiPass && !this->AdaptiveSteps && maxSteps > 4000 && maxSteps != this->WarnedSteps)
-  {
-    // checked once per setting, not every frame
-    this->WarnedSteps = maxSteps;
-    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (renderer && std::string(renderer).find("llvmpipe") != std::string::npos)
-    {
-      vtkWarningMacro(<< "rays need up to " << maxSteps << " samples at SampleDistance "
-                      << sampleDistance
-                      << ", but Mesa's llvmpipe ends a fragment's loops after 65,535 "
-                         "iterations (about 4,000 samples): long rays are cut short; use a "
-                         "larger SampleDistance or adaptive steps");
-    }
-  }
-  program->SetUniformi("lrMaxSteps", multiPass ? stepsPerPass : maxSteps);
-  program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
-
+  const int maxSteps = this->SetSamplingUniforms(program, vol, multiPass, stepsPerPass);
   this->SetShadingUniforms(program, property, lightList, isoValues);
 
   this->ActivateTextures(program, trim);
@@ -1937,7 +1823,7 @@ bool vtkLRSplineVolumeMapper::DrawPasses(vtkRenderer* ren, vtkShaderProgram* pro
 
   // The final colors (and isosurface depths) into the render target.
   const std::string vs = this->GetVertexShaderSource();
-  const std::string fs = vtkLRSplineVolumeCompositeFS;
+  const std::string fs = in.Shaders->GetCompositeFragmentShaderSource();
   vtkShaderProgram* composite =
     window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
   if (!composite)
