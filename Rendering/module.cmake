@@ -77,6 +77,10 @@ list(APPEND splineviz_classes
 # vtkVolumeShaderComposer for the GPU ray caster).
 list(APPEND splineviz_private_classes
   "${SPLINEVIZ_FOLDER}/vtkLRSplineVolumeShaderBuilder")
+# The spline as the flat arrays the mapper uploads, and the empty-space
+# skipping flags, without OpenGL.
+list(APPEND splineviz_private_classes
+  "${SPLINEVIZ_FOLDER}/vtkLRSplineVolumePreparer")
 list(APPEND splineviz_private_headers
   "${SPLINEVIZ_FOLDER}/vtkLRSplineVolumeMath.h")
 list(APPEND splineviz_shaders

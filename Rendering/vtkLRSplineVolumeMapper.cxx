@@ -2,7 +2,7 @@
 #include "vtkLRSplineVolumeMapper.h"
 
 #include "vtkLRSplineField.h"
-#include "vtkLRSplineGeometryMap.h"
+#include "vtkLRSplineVolumePreparer.h"
 #include "vtkLRSplineVolumeShaderBuilder.h"
 #include "vtkSplineVizGPUBuffer.h"
 
@@ -49,7 +49,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <sstream>
 #include <vector>
 
@@ -78,26 +77,10 @@ void BindPositions(vtkSmartPointer<vtkOpenGLVertexArrayObject>& array, vtkShader
 }
 
 // The limits the shaders are compiled for.
-constexpr int MaximumPatches = vtkLRSplineVolumeShaderBuilder::MaximumPatches;
 constexpr int MaximumIsoValues = vtkLRSplineVolumeShaderBuilder::MaximumIsoValues;
 constexpr int MaximumClipPlanes = vtkLRSplineVolumeShaderBuilder::MaximumClipPlanes;
 constexpr int MaximumLights = vtkLRSplineVolumeShaderBuilder::MaximumLights;
 constexpr int TransferFunctionSize = 1024;
-
-// Per patch: what the shader needs to map data points to parameters and to
-// find elements.
-struct PatchInfo
-{
-  float Lo[3], Hi[3];             // parameter domain
-  float Inverse[9];               // u = Inverse (x - offset), row-major
-  float Offset[3];                // x = A u + offset
-  float Edge[3];                  // |A e_d|: data length of a unit parameter step
-  float BoxLo[3], BoxHi[3];       // data box
-  int Blocks[3] = { 1, 1, 1 };    // forest resolution
-  int Starts[4] = { 0, 0, 0, 0 }; // heads, nodes, octree, first element
-  int Locator = 0;                // 0: forest-like, 1: octree
-  int Curved = 0;                 // 1: a curved geometry map (Lo/Hi: its physical domain)
-};
 
 // Set a GLSL mat4 from a row-major vtkMatrix4x4 (vtkShaderProgram uploads
 // the elements as they are, i.e. expects the transpose).
@@ -159,29 +142,14 @@ std::vector<std::array<float, 6>> CollectLights(vtkRenderer* ren)
 //------------------------------------------------------------------------------
 struct vtkLRSplineVolumeMapper::vtkInternals
 {
-  // CPU side, rebuilt when the input or the search settings change.
-  vtkLRSplineField Field;
-  std::string BuildKey;
+  // CPU side: the spline as flat arrays, rebuilt when the input or the
+  // search settings change (Valid: those and the mapper's options are fine).
+  vtkNew<vtkLRSplineVolumePreparer> Preparer;
   bool Valid = false;
   std::string Error;
   std::string ReportedError;
   std::string FailedShader;
   bool Quiet = false; // UpdateSpline() from GetBounds(): no error report
-  int Degree[3] = { 1, 1, 1 };
-  int NumberOfComponents = 1;
-  double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
-  double MinimumSide = 0.0; // data units
-  bool Curved = false;      // some patch has a curved geometry map
-  std::vector<PatchInfo> Patches;
-  std::vector<std::uint32_t> Heads, NodeWords, Octree, Offsets;
-  std::vector<float> NodeSplits, Boxes, Coefficients;
-  // Per element, the range of its Bezier coefficients (which bounds its
-  // values: convex hull property): per component, and bounds of the
-  // magnitude (2 values each).
-  std::vector<float> ComponentRanges, MagnitudeRanges;
-  std::string SkipKey; // what the skip flags in Boxes were computed for
-  vtkIdType SkippedElements = 0;
-  vtkTimeStamp BuildTime;
   // The shaders' sources for the current options.
   vtkNew<vtkLRSplineVolumeShaderBuilder> Shaders;
 
@@ -295,193 +263,6 @@ struct vtkLRSplineVolumeMapper::vtkInternals
     this->UploadTime = vtkTimeStamp();
     this->Window = nullptr;
   }
-
-  // Element e of a patch (its Bezier volume at the common degree, the raised
-  // homogeneous geometry of a curved patch) into the GPU arrays: its box
-  // (curved: the physical box and shortest side), coefficients and value
-  // ranges. `edge`: the patch's parameter-to-data scale per direction.
-  void AppendElement(const vtkLRSplineBezierVolume& volume, vtkIdType e,
-    const vtkLRSplineGeometryMap* geometryMap, const vtkLRSplineBezierVolume& geometryRaised,
-    const double edge[3], int per, int nc)
-  {
-    const double* b = volume.GetBox(e);
-    if (geometryMap)
-    {
-      // The physical box; its fourth value the element's shortest side
-      // (data units, > 0: marks a curved element).
-      const double* pb = geometryMap->GetPhysicalBox(e);
-      const double side = geometryMap->GetElementMinimumSide(e);
-      this->Boxes.insert(this->Boxes.end(),
-        { static_cast<float>(pb[0]), static_cast<float>(pb[1]), static_cast<float>(pb[2]), 0.0f,
-          static_cast<float>(pb[3]), static_cast<float>(pb[4]), static_cast<float>(pb[5]),
-          static_cast<float>(side) });
-      this->MinimumSide = std::min(this->MinimumSide, side);
-    }
-    else
-    {
-      this->Boxes.insert(this->Boxes.end(),
-        { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]), 0.0f,
-          static_cast<float>(b[3]), static_cast<float>(b[4]), static_cast<float>(b[5]), 0.0f });
-    }
-    this->Offsets.push_back(static_cast<std::uint32_t>(this->Coefficients.size()));
-    const double* c = volume.GetElementCoefficients(e);
-    for (int i = 0; i < per; ++i)
-    {
-      this->Coefficients.push_back(static_cast<float>(c[i]));
-    }
-    if (geometryMap)
-    {
-      const double* gc = geometryRaised.GetElementCoefficients(e);
-      const int gper = 4 * per / nc;
-      for (int i = 0; i < gper; ++i)
-      {
-        this->Coefficients.push_back(static_cast<float>(gc[i]));
-      }
-    }
-    // Coefficient ranges (the element's values lie within them). On a
-    // rational map the coefficients are w f: the ranges are of f.
-    const double* gw = geometryMap ? geometryRaised.GetElementCoefficients(e) + 3 : nullptr;
-    auto coefficient = [&](int i) { return gw ? c[i] / gw[4 * (i / nc)] : c[i]; };
-    double magnitudeLow = 0.0, magnitudeHigh = 0.0;
-    for (int comp = 0; comp < nc; ++comp)
-    {
-      double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
-      for (int i = comp; i < per; i += nc)
-      {
-        lo = std::min(lo, coefficient(i));
-        hi = std::max(hi, coefficient(i));
-      }
-      this->ComponentRanges.push_back(static_cast<float>(lo));
-      this->ComponentRanges.push_back(static_cast<float>(hi));
-      magnitudeLow = std::max(magnitudeLow, lo > 0 ? lo : (hi < 0 ? -hi : 0.0));
-    }
-    for (int i = 0; i < per; i += nc)
-    {
-      double m2 = 0.0;
-      for (int comp = 0; comp < nc; ++comp)
-      {
-        m2 += coefficient(i + comp) * coefficient(i + comp);
-      }
-      magnitudeHigh = std::max(magnitudeHigh, std::sqrt(m2));
-    }
-    this->MagnitudeRanges.push_back(static_cast<float>(magnitudeLow));
-    this->MagnitudeRanges.push_back(static_cast<float>(magnitudeHigh));
-    for (int k = 0; k < 3 && !geometryMap; ++k)
-    {
-      this->MinimumSide = std::min(this->MinimumSide, (b[k + 3] - b[k]) * edge[k]);
-    }
-  }
-
-  // Patch p of the field into the GPU arrays (its search structure, element
-  // boxes, coefficients at the common degree) and Patches; `kdLocator`: the
-  // mapper's locator is a k-d forest or tree (curved patches need one);
-  // firstElement advances past its elements. False (Fail()) on a bad patch.
-  bool FlattenPatch(int p, const int degree[3], int nc, bool kdLocator, vtkIdType& firstElement)
-  {
-    const int per = (degree[0] + 1) * (degree[1] + 1) * (degree[2] + 1) * nc;
-    const vtkLRSplineEvaluator& patch = this->Field.GetPatch(p);
-    const vtkLRSplineElementLocator& locator = patch.GetLocator();
-    const vtkLRSplineBezierVolume* volume = &patch.GetVolume();
-    vtkLRSplineBezierVolume raised;
-    if (volume->Degree[0] != degree[0] || volume->Degree[1] != degree[1] ||
-      volume->Degree[2] != degree[2])
-    {
-      raised = *volume;
-      raised.CoefficientsFloat.clear();
-      if (!raised.ElevateDegree(degree))
-      {
-        return this->Fail("patch " + std::to_string(p) + ": degree elevation failed");
-      }
-      volume = &raised;
-    }
-    // A curved patch: its geometry's Bezier coefficients follow the
-    // field's per element, its search structure is the geometry map's.
-    const vtkLRSplineGeometryMap* geometryMap = patch.GetGeometry();
-    vtkLRSplineBezierVolume geometryRaised;
-    if (geometryMap)
-    {
-      if (!kdLocator)
-      {
-        return this->Fail("patch " + std::to_string(p) +
-          " has a curved geometry: its elements are found with a k-d forest or tree, not the " +
-          "octree or the look-up texture");
-      }
-      geometryRaised = geometryMap->GetVolume();
-      geometryRaised.CoefficientsFloat.clear();
-      if (geometryRaised.NumberOfComponents == 3)
-      {
-        // The shader reads homogeneous coefficients (w x, w y, w z, w).
-        std::vector<double> h(geometryRaised.Coefficients.size() / 3 * 4);
-        for (std::size_t k = 0; k < h.size() / 4; ++k)
-        {
-          std::copy(&geometryRaised.Coefficients[3 * k], &geometryRaised.Coefficients[3 * k] + 3,
-            &h[4 * k]);
-          h[4 * k + 3] = 1.0;
-        }
-        geometryRaised.Coefficients.swap(h);
-        geometryRaised.NumberOfComponents = 4;
-      }
-      if (!geometryRaised.ElevateDegree(degree))
-      {
-        return this->Fail("patch " + std::to_string(p) + ": the geometry's degree is too high");
-      }
-      this->Curved = true;
-    }
-    const vtkLRSplineElementLocator& search = geometryMap ? geometryMap->GetLocator() : locator;
-    PatchInfo info;
-    info.Curved = geometryMap ? 1 : 0;
-    const double* domain = search.GetDomain();
-    const double* A = patch.GetMatrix();
-    const double* inverse = patch.GetInverseMatrix();
-    const double* offset = patch.GetOffset();
-    double patchBounds[6];
-    patch.GetBounds(patchBounds);
-    double edge[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      edge[k] = std::sqrt(A[k] * A[k] + A[3 + k] * A[3 + k] + A[6 + k] * A[6 + k]);
-      info.Lo[k] = static_cast<float>(domain[k]);
-      info.Hi[k] = static_cast<float>(domain[k + 3]);
-      info.Offset[k] = static_cast<float>(offset[k]);
-      info.Edge[k] = static_cast<float>(edge[k]);
-      info.BoxLo[k] = static_cast<float>(patchBounds[2 * k]);
-      info.BoxHi[k] = static_cast<float>(patchBounds[2 * k + 1]);
-    }
-    for (int k = 0; k < 9; ++k)
-    {
-      info.Inverse[k] = static_cast<float>(inverse[k]);
-    }
-    info.Starts[0] = static_cast<int>(this->Heads.size());
-    info.Starts[1] = static_cast<int>(this->NodeWords.size());
-    info.Starts[2] = static_cast<int>(this->Octree.size());
-    info.Starts[3] = static_cast<int>(firstElement);
-    if (search.GetType() == vtkLRSplineElementLocator::OCTREE)
-    {
-      info.Locator = 1;
-      const auto& oct = search.GetOctreeNodes();
-      this->Octree.insert(this->Octree.end(), oct.begin(), oct.end());
-    }
-    else
-    {
-      info.Locator = 0;
-      const int* nb = search.GetNumberOfBlocks();
-      std::copy(nb, nb + 3, info.Blocks);
-      const auto& heads = search.GetHeads();
-      const auto& words = search.GetNodeWords();
-      const std::vector<float> splits = search.GetNodeSplitsFloat();
-      this->Heads.insert(this->Heads.end(), heads.begin(), heads.end());
-      this->NodeWords.insert(this->NodeWords.end(), words.begin(), words.end());
-      this->NodeSplits.insert(this->NodeSplits.end(), splits.begin(), splits.end());
-    }
-    const vtkIdType ne = volume->GetNumberOfElements();
-    for (vtkIdType e = 0; e < ne; ++e)
-    {
-      this->AppendElement(*volume, e, geometryMap, geometryRaised, edge, per, nc);
-    }
-    firstElement += ne;
-    this->Patches.push_back(info);
-    return true;
-  }
 };
 
 //------------------------------------------------------------------------------
@@ -556,12 +337,12 @@ vtkPolyData* vtkLRSplineVolumeMapper::GetTrimmingSurface()
 //------------------------------------------------------------------------------
 vtkIdType vtkLRSplineVolumeMapper::GetNumberOfElements()
 {
-  return this->Internals->Valid ? this->Internals->Field.GetNumberOfElements() : 0;
+  return this->Internals->Valid ? this->Internals->Preparer->GetNumberOfElements() : 0;
 }
 
 vtkIdType vtkLRSplineVolumeMapper::GetNumberOfSkippedElements()
 {
-  return this->Internals->Valid ? this->Internals->SkippedElements : 0;
+  return this->Internals->Valid ? this->Internals->Preparer->GetNumberOfSkippedElements() : 0;
 }
 
 const char* vtkLRSplineVolumeMapper::GetLastErrorMessage()
@@ -585,9 +366,7 @@ size_t vtkLRSplineVolumeMapper::GetGPUMemorySize()
     return 0;
   }
   // Not uploaded yet: what the upload will hold.
-  return 4 *
-    (in.Heads.size() + in.NodeWords.size() + in.Octree.size() + in.Offsets.size() +
-      in.NodeSplits.size() + in.Boxes.size() + in.Coefficients.size());
+  return in.Preparer->GetNumberOfBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -607,90 +386,32 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     }
     return ok;
   };
+  vtkLRSplineVolumePreparer* preparer = in.Preparer;
   if (!input)
   {
-    in.BuildKey.clear();
+    preparer->Reset();
     return done(in.Fail("no input: connect the output of vtkLRSplineReader (or a "
                         "vtkLRSplineImageFitter) to the mapper"));
   }
-  std::ostringstream key;
-  key << input << ' ' << input->GetMTime() << ' ' << (this->FieldArray ? this->FieldArray : "")
-      << ' ' << this->ElementLocator << ' ' << this->ForestResolution;
-  if (key.str() == in.BuildKey)
+  // The field built, checked (its Requirements) and flattened into the
+  // arrays to upload, once per input and search settings.
+  const vtkMTimeType built = preparer->GetBuildTime();
+  if (!preparer->Update(input, this->FieldArray, this->ElementLocator, this->ForestResolution))
   {
-    return done(in.Valid);
+    return done(in.Fail(preparer->GetErrorMessage()));
   }
-  in.BuildKey = key.str();
-  in.Valid = false;
-  in.Patches.clear();
-  in.Heads.clear();
-  in.NodeWords.clear();
-  in.NodeSplits.clear();
-  in.Octree.clear();
-  in.Boxes.clear();
-  in.Offsets.clear();
-  in.Coefficients.clear();
-  in.ComponentRanges.clear();
-  in.MagnitudeRanges.clear();
-  in.SkipKey.clear();
-  in.BuildTime.Modified();
-
-  // The spline's checks (vtkLRSplineField): what the shaders can render.
-  vtkLRSplineField::Requirements needs;
-  needs.Consumer = "the volume mapper";
-  needs.Volume = true;
-  needs.MaximumPatches = MaximumPatches;
-  needs.PolynomialField = true;
-  needs.MaximumComponents = 3;
-  needs.MaximumDegree = 3;
-  needs.FiniteCoefficients = true;
-  std::string message;
-  const int blocks[3] = { this->ForestResolution, this->ForestResolution, this->ForestResolution };
-  if (!in.Field.Build(input, this->FieldArray, this->ElementLocator,
-        this->ForestResolution > 0 ? blocks : nullptr, needs, &message))
-  {
-    return done(in.Fail(message));
-  }
-  const int np = in.Field.GetNumberOfPatches();
-  const int nc = in.Field.GetNumberOfComponents();
+  const int nc = preparer->GetNumberOfComponents();
   if (this->VectorMode == COMPONENT && this->VectorComponent >= nc)
   {
     return done(in.Fail("VectorComponent " + std::to_string(this->VectorComponent) +
       " does not exist: the field has " + std::to_string(nc) + " components"));
   }
-  // Common degrees (raised exactly to the largest per direction).
-  int degree[3];
-  in.Field.GetCommonDegrees(degree);
-  std::copy(degree, degree + 3, in.Degree);
-  in.NumberOfComponents = nc;
-  in.Field.GetBounds(in.Bounds);
-  in.MinimumSide = VTK_DOUBLE_MAX;
-  in.Curved = false;
-
-  // Flatten every patch into the GPU arrays.
-  const int per = (degree[0] + 1) * (degree[1] + 1) * (degree[2] + 1) * nc;
-  const vtkIdType totalElements = in.Field.GetNumberOfElements();
-  const double coefficientCount = static_cast<double>(totalElements) * per;
-  if (coefficientCount > 2.0e9)
+  if (!in.Valid || preparer->GetBuildTime() != built)
   {
-    return done(in.Fail("the spline has " + std::to_string(totalElements) +
-      " elements: too many coefficients for the GPU buffers (limit 2^31)"));
+    in.Valid = true;
+    in.Error.clear();
+    in.ReportedError.clear();
   }
-  in.Coefficients.reserve(static_cast<std::size_t>(coefficientCount));
-  in.Boxes.reserve(static_cast<std::size_t>(8 * totalElements));
-  in.Offsets.reserve(static_cast<std::size_t>(totalElements));
-  vtkIdType firstElement = 0;
-  for (int p = 0; p < np; ++p)
-  {
-    if (!in.FlattenPatch(p, degree, nc,
-          this->ElementLocator != OCTREE && this->ElementLocator != TEXTURE, firstElement))
-    {
-      return done(false);
-    }
-  }
-  in.Valid = true;
-  in.Error.clear();
-  in.ReportedError.clear();
   return done(true);
 }
 
@@ -704,7 +425,8 @@ double* vtkLRSplineVolumeMapper::GetBounds()
   this->Internals->Quiet = false;
   if (this->Internals->Valid)
   {
-    std::copy(this->Internals->Bounds, this->Internals->Bounds + 6, this->Bounds);
+    const double* bounds = this->Internals->Preparer->GetBounds();
+    std::copy(bounds, bounds + 6, this->Bounds);
   }
   else
   {
@@ -734,42 +456,47 @@ void vtkLRSplineVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 bool vtkLRSplineVolumeMapper::UploadSpline(vtkOpenGLRenderWindow* window)
 {
   vtkInternals& in = *this->Internals;
-  // The spline's data on the GPU, once per change.
-  if (in.UploadTime < in.BuildTime)
+  const vtkLRSplineVolumePreparer* prep = in.Preparer;
+  // The spline's data on the GPU, once per change (a failure builds it again).
+  if (in.UploadTime.GetMTime() < prep->GetBuildTime())
   {
+    const auto& heads = prep->GetHeads();
+    const auto& words = prep->GetNodeWords();
+    const auto& splits = prep->GetNodeSplits();
+    const auto& octree = prep->GetOctree();
+    const auto& boxes = prep->GetBoxes();
+    const auto& offsets = prep->GetOffsets();
+    const auto& coefficients = prep->GetCoefficients();
     // One message for the whole spline before any upload (the buffers would
     // each refuse their own part).
     const std::size_t maxTexels = vtkSplineVizGPUBuffer::GetMaximumNumberOfTexels(window);
-    const std::size_t largest = std::max({ in.Coefficients.size(), in.Boxes.size() / 4,
-      in.NodeWords.size(), in.Heads.size(), in.Octree.size() });
+    const std::size_t largest = std::max(
+      { coefficients.size(), boxes.size() / 4, words.size(), heads.size(), octree.size() });
     if (largest > maxTexels)
     {
       in.Fail("the spline needs a buffer texture of " + std::to_string(largest) +
         " texels; this OpenGL allows " + std::to_string(maxTexels));
-      in.BuildKey.clear();
+      in.Preparer->Reset();
       return false;
     }
-    bool ok = in.HeadsBuffer.Upload(
-                window, in.Heads.data(), in.Heads.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+    bool ok =
+      in.HeadsBuffer.Upload(window, heads.data(), heads.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
       in.NodeWordsBuffer.Upload(
-        window, in.NodeWords.data(), in.NodeWords.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
-      in.NodeSplitsBuffer.Upload(
-        window, in.NodeSplits.data(), in.NodeSplits.size(), 1, VTK_FLOAT, GL_R32F) &&
-      in.OctreeBuffer.Upload(
-        window, in.Octree.data(), in.Octree.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
-      in.BoxesBuffer.Upload(
-        window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F) &&
+        window, words.data(), words.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+      in.NodeSplitsBuffer.Upload(window, splits.data(), splits.size(), 1, VTK_FLOAT, GL_R32F) &&
+      in.OctreeBuffer.Upload(window, octree.data(), octree.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+      in.BoxesBuffer.Upload(window, boxes.data(), boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F) &&
       in.OffsetsBuffer.Upload(
-        window, in.Offsets.data(), in.Offsets.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+        window, offsets.data(), offsets.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
       in.CoefficientsBuffer.Upload(
-        window, in.Coefficients.data(), in.Coefficients.size(), 1, VTK_FLOAT, GL_R32F);
+        window, coefficients.data(), coefficients.size(), 1, VTK_FLOAT, GL_R32F);
     if (!ok)
     {
       in.Fail("the spline's data could not be uploaded to the GPU: " +
         vtkSplineVizGPUBuffer::FirstUploadError(
           { &in.HeadsBuffer, &in.NodeWordsBuffer, &in.NodeSplitsBuffer, &in.OctreeBuffer,
             &in.BoxesBuffer, &in.OffsetsBuffer, &in.CoefficientsBuffer }));
-      in.BuildKey.clear();
+      in.Preparer->Reset();
       return false;
     }
     in.UploadTime.Modified();
@@ -896,82 +623,77 @@ bool vtkLRSplineVolumeMapper::UpdateEmptySpaceSkipping(
   vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, const std::vector<float>& isoValues)
 {
   vtkInternals& in = *this->Internals;
+  vtkLRSplineVolumePreparer* prep = in.Preparer;
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   // Empty-space skipping: flag the elements whose coefficient range (which
   // bounds their values) maps to zero opacity (composite) or holds no iso
   // value (isosurfaces); the rays jump over them. Recomputed when the
-  // transfer function, the iso values, the blend or vector mode change.
+  // spline, the transfer function, the iso values, the blend or vector mode
+  // change.
+  std::ostringstream key;
+  key << prep->GetBuildTime() << ' ' << in.TransferKey << ' ' << this->BlendMode << ' '
+      << this->VectorMode << ' ' << this->VectorComponent << ' ' << this->EmptySpaceSkipping;
+  for (float v : isoValues)
   {
-    std::ostringstream key;
-    key << in.BuildTime.GetMTime() << ' ' << in.TransferKey << ' ' << this->BlendMode << ' '
-        << this->VectorMode << ' ' << this->VectorComponent << ' ' << this->EmptySpaceSkipping;
+    key << ' ' << v;
+  }
+  if (key.str() == prep->GetSkipKey())
+  {
+    return true;
+  }
+  const int component = this->VectorMode == MAGNITUDE ? -1 : this->VectorComponent;
+  const bool skipping = this->EmptySpaceSkipping &&
+    (this->BlendMode == COMPOSITE_BLEND || this->BlendMode == ISOSURFACE_BLEND);
+  if (!skipping)
+  {
+    prep->UpdateSkipFlags(component, [](double, double) { return false; });
+  }
+  else if (this->BlendMode == COMPOSITE_BLEND)
+  {
+    // Values are looked up in a linearly filtered table: widen by a texel.
+    const double t0 = in.TransferRange[0], t1 = in.TransferRange[1];
+    const double texel = (t1 - t0) / (TransferFunctionSize - 1);
+    prep->UpdateSkipFlags(component,
+      [&](double lo, double hi)
+      {
+        const double a = std::max(lo - texel, t0);
+        const double b = std::min(hi + texel, t1);
+        // Outside the table's range the end values hold (clamping).
+        double maxOpacity = opacity->GetValue(std::min(std::max(a, t0), t1));
+        maxOpacity = std::max(maxOpacity, opacity->GetValue(std::max(std::min(b, t1), t0)));
+        double node[4];
+        for (int i = 0; i < opacity->GetSize(); ++i)
+        {
+          opacity->GetNodeValue(i, node);
+          if (node[0] > a && node[0] < b)
+          {
+            maxOpacity = std::max(maxOpacity, node[1]);
+          }
+        }
+        return a <= b && maxOpacity <= 0.0;
+      });
+  }
+  else
+  {
+    // Isosurfaces: only the elements whose range holds an iso value.
+    std::vector<std::array<double, 2>> visible;
     for (float v : isoValues)
     {
-      key << ' ' << v;
+      visible.push_back({ v, v });
     }
-    if (key.str() != in.SkipKey)
+    prep->UpdateSkipFlags(component, visible);
+  }
+  if (in.UploadTime.GetMTime() > 0)
+  {
+    const auto& boxes = prep->GetBoxes();
+    if (!in.BoxesBuffer.Upload(window, boxes.data(), boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F))
     {
-      const vtkIdType ne = static_cast<vtkIdType>(in.Offsets.size());
-      const int nc = in.NumberOfComponents;
-      const bool magnitude = nc > 1 && this->VectorMode == MAGNITUDE;
-      const int comp = nc == 1 ? 0 : this->VectorComponent;
-      // Values are looked up in a linearly filtered table: widen by a texel.
-      const double texel = (in.TransferRange[1] - in.TransferRange[0]) / (TransferFunctionSize - 1);
-      const bool skipping = this->EmptySpaceSkipping &&
-        (this->BlendMode == COMPOSITE_BLEND || this->BlendMode == ISOSURFACE_BLEND);
-      vtkIdType skipped = 0;
-      for (vtkIdType e = 0; e < ne; ++e)
-      {
-        const float* r =
-          magnitude ? &in.MagnitudeRanges[2 * e] : &in.ComponentRanges[2 * (nc * e + comp)];
-        bool skip = false;
-        if (skipping && this->BlendMode == COMPOSITE_BLEND)
-        {
-          const double a = std::max(static_cast<double>(r[0]) - texel, in.TransferRange[0]);
-          const double b = std::min(static_cast<double>(r[1]) + texel, in.TransferRange[1]);
-          // Outside the table's range the end values hold (clamping).
-          double maxOpacity =
-            opacity->GetValue(std::min(std::max(a, in.TransferRange[0]), in.TransferRange[1]));
-          maxOpacity = std::max(maxOpacity,
-            opacity->GetValue(std::max(std::min(b, in.TransferRange[1]), in.TransferRange[0])));
-          double node[4];
-          for (int i = 0; i < opacity->GetSize(); ++i)
-          {
-            opacity->GetNodeValue(i, node);
-            if (node[0] > a && node[0] < b)
-            {
-              maxOpacity = std::max(maxOpacity, node[1]);
-            }
-          }
-          skip = a <= b && maxOpacity <= 0.0;
-        }
-        else if (skipping)
-        {
-          skip = true;
-          for (float v : isoValues)
-          {
-            skip = skip && !(v >= r[0] && v <= r[1]);
-          }
-        }
-        // (Curved elements are never skipped: the jump to an element's
-        // exit is computed for parameter boxes.)
-        skip = skip && in.Boxes[8 * e + 7] == 0.0f;
-        in.Boxes[8 * e + 3] = skip ? 1.0f : 0.0f;
-        skipped += skip ? 1 : 0;
-      }
-      in.SkippedElements = skipped;
-      if (in.UploadTime.GetMTime() > 0 &&
-        !in.BoxesBuffer.Upload(
-          window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F))
-      {
-        in.Error = "the spline's element boxes could not be uploaded to the GPU: " +
-          in.BoxesBuffer.GetLastUploadError();
-        return false;
-      }
-      in.SkipKey = key.str();
+      in.Error = "the spline's element boxes could not be uploaded to the GPU: " +
+        in.BoxesBuffer.GetLastUploadError();
+      return false;
     }
   }
-
+  prep->SetSkipKey(key.str());
   return true;
 }
 
@@ -1164,11 +886,12 @@ void vtkLRSplineVolumeMapper::SetPatchUniforms(vtkShaderProgram* program)
 {
   // Per patch: its parameter domain (curved: physical), the map to it, its
   // box, and where its search structure and elements start.
-  vtkInternals& in = *this->Internals;
-  const int np = static_cast<int>(in.Patches.size());
+  const vtkLRSplineVolumePreparer* prep = this->Internals->Preparer;
+  const std::vector<vtkLRSplineVolumePreparer::PatchInfo>& patches = prep->GetPatches();
+  const int np = static_cast<int>(patches.size());
   std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
   std::vector<int> blocks, starts, locators, curved;
-  for (const PatchInfo& p : in.Patches)
+  for (const vtkLRSplineVolumePreparer::PatchInfo& p : patches)
   {
     lo.insert(lo.end(), p.Lo, p.Lo + 3);
     hi.insert(hi.end(), p.Hi, p.Hi + 3);
@@ -1194,7 +917,7 @@ void vtkLRSplineVolumeMapper::SetPatchUniforms(vtkShaderProgram* program)
     {
       for (int c = 0; c < 3; ++c)
       {
-        columns[3 * c + r] = in.Patches[p].Inverse[3 * r + c];
+        columns[3 * c + r] = patches[p].Inverse[3 * r + c];
       }
     }
     program->SetUniformMatrix3x3(("lrPatchInverse[" + std::to_string(p) + "]").c_str(), columns);
@@ -1205,10 +928,10 @@ void vtkLRSplineVolumeMapper::SetPatchUniforms(vtkShaderProgram* program)
   program->SetUniform1iv("lrPatchBlocks", 3 * np, blocks.data());
   program->SetUniform1iv("lrPatchStarts", 4 * np, starts.data());
   program->SetUniform1iv("lrPatchLocator", np, locators.data());
-  if (in.Curved)
+  if (prep->GetCurved())
   {
     program->SetUniform1iv("lrPatchCurved", np, curved.data());
-    program->SetUniformf("lrMinimumSide", static_cast<float>(in.MinimumSide));
+    program->SetUniformf("lrMinimumSide", static_cast<float>(prep->GetMinimumSide()));
   }
 }
 
@@ -1414,12 +1137,13 @@ vtkShaderProgram* vtkLRSplineVolumeMapper::ReadyProgram(
   // (through the virtual hooks, which tests override).
   vtkInternals& in = *this->Internals;
   vtkLRSplineVolumeShaderBuilder* shaders = in.Shaders;
-  shaders->SetDegree(in.Degree);
-  shaders->SetNumberOfComponents(in.NumberOfComponents);
+  const vtkLRSplineVolumePreparer* prep = in.Preparer;
+  shaders->SetDegree(prep->GetDegree());
+  shaders->SetNumberOfComponents(prep->GetNumberOfComponents());
   shaders->SetVectorMode(this->VectorMode);
   shaders->SetVectorComponent(this->VectorComponent);
-  shaders->SetNumberOfPatches(static_cast<int>(in.Patches.size()));
-  shaders->SetCurved(in.Curved);
+  shaders->SetNumberOfPatches(prep->GetNumberOfPatches());
+  shaders->SetCurved(prep->GetCurved());
   shaders->SetBlendMode(this->BlendMode);
   shaders->SetShade(shade);
   shaders->SetFuchsShading(this->ShadingModel == FUCHS);
@@ -1557,7 +1281,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   int stepsPerPass = this->MaximumStepsPerPass;
   if (stepsPerPass <= 0)
   {
-    stepsPerPass = in.Curved ? 400 : 2000;
+    stepsPerPass = in.Preparer->GetCurved() ? 400 : 2000;
   }
   double unusedDistance = 0.0;
   const bool multiPass =
@@ -1597,8 +1321,8 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   this->CopyOpaqueDepth(viewport);
 
   // The proxy box (the union of the patches' boxes).
-  double box[6] = { in.Bounds[0], in.Bounds[2], in.Bounds[4], in.Bounds[1], in.Bounds[3],
-    in.Bounds[5] };
+  const double* bounds = in.Preparer->GetBounds();
+  double box[6] = { bounds[0], bounds[2], bounds[4], bounds[1], bounds[3], bounds[5] };
   this->UpdateProxyBox(box);
 
   // Trimming: the nearest front faces and the farthest back faces.
@@ -1646,9 +1370,9 @@ int vtkLRSplineVolumeMapper::GetNumberOfPasses()
 //------------------------------------------------------------------------------
 int vtkLRSplineVolumeMapper::ComputeStepCount(vtkVolume* vol, double& sampleDistance)
 {
-  vtkInternals& in = *this->Internals;
-  const double box[6] = { in.Bounds[0], in.Bounds[2], in.Bounds[4], in.Bounds[1], in.Bounds[3],
-    in.Bounds[5] };
+  const vtkLRSplineVolumePreparer* prep = this->Internals->Preparer;
+  const double* bounds = prep->GetBounds();
+  const double box[6] = { bounds[0], bounds[2], bounds[4], bounds[1], bounds[3], bounds[5] };
   vtkMatrix4x4* dataToWorld = vol->GetMatrix();
   // The box's diagonal in world units.
   double diagonal = 0.0;
@@ -1677,12 +1401,13 @@ int vtkLRSplineVolumeMapper::ComputeStepCount(vtkVolume* vol, double& sampleDist
     dataDiagonal += (box[d + 3] - box[d]) * (box[d + 3] - box[d]);
   }
   dataDiagonal = std::sqrt(dataDiagonal);
-  const int maxDegree = std::max(in.Degree[0], std::max(in.Degree[1], in.Degree[2]));
+  const int* degree = prep->GetDegree();
+  const int maxDegree = std::max(degree[0], std::max(degree[1], degree[2]));
   const double steps = this->AdaptiveSteps
-    ? dataDiagonal / (this->StepScale * in.MinimumSide / (1 << maxDegree))
+    ? dataDiagonal / (this->StepScale * prep->GetMinimumSide() / (1 << maxDegree))
     : diagonal / sampleDistance;
-  return static_cast<int>(
-    std::min(1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
+  return static_cast<int>(std::min(
+    1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(prep->GetNumberOfPatches())));
 }
 
 //------------------------------------------------------------------------------
