@@ -33,12 +33,22 @@ using vtkSplineVizError::Fail;
 
 namespace
 {
-void CollectGrids(vtkDataObject* obj, std::vector<vtkUnstructuredGrid*>& grids)
+// The non-empty grids of `obj`; `surface` (may be null) set when a grid of
+// surface cells or a polygonal data set is found.
+void CollectGrids(
+  vtkDataObject* obj, std::vector<vtkUnstructuredGrid*>& grids, bool* surface = nullptr)
 {
   if (auto* ug = vtkUnstructuredGrid::SafeDownCast(obj))
   {
     if (ug->GetNumberOfCells() > 0)
     {
+      const int type = ug->GetCellType(0);
+      if (surface &&
+        (type == VTK_BEZIER_QUADRILATERAL || type == VTK_BEZIER_TRIANGLE ||
+          type == VTK_LAGRANGE_QUADRILATERAL || type == VTK_QUAD || type == VTK_TRIANGLE))
+      {
+        *surface = true;
+      }
       grids.push_back(ug);
     }
     return;
@@ -50,9 +60,62 @@ void CollectGrids(vtkDataObject* obj, std::vector<vtkUnstructuredGrid*>& grids)
     it->SkipEmptyNodesOn();
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
-      CollectGrids(it->GetCurrentDataObject(), grids);
+      CollectGrids(it->GetCurrentDataObject(), grids, surface);
+    }
+    return;
+  }
+  if (surface && obj && obj->IsA("vtkPolyData"))
+  {
+    *surface = true;
+  }
+}
+
+// The requirements that are checked on the source, before building.
+bool CheckSource(
+  vtkDataObject* source, const vtkLRSplineField::Requirements& needs, std::string* error)
+{
+  std::vector<vtkUnstructuredGrid*> grids;
+  bool surface = false;
+  CollectGrids(source, grids, &surface);
+  if (needs.Volume && surface)
+  {
+    return Fail(error,
+      "the input is a surface (2D) spline or a polygonal data set: " + needs.Consumer +
+        " renders trivariate LR-spline volumes only");
+  }
+  if (needs.Volume && grids.empty())
+  {
+    return Fail(error,
+      std::string("the input (") + (source ? source->GetClassName() : "null") +
+        ") holds no LR-spline patch: expected the output of vtkLRSplineReader, a "
+        "vtkMultiBlockDataSet of VTK_BEZIER_HEXAHEDRON grids");
+  }
+  if (needs.MaximumPatches > 0 && static_cast<int>(grids.size()) > needs.MaximumPatches)
+  {
+    return Fail(error,
+      "the input has " + std::to_string(grids.size()) + " patches; " + needs.Consumer +
+        " renders at most " + std::to_string(needs.MaximumPatches));
+  }
+  for (std::size_t g = 0; g < grids.size() && needs.PolynomialField; ++g)
+  {
+    vtkPointData* pd = grids[g]->GetPointData();
+    vtkFieldData* fd = grids[g]->GetFieldData();
+    vtkDataArray* rational = fd ? fd->GetArray(vtkLRSplineArrayNames::Rational) : nullptr;
+    vtkDataArray* mode = fd ? fd->GetArray(vtkLRSplineArrayNames::Mode) : nullptr;
+    const bool geometryMode =
+      mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1;
+    // (Rational geometry maps are inverted, their fields rational splines;
+    // a rational field over a parameter box is not supported.)
+    if (!geometryMode &&
+      (pd->GetRationalWeights() || pd->GetArray(vtkLRSplineArrayNames::RationalWeights) ||
+        (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0)))
+    {
+      return Fail(error,
+        "patch " + std::to_string(g) + " is rational (it has rational weights): " + needs.Consumer +
+          " renders polynomial LR splines only");
     }
   }
+  return true;
 }
 
 int AutomaticBlocks(vtkIdType numElements)
@@ -228,6 +291,65 @@ bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int l
     }
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkLRSplineField::Build(vtkDataObject* source, const char* arrayName, int locatorType,
+  const int blocks[3], const Requirements& requirements, std::string* error)
+{
+  if (!CheckSource(source, requirements, error) ||
+    !this->Build(source, arrayName, locatorType, blocks, false, error))
+  {
+    this->Patches.clear();
+    return false;
+  }
+  const int nc = this->NumberOfComponents;
+  if (requirements.MaximumComponents > 0 && nc > requirements.MaximumComponents)
+  {
+    return Fail(error,
+      "the field \"" + this->ArrayName + "\" has " + std::to_string(nc) + " components; " +
+        requirements.Consumer + " renders fields of at most " +
+        std::to_string(requirements.MaximumComponents) + " components");
+  }
+  int degree[3];
+  this->GetCommonDegrees(degree);
+  for (int k = 0; k < 3 && requirements.MaximumDegree > 0; ++k)
+  {
+    if (degree[k] > requirements.MaximumDegree)
+    {
+      return Fail(error,
+        "the spline has degree " + std::to_string(degree[k]) + " in direction " +
+          std::to_string(k) + "; " + requirements.Consumer + " renders degrees up to " +
+          std::to_string(requirements.MaximumDegree));
+    }
+  }
+  for (int p = 0; p < this->GetNumberOfPatches() && requirements.FiniteCoefficients; ++p)
+  {
+    for (double c : this->Patches[p]->GetVolume().Coefficients)
+    {
+      if (!std::isfinite(c))
+      {
+        return Fail(error,
+          "patch " + std::to_string(p) + " has NaN or infinite coefficients in \"" +
+            this->ArrayName + "\"");
+      }
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineField::GetCommonDegrees(int degree[3]) const
+{
+  degree[0] = degree[1] = degree[2] = 1;
+  for (const auto& p : this->Patches)
+  {
+    const int* d = p->GetVolume().Degree;
+    for (int k = 0; k < 3; ++k)
+    {
+      degree[k] = std::max(degree[k], d[k]);
+    }
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -70,6 +70,37 @@ public:
     double surfaceTolerance = vtkLRSplineGeometryMap::DefaultSurfaceTolerance);
 
   /**
+   * What a consumer of the field renders or evaluates, checked by the Build()
+   * that takes it (0 or false: no limit). Before building, on the source: a
+   * volume consumer refuses surface splines and polygonal data, and a source
+   * without patches, with its own message; at most MaximumPatches patches; no
+   * rational field (rational weights outside geometry mode; rational geometry
+   * maps are fine). After building: at most MaximumComponents components,
+   * degrees up to MaximumDegree per direction, finite coefficients. The
+   * messages name the Consumer ("the volume mapper renders degrees up to 3").
+   */
+  struct Requirements
+  {
+    std::string Consumer = "the consumer";
+    bool Volume = false;
+    int MaximumPatches = 0;
+    bool PolynomialField = false;
+    int MaximumComponents = 0;
+    int MaximumDegree = 0;
+    bool FiniteCoefficients = false;
+  };
+
+  /**
+   * Build() in data space with the default surface tolerance, checking
+   * `requirements` (false with the message of the first one not met).
+   */
+  bool Build(vtkDataObject* source, const char* arrayName, int locatorType, const int blocks[3],
+    const Requirements& requirements, std::string* error);
+
+  /// The patches' common degrees: the largest per direction (1 at least).
+  void GetCommonDegrees(int degree[3]) const;
+
+  /**
    * Build `field` from `source` unless `key` shows it was built from the same
    * source (pointer and modification time) with the same settings; the
    * cache the filters keep between executions. `resolution` 0: automatic.

@@ -1190,17 +1190,15 @@ bool vtkTensorLineTracer::CollectTensorArrays(vtkDataObject* input,
                      "point tensor array to port 0");
     return false;
   }
-  // The mask: input array 1, by name or attribute type. No selection, an
-  // empty name or "None" (ParaView's no-array choice, unless an array has
-  // that name): none.
+  // The mask: input array 1, by name or attribute type. No selection or an
+  // empty name: none. Any other name must be a point array of the input.
   vtkInformation* maskInfo = this->GetInputArrayInformation(1);
   std::string maskLabel; // for messages
   if (maskInfo->Has(vtkDataObject::FIELD_NAME()))
   {
     const char* maskName = maskInfo->Get(vtkDataObject::FIELD_NAME());
     maskLabel = maskName ? maskName : "";
-    useMask = !maskLabel.empty() &&
-      !(maskLabel == "None" && !dataSets[0]->GetPointData()->GetArray("None"));
+    useMask = !maskLabel.empty();
   }
   else if (maskInfo->Has(vtkDataObject::FIELD_ATTRIBUTE_TYPE()))
   {
@@ -1259,9 +1257,17 @@ bool vtkTensorLineTracer::CollectTensorArrays(vtkDataObject* input,
       }
       if (!mask || mask->GetNumberOfComponents() != 1)
       {
-        vtkErrorMacro(<< "the mask array '" << maskLabel
-                      << (mask ? "' must have one component" : "' is not a point array of ")
-                      << (mask ? "" : ds->GetClassName()));
+        if (mask)
+        {
+          vtkErrorMacro(<< "the mask array '" << maskLabel << "' must have one component");
+        }
+        else
+        {
+          vtkErrorMacro(<< "the mask array '" << maskLabel << "' is not a point array of "
+                        << ds->GetClassName()
+                        << ": select a 1-component point array of the input as input array 1 "
+                           "(SetInputArrayToProcess), or nothing for no mask");
+        }
         return false;
       }
       maskArrays[b] = mask;

@@ -124,8 +124,8 @@ public:
   // The mask is input array 1: SetInputArrayToProcess(1, 0, 0,
   // vtkDataObject::FIELD_ASSOCIATION_POINTS, name), a 1-component point
   // array restricting the tracking to where its interpolated value is >= 0.5.
-  // Nothing selected (the default), an empty name or "None" (ParaView's
-  // choice of no array, unless a point array has that name): no mask.
+  // Nothing selected (the default) or an empty name: no mask. Any other name
+  // must be a point array of the input, else the update fails with an error.
 
   ///@{
   /**

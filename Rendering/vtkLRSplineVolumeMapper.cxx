@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkLRSplineVolumeMapper.h"
 
-#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineField.h"
-#include "vtkLRSplineGeometryMap.h"
+#include "vtkLRSplineVolumePreparer.h"
+#include "vtkLRSplineVolumeShaderBuilder.h"
 #include "vtkSplineVizGPUBuffer.h"
 
 #include "vtkAlgorithmOutput.h"
@@ -11,18 +11,17 @@
 #include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
 #include "vtkCommand.h"
-#include "vtkCompositeDataSet.h"
 #include "vtkContourValues.h"
 #include "vtkDataArray.h"
 #include "vtkDataObject.h"
 #include "vtkExecutive.h"
-#include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkLight.h"
 #include "vtkLightCollection.h"
 #include "vtkMath.h"
 #include "vtkMatrix3x3.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLBufferObject.h"
 #include "vtkOpenGLCamera.h"
@@ -42,23 +41,14 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 #include "vtkTimeStamp.h"
-#include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
 #include "vtkVolumeProperty.h"
-
-#include "vtkLRSplineVolumeCompositeFS.h"
-#include "vtkLRSplineVolumeFS.h"
-#include "vtkSplineVizShaderPrelude.h"
-#include "vtkLRSplineVolumeShared.h"
-#include "vtkLRSplineVolumeTrimFS.h"
-#include "vtkLRSplineVolumeVS.h"
 
 #include <vtk_glew.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <sstream>
 #include <vector>
 
@@ -86,25 +76,11 @@ void BindPositions(vtkSmartPointer<vtkOpenGLVertexArrayObject>& array, vtkShader
   }
 }
 
-constexpr int MaximumPatches = 16;
-constexpr int MaximumIsoValues = 8;
+// The limits the shaders are compiled for.
+constexpr int MaximumIsoValues = vtkLRSplineVolumeShaderBuilder::MaximumIsoValues;
+constexpr int MaximumClipPlanes = vtkLRSplineVolumeShaderBuilder::MaximumClipPlanes;
+constexpr int MaximumLights = vtkLRSplineVolumeShaderBuilder::MaximumLights;
 constexpr int TransferFunctionSize = 1024;
-constexpr int MaximumClipPlanes = 6;
-
-// Per patch: what the shader needs to map data points to parameters and to
-// find elements.
-struct PatchInfo
-{
-  float Lo[3], Hi[3];             // parameter domain
-  float Inverse[9];               // u = Inverse (x - offset), row-major
-  float Offset[3];                // x = A u + offset
-  float Edge[3];                  // |A e_d|: data length of a unit parameter step
-  float BoxLo[3], BoxHi[3];       // data box
-  int Blocks[3] = { 1, 1, 1 };    // forest resolution
-  int Starts[4] = { 0, 0, 0, 0 }; // heads, nodes, octree, first element
-  int Locator = 0;                // 0: forest-like, 1: octree
-  int Curved = 0;                 // 1: a curved geometry map (Lo/Hi: its physical domain)
-};
 
 // Set a GLSL mat4 from a row-major vtkMatrix4x4 (vtkShaderProgram uploads
 // the elements as they are, i.e. expects the transpose).
@@ -121,48 +97,16 @@ void SetMatrix(vtkShaderProgram* program, const char* name, vtkMatrix4x4* m)
   program->SetUniformMatrix4x4(name, columnMajor);
 }
 
-// Collect the VTK_BEZIER_HEXAHEDRON grids (and tell what else was found).
-void CollectGrids(vtkDataObject* input, std::vector<vtkUnstructuredGrid*>& grids, bool& surface)
-{
-  if (auto* grid = vtkUnstructuredGrid::SafeDownCast(input))
-  {
-    if (grid->GetNumberOfCells() > 0)
-    {
-      const int type = grid->GetCellType(0);
-      if (type == VTK_BEZIER_QUADRILATERAL || type == VTK_BEZIER_TRIANGLE ||
-        type == VTK_LAGRANGE_QUADRILATERAL || type == VTK_QUAD || type == VTK_TRIANGLE)
-      {
-        surface = true;
-      }
-      grids.push_back(grid);
-    }
-    return;
-  }
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      CollectGrids(it->GetCurrentDataObject(), grids, surface);
-    }
-    return;
-  }
-  if (input && input->IsA("vtkPolyData"))
-  {
-    surface = true;
-  }
-}
-
 // The lights (VTK's volume mappers sum them): every switched-on light,
 // directional (toward the light from its focal point; direction and
-// intensity times color), at most 8; none: a headlight.
+// intensity times color), at most MaximumLights; none: a headlight.
 std::vector<std::array<float, 6>> CollectLights(vtkRenderer* ren)
 {
   std::vector<std::array<float, 6>> lightList;
   vtkLightCollection* lights = ren->GetLights();
   lights->InitTraversal();
-  for (vtkLight* l = lights->GetNextItem(); l && lightList.size() < 8; l = lights->GetNextItem())
+  for (vtkLight* l = lights->GetNextItem(); l && static_cast<int>(lightList.size()) < MaximumLights;
+       l = lights->GetNextItem())
   {
     if (!l->GetSwitch() || !(l->GetIntensity() > 0))
     {
@@ -198,29 +142,16 @@ std::vector<std::array<float, 6>> CollectLights(vtkRenderer* ren)
 //------------------------------------------------------------------------------
 struct vtkLRSplineVolumeMapper::vtkInternals
 {
-  // CPU side, rebuilt when the input or the search settings change.
-  vtkLRSplineField Field;
-  std::string BuildKey;
+  // CPU side: the spline as flat arrays, rebuilt when the input or the
+  // search settings change (Valid: those and the mapper's options are fine).
+  vtkNew<vtkLRSplineVolumePreparer> Preparer;
   bool Valid = false;
   std::string Error;
   std::string ReportedError;
   std::string FailedShader;
   bool Quiet = false; // UpdateSpline() from GetBounds(): no error report
-  int Degree[3] = { 1, 1, 1 };
-  int NumberOfComponents = 1;
-  double Bounds[6] = { 0, -1, 0, -1, 0, -1 };
-  double MinimumSide = 0.0; // data units
-  bool Curved = false;      // some patch has a curved geometry map
-  std::vector<PatchInfo> Patches;
-  std::vector<std::uint32_t> Heads, NodeWords, Octree, Offsets;
-  std::vector<float> NodeSplits, Boxes, Coefficients;
-  // Per element, the range of its Bezier coefficients (which bounds its
-  // values: convex hull property): per component, and bounds of the
-  // magnitude (2 values each).
-  std::vector<float> ComponentRanges, MagnitudeRanges;
-  std::string SkipKey; // what the skip flags in Boxes were computed for
-  vtkIdType SkippedElements = 0;
-  vtkTimeStamp BuildTime;
+  // The shaders' sources for the current options.
+  vtkNew<vtkLRSplineVolumeShaderBuilder> Shaders;
 
   // GPU side.
   vtkOpenGLRenderWindow* Window = nullptr;
@@ -332,275 +263,6 @@ struct vtkLRSplineVolumeMapper::vtkInternals
     this->UploadTime = vtkTimeStamp();
     this->Window = nullptr;
   }
-
-  // The input holds 1 to MaximumPatches polynomial LR-spline volume patches
-  // with point data (else Fail()).
-  bool CheckInput(vtkDataObject* input)
-  {
-    std::vector<vtkUnstructuredGrid*> grids;
-    bool surface = false;
-    CollectGrids(input, grids, surface);
-    if (surface)
-    {
-      return this->Fail("the input is a surface (2D) spline or a polygonal data set: the volume "
-                        "mapper renders trivariate LR-spline volumes only");
-    }
-    if (grids.empty())
-    {
-      return this->Fail(std::string("the input (") + input->GetClassName() +
-        ") holds no LR-spline patch: expected the output of vtkLRSplineReader, a "
-        "vtkMultiBlockDataSet of VTK_BEZIER_HEXAHEDRON grids");
-    }
-    if (static_cast<int>(grids.size()) > MaximumPatches)
-    {
-      return this->Fail("the input has " + std::to_string(grids.size()) +
-        " patches; the volume mapper renders at most " + std::to_string(MaximumPatches));
-    }
-    for (std::size_t g = 0; g < grids.size(); ++g)
-    {
-      vtkPointData* pd = grids[g]->GetPointData();
-      vtkFieldData* fd = grids[g]->GetFieldData();
-      vtkDataArray* rational = fd ? fd->GetArray(vtkLRSplineArrayNames::Rational) : nullptr;
-      vtkDataArray* mode = fd ? fd->GetArray(vtkLRSplineArrayNames::Mode) : nullptr;
-      const bool geometryMode =
-        mode && mode->GetNumberOfTuples() > 0 && mode->GetComponent(0, 0) == 1;
-      // (Rational geometry maps are rendered by inversion, their fields as
-      // rational splines; a rational field over a parameter box is not.)
-      if (!geometryMode &&
-        (pd->GetRationalWeights() || pd->GetArray(vtkLRSplineArrayNames::RationalWeights) ||
-          (rational && rational->GetNumberOfTuples() > 0 && rational->GetComponent(0, 0) != 0)))
-      {
-        return this->Fail("patch " + std::to_string(g) +
-          " is rational (it has rational weights): the volume mapper renders polynomial "
-          "LR splines only");
-      }
-      if (pd->GetNumberOfArrays() == 0)
-      {
-        return this->Fail("patch " + std::to_string(g) +
-          " has no point-data array: there is no scalar or vector field to render");
-      }
-    }
-    return true;
-  }
-
-  // The patches' common degrees (the largest per direction; patches of
-  // lower degree are raised exactly), at most 3 (else Fail()).
-  bool CommonDegrees(int degree[3])
-  {
-    degree[0] = degree[1] = degree[2] = 1;
-    for (int p = 0; p < this->Field.GetNumberOfPatches(); ++p)
-    {
-      const int* d = this->Field.GetPatch(p).GetVolume().Degree;
-      for (int k = 0; k < 3; ++k)
-      {
-        degree[k] = std::max(degree[k], d[k]);
-      }
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      if (degree[k] > 3)
-      {
-        return this->Fail("the spline has degree " + std::to_string(degree[k]) + " in direction " +
-          std::to_string(k) + "; the volume mapper renders degrees up to 3");
-      }
-    }
-    return true;
-  }
-
-  // Element e of a patch (its Bezier volume at the common degree, the raised
-  // homogeneous geometry of a curved patch) into the GPU arrays: its box
-  // (curved: the physical box and shortest side), coefficients and value
-  // ranges. `edge`: the patch's parameter-to-data scale per direction.
-  void AppendElement(const vtkLRSplineBezierVolume& volume, vtkIdType e,
-    const vtkLRSplineGeometryMap* geometryMap, const vtkLRSplineBezierVolume& geometryRaised,
-    const double edge[3], int per, int nc)
-  {
-    const double* b = volume.GetBox(e);
-    if (geometryMap)
-    {
-      // The physical box; its fourth value the element's shortest side
-      // (data units, > 0: marks a curved element).
-      const double* pb = geometryMap->GetPhysicalBox(e);
-      const double side = geometryMap->GetElementMinimumSide(e);
-      this->Boxes.insert(this->Boxes.end(),
-        { static_cast<float>(pb[0]), static_cast<float>(pb[1]), static_cast<float>(pb[2]), 0.0f,
-          static_cast<float>(pb[3]), static_cast<float>(pb[4]), static_cast<float>(pb[5]),
-          static_cast<float>(side) });
-      this->MinimumSide = std::min(this->MinimumSide, side);
-    }
-    else
-    {
-      this->Boxes.insert(this->Boxes.end(),
-        { static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]), 0.0f,
-          static_cast<float>(b[3]), static_cast<float>(b[4]), static_cast<float>(b[5]), 0.0f });
-    }
-    this->Offsets.push_back(static_cast<std::uint32_t>(this->Coefficients.size()));
-    const double* c = volume.GetElementCoefficients(e);
-    for (int i = 0; i < per; ++i)
-    {
-      this->Coefficients.push_back(static_cast<float>(c[i]));
-    }
-    if (geometryMap)
-    {
-      const double* gc = geometryRaised.GetElementCoefficients(e);
-      const int gper = 4 * per / nc;
-      for (int i = 0; i < gper; ++i)
-      {
-        this->Coefficients.push_back(static_cast<float>(gc[i]));
-      }
-    }
-    // Coefficient ranges (the element's values lie within them). On a
-    // rational map the coefficients are w f: the ranges are of f.
-    const double* gw = geometryMap ? geometryRaised.GetElementCoefficients(e) + 3 : nullptr;
-    auto coefficient = [&](int i) { return gw ? c[i] / gw[4 * (i / nc)] : c[i]; };
-    double magnitudeLow = 0.0, magnitudeHigh = 0.0;
-    for (int comp = 0; comp < nc; ++comp)
-    {
-      double lo = VTK_DOUBLE_MAX, hi = -VTK_DOUBLE_MAX;
-      for (int i = comp; i < per; i += nc)
-      {
-        lo = std::min(lo, coefficient(i));
-        hi = std::max(hi, coefficient(i));
-      }
-      this->ComponentRanges.push_back(static_cast<float>(lo));
-      this->ComponentRanges.push_back(static_cast<float>(hi));
-      magnitudeLow = std::max(magnitudeLow, lo > 0 ? lo : (hi < 0 ? -hi : 0.0));
-    }
-    for (int i = 0; i < per; i += nc)
-    {
-      double m2 = 0.0;
-      for (int comp = 0; comp < nc; ++comp)
-      {
-        m2 += coefficient(i + comp) * coefficient(i + comp);
-      }
-      magnitudeHigh = std::max(magnitudeHigh, std::sqrt(m2));
-    }
-    this->MagnitudeRanges.push_back(static_cast<float>(magnitudeLow));
-    this->MagnitudeRanges.push_back(static_cast<float>(magnitudeHigh));
-    for (int k = 0; k < 3 && !geometryMap; ++k)
-    {
-      this->MinimumSide = std::min(this->MinimumSide, (b[k + 3] - b[k]) * edge[k]);
-    }
-  }
-
-  // Patch p of the field into the GPU arrays (its search structure, element
-  // boxes, coefficients at the common degree) and Patches; `kdLocator`: the
-  // mapper's locator is a k-d forest or tree (curved patches need one);
-  // firstElement advances past its elements. False (Fail()) on a bad patch.
-  bool FlattenPatch(int p, const int degree[3], int nc, bool kdLocator, vtkIdType& firstElement)
-  {
-    const int per = (degree[0] + 1) * (degree[1] + 1) * (degree[2] + 1) * nc;
-    const vtkLRSplineEvaluator& patch = this->Field.GetPatch(p);
-    const vtkLRSplineElementLocator& locator = patch.GetLocator();
-    const vtkLRSplineBezierVolume* volume = &patch.GetVolume();
-    vtkLRSplineBezierVolume raised;
-    if (volume->Degree[0] != degree[0] || volume->Degree[1] != degree[1] ||
-      volume->Degree[2] != degree[2])
-    {
-      raised = *volume;
-      raised.CoefficientsFloat.clear();
-      if (!raised.ElevateDegree(degree))
-      {
-        return this->Fail("patch " + std::to_string(p) + ": degree elevation failed");
-      }
-      volume = &raised;
-    }
-    for (double c : volume->Coefficients)
-    {
-      if (!std::isfinite(c))
-      {
-        return this->Fail("patch " + std::to_string(p) + " has NaN or infinite coefficients in \"" +
-          this->Field.GetArrayName() + "\"");
-      }
-    }
-    // A curved patch: its geometry's Bezier coefficients follow the
-    // field's per element, its search structure is the geometry map's.
-    const vtkLRSplineGeometryMap* geometryMap = patch.GetGeometry();
-    vtkLRSplineBezierVolume geometryRaised;
-    if (geometryMap)
-    {
-      if (!kdLocator)
-      {
-        return this->Fail("patch " + std::to_string(p) +
-          " has a curved geometry: its elements are found with a k-d forest or tree, not the " +
-          "octree or the look-up texture");
-      }
-      geometryRaised = geometryMap->GetVolume();
-      geometryRaised.CoefficientsFloat.clear();
-      if (geometryRaised.NumberOfComponents == 3)
-      {
-        // The shader reads homogeneous coefficients (w x, w y, w z, w).
-        std::vector<double> h(geometryRaised.Coefficients.size() / 3 * 4);
-        for (std::size_t k = 0; k < h.size() / 4; ++k)
-        {
-          std::copy(&geometryRaised.Coefficients[3 * k], &geometryRaised.Coefficients[3 * k] + 3,
-            &h[4 * k]);
-          h[4 * k + 3] = 1.0;
-        }
-        geometryRaised.Coefficients.swap(h);
-        geometryRaised.NumberOfComponents = 4;
-      }
-      if (!geometryRaised.ElevateDegree(degree))
-      {
-        return this->Fail("patch " + std::to_string(p) + ": the geometry's degree is too high");
-      }
-      this->Curved = true;
-    }
-    const vtkLRSplineElementLocator& search = geometryMap ? geometryMap->GetLocator() : locator;
-    PatchInfo info;
-    info.Curved = geometryMap ? 1 : 0;
-    const double* domain = search.GetDomain();
-    const double* A = patch.GetMatrix();
-    const double* inverse = patch.GetInverseMatrix();
-    const double* offset = patch.GetOffset();
-    double patchBounds[6];
-    patch.GetBounds(patchBounds);
-    double edge[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      edge[k] = std::sqrt(A[k] * A[k] + A[3 + k] * A[3 + k] + A[6 + k] * A[6 + k]);
-      info.Lo[k] = static_cast<float>(domain[k]);
-      info.Hi[k] = static_cast<float>(domain[k + 3]);
-      info.Offset[k] = static_cast<float>(offset[k]);
-      info.Edge[k] = static_cast<float>(edge[k]);
-      info.BoxLo[k] = static_cast<float>(patchBounds[2 * k]);
-      info.BoxHi[k] = static_cast<float>(patchBounds[2 * k + 1]);
-    }
-    for (int k = 0; k < 9; ++k)
-    {
-      info.Inverse[k] = static_cast<float>(inverse[k]);
-    }
-    info.Starts[0] = static_cast<int>(this->Heads.size());
-    info.Starts[1] = static_cast<int>(this->NodeWords.size());
-    info.Starts[2] = static_cast<int>(this->Octree.size());
-    info.Starts[3] = static_cast<int>(firstElement);
-    if (search.GetType() == vtkLRSplineElementLocator::OCTREE)
-    {
-      info.Locator = 1;
-      const auto& oct = search.GetOctreeNodes();
-      this->Octree.insert(this->Octree.end(), oct.begin(), oct.end());
-    }
-    else
-    {
-      info.Locator = 0;
-      const int* nb = search.GetNumberOfBlocks();
-      std::copy(nb, nb + 3, info.Blocks);
-      const auto& heads = search.GetHeads();
-      const auto& words = search.GetNodeWords();
-      const std::vector<float> splits = search.GetNodeSplitsFloat();
-      this->Heads.insert(this->Heads.end(), heads.begin(), heads.end());
-      this->NodeWords.insert(this->NodeWords.end(), words.begin(), words.end());
-      this->NodeSplits.insert(this->NodeSplits.end(), splits.begin(), splits.end());
-    }
-    const vtkIdType ne = volume->GetNumberOfElements();
-    for (vtkIdType e = 0; e < ne; ++e)
-    {
-      this->AppendElement(*volume, e, geometryMap, geometryRaised, edge, per, nc);
-    }
-    firstElement += ne;
-    this->Patches.push_back(info);
-    return true;
-  }
 };
 
 //------------------------------------------------------------------------------
@@ -675,12 +337,12 @@ vtkPolyData* vtkLRSplineVolumeMapper::GetTrimmingSurface()
 //------------------------------------------------------------------------------
 vtkIdType vtkLRSplineVolumeMapper::GetNumberOfElements()
 {
-  return this->Internals->Valid ? this->Internals->Field.GetNumberOfElements() : 0;
+  return this->Internals->Valid ? this->Internals->Preparer->GetNumberOfElements() : 0;
 }
 
 vtkIdType vtkLRSplineVolumeMapper::GetNumberOfSkippedElements()
 {
-  return this->Internals->Valid ? this->Internals->SkippedElements : 0;
+  return this->Internals->Valid ? this->Internals->Preparer->GetNumberOfSkippedElements() : 0;
 }
 
 const char* vtkLRSplineVolumeMapper::GetLastErrorMessage()
@@ -704,9 +366,7 @@ size_t vtkLRSplineVolumeMapper::GetGPUMemorySize()
     return 0;
   }
   // Not uploaded yet: what the upload will hold.
-  return 4 *
-    (in.Heads.size() + in.NodeWords.size() + in.Octree.size() + in.Offsets.size() +
-      in.NodeSplits.size() + in.Boxes.size() + in.Coefficients.size());
+  return in.Preparer->GetNumberOfBytes();
 }
 
 //------------------------------------------------------------------------------
@@ -726,94 +386,32 @@ bool vtkLRSplineVolumeMapper::UpdateSpline()
     }
     return ok;
   };
+  vtkLRSplineVolumePreparer* preparer = in.Preparer;
   if (!input)
   {
-    in.BuildKey.clear();
+    preparer->Reset();
     return done(in.Fail("no input: connect the output of vtkLRSplineReader (or a "
                         "vtkLRSplineImageFitter) to the mapper"));
   }
-  std::ostringstream key;
-  key << input << ' ' << input->GetMTime() << ' ' << (this->FieldArray ? this->FieldArray : "")
-      << ' ' << this->ElementLocator << ' ' << this->ForestResolution;
-  if (key.str() == in.BuildKey)
+  // The field built, checked (its Requirements) and flattened into the
+  // arrays to upload, once per input and search settings.
+  const vtkMTimeType built = preparer->GetBuildTime();
+  if (!preparer->Update(input, this->FieldArray, this->ElementLocator, this->ForestResolution))
   {
-    return done(in.Valid);
+    return done(in.Fail(preparer->GetErrorMessage()));
   }
-  in.BuildKey = key.str();
-  in.Valid = false;
-  in.Patches.clear();
-  in.Heads.clear();
-  in.NodeWords.clear();
-  in.NodeSplits.clear();
-  in.Octree.clear();
-  in.Boxes.clear();
-  in.Offsets.clear();
-  in.Coefficients.clear();
-  in.ComponentRanges.clear();
-  in.MagnitudeRanges.clear();
-  in.SkipKey.clear();
-  in.BuildTime.Modified();
-
-  if (!in.CheckInput(input))
-  {
-    return done(false);
-  }
-
-  std::string message;
-  const int blocks[3] = { this->ForestResolution, this->ForestResolution, this->ForestResolution };
-  if (!in.Field.Build(input, this->FieldArray, this->ElementLocator,
-        this->ForestResolution > 0 ? blocks : nullptr, false, &message))
-  {
-    return done(in.Fail(message));
-  }
-  const int np = in.Field.GetNumberOfPatches();
-  const int nc = in.Field.GetNumberOfComponents();
-  if (nc > 3)
-  {
-    return done(in.Fail("the field \"" + in.Field.GetArrayName() + "\" has " + std::to_string(nc) +
-      " components; the volume mapper renders scalars and 2- or 3-vectors"));
-  }
+  const int nc = preparer->GetNumberOfComponents();
   if (this->VectorMode == COMPONENT && this->VectorComponent >= nc)
   {
     return done(in.Fail("VectorComponent " + std::to_string(this->VectorComponent) +
       " does not exist: the field has " + std::to_string(nc) + " components"));
   }
-  // Common degrees (raised exactly to the largest per direction).
-  int degree[3];
-  if (!in.CommonDegrees(degree))
+  if (!in.Valid || preparer->GetBuildTime() != built)
   {
-    return done(false);
+    in.Valid = true;
+    in.Error.clear();
+    in.ReportedError.clear();
   }
-  std::copy(degree, degree + 3, in.Degree);
-  in.NumberOfComponents = nc;
-  in.Field.GetBounds(in.Bounds);
-  in.MinimumSide = VTK_DOUBLE_MAX;
-  in.Curved = false;
-
-  // Flatten every patch into the GPU arrays.
-  const int per = (degree[0] + 1) * (degree[1] + 1) * (degree[2] + 1) * nc;
-  const vtkIdType totalElements = in.Field.GetNumberOfElements();
-  const double coefficientCount = static_cast<double>(totalElements) * per;
-  if (coefficientCount > 2.0e9)
-  {
-    return done(in.Fail("the spline has " + std::to_string(totalElements) +
-      " elements: too many coefficients for the GPU buffers (limit 2^31)"));
-  }
-  in.Coefficients.reserve(static_cast<std::size_t>(coefficientCount));
-  in.Boxes.reserve(static_cast<std::size_t>(8 * totalElements));
-  in.Offsets.reserve(static_cast<std::size_t>(totalElements));
-  vtkIdType firstElement = 0;
-  for (int p = 0; p < np; ++p)
-  {
-    if (!in.FlattenPatch(p, degree, nc,
-          this->ElementLocator != OCTREE && this->ElementLocator != TEXTURE, firstElement))
-    {
-      return done(false);
-    }
-  }
-  in.Valid = true;
-  in.Error.clear();
-  in.ReportedError.clear();
   return done(true);
 }
 
@@ -827,7 +425,8 @@ double* vtkLRSplineVolumeMapper::GetBounds()
   this->Internals->Quiet = false;
   if (this->Internals->Valid)
   {
-    std::copy(this->Internals->Bounds, this->Internals->Bounds + 6, this->Bounds);
+    const double* bounds = this->Internals->Preparer->GetBounds();
+    std::copy(bounds, bounds + 6, this->Bounds);
   }
   else
   {
@@ -839,15 +438,12 @@ double* vtkLRSplineVolumeMapper::GetBounds()
 //------------------------------------------------------------------------------
 std::string vtkLRSplineVolumeMapper::GetVertexShaderSource()
 {
-  return vtkLRSplineVolumeVS;
+  return this->Internals->Shaders->GetVertexShaderSource();
 }
 
 std::string vtkLRSplineVolumeMapper::GetFragmentShaderSource()
 {
-  std::string fs = vtkLRSplineVolumeFS;
-  vtkShaderProgram::Substitute(fs, "//SV::Prelude::Dec", vtkSplineVizShaderPrelude::Get());
-  vtkShaderProgram::Substitute(fs, "//SV::LRSplineVolumeShared::Dec", vtkLRSplineVolumeShared);
-  return fs;
+  return this->Internals->Shaders->GetFragmentShaderTemplate();
 }
 
 //------------------------------------------------------------------------------
@@ -860,42 +456,47 @@ void vtkLRSplineVolumeMapper::ReleaseGraphicsResources(vtkWindow* window)
 bool vtkLRSplineVolumeMapper::UploadSpline(vtkOpenGLRenderWindow* window)
 {
   vtkInternals& in = *this->Internals;
-  // The spline's data on the GPU, once per change.
-  if (in.UploadTime < in.BuildTime)
+  const vtkLRSplineVolumePreparer* prep = in.Preparer;
+  // The spline's data on the GPU, once per change (a failure builds it again).
+  if (in.UploadTime.GetMTime() < prep->GetBuildTime())
   {
+    const auto& heads = prep->GetHeads();
+    const auto& words = prep->GetNodeWords();
+    const auto& splits = prep->GetNodeSplits();
+    const auto& octree = prep->GetOctree();
+    const auto& boxes = prep->GetBoxes();
+    const auto& offsets = prep->GetOffsets();
+    const auto& coefficients = prep->GetCoefficients();
     // One message for the whole spline before any upload (the buffers would
     // each refuse their own part).
     const std::size_t maxTexels = vtkSplineVizGPUBuffer::GetMaximumNumberOfTexels(window);
-    const std::size_t largest = std::max({ in.Coefficients.size(), in.Boxes.size() / 4,
-      in.NodeWords.size(), in.Heads.size(), in.Octree.size() });
+    const std::size_t largest = std::max(
+      { coefficients.size(), boxes.size() / 4, words.size(), heads.size(), octree.size() });
     if (largest > maxTexels)
     {
       in.Fail("the spline needs a buffer texture of " + std::to_string(largest) +
         " texels; this OpenGL allows " + std::to_string(maxTexels));
-      in.BuildKey.clear();
+      in.Preparer->Reset();
       return false;
     }
-    bool ok = in.HeadsBuffer.Upload(
-                window, in.Heads.data(), in.Heads.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+    bool ok =
+      in.HeadsBuffer.Upload(window, heads.data(), heads.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
       in.NodeWordsBuffer.Upload(
-        window, in.NodeWords.data(), in.NodeWords.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
-      in.NodeSplitsBuffer.Upload(
-        window, in.NodeSplits.data(), in.NodeSplits.size(), 1, VTK_FLOAT, GL_R32F) &&
-      in.OctreeBuffer.Upload(
-        window, in.Octree.data(), in.Octree.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
-      in.BoxesBuffer.Upload(
-        window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F) &&
+        window, words.data(), words.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+      in.NodeSplitsBuffer.Upload(window, splits.data(), splits.size(), 1, VTK_FLOAT, GL_R32F) &&
+      in.OctreeBuffer.Upload(window, octree.data(), octree.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+      in.BoxesBuffer.Upload(window, boxes.data(), boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F) &&
       in.OffsetsBuffer.Upload(
-        window, in.Offsets.data(), in.Offsets.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
+        window, offsets.data(), offsets.size(), 1, VTK_UNSIGNED_INT, GL_R32UI) &&
       in.CoefficientsBuffer.Upload(
-        window, in.Coefficients.data(), in.Coefficients.size(), 1, VTK_FLOAT, GL_R32F);
+        window, coefficients.data(), coefficients.size(), 1, VTK_FLOAT, GL_R32F);
     if (!ok)
     {
       in.Fail("the spline's data could not be uploaded to the GPU: " +
         vtkSplineVizGPUBuffer::FirstUploadError(
           { &in.HeadsBuffer, &in.NodeWordsBuffer, &in.NodeSplitsBuffer, &in.OctreeBuffer,
             &in.BoxesBuffer, &in.OffsetsBuffer, &in.CoefficientsBuffer }));
-      in.BuildKey.clear();
+      in.Preparer->Reset();
       return false;
     }
     in.UploadTime.Modified();
@@ -1022,82 +623,77 @@ bool vtkLRSplineVolumeMapper::UpdateEmptySpaceSkipping(
   vtkOpenGLRenderWindow* window, vtkVolumeProperty* property, const std::vector<float>& isoValues)
 {
   vtkInternals& in = *this->Internals;
+  vtkLRSplineVolumePreparer* prep = in.Preparer;
   vtkPiecewiseFunction* opacity = property->GetScalarOpacity(0);
   // Empty-space skipping: flag the elements whose coefficient range (which
   // bounds their values) maps to zero opacity (composite) or holds no iso
   // value (isosurfaces); the rays jump over them. Recomputed when the
-  // transfer function, the iso values, the blend or vector mode change.
+  // spline, the transfer function, the iso values, the blend or vector mode
+  // change.
+  std::ostringstream key;
+  key << prep->GetBuildTime() << ' ' << in.TransferKey << ' ' << this->BlendMode << ' '
+      << this->VectorMode << ' ' << this->VectorComponent << ' ' << this->EmptySpaceSkipping;
+  for (float v : isoValues)
   {
-    std::ostringstream key;
-    key << in.BuildTime.GetMTime() << ' ' << in.TransferKey << ' ' << this->BlendMode << ' '
-        << this->VectorMode << ' ' << this->VectorComponent << ' ' << this->EmptySpaceSkipping;
+    key << ' ' << v;
+  }
+  if (key.str() == prep->GetSkipKey())
+  {
+    return true;
+  }
+  const int component = this->VectorMode == MAGNITUDE ? -1 : this->VectorComponent;
+  const bool skipping = this->EmptySpaceSkipping &&
+    (this->BlendMode == COMPOSITE_BLEND || this->BlendMode == ISOSURFACE_BLEND);
+  if (!skipping)
+  {
+    prep->UpdateSkipFlags(component, [](double, double) { return false; });
+  }
+  else if (this->BlendMode == COMPOSITE_BLEND)
+  {
+    // Values are looked up in a linearly filtered table: widen by a texel.
+    const double t0 = in.TransferRange[0], t1 = in.TransferRange[1];
+    const double texel = (t1 - t0) / (TransferFunctionSize - 1);
+    prep->UpdateSkipFlags(component,
+      [&](double lo, double hi)
+      {
+        const double a = std::max(lo - texel, t0);
+        const double b = std::min(hi + texel, t1);
+        // Outside the table's range the end values hold (clamping).
+        double maxOpacity = opacity->GetValue(std::min(std::max(a, t0), t1));
+        maxOpacity = std::max(maxOpacity, opacity->GetValue(std::max(std::min(b, t1), t0)));
+        double node[4];
+        for (int i = 0; i < opacity->GetSize(); ++i)
+        {
+          opacity->GetNodeValue(i, node);
+          if (node[0] > a && node[0] < b)
+          {
+            maxOpacity = std::max(maxOpacity, node[1]);
+          }
+        }
+        return a <= b && maxOpacity <= 0.0;
+      });
+  }
+  else
+  {
+    // Isosurfaces: only the elements whose range holds an iso value.
+    std::vector<std::array<double, 2>> visible;
     for (float v : isoValues)
     {
-      key << ' ' << v;
+      visible.push_back({ v, v });
     }
-    if (key.str() != in.SkipKey)
+    prep->UpdateSkipFlags(component, visible);
+  }
+  if (in.UploadTime.GetMTime() > 0)
+  {
+    const auto& boxes = prep->GetBoxes();
+    if (!in.BoxesBuffer.Upload(window, boxes.data(), boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F))
     {
-      const vtkIdType ne = static_cast<vtkIdType>(in.Offsets.size());
-      const int nc = in.NumberOfComponents;
-      const bool magnitude = nc > 1 && this->VectorMode == MAGNITUDE;
-      const int comp = nc == 1 ? 0 : this->VectorComponent;
-      // Values are looked up in a linearly filtered table: widen by a texel.
-      const double texel = (in.TransferRange[1] - in.TransferRange[0]) / (TransferFunctionSize - 1);
-      const bool skipping = this->EmptySpaceSkipping &&
-        (this->BlendMode == COMPOSITE_BLEND || this->BlendMode == ISOSURFACE_BLEND);
-      vtkIdType skipped = 0;
-      for (vtkIdType e = 0; e < ne; ++e)
-      {
-        const float* r =
-          magnitude ? &in.MagnitudeRanges[2 * e] : &in.ComponentRanges[2 * (nc * e + comp)];
-        bool skip = false;
-        if (skipping && this->BlendMode == COMPOSITE_BLEND)
-        {
-          const double a = std::max(static_cast<double>(r[0]) - texel, in.TransferRange[0]);
-          const double b = std::min(static_cast<double>(r[1]) + texel, in.TransferRange[1]);
-          // Outside the table's range the end values hold (clamping).
-          double maxOpacity =
-            opacity->GetValue(std::min(std::max(a, in.TransferRange[0]), in.TransferRange[1]));
-          maxOpacity = std::max(maxOpacity,
-            opacity->GetValue(std::max(std::min(b, in.TransferRange[1]), in.TransferRange[0])));
-          double node[4];
-          for (int i = 0; i < opacity->GetSize(); ++i)
-          {
-            opacity->GetNodeValue(i, node);
-            if (node[0] > a && node[0] < b)
-            {
-              maxOpacity = std::max(maxOpacity, node[1]);
-            }
-          }
-          skip = a <= b && maxOpacity <= 0.0;
-        }
-        else if (skipping)
-        {
-          skip = true;
-          for (float v : isoValues)
-          {
-            skip = skip && !(v >= r[0] && v <= r[1]);
-          }
-        }
-        // (Curved elements are never skipped: the jump to an element's
-        // exit is computed for parameter boxes.)
-        skip = skip && in.Boxes[8 * e + 7] == 0.0f;
-        in.Boxes[8 * e + 3] = skip ? 1.0f : 0.0f;
-        skipped += skip ? 1 : 0;
-      }
-      in.SkippedElements = skipped;
-      if (in.UploadTime.GetMTime() > 0 &&
-        !in.BoxesBuffer.Upload(
-          window, in.Boxes.data(), in.Boxes.size() / 4, 4, VTK_FLOAT, GL_RGBA32F))
-      {
-        in.Error = "the spline's element boxes could not be uploaded to the GPU: " +
-          in.BoxesBuffer.GetLastUploadError();
-        return false;
-      }
-      in.SkipKey = key.str();
+      in.Error = "the spline's element boxes could not be uploaded to the GPU: " +
+        in.BoxesBuffer.GetLastUploadError();
+      return false;
     }
   }
-
+  prep->SetSkipKey(key.str());
   return true;
 }
 
@@ -1149,8 +745,10 @@ bool vtkLRSplineVolumeMapper::RenderTrimmingDepths(
     in.TrimArrayProgram = nullptr;
     in.TrimKey = key.str();
   }
+  const std::string vs = in.Shaders->GetVertexShaderSource();
+  const std::string fs = in.Shaders->GetTrimmingFragmentShaderSource();
   vtkShaderProgram* trimProgram =
-    window->GetShaderCache()->ReadyShaderProgram(vtkLRSplineVolumeVS, vtkLRSplineVolumeTrimFS, "");
+    window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
   if (!trimProgram)
   {
     in.Error = "the trimming shader did not compile or link";
@@ -1288,11 +886,12 @@ void vtkLRSplineVolumeMapper::SetPatchUniforms(vtkShaderProgram* program)
 {
   // Per patch: its parameter domain (curved: physical), the map to it, its
   // box, and where its search structure and elements start.
-  vtkInternals& in = *this->Internals;
-  const int np = static_cast<int>(in.Patches.size());
+  const vtkLRSplineVolumePreparer* prep = this->Internals->Preparer;
+  const std::vector<vtkLRSplineVolumePreparer::PatchInfo>& patches = prep->GetPatches();
+  const int np = static_cast<int>(patches.size());
   std::vector<float> lo, hi, edge, offset, boxLoP, boxHiP;
   std::vector<int> blocks, starts, locators, curved;
-  for (const PatchInfo& p : in.Patches)
+  for (const vtkLRSplineVolumePreparer::PatchInfo& p : patches)
   {
     lo.insert(lo.end(), p.Lo, p.Lo + 3);
     hi.insert(hi.end(), p.Hi, p.Hi + 3);
@@ -1318,7 +917,7 @@ void vtkLRSplineVolumeMapper::SetPatchUniforms(vtkShaderProgram* program)
     {
       for (int c = 0; c < 3; ++c)
       {
-        columns[3 * c + r] = in.Patches[p].Inverse[3 * r + c];
+        columns[3 * c + r] = patches[p].Inverse[3 * r + c];
       }
     }
     program->SetUniformMatrix3x3(("lrPatchInverse[" + std::to_string(p) + "]").c_str(), columns);
@@ -1329,10 +928,10 @@ void vtkLRSplineVolumeMapper::SetPatchUniforms(vtkShaderProgram* program)
   program->SetUniform1iv("lrPatchBlocks", 3 * np, blocks.data());
   program->SetUniform1iv("lrPatchStarts", 4 * np, starts.data());
   program->SetUniform1iv("lrPatchLocator", np, locators.data());
-  if (in.Curved)
+  if (prep->GetCurved())
   {
     program->SetUniform1iv("lrPatchCurved", np, curved.data());
-    program->SetUniformf("lrMinimumSide", static_cast<float>(in.MinimumSide));
+    program->SetUniformf("lrMinimumSide", static_cast<float>(prep->GetMinimumSide()));
   }
 }
 
@@ -1369,33 +968,6 @@ void vtkLRSplineVolumeMapper::DrawSinglePass()
   glDrawArrays(GL_TRIANGLES, 0, 36);
   in.CubeArray->Release();
   state->vtkglCullFace(GL_BACK);
-}
-
-//------------------------------------------------------------------------------
-std::string vtkLRSplineVolumeMapper::BuildFragmentShaderSource(
-  bool shade, bool multiPass, size_t numberOfLights)
-{
-  vtkInternals& in = *this->Internals;
-  std::string fs = this->GetFragmentShaderSource();
-  std::ostringstream defines;
-  defines << "//VTK::System::Dec\n"
-          << "#define LR_DU " << in.Degree[0] << "\n#define LR_DV " << in.Degree[1]
-          << "\n#define LR_DW " << in.Degree[2] << "\n#define LR_NC " << in.NumberOfComponents
-          << "\n#define LR_COMPONENT "
-          << (in.NumberOfComponents == 1
-                 ? 0
-                 : (this->VectorMode == COMPONENT ? this->VectorComponent : -1))
-          << "\n#define LR_BLEND " << this->BlendMode << "\n#define LR_SHADE " << (shade ? 1 : 0)
-          << "\n#define LR_FUCHS " << (this->ShadingModel == FUCHS ? 1 : 0) << "\n#define LR_TRIM "
-          << (this->GetTrimmingSurface() ? 1 : 0) << "\n#define LR_SAMPLE_COUNT "
-          << (this->CountSamples ? 1 : 0) << "\n#define LR_PATCHES " << in.Patches.size()
-          << "\n#define LR_CURVED " << (in.Curved ? 1 : 0) << "\n#define LR_MULTIPASS "
-          << (multiPass ? 1 : 0) << "\n#define LR_SUPERSAMPLING "
-          << (this->BlendMode == COMPOSITE_BLEND ? this->Supersampling : 1)
-          << "\n#define LR_LIGHTS " << numberOfLights << "\n#define LR_MAX_PATCHES "
-          << MaximumPatches << "\n#define LR_ISO " << MaximumIsoValues << "\n";
-  vtkShaderProgram::Substitute(fs, "//VTK::System::Dec", defines.str());
-  return fs;
 }
 
 //------------------------------------------------------------------------------
@@ -1558,6 +1130,116 @@ void vtkLRSplineVolumeMapper::DeactivateTextures(bool trim)
 }
 
 //------------------------------------------------------------------------------
+vtkShaderProgram* vtkLRSplineVolumeMapper::ReadyProgram(
+  vtkOpenGLRenderWindow* window, bool shade, bool multiPass, int numberOfLights)
+{
+  // The options that change the shader text; the sources from the builder
+  // (through the virtual hooks, which tests override).
+  vtkInternals& in = *this->Internals;
+  vtkLRSplineVolumeShaderBuilder* shaders = in.Shaders;
+  const vtkLRSplineVolumePreparer* prep = in.Preparer;
+  shaders->SetDegree(prep->GetDegree());
+  shaders->SetNumberOfComponents(prep->GetNumberOfComponents());
+  shaders->SetVectorMode(this->VectorMode);
+  shaders->SetVectorComponent(this->VectorComponent);
+  shaders->SetNumberOfPatches(prep->GetNumberOfPatches());
+  shaders->SetCurved(prep->GetCurved());
+  shaders->SetBlendMode(this->BlendMode);
+  shaders->SetShade(shade);
+  shaders->SetFuchsShading(this->ShadingModel == FUCHS);
+  shaders->SetTrim(this->GetTrimmingSurface() != nullptr);
+  shaders->SetCountSamples(this->CountSamples);
+  shaders->SetMultiPass(multiPass);
+  shaders->SetSupersampling(this->Supersampling);
+  shaders->SetNumberOfLights(numberOfLights);
+  const std::string fs = shaders->BuildFragmentShaderSource(this->GetFragmentShaderSource());
+  const std::string vs = this->GetVertexShaderSource();
+  // A source that failed once is not compiled again every frame.
+  vtkShaderProgram* program = (vs + fs) == in.FailedShader
+    ? nullptr
+    : window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  if (!program)
+  {
+    in.FailedShader = vs + fs;
+    in.Error = "the volume shader did not compile or link (see the message above)";
+  }
+  return program;
+}
+
+//------------------------------------------------------------------------------
+void vtkLRSplineVolumeMapper::SetTransformUniforms(vtkShaderProgram* program,
+  vtkMatrix4x4* dataToWorld, vtkMatrix4x4* dataToClip, const int viewport[4], const double box[6])
+{
+  vtkNew<vtkMatrix4x4> clipToData;
+  vtkMatrix4x4::Invert(dataToClip, clipToData);
+  float a3[9], n3[9];
+  vtkNew<vtkMatrix3x3> linear, normal;
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      linear->SetElement(r, c, dataToWorld->GetElement(r, c));
+    }
+  }
+  vtkMatrix3x3::Invert(linear, normal);
+  normal->Transpose();
+  for (int r = 0; r < 3; ++r)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      // Column-major for GLSL.
+      a3[3 * c + r] = static_cast<float>(linear->GetElement(r, c));
+      n3[3 * c + r] = static_cast<float>(normal->GetElement(r, c));
+    }
+  }
+  SetMatrix(program, "lrMCDCMatrix", dataToClip);
+  SetMatrix(program, "lrDCMCMatrix", clipToData);
+  program->SetUniformMatrix3x3("lrDataToWorld", a3);
+  program->SetUniformMatrix3x3("lrNormalMatrix", n3);
+  const float viewportF[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
+    static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
+  program->SetUniform4f("lrViewport", viewportF);
+  const float boxLo[3] = { static_cast<float>(box[0]), static_cast<float>(box[1]),
+    static_cast<float>(box[2]) };
+  const float boxHi[3] = { static_cast<float>(box[3]), static_cast<float>(box[4]),
+    static_cast<float>(box[5]) };
+  program->SetUniform3f("lrBoxLo", boxLo);
+  program->SetUniform3f("lrBoxHi", boxHi);
+}
+
+//------------------------------------------------------------------------------
+int vtkLRSplineVolumeMapper::SetSamplingUniforms(
+  vtkShaderProgram* program, vtkVolume* vol, bool multiPass, int stepsPerPass)
+{
+  double sampleDistance = 0.0;
+  const int maxSteps = this->ComputeStepCount(vol, sampleDistance);
+  program->SetUniformi("lrAdaptive", this->AdaptiveSteps ? 1 : 0);
+  program->SetUniformf("lrStepScale", static_cast<float>(this->StepScale));
+  program->SetUniformf("lrSampleDistance", static_cast<float>(sampleDistance));
+  // Mesa's llvmpipe ends a fragment's loops after 65,535 iterations in all
+  // (about 4,000 samples with the element look-up): say so, once per
+  // setting, when fixed steps need more (adaptive estimates are the worst
+  // case, finest everywhere, and rarely reached).
+  if (!multiPass && !this->AdaptiveSteps && maxSteps > 4000 && maxSteps != this->WarnedSteps)
+  {
+    // checked once per setting, not every frame
+    this->WarnedSteps = maxSteps;
+    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+    if (renderer && std::string(renderer).find("llvmpipe") != std::string::npos)
+    {
+      vtkWarningMacro(<< "rays need up to " << maxSteps << " samples at SampleDistance "
+                      << sampleDistance
+                      << ", but Mesa's llvmpipe ends a fragment's loops after 65,535 "
+                         "iterations (about 4,000 samples): long rays are cut short; use a "
+                         "larger SampleDistance or adaptive steps");
+    }
+  }
+  program->SetUniformi("lrMaxSteps", multiPass ? stepsPerPass : maxSteps);
+  program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
+  return maxSteps;
+}
+
+//------------------------------------------------------------------------------
 void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 {
   vtkInternals& in = *this->Internals;
@@ -1599,7 +1281,7 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   int stepsPerPass = this->MaximumStepsPerPass;
   if (stepsPerPass <= 0)
   {
-    stepsPerPass = in.Curved ? 400 : 2000;
+    stepsPerPass = in.Preparer->GetCurved() ? 400 : 2000;
   }
   double unusedDistance = 0.0;
   const bool multiPass =
@@ -1607,22 +1289,16 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
 
   // The program.
   const bool shade = property->GetShade(0) != 0 && !this->CountSamples;
-  const std::string fs = this->BuildFragmentShaderSource(shade, multiPass, lightList.size());
-  const bool trim = fs.find("#define LR_TRIM 1") != std::string::npos;
-  const std::string vs = this->GetVertexShaderSource();
-  // A source that failed once is not compiled again every frame.
-  vtkShaderProgram* program = (vs + fs) == in.FailedShader
-    ? nullptr
-    : window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
+  vtkShaderProgram* program =
+    this->ReadyProgram(window, shade, multiPass, static_cast<int>(lightList.size()));
   if (!program)
   {
-    in.FailedShader = vs + fs;
-    in.Error = "the volume shader did not compile or link (see the message above)";
     report();
     return;
   }
+  const bool trim = in.Shaders->GetTrim();
 
-  // Matrices: data (the volume's model coordinates) to clip space and back.
+  // Matrices: data (the volume's model coordinates) to clip space.
   int viewport[4];
   ren->GetTiledSizeAndOrigin(&viewport[2], &viewport[3], &viewport[0], &viewport[1]);
   if (viewport[2] < 1 || viewport[3] < 1)
@@ -1640,39 +1316,13 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   vtkMatrix4x4* dataToWorld = vol->GetMatrix();
   vtkNew<vtkMatrix4x4> dataToClip;
   vtkMatrix4x4::Multiply4x4(worldToClip, dataToWorld, dataToClip);
-  vtkNew<vtkMatrix4x4> clipToData;
-  vtkMatrix4x4::Invert(dataToClip, clipToData);
-  float a3[9], n3[9];
-  {
-    vtkNew<vtkMatrix3x3> linear, normal;
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        linear->SetElement(r, c, dataToWorld->GetElement(r, c));
-      }
-    }
-    vtkMatrix3x3::Invert(linear, normal);
-    normal->Transpose();
-    for (int r = 0; r < 3; ++r)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        // Column-major for GLSL.
-        a3[3 * c + r] = static_cast<float>(linear->GetElement(r, c));
-        n3[3 * c + r] = static_cast<float>(normal->GetElement(r, c));
-      }
-    }
-  }
-
-  vtkOpenGLState* state = window->GetState();
 
   // The opaque geometry's depth (rays end there).
   this->CopyOpaqueDepth(viewport);
 
   // The proxy box (the union of the patches' boxes).
-  double box[6] = { in.Bounds[0], in.Bounds[2], in.Bounds[4], in.Bounds[1], in.Bounds[3],
-    in.Bounds[5] };
+  const double* bounds = in.Preparer->GetBounds();
+  double box[6] = { bounds[0], bounds[2], bounds[4], bounds[1], bounds[3], bounds[5] };
   this->UpdateProxyBox(box);
 
   // Trimming: the nearest front faces and the farthest back faces.
@@ -1683,50 +1333,10 @@ void vtkLRSplineVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol)
   }
 
   // Uniforms.
-  SetMatrix(program, "lrMCDCMatrix", dataToClip);
-  SetMatrix(program, "lrDCMCMatrix", clipToData);
-  program->SetUniformMatrix3x3("lrDataToWorld", a3);
-  program->SetUniformMatrix3x3("lrNormalMatrix", n3);
-  const float viewportF[4] = { static_cast<float>(viewport[0]), static_cast<float>(viewport[1]),
-    static_cast<float>(viewport[2]), static_cast<float>(viewport[3]) };
-  program->SetUniform4f("lrViewport", viewportF);
-  const float boxLo[3] = { static_cast<float>(box[0]), static_cast<float>(box[1]),
-    static_cast<float>(box[2]) };
-  const float boxHi[3] = { static_cast<float>(box[3]), static_cast<float>(box[4]),
-    static_cast<float>(box[5]) };
-  program->SetUniform3f("lrBoxLo", boxLo);
-  program->SetUniform3f("lrBoxHi", boxHi);
+  this->SetTransformUniforms(program, dataToWorld, dataToClip, viewport, box);
   this->SetPatchUniforms(program);
-
   this->SetClippingPlaneUniforms(program, dataToWorld);
-
-  // Sampling.
-  double sampleDistance = 0.0;
-  const int maxSteps = this->ComputeStepCount(vol, sampleDistance);
-  program->SetUniformi("lrAdaptive", this->AdaptiveSteps ? 1 : 0);
-  program->SetUniformf("lrStepScale", static_cast<float>(this->StepScale));
-  program->SetUniformf("lrSampleDistance", static_cast<float>(sampleDistance));
-  // Mesa's llvmpipe ends a fragment's loops after 65,535 iterations in all
-  // (about 4,000 samples with the element look-up): say so, once per
-  // setting, when fixed steps need more (adaptive estimates are the worst
-  // case, finest everywhere, and rarely reached).
-  if (!multiPass && !this->AdaptiveSteps && maxSteps > 4000 && maxSteps != this->WarnedSteps)
-  {
-    // checked once per setting, not every frame
-    this->WarnedSteps = maxSteps;
-    const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-    if (renderer && std::string(renderer).find("llvmpipe") != std::string::npos)
-    {
-      vtkWarningMacro(<< "rays need up to " << maxSteps << " samples at SampleDistance "
-                      << sampleDistance
-                      << ", but Mesa's llvmpipe ends a fragment's loops after 65,535 "
-                         "iterations (about 4,000 samples): long rays are cut short; use a "
-                         "larger SampleDistance or adaptive steps");
-    }
-  }
-  program->SetUniformi("lrMaxSteps", multiPass ? stepsPerPass : maxSteps);
-  program->SetUniformf("lrJitter", this->UseJittering ? 1.0f : 0.0f);
-
+  const int maxSteps = this->SetSamplingUniforms(program, vol, multiPass, stepsPerPass);
   this->SetShadingUniforms(program, property, lightList, isoValues);
 
   this->ActivateTextures(program, trim);
@@ -1760,9 +1370,9 @@ int vtkLRSplineVolumeMapper::GetNumberOfPasses()
 //------------------------------------------------------------------------------
 int vtkLRSplineVolumeMapper::ComputeStepCount(vtkVolume* vol, double& sampleDistance)
 {
-  vtkInternals& in = *this->Internals;
-  const double box[6] = { in.Bounds[0], in.Bounds[2], in.Bounds[4], in.Bounds[1], in.Bounds[3],
-    in.Bounds[5] };
+  const vtkLRSplineVolumePreparer* prep = this->Internals->Preparer;
+  const double* bounds = prep->GetBounds();
+  const double box[6] = { bounds[0], bounds[2], bounds[4], bounds[1], bounds[3], bounds[5] };
   vtkMatrix4x4* dataToWorld = vol->GetMatrix();
   // The box's diagonal in world units.
   double diagonal = 0.0;
@@ -1791,12 +1401,13 @@ int vtkLRSplineVolumeMapper::ComputeStepCount(vtkVolume* vol, double& sampleDist
     dataDiagonal += (box[d + 3] - box[d]) * (box[d + 3] - box[d]);
   }
   dataDiagonal = std::sqrt(dataDiagonal);
-  const int maxDegree = std::max(in.Degree[0], std::max(in.Degree[1], in.Degree[2]));
+  const int* degree = prep->GetDegree();
+  const int maxDegree = std::max(degree[0], std::max(degree[1], degree[2]));
   const double steps = this->AdaptiveSteps
-    ? dataDiagonal / (this->StepScale * in.MinimumSide / (1 << maxDegree))
+    ? dataDiagonal / (this->StepScale * prep->GetMinimumSide() / (1 << maxDegree))
     : diagonal / sampleDistance;
-  return static_cast<int>(
-    std::min(1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(in.Patches.size())));
+  return static_cast<int>(std::min(
+    1.0e8, std::ceil(1.05 * steps) + 64.0 + 4.0 * static_cast<double>(prep->GetNumberOfPatches())));
 }
 
 //------------------------------------------------------------------------------
@@ -1937,7 +1548,7 @@ bool vtkLRSplineVolumeMapper::DrawPasses(vtkRenderer* ren, vtkShaderProgram* pro
 
   // The final colors (and isosurface depths) into the render target.
   const std::string vs = this->GetVertexShaderSource();
-  const std::string fs = vtkLRSplineVolumeCompositeFS;
+  const std::string fs = in.Shaders->GetCompositeFragmentShaderSource();
   vtkShaderProgram* composite =
     window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fs.c_str(), "");
   if (!composite)

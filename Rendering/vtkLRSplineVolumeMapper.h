@@ -333,7 +333,9 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   /**
-   * The shaders' sources (with the shared evaluation code). Tests override
+   * The ray caster's sources from vtkLRSplineVolumeShaderBuilder: the vertex
+   * stage, and the fragment template (with the shared evaluation code) that
+   * the builder completes with the options of each frame. Tests override
    * them to check that broken shaders are caught.
    */
   virtual std::string GetVertexShaderSource();
@@ -388,10 +390,19 @@ private:
   // fixed step (world units) for the volume's placement.
   int ComputeStepCount(vtkVolume* vol, double& sampleDistance);
 
-  // The fragment shader for this frame: the template with the defines of
-  // the spline's degrees and components, blend mode, shading, trimming,
-  // passes, supersampling and lights.
-  std::string BuildFragmentShaderSource(bool shade, bool multiPass, size_t numberOfLights);
+  // The ray caster's program for this frame: the options that change the
+  // shader text (spline, blend mode, shading, trimming, passes,
+  // supersampling, lights) into the shader builder, its source compiled;
+  // null (error set) when it does not compile or link.
+  vtkShaderProgram* ReadyProgram(
+    vtkOpenGLRenderWindow* window, bool shade, bool multiPass, int numberOfLights);
+  // The matrices (data to clip space and back, data to world, normals), the
+  // viewport and the proxy box.
+  void SetTransformUniforms(vtkShaderProgram* program, vtkMatrix4x4* dataToWorld,
+    vtkMatrix4x4* dataToClip, const int viewport[4], const double box[6]);
+  // The step settings and the samples per pass; returns the samples per ray.
+  int SetSamplingUniforms(
+    vtkShaderProgram* program, vtkVolume* vol, bool multiPass, int stepsPerPass);
   // The proxy box's triangles (the box, padded, data coordinates), when it changed.
   void UpdateProxyBox(const double box[6]);
   // ClippingPlanes (at most 6) as plane equations in data coordinates.

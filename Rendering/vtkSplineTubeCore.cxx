@@ -116,6 +116,13 @@ struct Box
     VTK_DOUBLE_MIN };
 };
 
+/// A thread's scratch for the nodes of a tube (TubeNodes()) and the box it grows.
+struct NodesAndBox : Box
+{
+  std::vector<double> P;
+  std::vector<double> M;
+};
+
 /// The union of the threads' boxes (a Local is or derives from Box).
 template <typename Local>
 void MergeBounds(vtkSMPThreadLocal<Local>& locals, double bounds[6])
@@ -234,7 +241,7 @@ struct vtkSplineTubeCore::Internals
     }
 
     /**
-     * Scan line `line` of the input: calls keep(pointId) for every node kept
+     * Scan line `line` of the input: calls keep(pointId, xyzr) for every node kept
      * (repeated consecutive points merged); stops at the first point with a
      * non-finite coordinate, radius or scalar, or a radius <= 0.
      */
@@ -278,7 +285,7 @@ struct vtkSplineTubeCore::Internals
             continue;
           }
         }
-        keep(pts[k]);
+        keep(pts[k], p);
         ++scan.Kept;
         scan.MaxRadius = std::max(scan.MaxRadius, p[3]);
         std::copy(p, p + 3, last);
@@ -449,6 +456,7 @@ void vtkSplineTubeCore::Initialize()
   this->ChunkSizes->SetNumberOfTuples(0);
   this->SegmentSpheres->SetNumberOfTuples(0);
   vtkMath::UninitializeBounds(this->Bounds);
+  vtkMath::UninitializeBounds(this->NodeBounds);
   this->ColorsGiven = false;
   this->ColorsMissing = false;
   this->MaximumRadius = 0.0;
@@ -640,15 +648,37 @@ bool vtkSplineTubeCore::AddPolyData(
   using LineScan = Internals::LineScan;
   std::vector<LineScan> scans(static_cast<size_t>(numLines));
   vtkSMPThreadLocalObject<vtkIdList> scratch;
+  vtkSMPThreadLocal<Box> nodeBoxes; // of the lines that become tubes
   vtkSMPTools::For(0, numLines,
     [&](vtkIdType begin, vtkIdType end)
     {
       vtkIdList* s = scratch.Local();
+      double* nodeBox = nodeBoxes.Local().B;
       for (vtkIdType line = begin; line < end; ++line)
       {
-        source.ScanLine(line, s, scans[line], [](vtkIdType) {});
+        Box lineBox;
+        source.ScanLine(line, s, scans[line],
+          [&](vtkIdType, const double xyzr[4])
+          {
+            const double point[6] = { xyzr[0], xyzr[0], xyzr[1], xyzr[1], xyzr[2], xyzr[2] };
+            AddBox(lineBox.B, point);
+          });
+        if (scans[line].Status == Internals::LINE_OK && scans[line].Kept >= 2)
+        {
+          AddBox(nodeBox, lineBox.B);
+        }
       }
     });
+  double nodeBounds[6];
+  MergeBounds(nodeBoxes, nodeBounds);
+  if (vtkMath::AreBoundsInitialized(nodeBounds))
+  {
+    if (!vtkMath::AreBoundsInitialized(this->NodeBounds))
+    {
+      std::copy(nodeBounds, nodeBounds + 6, this->NodeBounds);
+    }
+    AddBox(this->NodeBounds, nodeBounds);
+  }
 
   const vtkIdType firstCellId = source.FirstCellId;
   const unsigned int sourceIndex = static_cast<unsigned int>(in.Sources.size());
@@ -718,8 +748,8 @@ bool vtkSplineTubeCore::AddPolyData(
   {
     vtkIdType k = in.Tubes[t].Merged;
     LineScan scan;
-    source.ScanLine(
-      in.Tubes[t].Line, list, scan, [&](vtkIdType pid) { in.MergedPoints[k++] = pid; });
+    source.ScanLine(in.Tubes[t].Line, list, scan,
+      [&](vtkIdType pid, const double*) { in.MergedPoints[k++] = pid; });
   }
 
   if (mergedHere > 0)
@@ -1121,44 +1151,39 @@ void vtkSplineTubeCore::BuildChunks()
   float* sizes = this->ChunkSizes->GetPointer(0);
   vtkTypeUInt32* segmentSpheres = this->SegmentSpheres->GetPointer(0);
 
-  struct Scratch
-  {
-    std::vector<double> P;
-    std::vector<double> M;
-  };
-  vtkSMPThreadLocal<Scratch> scratch;
-
-  // Pass 1: per chunk its box (kept until the centre is known), sizes, first
-  // segment and tube; the bounds by thread.
-  std::vector<double> boxes(static_cast<size_t>(6 * numChunks));
-  vtkSMPThreadLocal<Box> locals;
+  // One pass over the tubes (the centre, the spheres' origin, is known from
+  // AddPolyData()): per chunk its segments' boxes, from them its box, sizes
+  // and sphere, then its segments' spheres relative to the chunk's; the
+  // bounds by thread.
+  double center[3];
+  this->GetCenter(center);
+  vtkSMPThreadLocal<NodesAndBox> locals;
   vtkSMPTools::For(0, numTubes,
     [&](vtkIdType begin, vtkIdType end)
     {
-      double* B = locals.Local().B;
-      Scratch& s = scratch.Local();
+      NodesAndBox& local = locals.Local();
       for (vtkIdType t = begin; t < end; ++t)
       {
-        const vtkIdType n = in.TubeNodes(t, s.P, s.M);
+        const vtkIdType n = in.TubeNodes(t, local.P, local.M);
         vtkIdType k = 0; // segment of the tube
         for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
         {
-          chunkFirst[c] = static_cast<vtkTypeUInt32>(in.TubeFirst[t] - t + k);
+          const vtkIdType firstSegment = in.TubeFirst[t] - t + k;
+          chunkFirst[c] = static_cast<vtkTypeUInt32>(firstSegment);
           chunkTube[c] = static_cast<vtkTypeUInt32>(t);
-          double* box = &boxes[6 * c];
-          const Box empty;
-          std::copy(empty.B, empty.B + 6, box);
+          double segmentBounds[ChunkSegments][6];
+          Box box;
           double length = 0.0;
           double maxLength = 0.0;
           double maxRadius = 0.0;
           const vtkIdType stop = std::min<vtkIdType>(n - 1, k + ChunkSegments);
-          for (; k < stop; ++k)
+          const vtkIdType chunkSegments = stop - k;
+          for (vtkIdType j = 0; j < chunkSegments; ++j, ++k)
           {
-            double segmentBounds[6];
             double control[4][3];
             double r = 0.0;
-            SegmentBox(s.P.data(), s.M.data(), k, segmentBounds, control, r);
-            AddBox(box, segmentBounds);
+            SegmentBox(local.P.data(), local.M.data(), k, segmentBounds[j], control, r);
+            AddBox(box.B, segmentBounds[j]);
             double polygon = 0.0;
             for (int q = 0; q < 3; ++q)
             {
@@ -1168,62 +1193,43 @@ void vtkSplineTubeCore::BuildChunks()
             maxLength = std::max(maxLength, polygon);
             maxRadius = std::max(maxRadius, r);
           }
-          AddBox(B, box);
+          AddBox(local.B, box.B);
           sizes[3 * c] = static_cast<float>(length);
           sizes[3 * c + 1] = static_cast<float>(maxLength);
           sizes[3 * c + 2] = static_cast<float>(maxRadius);
+
+          // The sphere around the box, relative to the centre (rounding to
+          // float covered by a relative margin), and the segments' spheres.
+          double radius2 = 0.0;
+          double extent = 0.0;
+          for (int q = 0; q < 3; ++q)
+          {
+            const double mid = 0.5 * (box.B[2 * q] + box.B[2 * q + 1]);
+            spheres[4 * c + q] = static_cast<float>(mid - center[q]);
+            radius2 += 0.25 * (box.B[2 * q + 1] - box.B[2 * q]) * (box.B[2 * q + 1] - box.B[2 * q]);
+            extent = std::max(extent, std::abs(mid - center[q]));
+          }
+          const double radius = std::sqrt(radius2);
+          spheres[4 * c + 3] = static_cast<float>(radius + 1e-6 * (radius + extent));
+          for (vtkIdType j = 0; j < chunkSegments; ++j)
+          {
+            const double* b = segmentBounds[j];
+            double part[4];
+            double partRadius2 = 0.0;
+            for (int q = 0; q < 3; ++q)
+            {
+              part[q] = 0.5 * (b[2 * q] + b[2 * q + 1]) - center[q];
+              partRadius2 += 0.25 * (b[2 * q + 1] - b[2 * q]) * (b[2 * q + 1] - b[2 * q]);
+            }
+            part[3] = std::sqrt(partRadius2) * (1.0 + 1e-6) + 1e-6 * extent;
+            segmentSpheres[firstSegment + j] =
+              vtkSplineTubeVisibility::EncodePart(spheres + 4 * c, part);
+          }
         }
       }
     });
   chunkFirst[numChunks] = static_cast<vtkTypeUInt32>(numSegments);
   MergeBounds(locals, this->Bounds);
-
-  // Pass 2: the spheres around the boxes, relative to the centre (rounding
-  // to float covered by a relative margin), and the segments' spheres.
-  double center[3];
-  this->GetCenter(center);
-  vtkSMPTools::For(0, numTubes,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      Scratch& s = scratch.Local();
-      for (vtkIdType t = begin; t < end; ++t)
-      {
-        const vtkIdType n = in.TubeNodes(t, s.P, s.M);
-        const vtkIdType firstSegment = in.TubeFirst[t] - t;
-        for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
-        {
-          const double* box = &boxes[6 * c];
-          double radius2 = 0.0;
-          double extent = 0.0;
-          for (int k = 0; k < 3; ++k)
-          {
-            const double mid = 0.5 * (box[2 * k] + box[2 * k + 1]);
-            spheres[4 * c + k] = static_cast<float>(mid - center[k]);
-            radius2 += 0.25 * (box[2 * k + 1] - box[2 * k]) * (box[2 * k + 1] - box[2 * k]);
-            extent = std::max(extent, std::abs(mid - center[k]));
-          }
-          const double radius = std::sqrt(radius2);
-          spheres[4 * c + 3] = static_cast<float>(radius + 1e-6 * (radius + extent));
-          for (vtkIdType segment = chunkFirst[c]; segment < chunkFirst[c + 1]; ++segment)
-          {
-            double segmentBounds[6];
-            double control[4][3];
-            double r = 0.0;
-            SegmentBox(s.P.data(), s.M.data(), segment - firstSegment, segmentBounds, control, r);
-            double part[4];
-            double partRadius2 = 0.0;
-            for (int k = 0; k < 3; ++k)
-            {
-              part[k] = 0.5 * (segmentBounds[2 * k] + segmentBounds[2 * k + 1]) - center[k];
-              partRadius2 += 0.25 * (segmentBounds[2 * k + 1] - segmentBounds[2 * k]) *
-                (segmentBounds[2 * k + 1] - segmentBounds[2 * k]);
-            }
-            part[3] = std::sqrt(partRadius2) * (1.0 + 1e-6) + 1e-6 * extent;
-            segmentSpheres[segment] = vtkSplineTubeVisibility::EncodePart(spheres + 4 * c, part);
-          }
-        }
-      }
-    });
 }
 
 //------------------------------------------------------------------------------
@@ -1244,16 +1250,11 @@ void vtkSplineTubeCore::BuildBounds()
     return;
   }
   // The same boxes as the chunk table's spheres contain, by thread.
-  struct Local : Box
-  {
-    std::vector<double> P;
-    std::vector<double> M;
-  };
-  vtkSMPThreadLocal<Local> locals;
+  vtkSMPThreadLocal<NodesAndBox> locals;
   vtkSMPTools::For(0, numTubes,
     [&](vtkIdType begin, vtkIdType end)
     {
-      Local& local = locals.Local();
+      NodesAndBox& local = locals.Local();
       for (vtkIdType t = begin; t < end; ++t)
       {
         const vtkIdType n = in.TubeNodes(t, local.P, local.M);
@@ -1275,8 +1276,8 @@ void vtkSplineTubeCore::GetCenter(double center[3]) const
 {
   for (int k = 0; k < 3; ++k)
   {
-    center[k] = vtkMath::AreBoundsInitialized(this->Bounds)
-      ? 0.5 * (this->Bounds[2 * k] + this->Bounds[2 * k + 1])
+    center[k] = vtkMath::AreBoundsInitialized(this->NodeBounds)
+      ? 0.5 * (this->NodeBounds[2 * k] + this->NodeBounds[2 * k + 1])
       : 0.0;
   }
 }

@@ -280,7 +280,11 @@ public:
   vtkTypeUInt32Array* GetSegmentSpheres() { return this->SegmentSpheres; }
   ///@}
 
-  /// The centre of the tubes' bounds (the origin of the chunk spheres).
+  /**
+   * The centre of the box of the tubes' nodes, known once AddPolyData() has
+   * run: the origin of the chunk spheres and of the positions the mappers
+   * upload (FillNodes() `shift`), so that floats keep their precision.
+   */
   void GetCenter(double center[3]) const;
 
   /// True when colors were given for every piece added.
@@ -339,6 +343,7 @@ protected:
   vtkNew<vtkFloatArray> ChunkSizes;
   vtkNew<vtkTypeUInt32Array> SegmentSpheres;
   double Bounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
+  double NodeBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 }; ///< of the tubes' nodes
 
   bool ColorsGiven = false;
   bool ColorsMissing = false;

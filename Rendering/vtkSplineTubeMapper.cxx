@@ -315,15 +315,7 @@ bool vtkSplineTubeMapper::UpdateTubeCore()
                     << " cells but no polylines (line or polyline cells): no tubes to draw.");
   }
 
-  double bounds[6];
-  this->Core->GetBounds(bounds);
-  if (vtkMath::AreBoundsInitialized(bounds))
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      this->Shift[c] = 0.5 * (bounds[2 * c] + bounds[2 * c + 1]);
-    }
-  }
+  this->Core->GetCenter(this->Shift); // what the chunk spheres are relative to
   this->LastInput = input;
   this->LastInputMTime = input ? input->GetMTime() : 0;
   this->LastSignature = signature;

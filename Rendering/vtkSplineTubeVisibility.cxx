@@ -160,14 +160,15 @@ void vtkSplineTubeVisibility::SetChunks(const float* spheres, const std::uint32_
 //------------------------------------------------------------------------------
 std::uint32_t vtkSplineTubeVisibility::EncodePart(const float chunk[4], const double part[4])
 {
-  const double r = std::max(static_cast<double>(chunk[3]), 1e-30);
+  const double inverse = 1.0 / std::max(static_cast<double>(chunk[3]), 1e-30);
   std::uint32_t code = 0;
   for (int k = 0; k < 3; ++k)
   {
-    const double o = std::max(-1.0, std::min(1.0, (part[k] - chunk[k]) / r));
-    code |= static_cast<std::uint32_t>(std::lround((o + 1.0) * 127.5)) << (8 * k);
+    const double o = std::max(-1.0, std::min(1.0, (part[k] - chunk[k]) * inverse));
+    // Rounded to nearest (o + 1 >= 0: adding a half and truncating is lround, without its call).
+    code |= static_cast<std::uint32_t>((o + 1.0) * 127.5 + 0.5) << (8 * k);
   }
-  const double q = std::ceil(std::max(0.0, part[3]) / r * 255.0);
+  const double q = std::ceil(std::max(0.0, part[3]) * inverse * 255.0);
   code |= static_cast<std::uint32_t>(std::min(255.0, q)) << 24;
   return code;
 }

@@ -26,9 +26,9 @@ struct ThinView
   double PixelScale;  // pixels per view unit at clip w = 1
   double RadiusScale; // model to view
   double Shift[3];
-  double SideLength; // pixels per ring edge (2 MaxSilhouetteEdgeLength)
-  double Edge;       // longest edge along the tube, pixels (svThinEdgeFactor MaxEdgeLength)
-  double MaxLevel;   // MaxTessellationLevel
+  double SideLength;    // pixels per ring edge (2 MaxSilhouetteEdgeLength)
+  double MaxEdgeLength; // longest edge along the tube, pixels
+  double MaxLevel;      // MaxTessellationLevel
   bool Parallel;
 };
 
@@ -109,10 +109,10 @@ bool ThinScreen(const ThinView& v, const ViewNode& n, double p[2])
 
 /// Rings along a thin run of `count` segments from node `first`: the level
 /// the control stage's single-patch mode sets (tubeSinglePatch: edges at
-/// most Edge pixels on screen, chords within a quarter pixel of the curve on
-/// screen and within a tenth of the radius in space, 1.7 times that inside
-/// runs, whose chords straddle the curve), and the intervals of its first
-/// and last rings. The same bounds, through the same functions
+/// most MaxEdgeLength pixels on screen, chords within a quarter pixel of the
+/// curve on screen and within a tenth of the radius in space, 1.7 times that
+/// inside runs, whose chords straddle the curve), and the intervals of its
+/// first and last rings. The same bounds, through the same functions
 /// (vtkSplineTubeMathShared.glsl's svThin...), computed once per view on the
 /// CPU instead of per patch on the GPU.
 void ThinChunkLevels(const ThinView& v, const double* P, const double* M, vtkIdType first,
@@ -146,8 +146,8 @@ void ThinChunkLevels(const ThinView& v, const double* P, const double* M, vtkIdT
     const double radius = std::min({ a.R, b.R, middle.w });
     const double sagittaLevel =
       vtkSplineTubeMath::svThinSagittaLevel(sagitta, w, radius, v.PixelScale);
-    along =
-      std::min(std::max(std::max(std::min(screen / v.Edge, v.MaxLevel), sagittaLevel), 1.0), 64.0);
+    along = std::min(
+      std::max(std::max(std::min(screen / v.MaxEdgeLength, v.MaxLevel), sagittaLevel), 1.0), 64.0);
     return;
   }
   double total = 0.0;
@@ -204,7 +204,8 @@ void ThinChunkLevels(const ThinView& v, const double* P, const double* M, vtkIdT
     previous3 = p3;
   }
   along = std::min(
-    std::max(std::ceil(std::max({ total / v.Edge, total / shortest, total3 / shortest3 })), 1.0),
+    std::max(
+      std::ceil(std::max({ total / v.MaxEdgeLength, total / shortest, total3 / shortest3 })), 1.0),
     64.0);
 }
 
@@ -543,7 +544,7 @@ void vtkTessellatedTubeLevels::ClassifyThin(std::uint32_t c)
     thin.RadiusScale = view.RadiusScale;
     core->GetCenter(thin.Shift);
     thin.SideLength = 2.0 * settings.MaxSilhouetteEdgeLength;
-    thin.Edge = vtkSplineTubeMath::svThinEdgeFactor * settings.MaxEdgeLength;
+    thin.MaxEdgeLength = settings.MaxEdgeLength;
     thin.MaxLevel = settings.MaxTessellationLevel;
     thin.Parallel = view.Parallel;
     // The chunk's nodes, read from the core.

@@ -24,12 +24,14 @@
 //    composited front to back (their depth written for the first one).
 // Shading uses the exact gradient: VTK's ambient / diffuse / specular model
 // (two-sided, as VTK's volume mappers) or Fuchs' diffuse max(0.4, |l . n|).
-// Constants the mapper defines: LR_DU, LR_DV, LR_DW (degrees, <= 3), LR_NC
-// (components), LR_COMPONENT (-1: the vector's magnitude), LR_BLEND,
-// LR_SHADE, LR_FUCHS, LR_TRIM, LR_SAMPLE_COUNT, LR_MAX_PATCHES, LR_ISO,
-// LR_PATCHES (the number of patches), LR_SUPERSAMPLING and LR_LIGHTS: loop bounds known
-// at compile time, so that the compiler unrolls those loops (llvmpipe caps the
-// loop iterations of a whole invocation at 65535, shared by all loops).
+// Constants vtkLRSplineVolumeShaderBuilder defines: LR_DU, LR_DV, LR_DW
+// (degrees, <= 3), LR_NC (components), LR_COMPONENT (-1: the vector's
+// magnitude), LR_BLEND, LR_SHADE, LR_FUCHS, LR_TRIM, LR_SAMPLE_COUNT,
+// LR_CURVED, LR_MULTIPASS; the array sizes LR_MAX_PATCHES, LR_ISO and
+// LR_CLIP_PLANES; LR_PATCHES (the number of patches), LR_SUPERSAMPLING and
+// LR_LIGHTS: loop bounds known at compile time, so that the compiler unrolls
+// those loops (llvmpipe caps the loop iterations of a whole invocation at
+// 65535, shared by all loops).
 
 //VTK::Output::Dec
 
@@ -72,7 +74,7 @@ uniform vec3 lrBoxLo;       // all patches (data coordinates)
 uniform vec3 lrBoxHi;
 uniform sampler2D lrDepth;  // the opaque geometry's depth
 uniform int lrNumberOfClipPlanes;
-uniform vec4 lrClipPlanes[6]; // data coordinates: kept where dot(n, x) + w >= 0
+uniform vec4 lrClipPlanes[LR_CLIP_PLANES]; // data coordinates: kept where dot(n, x) + w >= 0
 #if LR_TRIM
 uniform sampler2D lrTrimFront; // nearest front face of the trimming surface
 uniform sampler2D lrTrimBack;  // farthest back face
@@ -95,7 +97,7 @@ uniform float lrSpecular;
 uniform float lrSpecularPower;
 uniform vec3 lrLightDirections[LR_LIGHTS]; // world coordinates, toward each light
 uniform vec3 lrLightColors[LR_LIGHTS];     // diffuse color times intensity
-uniform float lrIsoValues[8];
+uniform float lrIsoValues[LR_ISO];
 uniform int lrNumberOfIsoValues;
 uniform int lrBisections;
 

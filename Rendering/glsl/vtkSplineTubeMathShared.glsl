@@ -855,15 +855,14 @@ vec3 svTubeWallNormal(
 // CPU, which must agree). A thin tube's wall is the view-facing half of its
 // cross-section; along the curve its chords stay within svThinSagittaPixels
 // pixels of it on screen and within svThinDepthSagitta radii in space, edges
-// at most svThinEdgeFactor times MaxEdgeLength on screen. A quarter pixel and
-// edges of MaxEdgeLength keep the silhouettes of tubes a few pixels wide
+// at most MaxEdgeLength on screen. A quarter pixel and edges of
+// MaxEdgeLength keep the silhouettes of tubes a few pixels wide
 // where TestTubeFidelity wants them (IoU >= 0.98 on curved tubes; in a dense
 // bundle a silhouette a pixel off shows the tube behind it): half a pixel
 // and edges of 4 MaxEdgeLength gave IoU 0.979 on the curls and the depth on
 // 95.9 % of a dense bundle, for 3-4 % shorter whole-brain frames.
 const real svThinSagittaPixels = 0.25;
 const real svThinDepthSagitta = 0.1;
-const real svThinEdgeFactor = 1.0;
 // Inside a run of segments the chords straddle the curve (deviation at most
 // half the sagitta, 3/4 next to the run's ends): in space sagittas 1.7 times
 // svThinDepthSagitta are admitted (the chords then stay within 0.85 of it,

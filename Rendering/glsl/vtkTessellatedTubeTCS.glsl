@@ -75,8 +75,8 @@ uniform int tubeCaps;
 uniform int tubeSides;        // 1: one patch around the segment
 uniform float tubeSideLength; // pixels per ring edge in the single-patch mode
 
-// The bounds of thin tubes: svThinSagittaPixels, svThinDepthSagitta,
-// svThinEdgeFactor and svThinRunStraddle (vtkSplineTubeMathShared.glsl).
+// The bounds of thin tubes: tubeMaxEdgeLength, svThinSagittaPixels,
+// svThinDepthSagitta and svThinRunStraddle (vtkSplineTubeMathShared.glsl).
 uniform vec4 tubeFrustum[6]; // view-coordinate planes, inside: dot >= 0
 
 //SV::SplineTubeMath::Dec
@@ -247,8 +247,8 @@ float tubeRunLevel(int first, int count)
     previous = p;
     previous3 = node.xyz;
   }
-  float edge = svThinEdgeFactor * tubeMaxEdgeLength;
-  return clamp(ceil(max(max(total / edge, total / shortest), total3 / shortest3)), 1.0, 64.0);
+  return clamp(
+    ceil(max(max(total / tubeMaxEdgeLength, total / shortest), total3 / shortest3)), 1.0, 64.0);
 }
 
 void tubeSinglePatch(ivec4 info, int flags, int kind)
@@ -313,7 +313,7 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
       float sagitta = svThinSegmentSagitta(seg.p0, seg.m0, seg.p1, seg.m1, tD - tA);
       vec4 middle = svHermite(seg.p0, seg.m0, seg.p1, seg.m1, 0.5 * (tA + tD));
       float w = (VCDCMatrix * vec4(middle.xyz, 1.0)).w;
-      along = clamp(max(min(screen / (svThinEdgeFactor * tubeMaxEdgeLength), tubeMaxLevel),
+      along = clamp(max(min(screen / tubeMaxEdgeLength, tubeMaxLevel),
                       svThinSagittaLevel(sagitta, w, min(min(pA.w, pD.w), middle.w), tubePixelScale())),
         1.0, 64.0);
     }

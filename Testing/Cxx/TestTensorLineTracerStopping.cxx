@@ -12,8 +12,10 @@
 //  - negative eigenvalues (stop, or absolute values), NaN tensors, zero
 //    tensors (low FA, or no direction with a zero threshold);
 //  - bad input: empty seeds, missing source, missing/cell/wrong-size tensor
-//    arrays, layout mismatch, bad mask, bad step, empty input: clear
-//    messages, no crash.
+//    arrays, layout mismatch, bad mask (missing, named "None" but missing,
+//    cell data, 3 components), bad step, empty input: clear messages, no
+//    crash; a point array named "None" is a mask like any other, an empty
+//    name no mask.
 #include "vtkTensorLineTracer.h"
 
 #include "vtkSplineVizTensorMath.h"
@@ -289,6 +291,30 @@ void TestDomainMaskLengthSteps(SplineVizTestStatus& status)
       maskedByType.Lines[0].Points == masked.Lines[0].Points);
   SV_CHECK(status, maskedByType.Tracer->GetNumberOfRejectedSeeds() == 1);
   img->GetPointData()->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
+  // The filter knows no GUI's word for "no array": a point array named
+  // "None" is a mask like any other, and an empty name (or no selection) is
+  // no mask, without a message.
+  {
+    auto named = vtkSmartPointer<vtkImageData>::New();
+    named->DeepCopy(img);
+    vtkDataArray* copy = named->GetPointData()->GetArray("Mask");
+    copy->SetName("None");
+    Run maskedNone(named, { { 0.1, 0.2, 0.3 }, { 2.0, 0.0, 0.0 } }, h,
+      [](vtkTensorLineTracer* t)
+      { t->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "None"); });
+    SV_CHECK(status,
+      maskedNone.Lines.size() == 1 && masked.Lines.size() == 1 &&
+        maskedNone.Lines[0].Points == masked.Lines[0].Points);
+    SV_CHECK(status, maskedNone.Tracer->GetNumberOfRejectedSeeds() == 1);
+    SV_CHECK(status, !maskedNone.Observer->GetError());
+  }
+  Run emptyName(img, { { 0.1, 0.2, 0.3 } }, h,
+    [](vtkTensorLineTracer* t)
+    { t->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, ""); });
+  SV_CHECK(status, !emptyName.Observer->GetError() && !emptyName.Observer->GetWarning());
+  SV_CHECK(status,
+    emptyName.Lines.size() == 1 && domain.Lines.size() == 1 &&
+      emptyName.Lines[0].Points == domain.Lines[0].Points);
 
   Run length(
     img, { { 0.1, 0.2, 0.3 } }, h, [](vtkTensorLineTracer* t) { t->SetMaximumPropagation(1.0); });
@@ -492,6 +518,12 @@ void TestBadInput(SplineVizTestStatus& status)
     { "the mask array 'Missing' is not a point array",
       [](vtkImageData*, vtkTensorLineTracer* t)
       { t->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Missing"); } },
+    // "None" is ParaView's label for no array (its plugin clears the
+    // selection); to the filter it is a name like any other.
+    { "the mask array 'None' is not a point array of vtkImageData: select a 1-component point "
+      "array",
+      [](vtkImageData*, vtkTensorLineTracer* t)
+      { t->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "None"); } },
     { "must have one component",
       [](vtkImageData* im, vtkTensorLineTracer* t)
       {

@@ -2,19 +2,19 @@
 """pvbatch: the "Ray-Cast Tubes" representation of the SplineViz plugin on a
 ParaView pipeline (the synthetic fibers source), with a radius array,
 scalar coloring and the ray-casting properties; checks that the tubes are
-drawn (coverage well above that of 1-pixel lines) and that the properties
-reach the mapper; then the endpoint markers (a property the tube
-representations share)."""
+drawn (coverage well above that of 1-pixel lines, and the picture against
+its baseline image) and that the properties reach the mapper; then the
+endpoint markers (a property the tube representations share)."""
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
+from splineviz_testing import compare_baseline, fibers_scene
 from splineviz_testing import coverage as image_coverage
-from splineviz_testing import fibers_scene
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
-fibers, view, display = fibers_scene(globals())
+fibers, view, display = fibers_scene(globals(), baseline=True)
 
 
 def coverage(name):
@@ -36,6 +36,8 @@ print("coverage: lines %.3f, ray-cast tubes %.3f" % (lines, tubes))
 if tubes < 2.0 * lines or tubes < 0.1:
     print("ERROR: the ray-cast tubes did not render")
     sys.exit(1)
+# The picture itself, against its baseline (Testing/Data/Baseline).
+compare_baseline(view, "TestPluginRayCastTubes.png")
 
 # The properties reached the mapper on the (local) server.
 sub = display.GetClientSideObject().GetActiveRepresentation()

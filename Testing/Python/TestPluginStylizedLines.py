@@ -5,7 +5,8 @@ properties it shares with the tube representations and its own properties.
 Checks that the lines are drawn as tubes (coverage well above that of
 1-pixel lines and within 10 % of the ray-cast tubes of the same radii, which
 follow splines through the points instead of the straight segments; the
-exact comparison with vtkTubeFilter is TestStylizedLineReference), that every documented property reaches
+exact comparison with vtkTubeFilter is TestStylizedLineReference; the
+picture against its baseline image), that every documented property reaches
 both mappers, that the halo in the background color changes the picture and
 a texture pattern does too, and that picking reports the polyline."""
 import sys
@@ -13,11 +14,11 @@ import sys
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
+from splineviz_testing import compare_baseline, fibers_scene
 from splineviz_testing import coverage as image_coverage
-from splineviz_testing import fibers_scene
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
-fibers, view, display = fibers_scene(globals())
+fibers, view, display = fibers_scene(globals(), baseline=True)
 
 
 def coverage(name):
@@ -53,6 +54,8 @@ if stylized < 2.0 * lines or stylized < 0.1:
     fail("the stylized lines did not render")
 if abs(stylized - reference) > 0.1 * reference:
     fail("the stylized lines and the ray-cast tubes cover different areas")
+# The picture itself, against its baseline (Testing/Data/Baseline).
+compare_baseline(view, "TestPluginStylizedLines.png")
 
 sub = display.GetClientSideObject().GetActiveRepresentation()
 mapper = sub.GetActor().GetMapper()

@@ -2,17 +2,17 @@
 """pvbatch: the "Superquadric Glyphs" representation of the SplineViz plugin
 on a tensor volume (vtkImageData from a Programmable Source, DIPY-ordered
 tensors): a glyph at EVERY voxel (not only the surface, which is what
-vtkGeometryRepresentation's geometry filter would keep), the properties reach
-the mapper, changing gamma re-renders without uploading the tensors again,
-coloring by an array works, and a multiblock of two volumes gets the glyphs
-of both."""
+vtkGeometryRepresentation's geometry filter would keep; the picture against
+its baseline image), the properties reach the mapper, changing gamma
+re-renders without uploading the tensors again, coloring by an array
+works, and a multiblock of two volumes gets the glyphs of both."""
 import builtins
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
-from splineviz_testing import coverage as image_coverage, white_view
+from splineviz_testing import compare_baseline, coverage as image_coverage, white_view
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 
@@ -51,7 +51,7 @@ self.GetExecutive().GetOutputInformation(0).Set(
 
 tensor_volume = ProgrammableSource(OutputDataSetType="vtkImageData", Script=SCRIPT,  # noqa: F405
                             ScriptRequestInformation=INFO)
-view = white_view((500, 400))
+view = white_view((500, 400), baseline=True)
 display = Show(tensor_volume, view)  # noqa: F405
 if display.GetXMLName() != "UniformGridRepresentation":
     print("ERROR: unexpected representation", display.GetXMLName())
@@ -84,6 +84,8 @@ if mapper.GetNumberOfGlyphs() != 216:
 if cov3 < 0.1:
     print("ERROR: the glyphs did not render")
     sys.exit(1)
+# The picture itself, against its baseline (Testing/Data/Baseline).
+compare_baseline(view, "TestPluginSuperquadricGlyphs.png")
 checks = [(mapper.GetTensorArray(), "DTI"), (mapper.GetTensorLayout(), 2),
           (round(mapper.GetScaleFactor(), 6), 0.45), (mapper.GetGamma(), 3.0)]
 for got, expected in checks:

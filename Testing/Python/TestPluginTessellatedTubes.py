@@ -3,19 +3,19 @@
 a ParaView pipeline (the synthetic fibers source), with a radius array,
 scalar coloring and the tessellation properties. Checks that the tubes are
 drawn (coverage well above that of 1-pixel lines and close to the ray-cast
-tubes of the same radii), that every documented property reaches both
-mappers, and that the refinement properties act (a GL_PRIMITIVES_GENERATED
+tubes of the same radii; the picture against its baseline image), that
+every documented property reaches both mappers, and that the refinement properties act (a GL_PRIMITIVES_GENERATED
 count of the mapper: the base mesh alone generates fewer triangles)."""
 import sys
 
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz  # noqa: F401  (Python wrappers of the SplineViz classes)
+from splineviz_testing import compare_baseline, fibers_scene
 from splineviz_testing import coverage as image_coverage
-from splineviz_testing import fibers_scene
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
-fibers, view, display = fibers_scene(globals())
+fibers, view, display = fibers_scene(globals(), baseline=True)
 
 
 def coverage(name):
@@ -41,6 +41,8 @@ if tubes < 2.0 * lines or tubes < 0.1:
 if abs(tubes - rayCast) > 0.05 * rayCast:
     print("ERROR: the tessellated and ray-cast tubes cover different areas")
     sys.exit(1)
+# The picture itself, against its baseline (Testing/Data/Baseline).
+compare_baseline(view, "TestPluginTessellatedTubes.png")
 
 sub = display.GetClientSideObject().GetActiveRepresentation()
 mapper = sub.GetActor().GetMapper()

@@ -113,19 +113,15 @@ def output_dir():
     return out
 
 
-def fibers_scene(ns, size=(600, 450)):
-    """SyntheticFibers (Preset Fibers) shown on white, colored by its Scalar
-    array, seen from a fixed camera. `ns`: the namespace LoadPlugin gave the
-    plugin's functions to (the test's globals()). Returns (source, view,
-    display)."""
+def fibers_scene(ns, size=(600, 450), baseline=False):
+    """SyntheticFibers (Preset Fibers) shown on white (a white_view(), with
+    `baseline` as there), colored by its Scalar array, seen from a fixed
+    camera. `ns`: the namespace LoadPlugin gave the plugin's functions to
+    (the test's globals()). Returns (source, view, display)."""
     from paraview import simple
 
     fibers = ns["SyntheticFibers"](Preset=1)
-    view = simple.CreateRenderView()
-    view.ViewSize = list(size)
-    view.UseColorPaletteForBackground = 0
-    view.Background = [1, 1, 1]
-    view.OrientationAxesVisibility = 0
+    view = white_view(size, baseline)
     display = simple.Show(fibers, view)
     simple.ColorBy(display, ("POINTS", "Scalar"))
     simple.ResetCamera(view)
@@ -134,9 +130,11 @@ def fibers_scene(ns, size=(600, 450)):
     return fibers, view, display
 
 
-def white_view(size=(500, 420)):
+def white_view(size=(500, 420), baseline=False):
     """A ParaView render view of the given size on white, without orientation
-    axes (what coverage() measures against)."""
+    axes (what coverage() measures against). `baseline`: single-sampled and
+    without FXAA (ParaView's default is on), as the pictures compare_baseline()
+    compares are."""
     from paraview import simple
 
     view = simple.CreateRenderView()
@@ -144,7 +142,52 @@ def white_view(size=(500, 420)):
     view.UseColorPaletteForBackground = 0
     view.Background = [1, 1, 1]
     view.OrientationAxesVisibility = 0
+    if baseline:
+        view.MultiSamples = 0
+        view.UseFXAA = 0
     return view
+
+
+# The largest image error vtkTesting may find against a baseline. Its error
+# (vtkImageDifference) sums, over the pixels, by how much each channel
+# differs by more than 105 from the best match among the pixel's 3x3
+# neighbours, in units of a whole pixel wrong (3 x 255): 0.01 fails a picture
+# with a single pixel channel 8 levels beyond that tolerance. The pictures are
+# rendered the same way each time, so an unchanged one has error 0; the
+# fibers' ray-cast tubes 10 % thicker reach 0.034, the tensor lines' 0.18,
+# another color map hundreds. Tighter than the C++ image tests' 0.05, which
+# the 10 % thicker fibers pass.
+BASELINE_THRESHOLD = 0.01
+
+
+def compare_baseline(view, name, threshold=BASELINE_THRESHOLD):
+    """VTK's image regression test of the screenshot `name` in output_dir()
+    (as coverage() writes it) against Testing/Data/Baseline/`name`, done as
+    the C++ image tests do it (vtkTesting: alternate baselines name_1.png,
+    ...; a failed comparison leaves the test and difference images in
+    output_dir()). `view` must be single-sampled without FXAA, as
+    white_view() and fibers_scene() make it with baseline=True. Returns whether it passed; a
+    failure prints an "ERROR: " line (the test fails)."""
+    from vtkmodules.vtkTestingRendering import vtkTesting
+
+    if view.MultiSamples != 0 or view.UseFXAA != 0:
+        print("ERROR: %s: the baselines are single-sampled without FXAA" % name)
+        return False
+    baseline = os.path.join(os.environ["SPLINEVIZ_SOURCE_DIR"], "Testing", "Data", "Baseline",
+                            name)
+    testing = vtkTesting()
+    for argument in ("-V", baseline, "-T", output_dir()):
+        testing.AddArgument(argument)
+    passed = testing.RegressionTest(os.path.join(output_dir(), name), threshold) == 1
+    # vtkTesting's measurements end without a newline: start a line of our own
+    # (ctest looks for "ERROR: " at the start of one).
+    if passed:
+        print("\nok: %s matches its baseline (threshold %g)" % (name, threshold))
+    else:
+        print("\nERROR: %s differs from its baseline %s (threshold %g; the test and difference "
+              "images are in %s)" % (name, baseline, threshold, output_dir()))
+    sys.stdout.flush()
+    return passed
 
 
 def coverage(view, name, stride=3, background=(255.0, 255.0, 255.0)):
