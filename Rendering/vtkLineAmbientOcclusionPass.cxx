@@ -37,10 +37,11 @@ struct vtkLineAmbientOcclusionPass::vtkInternals
   vtkSmartPointer<vtkTextureObject> Depth;
   vtkSmartPointer<vtkOpenGLFramebufferObject> Framebuffer;
   // Drawn by the offscreen stages (through StageFramebuffer): the view point
-  // of every pixel (RGBA32F), and per tile its nearest and farthest view z
-  // (RG32F, with halos only).
+  // of every pixel (RGBA32F), and, with halos only, per block its nearest and
+  // farthest view z and the nearest view z within the halo's reach (RG32F).
   vtkSmartPointer<vtkTextureObject> Positions;
-  vtkSmartPointer<vtkTextureObject> Tiles;
+  vtkSmartPointer<vtkTextureObject> Blocks;
+  vtkSmartPointer<vtkTextureObject> BlockReach;
   vtkSmartPointer<vtkOpenGLFramebufferObject> StageFramebuffer;
   /// The full-screen stages' programs (the halo stage has its own vertex
   /// shader and no quad).
@@ -48,7 +49,9 @@ struct vtkLineAmbientOcclusionPass::vtkInternals
   /// The halo stage's program (the window's shader cache owns it).
   vtkShaderProgram* HaloProgram = nullptr;
   vtkNew<vtkOpenGLVertexArrayObject> TileArray;
-  int TileSize = 8;
+  int BlockSize = 4;
+  int BlockCount[2] = { 0, 0 };
+  /// The halo stage's tiles: 2 x 2 blocks.
   int TileCount[2] = { 0, 0 };
 
   static vtkSmartPointer<vtkTextureObject> NewTexture(vtkOpenGLRenderWindow* window)
@@ -80,18 +83,23 @@ struct vtkLineAmbientOcclusionPass::vtkInternals
     this->Positions->Resize(w, h);
   }
 
-  /// Tiles of `size` pixels for a w x h window.
-  void AllocateTiles(vtkOpenGLRenderWindow* window, int w, int h, int size)
+  /// Blocks of `size` pixels for a w x h window.
+  void AllocateBlocks(vtkOpenGLRenderWindow* window, int w, int h, int size)
   {
-    this->TileSize = size;
-    this->TileCount[0] = (w + size - 1) / size;
-    this->TileCount[1] = (h + size - 1) / size;
-    if (!this->Tiles)
+    this->BlockSize = size;
+    this->BlockCount[0] = (w + size - 1) / size;
+    this->BlockCount[1] = (h + size - 1) / size;
+    this->TileCount[0] = (this->BlockCount[0] + 1) / 2;
+    this->TileCount[1] = (this->BlockCount[1] + 1) / 2;
+    for (vtkSmartPointer<vtkTextureObject>* texture : { &this->Blocks, &this->BlockReach })
     {
-      this->Tiles = NewTexture(window);
-      this->Tiles->Create2D(this->TileCount[0], this->TileCount[1], 2, VTK_FLOAT, false);
+      if (!*texture)
+      {
+        *texture = NewTexture(window);
+        (*texture)->Create2D(this->BlockCount[0], this->BlockCount[1], 2, VTK_FLOAT, false);
+      }
+      (*texture)->Resize(this->BlockCount[0], this->BlockCount[1]);
     }
-    this->Tiles->Resize(this->TileCount[0], this->TileCount[1]);
   }
 
   void Release(vtkWindow* window)
@@ -113,7 +121,8 @@ struct vtkLineAmbientOcclusionPass::vtkInternals
         fbo->ReleaseGraphicsResources(window);
       }
     }
-    for (vtkTextureObject* texture : { this->Color, this->Depth, this->Positions, this->Tiles })
+    for (vtkTextureObject* texture :
+      { this->Color, this->Depth, this->Positions, this->Blocks, this->BlockReach })
     {
       if (texture)
       {
@@ -123,7 +132,8 @@ struct vtkLineAmbientOcclusionPass::vtkInternals
     this->Color = nullptr;
     this->Depth = nullptr;
     this->Positions = nullptr;
-    this->Tiles = nullptr;
+    this->Blocks = nullptr;
+    this->BlockReach = nullptr;
     this->Framebuffer = nullptr;
     this->StageFramebuffer = nullptr;
   }
@@ -198,14 +208,16 @@ vtkShaderProgram* vtkLineAmbientOcclusionPass::ReadyStage(vtkOpenGLRenderWindow*
 {
   // The stage's fragment shader: the full-screen template calling its entry
   // point (built once per program).
-  auto fragmentShader = [stage]()
+  const bool fullSearch = this->HaloFullSearch;
+  auto fragmentShader = [stage, fullSearch]()
   {
     static const char* const entryPoints[StageHalos + 1] = { "  lineAOPositionsMain();\n",
-      "  lineAOTilesMain();\n", "  lineAOCopyMain();\n", "  lineAOOcclusionMain();\n",
-      "  lineAOHaloMain();\n" };
+      "  lineAOBlocksMain();\n", "  lineAOBlockReachMain();\n", "  lineAOCopyMain();\n",
+      "  lineAOOcclusionMain();\n", "  lineAOHaloMain();\n" };
     std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
     vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl",
       std::string(stage == StageHalos ? "#define LINE_AO_TILES\n" : "") +
+        (stage == StageHalos && fullSearch ? "#define LINE_AO_FULL_SEARCH\n" : "") +
         vtkLineAmbientOcclusionCommon + vtkLineAmbientOcclusionFS);
     vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Impl", entryPoints[stage]);
     return fs;
@@ -218,8 +230,9 @@ vtkShaderProgram* vtkLineAmbientOcclusionPass::ReadyStage(vtkOpenGLRenderWindow*
     if (!in.HaloProgram)
     {
       std::string vs = vtkLineAmbientOcclusionTilesVS;
-      vtkShaderProgram::Substitute(
-        vs, "//SV::LineAmbientOcclusionCommon::Dec", vtkLineAmbientOcclusionCommon);
+      vtkShaderProgram::Substitute(vs, "//SV::LineAmbientOcclusionCommon::Dec",
+        std::string(fullSearch ? "#define LINE_AO_FULL_SEARCH\n" : "") +
+          vtkLineAmbientOcclusionCommon);
       in.HaloProgram =
         window->GetShaderCache()->ReadyShaderProgram(vs.c_str(), fragmentShader().c_str(), "");
     }
@@ -271,8 +284,9 @@ void vtkLineAmbientOcclusionPass::SetUniforms(
   const double p11 = projection->GetElement(1, 1);
 
   // The textures the stage reads are the active ones.
-  const std::pair<const char*, vtkTextureObject*> samplers[4] = { { "aoColor", in.Color },
-    { "aoDepth", in.Depth }, { "aoPositions", in.Positions }, { "aoTiles", in.Tiles } };
+  const std::pair<const char*, vtkTextureObject*> samplers[5] = { { "aoColor", in.Color },
+    { "aoDepth", in.Depth }, { "aoPositions", in.Positions }, { "aoBlocks", in.Blocks },
+    { "aoBlockReach", in.BlockReach } };
   for (const auto& sampler : samplers)
   {
     if (sampler.second && sampler.second->GetTextureUnit() >= 0)
@@ -301,16 +315,17 @@ void vtkLineAmbientOcclusionPass::SetUniforms(
   const float haloColor[3] = { static_cast<float>(halo[0]), static_cast<float>(halo[1]),
     static_cast<float>(halo[2]) };
   program->SetUniform3f("aoHaloColor", haloColor);
-  program->SetUniformi("aoTileSize", in.TileSize);
+  program->SetUniformi("aoBlockSize", in.BlockSize);
+  program->SetUniform2i("aoBlockCount", in.BlockCount);
   program->SetUniform2i("aoTileCount", in.TileCount);
-  program->SetUniformi("aoTileReach", (this->HaloReach() + in.TileSize - 1) / in.TileSize);
 }
 
 //------------------------------------------------------------------------------
 int vtkLineAmbientOcclusionPass::HaloReach() const
 {
-  // The halo's farthest sample lies HaloWidth pixels away, rounded to a pixel.
-  return static_cast<int>(std::floor(this->HaloWidth + 0.5));
+  // The halo's farthest sample lies HaloWidth pixels away, rounded to a pixel
+  // (with a margin for the shader's rounding of its distance and direction).
+  return static_cast<int>(std::floor(this->HaloWidth * (1.0 + 1.0e-5) + 0.5));
 }
 
 //------------------------------------------------------------------------------
@@ -329,9 +344,9 @@ bool vtkLineAmbientOcclusionPass::RenderComposite(
   in.Color->Activate();
   in.Depth->Activate();
   in.Positions->Activate();
-  if (in.Tiles)
+  if (in.BlockReach)
   {
-    in.Tiles->Activate();
+    in.BlockReach->Activate();
   }
   // Draws one stage with its program; false if the program failed.
   auto draw = [&](int stage)
@@ -387,9 +402,9 @@ bool vtkLineAmbientOcclusionPass::RenderComposite(
     state->vtkglBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
     drawn = draw(StageHalos);
   }
-  if (in.Tiles)
+  if (in.BlockReach)
   {
-    in.Tiles->Deactivate();
+    in.BlockReach->Deactivate();
   }
   in.Positions->Deactivate();
   in.Depth->Deactivate();
@@ -436,8 +451,11 @@ void vtkLineAmbientOcclusionPass::Render(const vtkRenderState* s)
   bool ready = this->RenderStageInto(s, window, StagePositions, in.Depth, in.Positions, w, h);
   if (ready && this->DepthHalos && this->HaloWidth > 0.0)
   {
-    in.AllocateTiles(window, w, h, std::max(8, this->HaloReach()));
-    ready = this->RenderStageInto(s, window, StageTiles, in.Positions, in.Tiles, w, h);
+    // Blocks at least the halo's reach: the samples of a block's pixels read
+    // only the 3 x 3 blocks around it.
+    in.AllocateBlocks(window, w, h, std::max(4, this->HaloReach()));
+    ready = this->RenderStageInto(s, window, StageBlocks, in.Positions, in.Blocks, w, h) &&
+      this->RenderStageInto(s, window, StageBlockReach, in.Blocks, in.BlockReach, w, h);
   }
 
   vtkOpenGLState* state = window->GetState();

@@ -192,6 +192,10 @@ protected:
   double HaloDepthRange = 32.0;
   double HaloColor[3] = { 1.0, 1.0, 1.0 };
   bool HaloColorFromBackground = true;
+  /// For tests: the halo stage on every tile, every pixel taking its samples
+  /// until full coverage (the search without bounds). Set before the first
+  /// render.
+  bool HaloFullSearch = false;
 
 private:
   vtkLineAmbientOcclusionPass(const vtkLineAmbientOcclusionPass&) = delete;
@@ -208,11 +212,12 @@ private:
   /// The stages of vtkLineAmbientOcclusionFS.glsl, one program each.
   enum Stage
   {
-    StagePositions = 0, ///< every pixel's view point (offscreen)
-    StageTiles = 1,     ///< per tile, its nearest and farthest depth (offscreen, halos only)
-    StageCopy = 2,      ///< the delegate's color and depth
-    StageOcclusion = 3, ///< the occlusion factor, over geometry only
-    StageHalos = 4      ///< the halos, on the tiles that can hold one
+    StagePositions = 0,  ///< every pixel's view point (offscreen)
+    StageBlocks = 1,     ///< per block, its nearest and farthest depth (offscreen, halos only)
+    StageBlockReach = 2, ///< per block, the nearest depth within reach (offscreen, halos only)
+    StageCopy = 3,       ///< the delegate's color and depth
+    StageOcclusion = 4,  ///< the occlusion factor, over geometry only
+    StageHalos = 5       ///< the halos, on the tiles that can hold one
   };
   /// The stage's program, built on first use and bound; null if it failed.
   vtkShaderProgram* ReadyStage(vtkOpenGLRenderWindow* window, int stage);

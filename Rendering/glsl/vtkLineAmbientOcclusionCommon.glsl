@@ -7,7 +7,9 @@
 uniform vec2 aoClipW;       // clip w = aoClipW.x * z_view + aoClipW.y
 uniform float aoPixelScale; // one pixel in view units = aoPixelScale x clip w
 uniform int aoWorldUnits;   // radius and depth gaps: 1 view units, 0 pixels
+uniform float aoHaloWidth;  // pixels
 uniform float aoHaloOffset; // the depth gap below which there is no halo
+uniform float aoHaloRange;  // the depth gap beyond the offset to the full width
 
 // The size of one pixel in view units at view depth z.
 float aoPixelSize(float z)
@@ -23,4 +25,19 @@ float aoHaloGap(float front, float behind)
 {
   float gap = front - behind;
   return aoWorldUnits != 0 ? gap : gap / aoPixelSize(front);
+}
+
+// The share of the halo's width a point `gap` in front gives (the gap in
+// the pass's length units).
+float aoHaloWeight(float gap)
+{
+  return aoHaloRange > 0.0 ? clamp((gap - aoHaloOffset) / aoHaloRange, 0.0, 1.0)
+                           : (gap > aoHaloOffset ? 1.0 : 0.0);
+}
+
+// The halo coverage a sample s pixels away with weight w gives; it grows
+// with w.
+float aoHaloRingCoverage(float w, float s)
+{
+  return clamp(aoHaloWidth * w - s + 0.5, 0.0, 1.0);
 }

@@ -15,18 +15,21 @@
 //     other stages read: each pixel's point is computed once, not once per
 //     sample that reads it, and a float color texture reads several times
 //     faster than a depth texture on Mesa's llvmpipe.
-//  2. lineAOTilesMain (offscreen, halos only): per tile of aoTileSize
-//     pixels, the view z of its nearest and farthest pixel, which
-//     vtkLineAmbientOcclusionTilesVS.glsl reads to draw stage 5 only on
-//     tiles that can hold a halo.
-//  3. lineAOCopyMain: the delegate's color and depth, unchanged.
-//  4. lineAOOcclusionMain: the factor the color is multiplied by (the pass
+//  2. lineAOBlocksMain (offscreen, halos only): per block of aoBlockSize
+//     pixels (at least the halo's reach), the view z of its nearest and
+//     farthest pixel.
+//  3. lineAOBlockReachMain (offscreen, halos only): per block, the nearest
+//     view z of the 3 x 3 blocks around it (every pixel a sample of the
+//     block's pixels can read) and the block's farthest. Stage 6 reads it
+//     per tile of 2 x 2 blocks and per pixel.
+//  4. lineAOCopyMain: the delegate's color and depth, unchanged.
+//  5. lineAOOcclusionMain: the factor the color is multiplied by (the pass
 //     blends dst x src) where there is geometry: the pass draws it behind
 //     everything with a GL_GREATER depth test, so the background is never
 //     shaded (the early depth test skips it; on llvmpipe a stage in a branch
 //     or behind a uniform switch costs as if it ran, hence one program per
 //     stage).
-//  5. lineAOHaloMain: the halo color with its coverage as alpha, blended
+//  6. lineAOHaloMain: the halo color with its coverage as alpha, blended
 //     over, drawn by vtkLineAmbientOcclusionTilesVS.glsl on the tiles that
 //     can hold a halo (compiled with LINE_AO_TILES defined).
 //
@@ -57,11 +60,11 @@ uniform int aoSamples;
 uniform float aoRadius;
 uniform float aoStrength;
 uniform float aoBias;
-uniform float aoHaloWidth; // pixels
-uniform float aoHaloRange;
 uniform vec3 aoHaloColor;
-uniform ivec2 aoTileCount; // the tiles stage: tiles along x and y
-uniform int aoTileSize;    // pixels per tile side
+uniform sampler2D aoBlocks;     // stage 2's output: per block, nearest and farthest view z
+uniform sampler2D aoBlockReach; // stage 3's output: nearest view z within reach, farthest
+uniform ivec2 aoBlockCount;     // blocks along x and y
+uniform int aoBlockSize;        // pixels per block side
 
 // The view point at a pixel (outside the window: the nearest edge pixel);
 // w = 0 marks the background. Integer fetches: no filtering to pay for.
@@ -150,12 +153,18 @@ float aoOcclusion(ivec2 uv, vec3 p, vec3 n)
 }
 
 // Halo coverage in [0, 1] of the pixel (P, or the background when p.w = 0):
-// 3 rings of 8 samples, inner ring first, until full coverage is found.
+// 3 rings of 8 samples, inner ring first. `nearest`: the view z of the
+// nearest pixel within reach (-1e30: none). A sample Q gives
+// clamp(aoHaloWidth x w - s + 0.5, 0, 1), which grows with Q's z (w grows
+// with the gap, and the gap with the front point's z), so the same with
+// `nearest` for Q bounds what ring s can still give: the search stops once
+// the coverage found reaches the bound of the ring it is at (the bounds fall
+// from ring to ring; a pixel with nothing far enough in front takes no
+// sample, one with full coverage stops too). The samples taken and their
+// order are those of the full search, so the coverage is the same.
 // One loop whose length is not a constant: the compiler keeps it a loop,
 // and a loop ends once all the pixels shaded together are done (an unrolled
-// or branched-over block costs its full price on llvmpipe). `nearest`: the
-// view z of the nearest pixel within reach (-1e30: none), so a pixel with
-// nothing far enough in front of it takes no sample.
+// or branched-over block costs its full price on llvmpipe).
 float aoHaloCoverage(ivec2 uv, vec4 p, float nearest)
 {
   const int directions = 8;
@@ -166,11 +175,22 @@ float aoHaloCoverage(ivec2 uv, vec4 p, float nearest)
   // Sample i of ring j lies at turn + (i + j / 2) eighths of a turn.
   vec2 direction = vec2(cos(turn), sin(turn));
   // No sample can give a halo unless the nearest point around lies more than
-  // the offset in front (the gap's bound; exact: such a pixel's halo is 0).
+  // the offset in front.
   bool possible = p.w == 0.0 ? nearest > -1.0e29 : aoHaloGap(nearest, p.z) > aoHaloOffset;
   int count = possible ? directions * rings : 0;
+  // The most each ring can give: a sample at `nearest`.
+  float nearestW = aoHaloWeight(p.w == 0.0 ? 1.0e30 : aoHaloGap(nearest, p.z));
+  vec3 bound;
+  for (int j = 0; j < rings; ++j)
+  {
+    bound[j] = aoHaloRingCoverage(nearestW, aoHaloWidth * float(j + 1) / float(rings));
+  }
+#ifdef LINE_AO_FULL_SEARCH
+  count = directions * rings; // (for tests) every sample until full coverage
+  bound = vec3(1.0);
+#endif
   float halo = 0.0;
-  for (int k = 0; k < count && halo < 1.0; ++k)
+  for (int k = 0; k < count && halo < bound[min(k / directions, rings - 1)]; ++k)
   {
     int j = k / directions;
     if (k > 0)
@@ -184,9 +204,7 @@ float aoHaloCoverage(ivec2 uv, vec4 p, float nearest)
       continue;
     }
     float gap = p.w == 0.0 ? 1.0e30 : aoHaloGap(q.x, p.z); // > 0: P lies behind Q
-    float w = aoHaloRange > 0.0 ? clamp((gap - aoHaloOffset) / aoHaloRange, 0.0, 1.0)
-                                : (gap > aoHaloOffset ? 1.0 : 0.0);
-    halo = max(halo, clamp(aoHaloWidth * w - s + 0.5, 0.0, 1.0));
+    halo = max(halo, aoHaloRingCoverage(aoHaloWeight(gap), s));
   }
   return halo;
 }
@@ -211,12 +229,12 @@ void lineAOPositionsMain()
   gl_FragData[0] = p;
 }
 
-void lineAOTilesMain()
+void lineAOBlocksMain()
 {
-  ivec2 tile = ivec2(texCoord * vec2(aoTileCount));
-  ivec2 first = tile * aoTileSize;
-  ivec2 last = min(first + aoTileSize, aoSize) - 1;
-  float nearest = -1.0e30;  // no geometry
+  ivec2 block = ivec2(texCoord * vec2(aoBlockCount));
+  ivec2 first = block * aoBlockSize;
+  ivec2 last = min(first + aoBlockSize, aoSize) - 1;
+  float nearest = -1.0e30; // no geometry
   float farthest = 1.0e30;
   for (int y = first.y; y <= last.y; ++y)
   {
@@ -229,6 +247,21 @@ void lineAOTilesMain()
     }
   }
   gl_FragData[0] = vec4(nearest, farthest, 0.0, 1.0);
+}
+
+void lineAOBlockReachMain()
+{
+  ivec2 block = ivec2(texCoord * vec2(aoBlockCount));
+  float nearest = -1.0e30;
+  for (int dy = -1; dy <= 1; ++dy)
+  {
+    for (int dx = -1; dx <= 1; ++dx)
+    {
+      ivec2 b = clamp(block + ivec2(dx, dy), ivec2(0), aoBlockCount - 1);
+      nearest = max(nearest, texelFetch(aoBlocks, b, 0).x);
+    }
+  }
+  gl_FragData[0] = vec4(nearest, texelFetch(aoBlocks, block, 0).y, 0.0, 1.0);
 }
 
 void lineAOCopyMain()
@@ -252,11 +285,10 @@ void lineAOOcclusionMain()
 }
 
 #ifdef LINE_AO_TILES
-flat in float aoTileNearest; // vtkLineAmbientOcclusionTilesVS.glsl: nearest view z within reach
-
 void lineAOHaloMain()
 {
   ivec2 pixel = aoPixel();
-  gl_FragData[0] = vec4(aoHaloColor, aoHaloCoverage(pixel, aoViewPoint(pixel), aoTileNearest));
+  float nearest = texelFetch(aoBlockReach, pixel / aoBlockSize, 0).x;
+  gl_FragData[0] = vec4(aoHaloColor, aoHaloCoverage(pixel, aoViewPoint(pixel), nearest));
 }
 #endif
