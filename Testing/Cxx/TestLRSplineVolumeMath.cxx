@@ -195,38 +195,11 @@ void CheckField(SplineVizTestStatus& status, vtkDataObject* data, int type, cons
 // the look-up texture apply.
 vtkSmartPointer<vtkMultiBlockDataSet> DyadicVolume(const std::string& path)
 {
-  vtkLRSplineBuilder builder;
   const int degree[3] = { 3, 2, 1 };
-  std::vector<double> breaks[3];
-  for (int d = 0; d < 3; ++d)
-  {
-    for (int i = 0; i <= 4; ++i)
-    {
-      breaks[d].push_back(i / 4.0);
-    }
-  }
-  std::string error;
-  if (!builder.InitializeTensorProduct(degree, breaks, 2, &error))
+  const double focus[3] = { 0.3, 0.6, 0.45 };
+  if (!lrvolume::WriteDyadicVolume(degree, focus, 4, path))
   {
     return nullptr;
-  }
-  builder.SetCoefficientsFromGreville(
-    [](const double g[3], double* c)
-    {
-      c[0] = std::sin(3 * g[0]) * std::cos(2 * g[1]) + g[2];
-      c[1] = g[0] * g[1] - g[2] * g[2];
-    });
-  const double focus[3] = { 0.3, 0.6, 0.45 };
-  for (int l = 0; l < 4; ++l)
-  {
-    if (!builder.RefineAt(focus, 0.5, &error))
-    {
-      return nullptr;
-    }
-  }
-  {
-    std::ofstream out(path);
-    builder.GetPatch().Write(out);
   }
   vtkNew<vtkLRSplineReader> reader;
   reader->SetFileName(path.c_str());

@@ -27,6 +27,7 @@
 //    with the field's own message; a rebuild only on a new input or settings
 //    (the skip key then cleared); good input again works.
 #include "LRSplineTestUtilities.h"
+#include "LRSplineVolumeTestUtilities.h"
 #include "SplineVizTestUtilities.h"
 
 #include "vtkLRSplineVolumeMath.h"
@@ -559,36 +560,9 @@ void CheckInput(SplineVizTestStatus& status, vtkDataObject* input,
 vtkSmartPointer<vtkDataObject> BuiltPatch(const int degree[3], const double focus[3],
   const std::string& path, std::vector<lrtest::BrutePatch>& brute)
 {
-  vtkLRSplineBuilder builder;
-  std::vector<double> breaks[3];
-  for (int d = 0; d < 3; ++d)
-  {
-    for (int i = 0; i <= 4; ++i)
-    {
-      breaks[d].push_back(i / 4.0);
-    }
-  }
-  std::string error;
-  if (!builder.InitializeTensorProduct(degree, breaks, 2, &error))
+  if (!lrvolume::WriteDyadicVolume(degree, focus, 3, path))
   {
     return nullptr;
-  }
-  builder.SetCoefficientsFromGreville(
-    [](const double g[3], double* c)
-    {
-      c[0] = std::sin(3 * g[0]) * std::cos(2 * g[1]) + g[2];
-      c[1] = g[0] * g[1] - g[2] * g[2];
-    });
-  for (int l = 0; l < 3; ++l)
-  {
-    if (!builder.RefineAt(focus, 0.5, &error))
-    {
-      return nullptr;
-    }
-  }
-  {
-    std::ofstream out(path);
-    builder.GetPatch().Write(out);
   }
   for (const auto& P : lrtest::ParseLR(lrtest::ReadText(path)))
   {

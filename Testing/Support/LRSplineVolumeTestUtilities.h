@@ -622,6 +622,46 @@ inline void WritePNG(const std::vector<double>& rgb, int width, int height, cons
   writer->Write();
 }
 
+/// A dyadic locally refined volume written as .lr to `path` (false on
+/// failure): degree `degree`, uniform breaks (4 elements per direction),
+/// `levels` halving refinements around `focus`, two components (a smooth
+/// trigonometric field and a quadratic), so the octree and the look-up
+/// texture apply.
+inline bool WriteDyadicVolume(
+  const int degree[3], const double focus[3], int levels, const std::string& path)
+{
+  vtkLRSplineBuilder builder;
+  std::vector<double> breaks[3];
+  for (int d = 0; d < 3; ++d)
+  {
+    for (int i = 0; i <= 4; ++i)
+    {
+      breaks[d].push_back(i / 4.0);
+    }
+  }
+  std::string error;
+  if (!builder.InitializeTensorProduct(degree, breaks, 2, &error))
+  {
+    return false;
+  }
+  builder.SetCoefficientsFromGreville(
+    [](const double g[3], double* c)
+    {
+      c[0] = std::sin(3 * g[0]) * std::cos(2 * g[1]) + g[2];
+      c[1] = g[0] * g[1] - g[2] * g[2];
+    });
+  for (int l = 0; l < levels; ++l)
+  {
+    if (!builder.RefineAt(focus, 0.5, &error))
+    {
+      return false;
+    }
+  }
+  std::ofstream out(path);
+  builder.GetPatch().Write(out);
+  return static_cast<bool>(out);
+}
+
 /// A locally refined scalar LR-spline volume (written as .lr and read back
 /// with vtkLRSplineReader, the path of real files): quadratic, non-dyadic
 /// breakpoints, `levels` golden-section and halving refinements around two
