@@ -32,7 +32,7 @@ import numpy as np
 from paraview.simple import *  # noqa: F401,F403
 
 import splineviz
-from splineviz_testing import output_dir, png_rgb, set_translation, white_view
+from splineviz_testing import compare_baseline, output_dir, png_rgb, set_translation, white_view
 
 PARALLEL = len(sys.argv) > 1 and sys.argv[1] == "parallel"
 if PARALLEL:
@@ -87,8 +87,9 @@ def drawn(rgb):
 
 # --- ParaView ---------------------------------------------------------------
 reader = OpenDataFile(PATH)  # noqa: F405
-view = white_view(SIZE)
-view.UseFXAA = 0  # FXAA runs after IceT compositing only: it would differ from one rank
+# Single-sampled without FXAA (FXAA runs after IceT compositing only: it
+# would differ from one rank), as the baseline picture is.
+view = white_view(SIZE, baseline=True)
 display = Show(reader, view)  # noqa: F405
 if display.GetXMLName() != "UnstructuredGridRepresentation":
     fail("the reader's output is shown by %s" % display.GetXMLName())
@@ -300,6 +301,9 @@ SERIAL = not PARALLEL
 composite = paraview_image("composite")
 compare("composite", composite)
 if SERIAL:
+    # The picture itself, against its baseline (Testing/Data/Baseline).
+    checker.check(compare_baseline(view, TAG + "-composite.png"),
+                  "the composite picture matches its baseline")
     negative("wrong-field", composite, component=0)
     negative("wrong-unit-distance", composite, unit=4.0 * display.ScalarOpacityUnitDistance)
     display.BlendMode = "Maximum Intensity"
