@@ -521,6 +521,12 @@ void vtkSplineTubeMapper::RenderPiece(vtkRenderer* ren, vtkActor* actor)
   if (this->NeedToUploadTubes())
   {
     this->UploadFailed = false;
+    std::vector<PagedBuffer> paged;
+    this->GetPagedBuffers(paged);
+    for (const PagedBuffer& buffer : paged)
+    {
+      buffer.second->SetPageable(true);
+    }
     this->UploadTubes(window);
     this->SetVisibilityChunks();
     this->UploadTime.Modified();
@@ -1104,12 +1110,53 @@ bool vtkSplineTubeMapper::GetNeedToRebuildShaders(
   // always let the superclass update its bookkeeping.
   const int variant = this->GetTubeColorMode() | (this->InputIsComposite ? 4 : 0);
   const bool superclass = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
+  // Shaders read the arrays from as many pages as the data needs.
+  std::vector<PagedBuffer> buffers;
+  this->GetPagedBuffers(buffers);
+  std::string paging;
+  for (const PagedBuffer& buffer : buffers)
+  {
+    paging += buffer.second->GetPagingKey() + ";";
+  }
+  std::string& programPaging = this->ProgramPaging[&cellBO];
+  const bool pagingChanged = programPaging != paging;
+  programPaging = paging;
   if (variant != this->ShaderVariant)
   {
     this->ShaderVariant = variant;
     return true;
   }
-  return superclass;
+  return superclass || pagingChanged;
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::BuildShaders(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::BuildShaders(shaders, ren, act);
+  std::vector<PagedBuffer> buffers;
+  this->GetPagedBuffers(buffers);
+  for (auto& stage : shaders)
+  {
+    if (!stage.second)
+    {
+      continue;
+    }
+    std::string source = stage.second->GetSource();
+    for (const PagedBuffer& buffer : buffers)
+    {
+      buffer.second->ApplyPaging(source, buffer.first);
+    }
+    stage.second->SetSource(source);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::GetPagedBuffers(std::vector<PagedBuffer>& buffers)
+{
+  buffers.emplace_back("tubeNodes", this->NodesBuffer.get());
+  buffers.emplace_back("tubeNodeInfo", this->NodeInfoBuffer.get());
+  buffers.emplace_back("tubeColors", this->ColorsBuffer.get());
 }
 
 //------------------------------------------------------------------------------

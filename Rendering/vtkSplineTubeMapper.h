@@ -49,6 +49,7 @@
 #include <cstdint>    // for std::uint32_t
 #include <functional> // for std::function
 #include <iosfwd>     // for std::ostream
+#include <map>        // for std::map
 #include <memory>     // for std::unique_ptr
 #include <string>     // for std::string
 #include <utility>    // for std::pair
@@ -452,6 +453,25 @@ protected:
   void ReplaceShaderColor(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  /**
+   * The subclass' shaders, then every stage rewritten to read each array of
+   * GetPagedBuffers() from its pages (vtkSplineVizGPUBuffer::ApplyPaging():
+   * arrays over the GPU's buffer-texture limit are split in pages).
+   */
+  void BuildShaders(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+
+  /// A GPU array the shaders read per node and the uniform it is bound to.
+  using PagedBuffer = std::pair<const char*, vtkSplineVizGPUBuffer*>;
+  /**
+   * The arrays that may exceed one buffer texture and are split into pages
+   * (vtkSplineVizGPUBuffer::SetPageable(), before every upload): the base's
+   * tubeNodes, tubeNodeInfo and tubeColors; subclasses add theirs. Their
+   * shaders are rewritten to match (BuildShaders()).
+   */
+  virtual void GetPagedBuffers(std::vector<PagedBuffer>& buffers);
+
   /// Binds the tubes buffer (ActivateTubeBuffers()).
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   /**
@@ -579,6 +599,8 @@ protected:
   bool HaveColors = false;       ///< the tubes carry per-node colors (scalar coloring)
   bool InputIsComposite = false; ///< block ids are flat indices of a composite input
   int ShaderVariant = -1;        ///< colors and composite input the shaders were made for
+  /// Per program: the page layouts of GetPagedBuffers() its shaders were made for.
+  std::map<const vtkOpenGLHelper*, std::string> ProgramPaging;
 
   std::unique_ptr<vtkSplineVizGPUBuffer> NodesBuffer;
   std::unique_ptr<vtkSplineVizGPUBuffer> NodeInfoBuffer;

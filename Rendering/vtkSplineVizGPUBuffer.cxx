@@ -14,6 +14,7 @@
 #include <limits>
 #include <algorithm>
 #include <cstring>
+#include <regex>
 #include <sstream>
 #include <vector>
 #include <string>
@@ -112,124 +113,205 @@ bool vtkSplineVizGPUBuffer::UploadInPieces(vtkOpenGLRenderWindow* window, size_t
   const size_t texelBytes =
     static_cast<size_t>(components) * static_cast<size_t>(vtkDataArray::GetDataTypeSize(vtkType));
   this->LastUploadError.clear();
+  this->ReleaseGraphicsResources(window);
   const size_t limit = GetMaximumNumberOfTexels(window);
-  if (texels > limit)
+  // Pages of a power of two of texels (the shaders split an index with a
+  // shift and a mask), as large as one buffer texture may be.
+  int shift = 0;
+  while (shift < 62 && (size_t(2) << shift) <= limit)
+  {
+    ++shift;
+  }
+  const size_t pageTexels = texels > limit ? (size_t(1) << shift) : std::max<size_t>(texels, 1);
+  const size_t pages = texels > limit ? (texels + pageTexels - 1) / pageTexels : 1;
+  const size_t allowed = this->Pageable ? static_cast<size_t>(MaximumNumberOfPages) : 1;
+  if (pages > allowed || texels > static_cast<size_t>(std::numeric_limits<int>::max()))
   {
     std::ostringstream msg;
-    msg << "the data needs a GPU buffer of " << texels << " texels (" << texels * texelBytes
+    msg << "the data needs a GPU array of " << texels << " texels (" << texels * texelBytes
         << " bytes); this GPU allows at most " << limit
-        << " texels per buffer (GL_MAX_TEXTURE_BUFFER_SIZE" << TestLimitNote()
-        << "): nothing is drawn";
+        << " texels per buffer (GL_MAX_TEXTURE_BUFFER_SIZE" << TestLimitNote() << ")";
+    if (this->Pageable)
+    {
+      msg << " and SplineViz splits an array into at most " << MaximumNumberOfPages
+          << " buffers of " << pageTexels << " texels, up to 2^31 texels in all";
+    }
+    msg << ": nothing is drawn";
     this->LastUploadError = msg.str();
-    this->ReleaseGraphicsResources(window);
     return false;
   }
-  if (!this->Buffer)
+  this->PageShift = texels > limit ? shift : 0;
+  for (size_t page = 0; page < pages; ++page)
   {
-    this->Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
-    this->Buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
+    const size_t first = page * pageTexels;
+    const size_t count = std::min(pageTexels, texels - std::min(texels, first));
+    if (!this->UploadPage(window, first, count, components, vtkType, glInternalFormat, fill))
+    {
+      this->ReleaseGraphicsResources(window);
+      return false;
+    }
   }
+  this->Bytes = texels * texelBytes;
+  this->Texels = texels;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkSplineVizGPUBuffer::UploadPage(vtkOpenGLRenderWindow* window, size_t first, size_t count,
+  int components, int vtkType, unsigned int glInternalFormat,
+  const std::function<void(size_t first, size_t count, void* destination)>& fill)
+{
+  const size_t texelBytes =
+    static_cast<size_t>(components) * static_cast<size_t>(vtkDataArray::GetDataTypeSize(vtkType));
+  Page page;
+  page.Buffer = vtkSmartPointer<vtkOpenGLBufferObject>::New();
+  page.Buffer->SetType(vtkOpenGLBufferObject::TextureBuffer);
   // The buffer first (a zero-sized buffer texture is not allowed: one dummy
   // texel), then the data piece by piece.
-  const size_t bytes = texels * texelBytes;
-  const size_t allocate = texels > 0 ? bytes : 16;
+  const size_t bytes = count * texelBytes;
+  const size_t allocate = count > 0 ? bytes : 16;
   for (int i = 0; i < 64 && glGetError() != GL_NO_ERROR; ++i)
   {
     // errors of earlier calls are not this upload's
   }
   const unsigned char zeros[16] = { 0 };
-  if (!this->Buffer->Upload(zeros, sizeof(zeros), vtkOpenGLBufferObject::TextureBuffer) ||
-    !this->Buffer->Bind())
+  if (!page.Buffer->Upload(zeros, sizeof(zeros), vtkOpenGLBufferObject::TextureBuffer) ||
+    !page.Buffer->Bind())
   {
     this->LastUploadError = "the GPU could not create a buffer: nothing is drawn";
-    this->ReleaseGraphicsResources(window);
+    page.Buffer->ReleaseGraphicsResources();
     return false;
   }
-  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(allocate), texels > 0 ? nullptr : zeros,
+  glBufferData(GL_TEXTURE_BUFFER, static_cast<GLsizeiptr>(allocate), count > 0 ? nullptr : zeros,
     GL_STATIC_DRAW);
   if (glGetError() == GL_OUT_OF_MEMORY)
   {
     this->LastUploadError = "the GPU could not allocate a buffer of " + std::to_string(allocate) +
       " bytes (GL_OUT_OF_MEMORY): nothing is drawn";
-    this->Buffer->Release();
-    this->ReleaseGraphicsResources(window);
+    page.Buffer->Release();
+    page.Buffer->ReleaseGraphicsResources();
     return false;
   }
-  if (texels > 0)
+  if (count > 0)
   {
     const size_t perPiece = std::max<size_t>(1, PieceBytes / texelBytes);
-    std::vector<unsigned char> staging(std::min(texels, perPiece) * texelBytes);
-    for (size_t first = 0; first < texels; first += perPiece)
+    std::vector<unsigned char> staging(std::min(count, perPiece) * texelBytes);
+    for (size_t done = 0; done < count; done += perPiece)
     {
-      const size_t count = std::min(perPiece, texels - first);
-      fill(first, count, staging.data());
-      glBufferSubData(GL_TEXTURE_BUFFER, static_cast<GLintptr>(first * texelBytes),
-        static_cast<GLsizeiptr>(count * texelBytes), staging.data());
+      const size_t n = std::min(perPiece, count - done);
+      fill(first + done, n, staging.data());
+      glBufferSubData(GL_TEXTURE_BUFFER, static_cast<GLintptr>(done * texelBytes),
+        static_cast<GLsizeiptr>(n * texelBytes), staging.data());
     }
   }
-  this->Buffer->Release();
+  page.Buffer->Release();
   if (glGetError() == GL_OUT_OF_MEMORY)
   {
     this->LastUploadError = "the GPU ran out of memory filling a buffer of " +
       std::to_string(allocate) + " bytes (GL_OUT_OF_MEMORY): nothing is drawn";
-    this->ReleaseGraphicsResources(window);
+    page.Buffer->ReleaseGraphicsResources();
     return false;
   }
-  if (this->Texture)
-  {
-    this->Texture->ReleaseGraphicsResources(window);
-  }
-  this->Texture = vtkSmartPointer<vtkTextureObject>::New();
-  this->Texture->SetContext(window);
-  this->Texture->SetInternalFormat(glInternalFormat);
-  const unsigned int count = static_cast<unsigned int>(texels > 0 ? texels : 1);
-  if (!this->Texture->CreateTextureBuffer(count, components, vtkType, this->Buffer))
+  page.Texture = vtkSmartPointer<vtkTextureObject>::New();
+  page.Texture->SetContext(window);
+  page.Texture->SetInternalFormat(glInternalFormat);
+  const unsigned int texels = static_cast<unsigned int>(count > 0 ? count : 1);
+  if (!page.Texture->CreateTextureBuffer(texels, components, vtkType, page.Buffer))
   {
     this->LastUploadError = "the GPU could not create a buffer texture of " +
-      std::to_string(count) + " texels: nothing is drawn";
-    this->ReleaseGraphicsResources(window);
+      std::to_string(texels) + " texels: nothing is drawn";
+    page.Texture->ReleaseGraphicsResources(window);
+    page.Buffer->ReleaseGraphicsResources();
     return false;
   }
-  this->Bytes = texels > 0 ? bytes : 0;
-  this->Texels = texels;
+  this->Pages.push_back(page);
   return true;
 }
 
 //------------------------------------------------------------------------------
 void vtkSplineVizGPUBuffer::Activate(vtkShaderProgram* program, const char* uniform)
 {
-  if (!this->Texture)
+  for (size_t k = 0; k < this->Pages.size(); ++k)
   {
-    return;
-  }
-  this->Texture->Activate();
-  if (program->IsUniformUsed(uniform))
-  {
-    program->SetUniformi(uniform, this->Texture->GetTextureUnit());
+    vtkTextureObject* texture = this->Pages[k].Texture;
+    texture->Activate();
+    const std::string name = k == 0 ? std::string(uniform) : uniform + ("Page" + std::to_string(k));
+    if (program->IsUniformUsed(name.c_str()))
+    {
+      program->SetUniformi(name.c_str(), texture->GetTextureUnit());
+    }
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkSplineVizGPUBuffer::Deactivate()
 {
-  if (this->Texture)
+  for (Page& page : this->Pages)
   {
-    this->Texture->Deactivate();
+    page.Texture->Deactivate();
   }
 }
 
 //------------------------------------------------------------------------------
 void vtkSplineVizGPUBuffer::ReleaseGraphicsResources(vtkWindow* window)
 {
-  if (this->Texture)
+  for (Page& page : this->Pages)
   {
-    this->Texture->ReleaseGraphicsResources(window);
+    page.Texture->ReleaseGraphicsResources(window);
+    page.Buffer->ReleaseGraphicsResources();
   }
-  if (this->Buffer)
-  {
-    this->Buffer->ReleaseGraphicsResources();
-  }
-  this->Texture = nullptr;
+  this->Pages.clear();
+  this->PageShift = 0;
   this->Bytes = 0;
   this->Texels = 0;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSplineVizGPUBuffer::GetPagingKey() const
+{
+  return std::to_string(this->Pages.size()) + "/" + std::to_string(this->PageShift);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineVizGPUBuffer::ApplyPaging(std::string& source, const char* uniform) const
+{
+  if (this->Pages.size() < 2)
+  {
+    return;
+  }
+  const std::regex declaration(
+    std::string("uniform\\s+([iu]?)samplerBuffer\\s+") + uniform + "\\s*;");
+  std::smatch match;
+  if (!std::regex_search(source, match, declaration))
+  {
+    return;
+  }
+  const std::string prefix = match[1].str();
+  const std::string sampler = prefix + "samplerBuffer";
+  const std::string value = prefix + "vec4";
+  const std::string fetch = std::string(uniform) + "Fetch";
+  std::ostringstream paged;
+  paged << "uniform " << sampler << " " << uniform << ";\n";
+  for (size_t k = 1; k < this->Pages.size(); ++k)
+  {
+    paged << "uniform " << sampler << " " << uniform << "Page" << k << ";\n";
+  }
+  paged << value << " " << fetch << "(int i)\n{\n"
+        << "  int page = i >> " << this->PageShift << ";\n"
+        << "  int texel = i & " << ((1 << this->PageShift) - 1) << ";\n";
+  for (size_t k = 1; k < this->Pages.size(); ++k)
+  {
+    paged << "  if (page == " << k << ") return texelFetch(" << uniform << "Page" << k
+          << ", texel);\n";
+  }
+  paged << "  return texelFetch(" << uniform << ", texel);\n}\n";
+  std::string rewritten = source.substr(0, static_cast<size_t>(match.position(0)));
+  std::string rest = match.suffix().str();
+  // Every read after the declaration goes through the page function.
+  const std::string call = std::string("texelFetch(") + uniform + ",";
+  for (size_t at = rest.find(call); at != std::string::npos; at = rest.find(call, at))
+  {
+    rest.replace(at, call.size(), fetch + "(");
+  }
+  source = rewritten + paged.str() + rest;
 }

@@ -751,6 +751,18 @@ std::string vtkStylizedLineMapper::ShaderKey(vtkRenderer*, vtkActor*)
 }
 
 //------------------------------------------------------------------------------
+void vtkStylizedLineMapper::GetPagedBuffers(std::vector<PagedBuffer>& buffers)
+{
+  this->Superclass::GetPagedBuffers(buffers);
+  vtkInternals& in = *this->Internals;
+  buffers.emplace_back("lineNodes", &in.Nodes);
+  buffers.emplace_back("lineTangents", &in.Tangents);
+  buffers.emplace_back("lineColors", &in.Colors);
+  buffers.emplace_back("lineTexCoords", &in.TexCoords);
+  buffers.emplace_back("lineFrames", &in.Frames);
+}
+
+//------------------------------------------------------------------------------
 bool vtkStylizedLineMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {

@@ -320,6 +320,8 @@ protected:
   void ReplaceShaderClip(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /// The base's per-node arrays and the lines' own (lineNodes, lineTangents...).
+  void GetPagedBuffers(std::vector<PagedBuffer>& buffers) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetCameraShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 

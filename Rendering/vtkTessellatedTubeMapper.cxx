@@ -338,6 +338,15 @@ std::string vtkTessellatedTubeMapper::GetTessellationEvaluationShaderSource()
 }
 
 //------------------------------------------------------------------------------
+void vtkTessellatedTubeMapper::GetPagedBuffers(std::vector<PagedBuffer>& buffers)
+{
+  this->Superclass::GetPagedBuffers(buffers);
+  buffers.emplace_back("tubeFrames", this->FramesBuffer.get());
+  // Per frame, uploaded before the program is chosen (DrawChunks()).
+  buffers.emplace_back("tubeInstances", this->InstancesBuffer.get());
+}
+
+//------------------------------------------------------------------------------
 bool vtkTessellatedTubeMapper::LinkTessellationStages(
   vtkShaderProgram* program, vtkOpenGLRenderWindow*)
 {
@@ -357,6 +366,19 @@ bool vtkTessellatedTubeMapper::LinkTessellationStages(
     }
   }
 
+  // The stages read the per-node arrays from as many pages as the data needs
+  // (vtkSplineVizGPUBuffer::ApplyPaging()): compiled again when that changes.
+  std::vector<PagedBuffer> buffers;
+  this->GetPagedBuffers(buffers);
+  std::string paging;
+  for (const PagedBuffer& buffer : buffers)
+  {
+    paging += buffer.second->GetPagingKey() + ";";
+  }
+  if ((this->ControlShader || this->EvaluationShader) && paging != this->StagesPaging)
+  {
+    this->ReleaseTessellationStages();
+  }
   if (!this->ControlShader || !this->EvaluationShader)
   {
     GLint major = 0;
@@ -365,15 +387,20 @@ bool vtkTessellatedTubeMapper::LinkTessellationStages(
       ? "#version 400 core\n"
       : "#version 150\n#extension GL_ARB_tessellation_shader : require\n";
     std::string error;
-    const std::string control = this->StagesVersion + this->GetTessellationControlShaderSource();
+    std::string control = this->StagesVersion + this->GetTessellationControlShaderSource();
+    std::string evaluation = this->StagesVersion + this->GetTessellationEvaluationShaderSource();
+    for (const PagedBuffer& buffer : buffers)
+    {
+      buffer.second->ApplyPaging(control, buffer.first);
+      buffer.second->ApplyPaging(evaluation, buffer.first);
+    }
+    this->StagesPaging = paging;
     this->ControlShader = CompileStage(GL_TESS_CONTROL_SHADER, control, error);
     if (!this->ControlShader)
     {
       vtkErrorMacro(<< "The tessellation control stage did not compile:\n" << error);
       return false;
     }
-    const std::string evaluation =
-      this->StagesVersion + this->GetTessellationEvaluationShaderSource();
     this->EvaluationShader = CompileStage(GL_TESS_EVALUATION_SHADER, evaluation, error);
     if (!this->EvaluationShader)
     {

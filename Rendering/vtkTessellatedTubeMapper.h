@@ -320,6 +320,8 @@ protected:
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
 
   void UpdateShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  /// The base's per-node arrays, tubeFrames and the per-frame tubeInstances.
+  void GetPagedBuffers(std::vector<PagedBuffer>& buffers) override;
   void GetShaderTemplate(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderValues(
@@ -377,6 +379,7 @@ private:
   unsigned int ControlShader = 0;
   unsigned int EvaluationShader = 0;
   std::string StagesVersion; ///< #version line the stages were compiled with
+  std::string StagesPaging;  ///< page layouts of the arrays the stages were compiled for
   bool StagesFailed = false;
   unsigned int PrimitivesQuery = 0;
 

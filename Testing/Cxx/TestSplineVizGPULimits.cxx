@@ -8,10 +8,17 @@
 // For each of vtkRayCastTubeMapper, vtkTessellatedTubeMapper,
 // vtkStylizedLineMapper and vtkSuperquadricGlyphMapper:
 //  1. over the limit: an error naming SPLINEVIZ_GPU_BUFFER_LIMIT, no pixel
-//     drawn; a second frame: no further error, still nothing drawn;
+//     drawn; a second frame: no further error, still nothing drawn (for the
+//     tube mappers: more than the 4 buffers an array may be split into);
 //  2. data under the limit: drawn, no error (the limit is per buffer);
 //  3. negative control: the limit lifted, the same large data is drawn, so
 //     the limit alone is what kept it off the screen.
+// For the three tube mappers also:
+//  4. pages: data over one buffer's limit but within 4 buffers is split into
+//     pages (vtkSplineVizGPUBuffer) and drawn exactly as without a limit:
+//     the same colored picture to the byte, no error; negative control: one
+//     node moved by a hundredth of a tube's radius changes that picture, so
+//     the comparison would see a node read from the wrong page.
 #include "vtkRayCastTubeMapper.h"
 #include "vtkSplineTubeCore.h"
 #include "vtkStylizedLineMapper.h"
@@ -53,6 +60,8 @@ vtkSmartPointer<vtkPolyData> Lines(int lines, int points)
   vtkNew<vtkPoints> pts;
   vtkNew<vtkDoubleArray> radius;
   radius->SetName("Radius");
+  vtkNew<vtkDoubleArray> value; // colors: the per-node colors are paged too
+  value->SetName("Value");
   vtkNew<vtkCellArray> cells;
   for (int l = 0; l < lines; ++l)
   {
@@ -63,12 +72,14 @@ vtkSmartPointer<vtkPolyData> Lines(int lines, int points)
       const double x = -0.9 + 1.8 * i / (points - 1);
       cells->InsertCellPoint(pts->InsertNextPoint(x, y + 0.02 * std::sin(7.0 * x), 0.0));
       radius->InsertNextValue(0.03);
+      value->InsertNextValue(std::sin(3.0 * x + 0.7 * l));
     }
   }
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   pd->SetPoints(pts);
   pd->SetLines(cells);
   pd->GetPointData()->AddArray(radius);
+  pd->GetPointData()->SetScalars(value);
   return pd;
 }
 
@@ -87,7 +98,20 @@ struct Frame
 {
   int Covered = 0;
   std::string Errors;
+  std::vector<unsigned char> Pixels; ///< RGB
 };
+
+/// Pixels whose color differs between two frames.
+int Differing(const Frame& a, const Frame& b)
+{
+  int n = 0;
+  for (size_t i = 0; i + 2 < a.Pixels.size() && i + 2 < b.Pixels.size(); i += 3)
+  {
+    n += a.Pixels[i] != b.Pixels[i] || a.Pixels[i + 1] != b.Pixels[i + 1] ||
+      a.Pixels[i + 2] != b.Pixels[i + 2];
+  }
+  return n;
+}
 
 struct Scene
 {
@@ -119,6 +143,7 @@ struct Scene
     {
       f.Covered += (p[3 * i] | p[3 * i + 1] | p[3 * i + 2]) != 0;
     }
+    f.Pixels.assign(p, p + 3 * W * H);
     delete[] p;
     f.Errors = this->Observer->GetErrorMessage() + this->Observer->GetWarningMessage();
     return f;
@@ -188,6 +213,50 @@ void CheckTubeMapper(
       mapper->SetInputData(small);
       look();
     });
+
+  // 4. Pages: 480 nodes in buffers of at most 128 texels: 4 pages. Each
+  // render gets a new copy of the data, so that it is uploaded again.
+  auto draw = [&](vtkPolyData* data, const char* limit)
+  {
+    if (limit)
+    {
+      setenv(LimitVariable, limit, 1);
+    }
+    else
+    {
+      unsetenv(LimitVariable);
+    }
+    vtkNew<vtkPolyData> copy;
+    copy->DeepCopy(data);
+    mapper->SetInputData(copy);
+    look();
+    Frame f = scene.Render();
+    unsetenv(LimitVariable);
+    return f;
+  };
+  const Frame whole = draw(large, nullptr);
+  const Frame paged = draw(large, "128");
+  SV_CHECK_MSG(status, paged.Errors.empty(), what << ": in 4 pages, errors: " << paged.Errors);
+  SV_CHECK_MSG(status, whole.Covered > 2000 && paged.Covered == whole.Covered,
+    what << ": in 4 pages " << paged.Covered << " pixels drawn, in one buffer " << whole.Covered);
+  const int differing = Differing(whole, paged);
+  SV_CHECK_MSG(status, differing == 0,
+    what << ": in 4 pages " << differing << " pixels differ from the picture in one buffer");
+  const Frame two = draw(large, "300"); // pages of 256 texels (a power of two): 2
+  SV_CHECK_MSG(status, two.Errors.empty() && Differing(whole, two) == 0,
+    what << ": in pages of 256 texels " << Differing(whole, two)
+         << " pixels differ from the picture in one buffer");
+  // Negative control: one node of the last page moved by a hundredth of the radius.
+  vtkNew<vtkPolyData> moved;
+  moved->DeepCopy(large);
+  double p[3];
+  moved->GetPoints()->GetPoint(400, p);
+  moved->GetPoints()->SetPoint(400, p[0], p[1] + 0.0003, p[2]);
+  const int control = Differing(whole, draw(moved, nullptr));
+  SV_CHECK_MSG(status, control > 0,
+    what << ": negative control: a node moved by 0.01 radius changed no pixel");
+  std::cout << what << ": 4 pages of 128 texels and 2 of 256 draw the same " << whole.Covered
+            << " pixels as one buffer; a moved node changes " << control << std::endl;
 }
 }
 
