@@ -132,4 +132,62 @@ whole = int(np.count_nonzero(np.any(png_rgb(png_whole) != 255, axis=2)))
 slab = int(np.count_nonzero(np.any(png_rgb(png_slab) != 255, axis=2)))
 check(0 < slab < 0.5 * whole, "Slab Thickness 0.1: %d of %d pixels drawn" % (slab, whole))
 
+# The slab tied to a Slice (splineviz.slab): the representation's slab follows
+# the slice plane, and draws what the same slab set by hand draws; after
+# untie_slab it stays where it was. Negative control: the slab at the old
+# plane differs.
+from splineviz.slab import tie_slab_to_slice, untie_slab  # noqa: E402
+
+anatomy = Wavelet(WholeExtent=[-10, 10, -10, 10, -10, 10])
+anatomy_slice = Slice(Input=anatomy)
+anatomy_slice.SliceType = "Plane"
+anatomy_slice.SliceType.Origin = [0, 0, 0]
+anatomy_slice.SliceType.Normal = [0, 0, 1]
+display.SlabThickness = 0.0
+names = tie_slab_to_slice(display, anatomy_slice, thickness=0.1)
+check(list(display.SlabOrigin) == [0, 0, 0] and list(display.SlabNormal) == [0, 0, 1]
+      and display.SlabThickness == 0.1, "tied: the slab takes the slice's plane")
+manager = servermanager.ProxyManager()
+check(all(manager.GetRegisteredLink(n) is not None for n in names),
+      "tied: the links are registered (%s)" % names)
+anatomy_slice.SliceType.Origin = [0, 0, 0.15]
+anatomy_slice.SliceType.Normal = [0, 0.6, 0.8]
+check(np.allclose(display.SlabOrigin, [0, 0, 0.15]) and
+      np.allclose(display.SlabNormal, [0, 0.6, 0.8]),
+      "tied: the slab follows the moved slice (%s, %s)"
+      % (list(display.SlabOrigin), list(display.SlabNormal)))
+png_tied = "%s/TestPluginLineVisibility-slab-tied.png" % out
+SaveScreenshot(png_tied, view, ImageResolution=[500, 400])
+state = "%s/TestPluginLineVisibility-slab.pvsm" % out
+SaveState(state)
+with open(state) as f:
+    saved = f.read()
+check(all('name="%s"' % n in saved for n in names), "tied: the links are saved in the state")
+untie_slab(names)
+check(all(manager.GetRegisteredLink(n) is None for n in names), "untied: no links left")
+anatomy_slice.SliceType.Origin = [0, 0, -0.3]
+check(np.allclose(display.SlabOrigin, [0, 0, 0.15]), "untied: the slab stays (%s)"
+      % list(display.SlabOrigin))
+display.SlabOrigin = [0, 0, 0]
+display.SlabNormal = [0, 0, 1]
+png_old = "%s/TestPluginLineVisibility-slab-old.png" % out
+SaveScreenshot(png_old, view, ImageResolution=[500, 400])
+display.SlabOrigin = [0, 0, 0.15]
+display.SlabNormal = [0, 0.6, 0.8]
+png_hand = "%s/TestPluginLineVisibility-slab-hand.png" % out
+SaveScreenshot(png_hand, view, ImageResolution=[500, 400])
+tied = png_rgb(png_tied)
+tied_drawn = int(np.count_nonzero(np.any(tied != 255, axis=2)))
+check(tied_drawn > 200 and differing(tied, png_rgb(png_hand)) == 0,
+      "tied slab: %d pixels drawn, %d differ from the slab set by hand"
+      % (tied_drawn, differing(tied, png_rgb(png_hand))))
+check(differing(tied, png_rgb(png_old)) > 100,
+      "control: the slab at the old plane differs in %d pixels"
+      % differing(tied, png_rgb(png_old)))
+try:
+    tie_slab_to_slice(display, anatomy)
+    check(False, "a source without a plane is refused")
+except ValueError as error:
+    check("plane" in str(error), "a source without a plane: %s" % error)
+
 checker.finish()
