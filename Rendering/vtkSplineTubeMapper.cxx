@@ -492,8 +492,42 @@ vtkIdType vtkSplineTubeMapper::UpdateTubes()
 //------------------------------------------------------------------------------
 void vtkSplineTubeMapper::Render(vtkRenderer* ren, vtkActor* act)
 {
+  if (vtkSplineTubeMapper* full = this->LevelOfDetailOf)
+  {
+    // The full mapper draws its subset: no second core or upload. Its
+    // settings are restored without Modified(), so that nothing is rebuilt.
+    const bool force = full->ForceInteractive;
+    const double frameTime = full->InteractiveFrameTime;
+    full->ForceInteractive = true;
+    full->InteractiveFrameTime = this->InteractiveFrameTime;
+    full->Render(ren, act);
+    full->ForceInteractive = force;
+    full->InteractiveFrameTime = frameTime;
+    return;
+  }
   // One piece: the composite-aware RenderPiece() handles the whole input.
   this->RenderPiece(ren, act);
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::SetLevelOfDetailOf(vtkSplineTubeMapper* full)
+{
+  if (full == this)
+  {
+    vtkErrorMacro(<< "A mapper cannot be its own level of detail.");
+    return;
+  }
+  if (this->LevelOfDetailOf != full)
+  {
+    this->LevelOfDetailOf = full;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkSplineTubeMapper* vtkSplineTubeMapper::GetLevelOfDetailOf()
+{
+  return this->LevelOfDetailOf;
 }
 
 //------------------------------------------------------------------------------
@@ -1309,6 +1343,11 @@ void vtkSplineTubeMapper::ComputeBounds()
 //------------------------------------------------------------------------------
 double* vtkSplineTubeMapper::GetBounds()
 {
+  if (vtkSplineTubeMapper* full = this->LevelOfDetailOf)
+  {
+    full->GetBounds(this->Bounds);
+    return this->Bounds;
+  }
   if (!this->GetInputDataObject(0, 0))
   {
     vtkMath::UninitializeBounds(this->Bounds);
@@ -1402,5 +1441,6 @@ void vtkSplineTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InteractiveSubset: " << this->InteractiveSubset << "\n";
   os << indent << "InteractiveUpdateRate: " << this->InteractiveUpdateRate << "\n";
   os << indent << "ForceInteractive: " << this->ForceInteractive << "\n";
+  os << indent << "LevelOfDetailOf: " << this->LevelOfDetailOf.GetPointer() << "\n";
   os << indent << "InteractiveFrameTime: " << this->InteractiveFrameTime << "\n";
 }

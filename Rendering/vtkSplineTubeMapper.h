@@ -43,6 +43,7 @@
 #include "vtkNew.h"                   // for vtkNew
 #include "vtkPlane.h"                 // for vtkNew<vtkPlane>
 #include "vtkSmartPointer.h"          // for the endpoint markers
+#include "vtkWeakPointer.h"           // for LevelOfDetailOf
 #include "vtkOpenGLPolyDataMapper.h"
 
 #include <chrono>     // for std::chrono::steady_clock
@@ -259,8 +260,8 @@ public:
    * MinimumLineFraction) by a fixed hash of their index (nested: a larger
    * fraction adds lines), so nothing is uploaded again; its size follows a
    * cost model (per-view work fixed, drawing proportional to the lines) fitted
-   * to the frames measured. ForceInteractive draws the subset always (the
-   * ParaView representations' level-of-detail mapper).
+   * to the frames measured. ForceInteractive draws the subset always (see
+   * also SetLevelOfDetailOf()).
    */
   vtkSetMacro(InteractiveSubset, bool);
   vtkGetMacro(InteractiveSubset, bool);
@@ -274,6 +275,20 @@ public:
   vtkSetMacro(ForceInteractive, bool);
   vtkGetMacro(ForceInteractive, bool);
   vtkBooleanMacro(ForceInteractive, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Make this mapper the level-of-detail stand-in of `full` (what ParaView's
+   * representations draw while the camera moves): it keeps no data of its
+   * own. Render() draws `full` as an interactive frame (ForceInteractive,
+   * with this mapper's InteractiveFrameTime), sharing its tube core and GPU
+   * buffers, and GetBounds() returns full's: no second copy of the data and
+   * no second upload at the first camera move. nullptr (the default): an
+   * ordinary mapper. `full` is not kept alive by this mapper.
+   */
+  void SetLevelOfDetailOf(vtkSplineTubeMapper* full);
+  vtkSplineTubeMapper* GetLevelOfDetailOf();
   ///@}
 
   ///@{
@@ -584,6 +599,7 @@ protected:
   bool InteractiveSubset = true;
   double InteractiveUpdateRate = 1.0;
   bool ForceInteractive = false;
+  vtkWeakPointer<vtkSplineTubeMapper> LevelOfDetailOf;
   double InteractiveFrameTime = 0.0;
 
   std::unique_ptr<vtkSplineTubeVisibility> Visibility;

@@ -26,7 +26,8 @@ void vtkSplineTubeRepresentation::SetTubeMappers(
   this->LODMapper->Delete();
   this->Mapper = mapper;
   this->LODMapper = lodMapper;
-  lodMapper->ForceInteractiveOn();
+  // The LOD mapper draws the full mapper's data as a subset (no copy).
+  lodMapper->SetLevelOfDetailOf(mapper);
   lodMapper->SetInteractiveFrameTime(0.15);
   // The superclass wires its pipeline and actor to the mappers here.
   this->SetupDefaults();

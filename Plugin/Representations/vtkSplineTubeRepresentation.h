@@ -12,11 +12,12 @@
  * composite data, parallel rendering) is the geometry representation's.
  *
  * Level of detail: while the camera moves, ParaView draws the LOD mapper
- * (for data above the view's LOD threshold). Here it draws the same, full
- * data as a subset of the lines sized to the interaction budget
- * (vtkSplineTubeMapper::ForceInteractive), instead of the decimated geometry
- * ParaView makes for surfaces (a quadric clustering that would break the
- * lines and cost seconds on large tractograms).
+ * (for data above the view's LOD threshold). Here the LOD mapper is a
+ * stand-in (vtkSplineTubeMapper::SetLevelOfDetailOf) that has the full
+ * mapper draw a subset of the lines sized to the interaction budget, from
+ * the data and GPU buffers it already holds, instead of the decimated
+ * geometry ParaView makes for surfaces (a quadric clustering that would
+ * break the lines and cost seconds on large tractograms) or a second copy.
  *
  * The automatic radius (Tube Radius 0, the default) is taken from the bounds
  * of the whole data set, reduced over the ranks of a parallel server, so
