@@ -13,9 +13,13 @@ silhouette), the nearest point of the analytic curve to the pixel's centre
 (in the plane) is the curve point the fragment belongs to (the tube is
 swept by a sphere along the curve); its unit tangent's absolute components
 are the expected RGB. Near the peaks the color changes by 16/255 per pixel
-along the curve. Checks: the 99th percentile of the error at most 2/255,
-the largest at most 4/255 (the spline through the samples is not the sine
-exactly; the stylized lines interpolate the nodes' tangents). Negative
+along the curve. Checks, at every pixel inside the tube: the 99th
+percentile of the error at most 2/255; the largest at most 2/255 for the
+ray-cast tubes (the tangent at the exact hit), 3/255 for the stylized lines
+(which interpolate it between nodes) and 5/255 for the tessellated tubes
+(which find the curve point from their polygonal mesh: off at a few pixels
+in the sharpest bends); the spline through the samples is not the sine
+exactly. Negative
 controls: the colors of the polyline's chords, of
 tangents a twentieth of a period further along, or with the channels
 permuted, fail the same bound.
@@ -152,15 +156,22 @@ for name, cls in renderers.items():
     check(len(rows) > 3000, "%s: %d pixels inside the tube" % (name, len(rows)))
     if len(rows) == 0:
         continue
-    sample = np.arange(0, len(rows), 3)
-    rows, cols = rows[sample], cols[sample]
     got = image[rows, cols]
     err = np.abs(got - expected_colors(rows, cols)).max(axis=1)
     p99, worst = np.percentile(err, 99), err.max()
-    print("%s: error in 1/255, median %.2f, 99th percentile %.2f, largest %.2f"
-          % (name, np.median(err), p99, worst))
-    check(p99 <= 2.0 and worst <= 4.0, "%s: direction colors within 2/255 (99 %%), 4/255 (all)"
-          % name)
+    print("%s: error in 1/255, median %.2f, 99th percentile %.2f, largest %.2f; "
+          "%d of %d pixels over 2/255" % (name, np.median(err), p99, worst,
+                                          np.count_nonzero(err > 2.0), len(err)))
+    # The ray cast evaluates the spline's tangent at the exact hit: within
+    # 2/255 everywhere. The stylized lines interpolate it between nodes
+    # (3/255); the tessellated tubes take the curve point nearest to the
+    # fragment's point on their polygonal mesh (two Newton steps from the
+    # parameter interpolated across it), which in the peaks' bends (radius
+    # of curvature 16 px, tube 9 px wide) is off at a few pixels (4.4/255 at
+    # 4 of 5,126 pixels): 5/255.
+    limit = {"raycast": 2.0, "stylized": 3.0}.get(name, 5.0)
+    check(p99 <= 2.0 and worst <= limit,
+          "%s: direction colors within 2/255 (99 %%), %g/255 (all)" % (name, limit))
     period = 2.0 * np.pi / K
     for what, kwargs in (("shifted a twentieth of a period", {"shift": period / 20}),
                          ("the polyline's chords", {"chords": True}),
