@@ -23,14 +23,16 @@
 //    frames per second (as VTK's interactors do while the camera moves), and
 //    the fraction of the lines the SplineViz renderers drew,
 //  - GPU bytes per segment, and the process' peak RSS.
-// Ratios are to VTK's plain lines of the same data in the same run.
+// Ratios are to VTK's plain lines of the same data in the same run. With
+// --png DIR, each child also writes its last still frame to
+// DIR/<.tck name>-<renderer>.png, to look at what was measured.
 //
 // Usage:
 //   SplineVizTractogramBenchmark [--streamlines 10000,100000,200000,1000000]
 //       [--data synthetic,cb2] [--renderers
 //       raycast,tessellated,stylized,lines,linesastubes,tubefilter]
 //       [--size 1200x768] [--frames 8] [--interactive 8] [--radius 0.3]
-//       [--dir /tmp] [--csv FILE] [--tubefilter-max 3000000]
+//       [--dir /tmp] [--csv FILE] [--tubefilter-max 3000000] [--png DIR]
 #include "BenchmarkCommon.h"
 #include "vtkRayCastTubeMapper.h"
 #include "vtkSplineTubeMapper.h"
@@ -42,11 +44,13 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkPNGWriter.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTubeFilter.h"
+#include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataReader.h"
 
 #include <sys/resource.h>
@@ -71,7 +75,7 @@ const char* Usage =
   "    [--data synthetic,cb2] [--renderers "
   "raycast,tessellated,stylized,lines,linesastubes,tubefilter]\n"
   "    [--size 1200x768] [--frames 8] [--interactive 8] [--radius 0.3] [--dir /tmp]\n"
-  "    [--csv FILE] [--tubefilter-max 3000000]\n";
+  "    [--csv FILE] [--tubefilter-max 3000000] [--png DIR]\n";
 
 double PeakRSSGB()
 {
@@ -90,9 +94,17 @@ double Median(std::vector<double> v)
   return v[v.size() / 2];
 }
 
+/// "splineviz-benchmark-1000" of "/tmp/splineviz-benchmark-1000.tck".
+std::string Stem(const std::string& path)
+{
+  const size_t slash = path.find_last_of('/');
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  return name.substr(0, name.find_last_of('.'));
+}
+
 /// One renderer on one file, in this (child) process; prints a RESULT line.
 int Child(const std::string& file, const std::string& renderer, int width, int height, int frames,
-  int interactiveFrames, double radius)
+  int interactiveFrames, double radius, const std::string& png)
 {
   splineviz_benchmark::SteadyAllocator();
   double t0 = Now();
@@ -180,6 +192,16 @@ int Child(const std::string& file, const std::string& renderer, int width, int h
     perView.push_back(tubes ? tubes->GetLastPerViewTime() : 0.0);
     fixUp.push_back(stylized ? stylized->GetLastFixUpTime() : 0.0);
   }
+  if (!png.empty())
+  {
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    vtkNew<vtkPNGWriter> writer;
+    writer->SetInputConnection(grab->GetOutputPort());
+    writer->SetFileName(png.c_str());
+    writer->Write();
+  }
   std::vector<double> interactive;
   double fraction = 1.0;
   window->SetDesiredUpdateRate(15.0);
@@ -228,12 +250,12 @@ struct Result
 
 /// Run this program as a child for one (file, renderer); parse its RESULT line.
 Result RunChild(const char* self, const std::string& file, const std::string& renderer,
-  const std::string& size, int frames, int interactive, double radius)
+  const std::string& size, int frames, int interactive, double radius, const std::string& png)
 {
   Result r;
   const std::string command = std::string("'") + self + "' --child '" + file + "' " + renderer +
     " " + size + " " + std::to_string(frames) + " " + std::to_string(interactive) + " " +
-    std::to_string(radius) + " 2>&1";
+    std::to_string(radius) + (png.empty() ? std::string() : " '" + png + "'") + " 2>&1";
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe)
   {
@@ -306,8 +328,8 @@ int main(int argc, char* argv[])
   {
     int w = 0, h = 0;
     splineviz_benchmark::ParseSize(argv[4], w, h);
-    return Child(
-      argv[2], argv[3], w, h, std::atoi(argv[5]), std::atoi(argv[6]), std::atof(argv[7]));
+    return Child(argv[2], argv[3], w, h, std::atoi(argv[5]), std::atoi(argv[6]), std::atof(argv[7]),
+      argc >= 9 ? argv[8] : "");
   }
   if (splineviz_benchmark::HelpRequested(argc, argv, Usage) ||
     splineviz_benchmark::MissingOptionValue(argc, argv, Usage))
@@ -318,7 +340,7 @@ int main(int argc, char* argv[])
     { "--data", "synthetic,cb2" },
     { "--renderers", "raycast,tessellated,stylized,lines,linesastubes,tubefilter" },
     { "--size", "1200x768" }, { "--frames", "8" }, { "--interactive", "8" }, { "--radius", "0.3" },
-    { "--dir", "/tmp" }, { "--csv", "" }, { "--tubefilter-max", "3000000" } };
+    { "--dir", "/tmp" }, { "--csv", "" }, { "--tubefilter-max", "3000000" }, { "--png", "" } };
   for (int i = 1; i + 1 < argc; i += 2)
   {
     if (!options.count(argv[i]))
@@ -373,7 +395,11 @@ int main(int argc, char* argv[])
         std::printf("%-13s (skipped: more than %g segments)\n", renderer.c_str(), tubeFilterMax);
         continue;
       }
-      r = RunChild(argv[0], data.second, renderer, options["--size"], frames, interactive, radius);
+      const std::string png = options["--png"].empty()
+        ? std::string()
+        : options["--png"] + "/" + Stem(data.second) + "-" + renderer + ".png";
+      r = RunChild(
+        argv[0], data.second, renderer, options["--size"], frames, interactive, radius, png);
       results[renderer] = r;
       if (!r.Ok)
       {
