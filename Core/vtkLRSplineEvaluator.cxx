@@ -310,18 +310,9 @@ void vtkLRSplineEvaluator::EvaluateInElement(
     this->AtLocal(e, s, value, gradient);
     return;
   }
-  const double* b = this->Volume.GetBox(e);
-  double u[3], s[3];
+  double u[3];
   this->PhysicalToParameter(x, u);
-  for (int d = 0; d < 3; ++d)
-  {
-    s[d] = std::min(1.0, std::max(0.0, (u[d] - b[d]) / (b[d + 3] - b[d])));
-  }
-  this->Volume.EvaluateLocal(e, s, value, gradient);
-  if (gradient)
-  {
-    this->GradientToPhysical(gradient, b);
-  }
+  this->AtParameter(e, u, value, gradient);
 }
 
 void vtkLRSplineEvaluator::EvaluateInElement(
