@@ -152,6 +152,19 @@ void tubeCull()
   gl_TessLevelInner[1] = 0.0;
 }
 
+// The levels of a patch drawn as one ring of `level` edges (a cap or a
+// seam): `level` along the first outer edge and the first inner direction,
+// 1 elsewhere.
+void tubeSetRingLevels(float level)
+{
+  gl_TessLevelOuter[0] = 1.0;
+  gl_TessLevelOuter[1] = level;
+  gl_TessLevelOuter[2] = 1.0;
+  gl_TessLevelOuter[3] = 1.0;
+  gl_TessLevelInner[0] = level;
+  gl_TessLevelInner[1] = 1.0;
+}
+
 bool tubeOutsideFrustum(vec3 a, vec3 b, vec3 c, vec3 d)
 {
   float margin = 0.5 * max(length(a - c), length(b - d));
@@ -287,12 +300,7 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
     // Caps are seen face-on, where a coarse polygon shows: edges of a
     // quarter of tubeSideLength, at least 8.
     float ring = tubeRingLevel(p, 4.0, 8.0);
-    gl_TessLevelOuter[0] = 1.0;
-    gl_TessLevelOuter[1] = ring;
-    gl_TessLevelOuter[2] = 1.0;
-    gl_TessLevelOuter[3] = 1.0;
-    gl_TessLevelInner[0] = ring;
-    gl_TessLevelInner[1] = 1.0;
+    tubeSetRingLevels(ring);
   }
   else
   {
@@ -377,12 +385,7 @@ void main()
   if (kind != 0)
   {
     float seam = tubeSeamLevel(a, b);
-    gl_TessLevelOuter[0] = 1.0;
-    gl_TessLevelOuter[1] = seam;
-    gl_TessLevelOuter[2] = 1.0;
-    gl_TessLevelOuter[3] = 1.0;
-    gl_TessLevelInner[0] = seam;
-    gl_TessLevelInner[1] = 1.0;
+    tubeSetRingLevels(seam);
   }
   else
   {
