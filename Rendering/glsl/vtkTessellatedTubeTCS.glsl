@@ -165,6 +165,17 @@ void tubeSetRingLevels(float level)
   gl_TessLevelInner[1] = 1.0;
 }
 
+// The patch's segment (Hermite form and frames) for the evaluation stage.
+void tubeSetPatchSegment(TubeSegment seg)
+{
+  tubePatchP0 = seg.p0;
+  tubePatchM0 = seg.m0;
+  tubePatchP1 = seg.p1;
+  tubePatchM1 = seg.m1;
+  tubePatchF0 = seg.f0;
+  tubePatchF1 = seg.f1;
+}
+
 bool tubeOutsideFrustum(vec3 a, vec3 b, vec3 c, vec3 d)
 {
   float margin = 0.5 * max(length(a - c), length(b - d));
@@ -332,12 +343,7 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
     gl_TessLevelInner[0] = max(ring0, ring1);
     gl_TessLevelInner[1] = along;
   }
-  tubePatchP0 = seg.p0;
-  tubePatchM0 = seg.m0;
-  tubePatchP1 = seg.p1;
-  tubePatchM1 = seg.m1;
-  tubePatchF0 = seg.f0;
-  tubePatchF1 = seg.f1;
+  tubeSetPatchSegment(seg);
   tubePatchParams = vec4(0.0, 1.0, tA, tD);
   tubePatchInfo = ivec4(info.x, info.y, info.z, flags | (kind << 2) | (count << 4));
 }
@@ -410,12 +416,7 @@ void main()
   }
 
   TubeSegment seg = tubeLoadSegment(info.x);
-  tubePatchP0 = seg.p0;
-  tubePatchM0 = seg.m0;
-  tubePatchP1 = seg.p1;
-  tubePatchM1 = seg.m1;
-  tubePatchF0 = seg.f0;
-  tubePatchF1 = seg.f1;
+  tubeSetPatchSegment(seg);
   tubePatchParams =
     vec4(tubeAxisVSOutput[0].w, tubeAxisVSOutput[1].w, tubeTVSOutput[0], tubeTVSOutput[3]);
   tubePatchInfo = ivec4(info.x, info.y, info.z, flags | (kind << 2) | (1 << 4));
