@@ -18,6 +18,7 @@
 //
 //   BenchmarkLRSplineEvaluation [path/to/cube-3patch-refined.lr]
 #include "BenchmarkCommon.h"
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineBuilder.h"
 #include "vtkLRSplineEvaluator.h"
 #include "vtkLRSplineField.h"
@@ -388,7 +389,7 @@ int main(int argc, char* argv[])
   }
   std::vector<double> realBoxes;
   {
-    vtkDataArray* b = real->GetCellData()->GetArray("LRParameterBox");
+    vtkDataArray* b = real->GetCellData()->GetArray(vtkLRSplineArrayNames::ParameterBox);
     for (vtkIdType c = 0; c < b->GetNumberOfTuples(); ++c)
     {
       for (int k = 0; k < 6; ++k)

@@ -73,28 +73,34 @@ namespace
 constexpr int MaxComponents = 64;
 
 // Value and local derivatives of one Bezier block: contraction along u, then v,
-// then w. NC > 0 fixes the number of components at compile time.
-template <typename Real, int NC>
-void EvaluateBlock(
+// then w. Sizes given as template arguments (> 0) are known at compile time
+// (the common cases: fully unrolled); 0: the run-time ones (deg, ncDynamic;
+// Cap: the largest number of components). Grad: 1 with the derivatives, 0
+// without, -1 with them when dlocal is not null.
+template <typename Real, int Cap, int NC, int NU, int NV, int NW, int Grad>
+inline void ContractBlock(
   const Real* coeffs, const int deg[3], int ncDynamic, const Real s[3], Real* value, Real* dlocal)
 {
   const int nc = NC > 0 ? NC : ncDynamic;
-  constexpr int M = vtkLRSplineBezierVolume::MaximumDegree + 1;
+  const int nu = NU > 0 ? NU : deg[0] + 1;
+  const int nv = NV > 0 ? NV : deg[1] + 1;
+  const int nw = NW > 0 ? NW : deg[2] + 1;
+  const bool grad = Grad >= 0 ? Grad == 1 : dlocal != nullptr;
+  constexpr int M = NU > 0 && NV > 0 && NW > 0 ? std::max(NU, std::max(NV, NW))
+                                               : vtkLRSplineBezierVolume::MaximumDegree + 1;
   Real bu[M], du[M], bv[M], dv[M], bw[M], dw[M];
-  vtkLRSplineBezierVolume::Bernstein<Real>(deg[0], s[0], bu, du);
-  vtkLRSplineBezierVolume::Bernstein<Real>(deg[1], s[1], bv, dv);
-  vtkLRSplineBezierVolume::Bernstein<Real>(deg[2], s[2], bw, dw);
-  const int nu = deg[0] + 1, nv = deg[1] + 1, nw = deg[2] + 1;
+  vtkLRSplineBezierVolume::Bernstein<Real>(nu - 1, s[0], bu, grad ? du : nullptr);
+  vtkLRSplineBezierVolume::Bernstein<Real>(nv - 1, s[1], bv, grad ? dv : nullptr);
+  vtkLRSplineBezierVolume::Bernstein<Real>(nw - 1, s[2], bw, grad ? dw : nullptr);
 
-  Real val[MaxComponents], gu[MaxComponents], gv[MaxComponents], gw[MaxComponents];
+  Real val[Cap], gu[Cap], gv[Cap], gw[Cap];
   for (int c = 0; c < nc; ++c)
   {
     val[c] = gu[c] = gv[c] = gw[c] = Real(0);
   }
-  const bool grad = dlocal != nullptr;
   for (int k = 0; k < nw; ++k)
   {
-    Real A[MaxComponents], Au[MaxComponents], Av[MaxComponents];
+    Real A[Cap], Au[Cap], Av[Cap];
     for (int c = 0; c < nc; ++c)
     {
       A[c] = Au[c] = Av[c] = Real(0);
@@ -102,7 +108,7 @@ void EvaluateBlock(
     for (int j = 0; j < nv; ++j)
     {
       const Real* row = coeffs + static_cast<std::size_t>((k * nv + j) * nu) * nc;
-      Real a[MaxComponents], au[MaxComponents];
+      Real a[Cap], au[Cap];
       for (int c = 0; c < nc; ++c)
       {
         a[c] = au[c] = Real(0);
@@ -152,64 +158,21 @@ void EvaluateBlock(
   }
 }
 
+// Any degrees; NC > 0 fixes the number of components at compile time.
+template <typename Real, int NC>
+void EvaluateBlock(
+  const Real* coeffs, const int deg[3], int ncDynamic, const Real s[3], Real* value, Real* dlocal)
+{
+  ContractBlock<Real, (NC > 0 ? NC : MaxComponents), NC, 0, 0, 0, -1>(
+    coeffs, deg, ncDynamic, s, value, dlocal);
+}
+
 // The common cases with compile-time degrees and components: fully unrolled.
 template <typename Real, int NC, int DU, int DV, int DW, bool Grad>
 inline void EvaluateFixed(const Real* coeffs, const Real s[3], Real* value, Real* dlocal)
 {
-  Real bu[DU + 1], du[DU + 1], bv[DV + 1], dv[DV + 1], bw[DW + 1], dw[DW + 1];
-  vtkLRSplineBezierVolume::Bernstein<Real>(DU, s[0], bu, Grad ? du : nullptr);
-  vtkLRSplineBezierVolume::Bernstein<Real>(DV, s[1], bv, Grad ? dv : nullptr);
-  vtkLRSplineBezierVolume::Bernstein<Real>(DW, s[2], bw, Grad ? dw : nullptr);
-  Real val[NC] = {}, gu[NC] = {}, gv[NC] = {}, gw[NC] = {};
-  for (int k = 0; k <= DW; ++k)
-  {
-    Real A[NC] = {}, Au[NC] = {}, Av[NC] = {};
-    for (int j = 0; j <= DV; ++j)
-    {
-      const Real* row = coeffs + ((k * (DV + 1) + j) * (DU + 1)) * NC;
-      Real a[NC] = {}, au[NC] = {};
-      for (int i = 0; i <= DU; ++i)
-      {
-        for (int c = 0; c < NC; ++c)
-        {
-          a[c] += row[i * NC + c] * bu[i];
-          if (Grad)
-          {
-            au[c] += row[i * NC + c] * du[i];
-          }
-        }
-      }
-      for (int c = 0; c < NC; ++c)
-      {
-        A[c] += a[c] * bv[j];
-        if (Grad)
-        {
-          Au[c] += au[c] * bv[j];
-          Av[c] += a[c] * dv[j];
-        }
-      }
-    }
-    for (int c = 0; c < NC; ++c)
-    {
-      val[c] += A[c] * bw[k];
-      if (Grad)
-      {
-        gu[c] += Au[c] * bw[k];
-        gv[c] += Av[c] * bw[k];
-        gw[c] += A[c] * dw[k];
-      }
-    }
-  }
-  for (int c = 0; c < NC; ++c)
-  {
-    value[c] = val[c];
-    if (Grad)
-    {
-      dlocal[3 * c + 0] = gu[c];
-      dlocal[3 * c + 1] = gv[c];
-      dlocal[3 * c + 2] = gw[c];
-    }
-  }
+  ContractBlock<Real, NC, NC, DU + 1, DV + 1, DW + 1, Grad ? 1 : 0>(
+    coeffs, nullptr, NC, s, value, dlocal);
 }
 
 template <typename Real, int NC, int D>

@@ -310,18 +310,9 @@ void vtkLRSplineEvaluator::EvaluateInElement(
     this->AtLocal(e, s, value, gradient);
     return;
   }
-  const double* b = this->Volume.GetBox(e);
-  double u[3], s[3];
+  double u[3];
   this->PhysicalToParameter(x, u);
-  for (int d = 0; d < 3; ++d)
-  {
-    s[d] = std::min(1.0, std::max(0.0, (u[d] - b[d]) / (b[d + 3] - b[d])));
-  }
-  this->Volume.EvaluateLocal(e, s, value, gradient);
-  if (gradient)
-  {
-    this->GradientToPhysical(gradient, b);
-  }
+  this->AtParameter(e, u, value, gradient);
 }
 
 void vtkLRSplineEvaluator::EvaluateInElement(
@@ -422,16 +413,28 @@ vtkIdType vtkLRSplineEvaluator::Evaluate(const float x[3], float* value, float* 
 }
 
 //------------------------------------------------------------------------------
-void vtkLRSplineEvaluator::AtParameter(
-  vtkIdType e, const double u[3], double* value, double* gradient) const
+namespace
 {
-  const double* b = this->Volume.GetBox(e);
+// Value and local derivatives of element e of `volume` at parameter point u
+// (clamped to the element's box); returns the box.
+const double* EvaluateInBox(const vtkLRSplineBezierVolume& volume, vtkIdType e, const double u[3],
+  double* value, double* dlocal)
+{
+  const double* b = volume.GetBox(e);
   double s[3];
   for (int d = 0; d < 3; ++d)
   {
     s[d] = std::min(1.0, std::max(0.0, (u[d] - b[d]) / (b[d + 3] - b[d])));
   }
-  this->Volume.EvaluateLocal(e, s, value, gradient);
+  volume.EvaluateLocal(e, s, value, dlocal);
+  return b;
+}
+}
+
+void vtkLRSplineEvaluator::AtParameter(
+  vtkIdType e, const double u[3], double* value, double* gradient) const
+{
+  const double* b = EvaluateInBox(this->Volume, e, u, value, gradient);
   if (gradient)
   {
     this->GradientToPhysical(gradient, b);
@@ -447,13 +450,7 @@ vtkIdType vtkLRSplineEvaluator::EvaluateParameter(
   {
     return e;
   }
-  const double* b = this->Volume.GetBox(e);
-  double s[3];
-  for (int d = 0; d < 3; ++d)
-  {
-    s[d] = std::min(1.0, std::max(0.0, (u[d] - b[d]) / (b[d + 3] - b[d])));
-  }
-  this->Volume.EvaluateLocal(e, s, value, gradient);
+  const double* b = EvaluateInBox(this->Volume, e, u, value, gradient);
   if (gradient)
   {
     for (int c = 0; c < this->Volume.NumberOfComponents; ++c)

@@ -123,6 +123,31 @@ int AutomaticBlocks(vtkIdType numElements)
   const double b = 2.0 * std::cbrt(static_cast<double>(numElements));
   return std::max(1, std::min(64, static_cast<int>(std::ceil(b))));
 }
+
+// The index of the first patch in which `find` (patch -> element or -1)
+// finds an element, and that element in *element (if given); -1 and -1 when
+// none does.
+template <typename Patches, typename Find>
+int FirstPatch(const Patches& patches, const Find& find, vtkIdType* element)
+{
+  for (std::size_t p = 0; p < patches.size(); ++p)
+  {
+    const vtkIdType e = find(*patches[p]);
+    if (e >= 0)
+    {
+      if (element)
+      {
+        *element = e;
+      }
+      return static_cast<int>(p);
+    }
+  }
+  if (element)
+  {
+    *element = -1;
+  }
+  return -1;
+}
 }
 
 //------------------------------------------------------------------------------
@@ -420,45 +445,19 @@ void vtkLRSplineField::MakeFloat()
 //------------------------------------------------------------------------------
 int vtkLRSplineField::FindPatch(const double x[3], vtkIdType* element) const
 {
-  for (std::size_t p = 0; p < this->Patches.size(); ++p)
-  {
-    const vtkIdType e = this->Patches[p]->FindElement(x);
-    if (e >= 0)
-    {
-      if (element)
-      {
-        *element = e;
-      }
-      return static_cast<int>(p);
-    }
-  }
-  if (element)
-  {
-    *element = -1;
-  }
-  return -1;
+  return FirstPatch(
+    this->Patches, [x](const vtkLRSplineEvaluator& patch) { return patch.FindElement(x); },
+    element);
 }
 
 int vtkLRSplineField::Evaluate(
   const double x[3], double* value, double* gradient, vtkIdType* element) const
 {
-  for (std::size_t p = 0; p < this->Patches.size(); ++p)
-  {
-    const vtkIdType e = this->Patches[p]->Evaluate(x, value, gradient);
-    if (e >= 0)
-    {
-      if (element)
-      {
-        *element = e;
-      }
-      return static_cast<int>(p);
-    }
-  }
-  if (element)
-  {
-    *element = -1;
-  }
-  return -1;
+  return FirstPatch(
+    this->Patches,
+    [x, value, gradient](const vtkLRSplineEvaluator& patch)
+    { return patch.Evaluate(x, value, gradient); },
+    element);
 }
 
 int vtkLRSplineField::Evaluate(

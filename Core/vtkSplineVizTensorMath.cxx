@@ -233,56 +233,20 @@ void PrincipalEigen(const double t[6], double values[3], double e1[3])
   using glm::dvec3;
   e1[0] = 1.0;
   e1[1] = e1[2] = 0.0;
-  const double m = std::max(std::max(std::max(std::abs(t[0]), std::abs(t[1])), std::abs(t[2])),
-    std::max(std::max(std::abs(t[3]), std::abs(t[4])), std::abs(t[5])));
-  if (!(m > 0.0))
+  dvec3 lambda, cd, co, u;
+  double m, q, p;
+  if (!shared::svtIsolatedEigenvector(
+        dvec3(t[0], t[1], t[2]), dvec3(t[3], t[4], t[5]), lambda, m, q, p, cd, co, u))
   {
-    values[0] = values[1] = values[2] = 0.0;
+    values[0] = lambda[0];
+    values[1] = lambda[1];
+    values[2] = lambda[2];
     return;
   }
-  const dvec3 d = dvec3(t[0], t[1], t[2]) / m;
-  const dvec3 o = dvec3(t[3], t[4], t[5]) / m;
-  const double q = (d.x + d.y + d.z) / 3.0;
-  const dvec3 b = d - dvec3(q, q, q);
-  const double p2 = (glm::dot(b, b) + 2.0 * glm::dot(o, o)) / 6.0;
-  if (p2 < 1e-30)
-  {
-    values[0] = values[1] = values[2] = m * q;
-    return;
-  }
-  const double p = std::sqrt(p2);
-  const dvec3 cd = b / p;
-  const dvec3 co = o / p;
-  const double detC = cd.x * (cd.y * cd.z - co.y * co.y) - co.x * (co.x * cd.z - co.y * co.z) +
-    co.z * (co.x * co.y - cd.y * co.z);
-  const double r = std::min(1.0, std::max(-1.0, 0.5 * detC));
-  const double phi = std::acos(r) / 3.0;
-  const double beta = r < 0.0 ? 2.0 * std::cos(phi + 2.0943951023931957) : 2.0 * std::cos(phi);
-  const dvec3 r0(cd.x - beta, co.x, co.z);
-  const dvec3 r1(co.x, cd.y - beta, co.y);
-  const dvec3 r2(co.z, co.y, cd.z - beta);
-  const dvec3 x01 = glm::cross(r0, r1), x02 = glm::cross(r0, r2), x12 = glm::cross(r1, r2);
-  const double n01 = glm::dot(x01, x01), n02 = glm::dot(x02, x02), n12 = glm::dot(x12, x12);
-  dvec3 u = x01;
-  double nu = n01;
-  if (n02 > nu)
-  {
-    u = x02;
-    nu = n02;
-  }
-  if (n12 > nu)
-  {
-    u = x12;
-    nu = n12;
-  }
-  u /= std::sqrt(nu);
   // The 2x2 restriction to the plane orthogonal to u, in closed form.
-  const dvec3 v = shared::svAnyOrthogonal(u);
-  const dvec3 w = glm::cross(u, v);
-  const dvec3 cv = shared::svtSymMul(cd, co, v);
-  const dvec3 cw = shared::svtSymMul(cd, co, w);
-  const double m00 = glm::dot(v, cv), m11 = glm::dot(w, cw);
-  const double m01 = 0.5 * (glm::dot(v, cw) + glm::dot(w, cv));
+  dvec3 v, w;
+  double m00, m11, m01;
+  shared::svtPlaneRestriction(cd, co, u, v, w, m00, m11, m01);
   const double mean = 0.5 * (m00 + m11), half = 0.5 * (m00 - m11);
   const double radius = std::sqrt(half * half + m01 * m01);
   const double la = mean + radius, lb = mean - radius;

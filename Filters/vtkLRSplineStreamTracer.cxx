@@ -35,6 +35,7 @@
 #include <cmath>
 #include <map>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkLRSplineStreamTracer);
@@ -647,6 +648,32 @@ void AssembleOutput(const std::vector<Line>& lines, vtkIdType numSeeds,
   output->GetFieldData()->AddArray(seedReasons);
 }
 
+// Calls visit(seed and direction, npts, ids) for each line of `pd` with two
+// or more points, in order; the direction is 1 for a backward line (negative
+// time at its end), 0 for a forward one. Stops, returning false, when visit
+// returns false.
+template <typename Visit>
+bool ForEachSeedLine(vtkPolyData* pd, vtkDataArray* time, vtkDataArray* seedIds, const Visit& visit)
+{
+  vtkCellArray* ls = pd->GetLines();
+  vtkIdType npts;
+  const vtkIdType* ids;
+  vtkIdType cell = 0;
+  for (ls->InitTraversal(); ls->GetNextCell(npts, ids); ++cell)
+  {
+    if (npts < 2)
+    {
+      continue;
+    }
+    const int dir = time->GetComponent(ids[npts - 1], 0) < 0 ? 1 : 0;
+    if (!visit(std::make_pair(static_cast<int>(seedIds->GetComponent(cell, 0)), dir), npts, ids))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 }
 
 //------------------------------------------------------------------------------
@@ -900,87 +927,72 @@ double vtkLRSplineStreamTracer::ComputeErrorMetric(
   }
   // Reference lines by (seed, direction).
   std::map<std::pair<int, int>, std::vector<vtkIdType>> refLines;
-  {
-    vtkCellArray* ls = reference->GetLines();
-    vtkIdType npts;
-    const vtkIdType* ids;
-    vtkIdType cell = 0;
-    for (ls->InitTraversal(); ls->GetNextCell(npts, ids); ++cell)
+  ForEachSeedLine(reference, rt, rid,
+    [&refLines](const std::pair<int, int>& key, vtkIdType npts, const vtkIdType* ids)
     {
-      if (npts < 2)
-      {
-        continue;
-      }
-      const int dir = rt->GetComponent(ids[npts - 1], 0) < 0 ? 1 : 0;
-      refLines[{ static_cast<int>(rid->GetComponent(cell, 0)), dir }].assign(ids, ids + npts);
-    }
-  }
+      refLines[key].assign(ids, ids + npts);
+      return true;
+    });
   double worst = 0.0;
-  vtkCellArray* ls = approximation->GetLines();
-  vtkIdType npts;
-  const vtkIdType* ids;
-  vtkIdType cell = 0;
-  for (ls->InitTraversal(); ls->GetNextCell(npts, ids); ++cell)
-  {
-    if (npts < 2)
+  const bool matched = ForEachSeedLine(approximation, at, aid,
+    [&](const std::pair<int, int>& key, vtkIdType npts, const vtkIdType* ids)
     {
-      continue;
-    }
-    const int dir = at->GetComponent(ids[npts - 1], 0) < 0 ? 1 : 0;
-    auto it = refLines.find({ static_cast<int>(aid->GetComponent(cell, 0)), dir });
-    if (it == refLines.end())
-    {
-      return -1.0;
-    }
-    const std::vector<vtkIdType>& ref = it->second;
-    // reference times as |t| (monotonically increasing)
-    std::vector<double> rtime(ref.size());
-    for (std::size_t k = 0; k < ref.size(); ++k)
-    {
-      rtime[k] = std::abs(rt->GetComponent(ref[k], 0));
-    }
-    double sum = 0.0;
-    for (vtkIdType i = 1; i < npts; ++i)
-    {
-      const double ti = std::abs(at->GetComponent(ids[i], 0));
-      const double dt = ti - std::abs(at->GetComponent(ids[i - 1], 0));
-      double y[3], x[3];
-      approximation->GetPoint(ids[i], y);
-      if (ti >= rtime.back())
+      const int dir = key.second;
+      auto it = refLines.find(key);
+      if (it == refLines.end())
       {
-        reference->GetPoint(ref.back(), x);
+        return false;
       }
-      else
+      const std::vector<vtkIdType>& ref = it->second;
+      // reference times as |t| (monotonically increasing)
+      std::vector<double> rtime(ref.size());
+      for (std::size_t k = 0; k < ref.size(); ++k)
       {
-        const std::size_t k1 = static_cast<std::size_t>(
-          std::upper_bound(rtime.begin(), rtime.end(), ti) - rtime.begin());
-        const std::size_t k0 = k1 - 1;
-        const double h = rtime[k1] - rtime[k0];
-        const double s = h > 0 ? (ti - rtime[k0]) / h : 0.0;
-        // cubic Hermite with the velocities (d x / d|t| = +-v)
-        const double sgn = dir == 1 ? -1.0 : 1.0;
-        const double h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
-        const double h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
-        double p0[3], p1[3], v0[3], v1[3];
-        reference->GetPoint(ref[k0], p0);
-        reference->GetPoint(ref[k1], p1);
-        rv->GetTuple(ref[k0], v0);
-        rv->GetTuple(ref[k1], v1);
+        rtime[k] = std::abs(rt->GetComponent(ref[k], 0));
+      }
+      double sum = 0.0;
+      for (vtkIdType i = 1; i < npts; ++i)
+      {
+        const double ti = std::abs(at->GetComponent(ids[i], 0));
+        const double dt = ti - std::abs(at->GetComponent(ids[i - 1], 0));
+        double y[3], x[3];
+        approximation->GetPoint(ids[i], y);
+        if (ti >= rtime.back())
+        {
+          reference->GetPoint(ref.back(), x);
+        }
+        else
+        {
+          const std::size_t k1 = static_cast<std::size_t>(
+            std::upper_bound(rtime.begin(), rtime.end(), ti) - rtime.begin());
+          const std::size_t k0 = k1 - 1;
+          const double h = rtime[k1] - rtime[k0];
+          const double s = h > 0 ? (ti - rtime[k0]) / h : 0.0;
+          // cubic Hermite with the velocities (d x / d|t| = +-v)
+          const double sgn = dir == 1 ? -1.0 : 1.0;
+          const double h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
+          const double h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
+          double p0[3], p1[3], v0[3], v1[3];
+          reference->GetPoint(ref[k0], p0);
+          reference->GetPoint(ref[k1], p1);
+          rv->GetTuple(ref[k0], v0);
+          rv->GetTuple(ref[k1], v1);
+          for (int d = 0; d < 3; ++d)
+          {
+            x[d] = h00 * p0[d] + h10 * h * sgn * v0[d] + h01 * p1[d] + h11 * h * sgn * v1[d];
+          }
+        }
+        double e = 0.0;
         for (int d = 0; d < 3; ++d)
         {
-          x[d] = h00 * p0[d] + h10 * h * sgn * v0[d] + h01 * p1[d] + h11 * h * sgn * v1[d];
+          e += (x[d] - y[d]) * (x[d] - y[d]);
         }
+        sum += std::abs(dt) * std::sqrt(e);
       }
-      double e = 0.0;
-      for (int d = 0; d < 3; ++d)
-      {
-        e += (x[d] - y[d]) * (x[d] - y[d]);
-      }
-      sum += std::abs(dt) * std::sqrt(e);
-    }
-    worst = std::max(worst, sum);
-  }
-  return worst;
+      worst = std::max(worst, sum);
+      return true;
+    });
+  return matched ? worst : -1.0;
 }
 
 //------------------------------------------------------------------------------

@@ -76,6 +76,41 @@ void BindPositions(vtkSmartPointer<vtkOpenGLVertexArrayObject>& array, vtkShader
   }
 }
 
+// Draws the back faces of the proxy box (`array`, 36 vertices) with the
+// fragments blended premultiplied (else written as they are: the sample
+// counts) and the depth test left to the rays (the opaque depth texture):
+// every pixel the volume may cover runs its ray once, also with the camera
+// inside the box; the isosurfaces (writeDepth) write their depth. The
+// state is restored after.
+void DrawProxyBox(
+  vtkOpenGLState* state, vtkOpenGLVertexArrayObject* array, bool blend, bool writeDepth)
+{
+  vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
+  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
+  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
+  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
+  vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
+  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
+  state->vtkglEnable(GL_CULL_FACE);
+  state->vtkglCullFace(GL_FRONT);
+  if (blend)
+  {
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  else
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthFunc(GL_ALWAYS);
+  state->vtkglDepthMask(writeDepth ? GL_TRUE : GL_FALSE);
+  array->Bind();
+  glDrawArrays(GL_TRIANGLES, 0, 36);
+  array->Release();
+  state->vtkglCullFace(GL_BACK);
+}
+
 // The limits the shaders are compiled for.
 constexpr int MaximumIsoValues = vtkLRSplineVolumeShaderBuilder::MaximumIsoValues;
 constexpr int MaximumClipPlanes = vtkLRSplineVolumeShaderBuilder::MaximumClipPlanes;
@@ -941,33 +976,8 @@ void vtkLRSplineVolumeMapper::DrawSinglePass()
   // The back faces of the proxy box: every pixel the volume may cover runs
   // its ray once, also with the camera inside the box.
   vtkInternals& in = *this->Internals;
-  vtkOpenGLState* state = in.Window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
-  vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-  vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
-  vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
-  state->vtkglEnable(GL_CULL_FACE);
-  state->vtkglCullFace(GL_FRONT);
-  if (this->CountSamples)
-  {
-    state->vtkglDisable(GL_BLEND);
-  }
-  else
-  {
-    state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  }
-  // The depth test is done by the rays (the opaque depth texture); the
-  // isosurfaces write their depth.
-  state->vtkglEnable(GL_DEPTH_TEST);
-  state->vtkglDepthFunc(GL_ALWAYS);
-  state->vtkglDepthMask(this->BlendMode == ISOSURFACE_BLEND ? GL_TRUE : GL_FALSE);
-  in.CubeArray->Bind();
-  glDrawArrays(GL_TRIANGLES, 0, 36);
-  in.CubeArray->Release();
-  state->vtkglCullFace(GL_BACK);
+  DrawProxyBox(
+    in.Window->GetState(), in.CubeArray, !this->CountSamples, this->BlendMode == ISOSURFACE_BLEND);
 }
 
 //------------------------------------------------------------------------------
@@ -1566,25 +1576,7 @@ bool vtkLRSplineVolumeMapper::DrawPasses(vtkRenderer* ren, vtkShaderProgram* pro
   in.PassFinal[1]->Activate();
   composite->SetUniformi("lrFinalColor", in.PassFinal[0]->GetTextureUnit());
   composite->SetUniformi("lrFinalDepth", in.PassFinal[1]->GetTextureUnit());
-  {
-    vtkOpenGLState::ScopedglEnableDisable savedCull(state, GL_CULL_FACE);
-    vtkOpenGLState::ScopedglEnableDisable savedBlend(state, GL_BLEND);
-    vtkOpenGLState::ScopedglEnableDisable savedDepthTest(state, GL_DEPTH_TEST);
-    vtkOpenGLState::ScopedglDepthMask savedDepthMask(state);
-    vtkOpenGLState::ScopedglDepthFunc savedDepthFunc(state);
-    vtkOpenGLState::ScopedglBlendFuncSeparate savedBlendFunc(state);
-    state->vtkglEnable(GL_CULL_FACE);
-    state->vtkglCullFace(GL_FRONT);
-    state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    state->vtkglEnable(GL_DEPTH_TEST);
-    state->vtkglDepthFunc(GL_ALWAYS);
-    state->vtkglDepthMask(this->BlendMode == ISOSURFACE_BLEND ? GL_TRUE : GL_FALSE);
-    in.CompositeArray->Bind();
-    glDrawArrays(GL_TRIANGLES, 0, 36);
-    in.CompositeArray->Release();
-    state->vtkglCullFace(GL_BACK);
-  }
+  DrawProxyBox(state, in.CompositeArray, true, this->BlendMode == ISOSURFACE_BLEND);
   in.PassFinal[0]->Deactivate();
   in.PassFinal[1]->Deactivate();
   (void)ren;

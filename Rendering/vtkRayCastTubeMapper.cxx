@@ -162,7 +162,7 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
     "  if (tubeHit) // the rest of main(), closed at its end\n"
     "  {\n"
     "  vertexVC = vec4(tubeHitVC, 1.0);\n"
-    "  //VTK::TubeClip::Impl\n"
+    "  //SV::TubeClip::Impl\n"
     "  vec4 tubeHitDC = VCDCMatrix * vertexVC;\n"
     "  gl_FragDepth = 0.5 * (gl_DepthRange.diff * (tubeHitDC.z / tubeHitDC.w) +\n"
     "    gl_DepthRange.near + gl_DepthRange.far);\n";
@@ -208,7 +208,7 @@ void vtkRayCastTubeMapper::ReplaceShaderClip(
 {
   // Clip the hit point (not the proxy rectangle).
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
-  this->ReplaceShaderTubeClip(FSSource, "//VTK::TubeClip::Impl");
+  this->ReplaceShaderTubeClip(FSSource, "//SV::TubeClip::Impl");
   shaders[vtkShader::Fragment]->SetSource(FSSource);
 }
 

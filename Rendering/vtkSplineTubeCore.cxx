@@ -134,6 +134,26 @@ void MergeBounds(vtkSMPThreadLocal<Local>& locals, double bounds[6])
     AddBox(bounds, local.B);
   }
 }
+
+/// Calls visit(local, t, n) for every tube t, in parallel, with the thread's
+/// scratch `local` holding the tube's n nodes (in.TubeNodes()) and the box
+/// the thread grows; the union of the threads' boxes into bounds.
+template <typename Tubes, typename Visit>
+void ForEachTubeNodes(const Tubes& in, vtkIdType numTubes, double bounds[6], const Visit& visit)
+{
+  vtkSMPThreadLocal<NodesAndBox> locals;
+  vtkSMPTools::For(0, numTubes,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      NodesAndBox& local = locals.Local();
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        const vtkIdType n = in.TubeNodes(t, local.P, local.M);
+        visit(local, t, n);
+      }
+    });
+  MergeBounds(locals, bounds);
+}
 }
 
 //------------------------------------------------------------------------------
@@ -1157,79 +1177,72 @@ void vtkSplineTubeCore::BuildChunks()
   // bounds by thread.
   double center[3];
   this->GetCenter(center);
-  vtkSMPThreadLocal<NodesAndBox> locals;
-  vtkSMPTools::For(0, numTubes,
-    [&](vtkIdType begin, vtkIdType end)
+  ForEachTubeNodes(in, numTubes, this->Bounds,
+    [&](NodesAndBox& local, vtkIdType t, vtkIdType n)
     {
-      NodesAndBox& local = locals.Local();
-      for (vtkIdType t = begin; t < end; ++t)
+      vtkIdType k = 0; // segment of the tube
+      for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
       {
-        const vtkIdType n = in.TubeNodes(t, local.P, local.M);
-        vtkIdType k = 0; // segment of the tube
-        for (vtkIdType c = tubeFirstChunk[t]; c < tubeFirstChunk[t + 1]; ++c)
+        const vtkIdType firstSegment = in.TubeFirst[t] - t + k;
+        chunkFirst[c] = static_cast<vtkTypeUInt32>(firstSegment);
+        chunkTube[c] = static_cast<vtkTypeUInt32>(t);
+        double segmentBounds[ChunkSegments][6];
+        Box box;
+        double length = 0.0;
+        double maxLength = 0.0;
+        double maxRadius = 0.0;
+        const vtkIdType stop = std::min<vtkIdType>(n - 1, k + ChunkSegments);
+        const vtkIdType chunkSegments = stop - k;
+        for (vtkIdType j = 0; j < chunkSegments; ++j, ++k)
         {
-          const vtkIdType firstSegment = in.TubeFirst[t] - t + k;
-          chunkFirst[c] = static_cast<vtkTypeUInt32>(firstSegment);
-          chunkTube[c] = static_cast<vtkTypeUInt32>(t);
-          double segmentBounds[ChunkSegments][6];
-          Box box;
-          double length = 0.0;
-          double maxLength = 0.0;
-          double maxRadius = 0.0;
-          const vtkIdType stop = std::min<vtkIdType>(n - 1, k + ChunkSegments);
-          const vtkIdType chunkSegments = stop - k;
-          for (vtkIdType j = 0; j < chunkSegments; ++j, ++k)
-          {
-            double control[4][3];
-            double r = 0.0;
-            SegmentBox(local.P.data(), local.M.data(), k, segmentBounds[j], control, r);
-            AddBox(box.B, segmentBounds[j]);
-            double polygon = 0.0;
-            for (int q = 0; q < 3; ++q)
-            {
-              polygon += std::sqrt(vtkMath::Distance2BetweenPoints(control[q], control[q + 1]));
-            }
-            length += polygon;
-            maxLength = std::max(maxLength, polygon);
-            maxRadius = std::max(maxRadius, r);
-          }
-          AddBox(local.B, box.B);
-          sizes[3 * c] = static_cast<float>(length);
-          sizes[3 * c + 1] = static_cast<float>(maxLength);
-          sizes[3 * c + 2] = static_cast<float>(maxRadius);
-
-          // The sphere around the box, relative to the centre (rounding to
-          // float covered by a relative margin), and the segments' spheres.
-          double radius2 = 0.0;
-          double extent = 0.0;
+          double control[4][3];
+          double r = 0.0;
+          SegmentBox(local.P.data(), local.M.data(), k, segmentBounds[j], control, r);
+          AddBox(box.B, segmentBounds[j]);
+          double polygon = 0.0;
           for (int q = 0; q < 3; ++q)
           {
-            const double mid = 0.5 * (box.B[2 * q] + box.B[2 * q + 1]);
-            spheres[4 * c + q] = static_cast<float>(mid - center[q]);
-            radius2 += 0.25 * (box.B[2 * q + 1] - box.B[2 * q]) * (box.B[2 * q + 1] - box.B[2 * q]);
-            extent = std::max(extent, std::abs(mid - center[q]));
+            polygon += std::sqrt(vtkMath::Distance2BetweenPoints(control[q], control[q + 1]));
           }
-          const double radius = std::sqrt(radius2);
-          spheres[4 * c + 3] = static_cast<float>(radius + 1e-6 * (radius + extent));
-          for (vtkIdType j = 0; j < chunkSegments; ++j)
+          length += polygon;
+          maxLength = std::max(maxLength, polygon);
+          maxRadius = std::max(maxRadius, r);
+        }
+        AddBox(local.B, box.B);
+        sizes[3 * c] = static_cast<float>(length);
+        sizes[3 * c + 1] = static_cast<float>(maxLength);
+        sizes[3 * c + 2] = static_cast<float>(maxRadius);
+
+        // The sphere around the box, relative to the centre (rounding to
+        // float covered by a relative margin), and the segments' spheres.
+        double radius2 = 0.0;
+        double extent = 0.0;
+        for (int q = 0; q < 3; ++q)
+        {
+          const double mid = 0.5 * (box.B[2 * q] + box.B[2 * q + 1]);
+          spheres[4 * c + q] = static_cast<float>(mid - center[q]);
+          radius2 += 0.25 * (box.B[2 * q + 1] - box.B[2 * q]) * (box.B[2 * q + 1] - box.B[2 * q]);
+          extent = std::max(extent, std::abs(mid - center[q]));
+        }
+        const double radius = std::sqrt(radius2);
+        spheres[4 * c + 3] = static_cast<float>(radius + 1e-6 * (radius + extent));
+        for (vtkIdType j = 0; j < chunkSegments; ++j)
+        {
+          const double* b = segmentBounds[j];
+          double part[4];
+          double partRadius2 = 0.0;
+          for (int q = 0; q < 3; ++q)
           {
-            const double* b = segmentBounds[j];
-            double part[4];
-            double partRadius2 = 0.0;
-            for (int q = 0; q < 3; ++q)
-            {
-              part[q] = 0.5 * (b[2 * q] + b[2 * q + 1]) - center[q];
-              partRadius2 += 0.25 * (b[2 * q + 1] - b[2 * q]) * (b[2 * q + 1] - b[2 * q]);
-            }
-            part[3] = std::sqrt(partRadius2) * (1.0 + 1e-6) + 1e-6 * extent;
-            segmentSpheres[firstSegment + j] =
-              vtkSplineTubeVisibility::EncodePart(spheres + 4 * c, part);
+            part[q] = 0.5 * (b[2 * q] + b[2 * q + 1]) - center[q];
+            partRadius2 += 0.25 * (b[2 * q + 1] - b[2 * q]) * (b[2 * q + 1] - b[2 * q]);
           }
+          part[3] = std::sqrt(partRadius2) * (1.0 + 1e-6) + 1e-6 * extent;
+          segmentSpheres[firstSegment + j] =
+            vtkSplineTubeVisibility::EncodePart(spheres + 4 * c, part);
         }
       }
     });
   chunkFirst[numChunks] = static_cast<vtkTypeUInt32>(numSegments);
-  MergeBounds(locals, this->Bounds);
 }
 
 //------------------------------------------------------------------------------
@@ -1250,25 +1263,18 @@ void vtkSplineTubeCore::BuildBounds()
     return;
   }
   // The same boxes as the chunk table's spheres contain, by thread.
-  vtkSMPThreadLocal<NodesAndBox> locals;
-  vtkSMPTools::For(0, numTubes,
-    [&](vtkIdType begin, vtkIdType end)
+  ForEachTubeNodes(in, numTubes, this->Bounds,
+    [](NodesAndBox& local, vtkIdType, vtkIdType n)
     {
-      NodesAndBox& local = locals.Local();
-      for (vtkIdType t = begin; t < end; ++t)
+      for (vtkIdType k = 0; k + 1 < n; ++k)
       {
-        const vtkIdType n = in.TubeNodes(t, local.P, local.M);
-        for (vtkIdType k = 0; k + 1 < n; ++k)
-        {
-          double box[6];
-          double control[4][3];
-          double r = 0.0;
-          SegmentBox(local.P.data(), local.M.data(), k, box, control, r);
-          AddBox(local.B, box);
-        }
+        double box[6];
+        double control[4][3];
+        double r = 0.0;
+        SegmentBox(local.P.data(), local.M.data(), k, box, control, r);
+        AddBox(local.B, box);
       }
     });
-  MergeBounds(locals, this->Bounds);
 }
 
 //------------------------------------------------------------------------------

@@ -855,7 +855,7 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
   {
     depth += "  vec4 tubeColor = tubeDirectionColor(lineColorVSOutput.xyz);\n";
   }
-  depth += "  //VTK::TubeClip::Impl\n";
+  depth += "  //SV::TubeClip::Impl\n";
   if (writeDepth)
   {
     depth += "  vec4 lineDC = VCDCMatrix * vertexVC;\n"
@@ -866,7 +866,7 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
   vtkShaderProgram::Substitute(FSSource, "//VTK::Depth::Impl", depth);
   // The colors are modulated after VTK computed them; the normal is ours.
   vtkShaderProgram::Substitute(
-    FSSource, "//VTK::Color::Impl", "//VTK::Color::Impl\n  //VTK::StylizedLine::Impl\n");
+    FSSource, "//VTK::Color::Impl", "//VTK::Color::Impl\n  //SV::StylizedLine::Impl\n");
   vtkShaderProgram::Substitute(FSSource, "//VTK::Normal::Impl", "");
 
   // Picking: the cell is the polyline, the composite index its block.
@@ -883,7 +883,7 @@ void vtkStylizedLineMapper::ReplaceShaderValues(
   {
     style += "  specularColor *= lineHalo ? 0.0 : lineLit;\n";
   }
-  vtkShaderProgram::Substitute(FSSource, "//VTK::StylizedLine::Impl", style);
+  vtkShaderProgram::Substitute(FSSource, "//SV::StylizedLine::Impl", style);
   if (writeDepth)
   {
     // Depth peeling and the shadow-map baker read the written depth.
@@ -900,7 +900,7 @@ void vtkStylizedLineMapper::ReplaceShaderClip(
 {
   // Clip the (corrected) surface point.
   std::string FSSource = shaders[vtkShader::Fragment]->GetSource();
-  this->ReplaceShaderTubeClip(FSSource, "//VTK::TubeClip::Impl");
+  this->ReplaceShaderTubeClip(FSSource, "//SV::TubeClip::Impl");
   shaders[vtkShader::Fragment]->SetSource(FSSource);
 }
 

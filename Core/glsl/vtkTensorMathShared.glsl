@@ -12,7 +12,9 @@
 //
 // Contents:
 //  - svtSymmetricEigen: eigenvalues l1 >= l2 >= l3 and a right-handed
-//    orthonormal eigenvector frame, robust for repeated eigenvalues;
+//    orthonormal eigenvector frame, robust for repeated eigenvalues (its
+//    steps svtIsolatedEigenvector and svtPlaneRestriction are shared with
+//    vtkSplineVizTensorMath's PrincipalEigen);
 //  - svtFractionalAnisotropy, svtMeanDiffusivity, svtWestinMetrics
 //    (trace-normalized, as in Teem: cl = (l1-l2)/S, cp = 2(l2-l3)/S, cs = 3 l3/S);
 //  - svtApplySignPolicy: what to do with negative eigenvalues;
@@ -43,6 +45,87 @@ void svtOrderPair(SV_INOUT(real) la, SV_INOUT(vec3) va, SV_INOUT(real) lb, SV_IN
 }
 
 //------------------------------------------------------------------------------
+// The first half of svtSymmetricEigen, which vtkSplineVizTensorMath's
+// PrincipalEigen shares: the scale m, the shift q and the normalization p of
+// C = (A/m - qI)/p = (cd, co) and the unit eigenvector u of C's isolated
+// eigenvalue. Returns false for a multiple of the identity (the zero tensor
+// included), whose eigenvalues are then all in lambda.
+bool svtIsolatedEigenvector(vec3 diag, vec3 off, SV_OUT(vec3) lambda, SV_OUT(real) m,
+  SV_OUT(real) q, SV_OUT(real) p, SV_OUT(vec3) cd, SV_OUT(vec3) co, SV_OUT(vec3) u)
+{
+  m = max(max(max(abs(diag.x), abs(diag.y)), abs(diag.z)),
+    max(max(abs(off.x), abs(off.y)), abs(off.z)));
+  if (!(m > 0.0))
+  {
+    lambda = vec3(0.0, 0.0, 0.0);
+    return false;
+  }
+  vec3 d = diag / m;
+  vec3 o = off / m;
+  q = (d.x + d.y + d.z) / 3.0;
+  vec3 b = d - vec3(q, q, q);
+  real p2 = (dot(b, b) + 2.0 * dot(o, o)) / 6.0;
+  if (p2 < 1e-30)
+  {
+    // A multiple of the identity: every vector is an eigenvector.
+    lambda = vec3(m * q, m * q, m * q);
+    return false;
+  }
+  p = sqrt(p2);
+  cd = b / p;
+  co = o / p;
+  real detC = cd.x * (cd.y * cd.z - co.y * co.y) - co.x * (co.x * cd.z - co.y * co.z) +
+    co.z * (co.x * co.y - cd.y * co.z);
+  real r = clamp(0.5 * detC, -1.0, 1.0);
+  real phi = acos(r) / 3.0;
+  real betaIsolated = 2.0 * cos(phi);
+  if (r < 0.0)
+  {
+    betaIsolated = 2.0 * cos(phi + 2.0943951023931957);
+  }
+
+  // Null vector of C - beta I: the largest cross product of two of its rows.
+  vec3 r0 = vec3(cd.x - betaIsolated, co.x, co.z);
+  vec3 r1 = vec3(co.x, cd.y - betaIsolated, co.y);
+  vec3 r2 = vec3(co.z, co.y, cd.z - betaIsolated);
+  vec3 x01 = cross(r0, r1);
+  vec3 x02 = cross(r0, r2);
+  vec3 x12 = cross(r1, r2);
+  real n01 = dot(x01, x01);
+  real n02 = dot(x02, x02);
+  real n12 = dot(x12, x12);
+  u = x01;
+  real nu = n01;
+  if (n02 > nu)
+  {
+    u = x02;
+    nu = n02;
+  }
+  if (n12 > nu)
+  {
+    u = x12;
+    nu = n12;
+  }
+  u = u / sqrt(nu);
+  return true;
+}
+
+// The restriction of C = (cd, co) to the plane orthogonal to the unit vector
+// u: its basis (v, w = u x v) and the symmetric 2x2 matrix [[m00, m01], [m01,
+// m11]] in it.
+void svtPlaneRestriction(vec3 cd, vec3 co, vec3 u, SV_OUT(vec3) v, SV_OUT(vec3) w,
+  SV_OUT(real) m00, SV_OUT(real) m11, SV_OUT(real) m01)
+{
+  v = svAnyOrthogonal(u);
+  w = cross(u, v);
+  vec3 cv = svtSymMul(cd, co, v);
+  vec3 cw = svtSymMul(cd, co, w);
+  m00 = dot(v, cv);
+  m11 = dot(w, cw);
+  m01 = 0.5 * (dot(v, cw) + dot(w, cv));
+}
+
+//------------------------------------------------------------------------------
 // Eigen-decomposition of a symmetric tensor.
 //
 // lambda = (l1, l2, l3) with l1 >= l2 >= l3; e1, e2, e3 the unit eigenvectors,
@@ -65,70 +148,25 @@ void svtSymmetricEigen(
   e1 = vec3(1.0, 0.0, 0.0);
   e2 = vec3(0.0, 1.0, 0.0);
   e3 = vec3(0.0, 0.0, 1.0);
-  real m = max(max(max(abs(diag.x), abs(diag.y)), abs(diag.z)),
-    max(max(abs(off.x), abs(off.y)), abs(off.z)));
-  if (!(m > 0.0))
+  real m;
+  real q;
+  real p;
+  vec3 cd;
+  vec3 co;
+  vec3 u;
+  if (!svtIsolatedEigenvector(diag, off, lambda, m, q, p, cd, co, u))
   {
-    lambda = vec3(0.0, 0.0, 0.0);
     return;
   }
-  vec3 d = diag / m;
-  vec3 o = off / m;
-  real q = (d.x + d.y + d.z) / 3.0;
-  vec3 b = d - vec3(q, q, q);
-  real p2 = (dot(b, b) + 2.0 * dot(o, o)) / 6.0;
-  if (p2 < 1e-30)
-  {
-    // A multiple of the identity: every vector is an eigenvector.
-    lambda = vec3(m * q, m * q, m * q);
-    return;
-  }
-  real p = sqrt(p2);
-  vec3 cd = b / p;
-  vec3 co = o / p;
-  real detC = cd.x * (cd.y * cd.z - co.y * co.y) - co.x * (co.x * cd.z - co.y * co.z) +
-    co.z * (co.x * co.y - cd.y * co.z);
-  real r = clamp(0.5 * detC, -1.0, 1.0);
-  real phi = acos(r) / 3.0;
-  real betaIsolated = 2.0 * cos(phi);
-  if (r < 0.0)
-  {
-    betaIsolated = 2.0 * cos(phi + 2.0943951023931957);
-  }
-
-  // Null vector of C - beta I: the largest cross product of two of its rows.
-  vec3 r0 = vec3(cd.x - betaIsolated, co.x, co.z);
-  vec3 r1 = vec3(co.x, cd.y - betaIsolated, co.y);
-  vec3 r2 = vec3(co.z, co.y, cd.z - betaIsolated);
-  vec3 x01 = cross(r0, r1);
-  vec3 x02 = cross(r0, r2);
-  vec3 x12 = cross(r1, r2);
-  real n01 = dot(x01, x01);
-  real n02 = dot(x02, x02);
-  real n12 = dot(x12, x12);
-  vec3 u = x01;
-  real nu = n01;
-  if (n02 > nu)
-  {
-    u = x02;
-    nu = n02;
-  }
-  if (n12 > nu)
-  {
-    u = x12;
-    nu = n12;
-  }
-  u = u / sqrt(nu);
 
   // The 2x2 restriction to the plane orthogonal to u, diagonalized by a
   // rotation of angle theta = atan(2 m01, m00 - m11) / 2.
-  vec3 v = svAnyOrthogonal(u);
-  vec3 w = cross(u, v);
-  vec3 cv = svtSymMul(cd, co, v);
-  vec3 cw = svtSymMul(cd, co, w);
-  real m00 = dot(v, cv);
-  real m11 = dot(w, cw);
-  real m01 = 0.5 * (dot(v, cw) + dot(w, cv));
+  vec3 v;
+  vec3 w;
+  real m00;
+  real m11;
+  real m01;
+  svtPlaneRestriction(cd, co, u, v, w, m00, m11, m01);
   real c = 1.0;
   real s = 0.0;
   if (abs(m01) > 1e-30 || abs(m00 - m11) > 1e-30)

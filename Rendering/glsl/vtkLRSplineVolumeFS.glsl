@@ -454,28 +454,34 @@ float lrRayDepth(vec2 ndc, float depth, vec3 origin, vec3 dir)
   return dot(p.xyz / p.w - origin, dir);
 }
 
-void main()
+// The ray's march: what the samples so far left (carried from pass to pass
+// by the multi-pass continuation).
+struct LrMarch
 {
-  vec2 ndc = 2.0 * (gl_FragCoord.xy - lrViewport.xy) / lrViewport.zw - 1.0;
-  ivec2 pixel = ivec2(gl_FragCoord.xy - lrViewport.xy);
-#if LR_BLEND == 5
-  gl_FragDepth = gl_FragCoord.z;
-#endif
-  vec4 a = lrDCMCMatrix * vec4(ndc, -1.0, 1.0);
-  vec4 b = lrDCMCMatrix * vec4(ndc, 1.0, 1.0);
-  vec3 origin = a.xyz / a.w;
-  vec3 dir = normalize(b.xyz / b.w - origin);
-  // World length of a data unit along the ray (opacity correction).
-  lrWorldPerData = length(lrDataToWorld * dir);
+  vec4 result;     // composited color (premultiplied)
+  float extreme;   // maximum / minimum intensity
+  bool found;      // an extreme or an isosurface was met
+  float t;         // the next sample's ray parameter
+  float prevT;     // the previous sample's
+  float prevValue; // and its value and gradient
+  vec3 prevGradient;
+  bool prevValid; // the previous sample was inside a patch
+  float hitDepth; // window depth of the first isosurface
+};
 
-  // The interval: the union box, the opaque geometry, the clipping planes.
+// The interval [t0, t1] of the ray (origin, dir) through pixel `pixel` (ndc:
+// its normalized device coordinates) that is sampled: the union box, the
+// opaque geometry, the clipping planes and the trimming surface. Discards the
+// fragment when the interval is empty.
+void lrRayInterval(vec2 ndc, ivec2 pixel, vec3 origin, vec3 dir, out float t0, out float t1)
+{
   vec3 inv = 1.0 / dir;
   vec3 ta = (lrBoxLo - origin) * inv;
   vec3 tb = (lrBoxHi - origin) * inv;
   vec3 tmin = min(ta, tb);
   vec3 tmax = max(ta, tb);
-  float t0 = max(max(tmin.x, tmin.y), max(tmin.z, 0.0));
-  float t1 = min(min(tmax.x, tmax.y), tmax.z);
+  t0 = max(max(tmin.x, tmin.y), max(tmin.z, 0.0));
+  t1 = min(min(tmax.x, tmax.y), tmax.z);
   t1 = min(t1, lrRayDepth(ndc, texelFetch(lrDepth, pixel, 0).r, origin, dir));
   for (int i = 0; i < lrNumberOfClipPlanes; ++i)
   {
@@ -513,198 +519,180 @@ void main()
   {
     discard;
   }
+}
 
-  vec4 result = vec4(0.0);
-  float extreme = LR_BLEND == 2 ? 1e30 : -1e30;
-  bool found = false;
-  float t = t0;
-  float prevT = t0;
-  float prevValue = 0.0;
-  vec3 prevGradient = vec3(0.0);
-  bool prevValid = false;
-  float value;
-  vec3 gradient;
-  float minSide;
-  float hitDepth = 1.0; // window depth of the first isosurface
-  bool done = false;    // the ray has ended (not cut by the step budget)
-  bool resume = false;
 #if LR_MULTIPASS
-  if (lrPass > 0)
+// The state the previous pass left for this pixel's ray; discards the
+// fragment of a ray that has ended.
+void lrResume(ivec2 pixel, inout LrMarch m)
+{
+  vec4 ray = texelFetch(lrStateRay, pixel, 0);
+  int flags = int(ray.w + 0.5);
+  if ((flags & 1) == 0)
   {
-    vec4 ray = texelFetch(lrStateRay, pixel, 0);
-    int flags = int(ray.w + 0.5);
-    if ((flags & 1) == 0)
-    {
-      discard; // ended in an earlier pass (or never started)
-    }
-    vec4 extra = texelFetch(lrStateExtra, pixel, 0);
-    result = texelFetch(lrStateColor, pixel, 0);
-    t = ray.x;
-    prevT = ray.y;
-    prevValue = ray.z;
-    prevValid = (flags & 2) != 0;
-    found = (flags & 4) != 0;
-    prevGradient = extra.xyz;
-    extreme = extra.w;
-    hitDepth = extra.w;
-    resume = true;
+    discard; // ended in an earlier pass (or never started)
   }
+  vec4 extra = texelFetch(lrStateExtra, pixel, 0);
+  m.result = texelFetch(lrStateColor, pixel, 0);
+  m.t = ray.x;
+  m.prevT = ray.y;
+  m.prevValue = ray.z;
+  m.prevValid = (flags & 2) != 0;
+  m.found = (flags & 4) != 0;
+  m.prevGradient = extra.xyz;
+  m.extreme = extra.w;
+  m.hitDepth = extra.w;
+}
 #endif
-  // A random start within the first step (VTK's jittering).
-  if (lrJitter > 0.0 && !resume)
-  {
-    float r = fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
-    if (lrSample(origin + t * dir, value, gradient, minSide))
-    {
-      t = min(t1, t + r * lrStep(minSide));
-    }
-  }
-  for (int step = 0; step < lrMaxSteps; ++step)
-  {
-    bool last = t >= t1;
-    t = min(t, t1);
-    bool valid = lrSample(origin + t * dir, value, gradient, minSide);
-    if (valid && prevValid && t > prevT)
-    {
+
 #if LR_BLEND == 0
-      // Front-to-back compositing of [prevT, t], the transfer function
-      // supersampled along the linear interpolant of the two values.
-      float ds = (t - prevT) * lrWorldPerData / float(LR_SUPERSAMPLING);
-      for (int k = 0; k < LR_SUPERSAMPLING; ++k)
-      {
-        float f = (float(k) + 0.5) / float(LR_SUPERSAMPLING);
-        vec4 c = lrTransferFunction(mix(prevValue, value, f));
-        float alpha = lrCorrectedOpacity(c.a, ds / lrUnitDistance);
-        vec3 shaded = lrShade(c.rgb, mix(prevGradient, gradient, f), dir);
-        result.rgb += (1.0 - result.a) * alpha * shaded;
-        result.a += (1.0 - result.a) * alpha;
-      }
-      if (result.a > 0.99)
-      {
-        done = true;
-        break;
-      }
-#elif LR_BLEND == 5
-      // The isosurfaces crossed in (prevT, t] (a value met exactly at a
-      // sample counts once, arriving), refined by bisection on the exact
-      // spline, composited nearest first.
-      float roots[LR_ISO];
-      int which[LR_ISO];
-      int count = 0;
-      for (int i = 0; i < lrNumberOfIsoValues; ++i)
-      {
-        float c = lrIsoValues[i];
-        if ((prevValue - c) * (value - c) < 0.0 || (value == c && prevValue != c))
-        {
-          float lo = prevT;
-          float hi = t;
-          float flo = prevValue - c;
-          for (int it = 0; it < lrBisections; ++it)
-          {
-            float mid = 0.5 * (lo + hi);
-            float v;
-            vec3 g;
-            float side;
-            float fm = lrSample(origin + mid * dir, v, g, side) ? v - c : flo;
-            if ((fm < 0.0) == (flo < 0.0))
-            {
-              lo = mid;
-              flo = fm;
-            }
-            else
-            {
-              hi = mid;
-            }
-          }
-          // Insertion into the sorted list.
-          float root = 0.5 * (lo + hi);
-          int k = count;
-          while (k > 0 && roots[k - 1] > root)
-          {
-            roots[k] = roots[k - 1];
-            which[k] = which[k - 1];
-            --k;
-          }
-          roots[k] = root;
-          which[k] = i;
-          ++count;
-        }
-      }
-      for (int k = 0; k < count; ++k)
-      {
-        float v;
-        vec3 g;
-        float side;
-        lrSample(origin + roots[k] * dir, v, g, side);
-        vec4 c = lrTransferFunction(lrIsoValues[which[k]]);
-        vec3 shaded = lrShade(c.rgb, g, dir);
-        result.rgb += (1.0 - result.a) * c.a * shaded;
-        result.a += (1.0 - result.a) * c.a;
-        if (!found)
-        {
-          found = true;
-          vec4 clip = lrMCDCMatrix * vec4(origin + roots[k] * dir, 1.0);
-          hitDepth = 0.5 * (gl_DepthRange.diff * (clip.z / clip.w) + gl_DepthRange.near +
-            gl_DepthRange.far);
-#if !LR_MULTIPASS
-          gl_FragDepth = hitDepth;
+// Front-to-back compositing of [m.prevT, m.t] (the sample there: value,
+// gradient), the transfer function supersampled along the linear
+// interpolant of the two values.
+void lrCompositeInterval(inout LrMarch m, float value, vec3 gradient, vec3 dir)
+{
+  float ds = (m.t - m.prevT) * lrWorldPerData / float(LR_SUPERSAMPLING);
+  for (int k = 0; k < LR_SUPERSAMPLING; ++k)
+  {
+    float f = (float(k) + 0.5) / float(LR_SUPERSAMPLING);
+    vec4 c = lrTransferFunction(mix(m.prevValue, value, f));
+    float alpha = lrCorrectedOpacity(c.a, ds / lrUnitDistance);
+    vec3 shaded = lrShade(c.rgb, mix(m.prevGradient, gradient, f), dir);
+    m.result.rgb += (1.0 - m.result.a) * alpha * shaded;
+    m.result.a += (1.0 - m.result.a) * alpha;
+  }
+}
 #endif
-        }
-      }
-      if (result.a > 0.99)
-      {
-        done = true;
-        break;
-      }
-#endif
-    }
-    if (valid)
+
+#if LR_BLEND == 5
+// The ray parameter where the spline crosses iso value c in [lo, hi] (flo:
+// the value minus c at lo), by bisection on the exact spline.
+float lrIsoRoot(vec3 origin, vec3 dir, float c, float lo, float hi, float flo)
+{
+  for (int it = 0; it < lrBisections; ++it)
+  {
+    float mid = 0.5 * (lo + hi);
+    float v;
+    vec3 g;
+    float side;
+    float fm = lrSample(origin + mid * dir, v, g, side) ? v - c : flo;
+    if ((fm < 0.0) == (flo < 0.0))
     {
-#if LR_BLEND == 1
-      extreme = max(extreme, value);
-      found = true;
-#elif LR_BLEND == 2
-      extreme = min(extreme, value);
-      found = true;
-#endif
-      prevValue = value;
-      prevGradient = gradient;
-    }
-    prevValid = valid;
-    prevT = t;
-    if (last)
-    {
-      done = true;
-      break;
-    }
-    float eps = 1e-6 * (t1 - t0);
-    if (valid && lrCurrentSkip)
-    {
-      // Empty-space skipping: by the convex hull property of the Bezier
-      // form the element's values lie in its coefficients' range, over which
-      // the transfer function is transparent (or which holds no iso value):
-      // jump to its exit; nothing is composited across it.
-      t = max(lrElementExit(origin, dir), t) + 10.0 * eps;
-      prevValid = false;
+      lo = mid;
+      flo = fm;
     }
     else
     {
-      t = valid ? t + max(lrStep(minSide), eps) : lrNextEntry(origin, dir, t, 10.0 * eps);
-#if LR_CURVED
-      // A curved patch does not fill its box: outside points inside the
-      // boxes advance by the finest step.
-      if (!valid)
-      {
-        t = max(t, prevT + max(lrStep(lrMinimumSide), eps));
-      }
-#endif
-    }
-    if (t > 1e29)
-    {
-      done = true;
-      break;
+      hi = mid;
     }
   }
+  return 0.5 * (lo + hi);
+}
+
+// The isosurfaces crossed in (m.prevT, m.t] (a value met exactly at a sample
+// counts once, arriving; value: the sample at m.t), composited nearest
+// first; the depth of the first one.
+void lrCompositeIsosurfaces(inout LrMarch m, float value, vec3 origin, vec3 dir)
+{
+  float roots[LR_ISO];
+  int which[LR_ISO];
+  int count = 0;
+  for (int i = 0; i < lrNumberOfIsoValues; ++i)
+  {
+    float c = lrIsoValues[i];
+    if ((m.prevValue - c) * (value - c) < 0.0 || (value == c && m.prevValue != c))
+    {
+      // Insertion into the sorted list.
+      float root = lrIsoRoot(origin, dir, c, m.prevT, m.t, m.prevValue - c);
+      int k = count;
+      while (k > 0 && roots[k - 1] > root)
+      {
+        roots[k] = roots[k - 1];
+        which[k] = which[k - 1];
+        --k;
+      }
+      roots[k] = root;
+      which[k] = i;
+      ++count;
+    }
+  }
+  for (int k = 0; k < count; ++k)
+  {
+    float v;
+    vec3 g;
+    float side;
+    lrSample(origin + roots[k] * dir, v, g, side);
+    vec4 c = lrTransferFunction(lrIsoValues[which[k]]);
+    vec3 shaded = lrShade(c.rgb, g, dir);
+    m.result.rgb += (1.0 - m.result.a) * c.a * shaded;
+    m.result.a += (1.0 - m.result.a) * c.a;
+    if (!m.found)
+    {
+      m.found = true;
+      vec4 clip = lrMCDCMatrix * vec4(origin + roots[k] * dir, 1.0);
+      m.hitDepth = 0.5 * (gl_DepthRange.diff * (clip.z / clip.w) + gl_DepthRange.near +
+        gl_DepthRange.far);
+#if !LR_MULTIPASS
+      gl_FragDepth = m.hitDepth;
+#endif
+    }
+  }
+}
+#endif
+
+// Takes a sample (valid: inside a patch) as the previous one; maximum and
+// minimum intensity keep their extreme.
+void lrKeepSample(inout LrMarch m, bool valid, float value, vec3 gradient)
+{
+  if (valid)
+  {
+#if LR_BLEND == 1
+    m.extreme = max(m.extreme, value);
+    m.found = true;
+#elif LR_BLEND == 2
+    m.extreme = min(m.extreme, value);
+    m.found = true;
+#endif
+    m.prevValue = value;
+    m.prevGradient = gradient;
+  }
+  m.prevValid = valid;
+  m.prevT = m.t;
+}
+
+// The next sample's ray parameter after the sample at m.t (valid: inside a
+// patch, in an element of shortest side minSide); eps: the interval's
+// rounding tolerance.
+void lrAdvance(inout LrMarch m, bool valid, float minSide, float eps, vec3 origin, vec3 dir)
+{
+  if (valid && lrCurrentSkip)
+  {
+    // Empty-space skipping: by the convex hull property of the Bezier
+    // form the element's values lie in its coefficients' range, over which
+    // the transfer function is transparent (or which holds no iso value):
+    // jump to its exit; nothing is composited across it.
+    m.t = max(lrElementExit(origin, dir), m.t) + 10.0 * eps;
+    m.prevValid = false;
+  }
+  else
+  {
+    m.t = valid ? m.t + max(lrStep(minSide), eps) : lrNextEntry(origin, dir, m.t, 10.0 * eps);
+#if LR_CURVED
+    // A curved patch does not fill its box: outside points inside the
+    // boxes advance by the finest step.
+    if (!valid)
+    {
+      m.t = max(m.t, m.prevT + max(lrStep(lrMinimumSide), eps));
+    }
+#endif
+  }
+}
+
+// The fragment's outputs once the march stops (done: the ray has ended,
+// not cut by the step budget).
+void lrWriteOutputs(LrMarch m, bool done)
+{
+  vec4 result = m.result;
 #if LR_MULTIPASS
   if (!done && lrLastPass == 0)
   {
@@ -712,9 +700,9 @@ void main()
     gl_FragData[0] = vec4(0.0);
     gl_FragData[1] = vec4(1.0);
     gl_FragData[2] = result;
-    gl_FragData[3] = vec4(t, prevT, prevValue,
-      float(1 + (prevValid ? 2 : 0) + (found ? 4 : 0)));
-    gl_FragData[4] = vec4(prevGradient, LR_BLEND == 5 ? hitDepth : extreme);
+    gl_FragData[3] = vec4(m.t, m.prevT, m.prevValue,
+      float(1 + (m.prevValid ? 2 : 0) + (m.found ? 4 : 0)));
+    gl_FragData[4] = vec4(m.prevGradient, LR_BLEND == 5 ? m.hitDepth : m.extreme);
     return;
   }
 #endif
@@ -725,15 +713,15 @@ void main()
   return;
 #endif
 #if LR_BLEND == 1 || LR_BLEND == 2
-  if (!found)
+  if (!m.found)
   {
     discard;
   }
-  vec4 c = lrTransferFunction(extreme);
+  vec4 c = lrTransferFunction(m.extreme);
   result = vec4(c.rgb * c.a, c.a);
 #endif
 #if LR_BLEND == 5
-  if (!found)
+  if (!m.found)
   {
     discard;
   }
@@ -745,11 +733,95 @@ void main()
 #if LR_MULTIPASS
   // Ended in this pass: its final color and depth; the state says inactive.
   gl_FragData[0] = result;
-  gl_FragData[1] = vec4(hitDepth);
+  gl_FragData[1] = vec4(m.hitDepth);
   gl_FragData[2] = vec4(0.0);
   gl_FragData[3] = vec4(0.0);
   gl_FragData[4] = vec4(0.0);
 #else
   gl_FragData[0] = result; // premultiplied: blended as src + (1 - src.a) dst
 #endif
+}
+
+void main()
+{
+  vec2 ndc = 2.0 * (gl_FragCoord.xy - lrViewport.xy) / lrViewport.zw - 1.0;
+  ivec2 pixel = ivec2(gl_FragCoord.xy - lrViewport.xy);
+#if LR_BLEND == 5
+  gl_FragDepth = gl_FragCoord.z;
+#endif
+  vec4 a = lrDCMCMatrix * vec4(ndc, -1.0, 1.0);
+  vec4 b = lrDCMCMatrix * vec4(ndc, 1.0, 1.0);
+  vec3 origin = a.xyz / a.w;
+  vec3 dir = normalize(b.xyz / b.w - origin);
+  // World length of a data unit along the ray (opacity correction).
+  lrWorldPerData = length(lrDataToWorld * dir);
+  float t0;
+  float t1;
+  lrRayInterval(ndc, pixel, origin, dir, t0, t1);
+
+  LrMarch m;
+  m.result = vec4(0.0);
+  m.extreme = LR_BLEND == 2 ? 1e30 : -1e30;
+  m.found = false;
+  m.t = t0;
+  m.prevT = t0;
+  m.prevValue = 0.0;
+  m.prevGradient = vec3(0.0);
+  m.prevValid = false;
+  m.hitDepth = 1.0;
+  float value;
+  vec3 gradient;
+  float minSide;
+  bool done = false; // the ray has ended (not cut by the step budget)
+  bool resume = false;
+#if LR_MULTIPASS
+  if (lrPass > 0)
+  {
+    lrResume(pixel, m);
+    resume = true;
+  }
+#endif
+  // A random start within the first step (VTK's jittering).
+  if (lrJitter > 0.0 && !resume)
+  {
+    float r = fract(sin(dot(gl_FragCoord.xy, vec2(12.9898, 78.233))) * 43758.5453);
+    if (lrSample(origin + m.t * dir, value, gradient, minSide))
+    {
+      m.t = min(t1, m.t + r * lrStep(minSide));
+    }
+  }
+  for (int step = 0; step < lrMaxSteps; ++step)
+  {
+    bool last = m.t >= t1;
+    m.t = min(m.t, t1);
+    bool valid = lrSample(origin + m.t * dir, value, gradient, minSide);
+    if (valid && m.prevValid && m.t > m.prevT)
+    {
+#if LR_BLEND == 0
+      lrCompositeInterval(m, value, gradient, dir);
+#elif LR_BLEND == 5
+      lrCompositeIsosurfaces(m, value, origin, dir);
+#endif
+#if LR_BLEND == 0 || LR_BLEND == 5
+      if (m.result.a > 0.99)
+      {
+        done = true; // early ray termination
+        break;
+      }
+#endif
+    }
+    lrKeepSample(m, valid, value, gradient);
+    if (last)
+    {
+      done = true;
+      break;
+    }
+    lrAdvance(m, valid, minSide, 1e-6 * (t1 - t0), origin, dir);
+    if (m.t > 1e29)
+    {
+      done = true;
+      break;
+    }
+  }
+  lrWriteOutputs(m, done);
 }

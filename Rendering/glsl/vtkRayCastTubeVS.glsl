@@ -77,50 +77,38 @@ vec2 projectToPlane(vec3 p, float zp)
   return p.xy * (zp / p.z);
 }
 
-void main()
+// The segment of node `node` in view coordinates (Hermite and Bezier forms
+// transform with their control points), its radii the drawn ones.
+void tubeViewSegment(int node, out vec4 a, out vec4 da, out vec4 b, out vec4 db, out int flags,
+  out int tube)
 {
-  tubeRect.frame = vec4(0.0); // not drawn (unless set below)
-  tubeRect.span = vec4(0.0);
-  int perChunk = tubeChunkSegments * subSegments;
-  int entry = gl_VertexID / perChunk;
-  int local = gl_VertexID - entry * perChunk;
-  uvec2 chunk = texelFetch(tubeChunkList, entry).xy;
-  if (local >= int(chunk.y) * subSegments)
-  {
-    tubeRect.info = ivec4(0);
-    tubeRect.q0 = tubeRect.q1 = tubeRect.q2 = vec4(0.0);
-    tubeRect.c0 = tubeRect.d0 = tubeRect.c1 = tubeRect.d1 = vec4(0.0);
-    return; // past the chunk's end: no rectangle
-  }
-  int node = int(chunk.x) + local / subSegments;
-  int k = local - (local / subSegments) * subSegments;
   vec4 p0;
   vec4 m0;
   vec4 p1;
   vec4 m1;
-  int flags;
-  int tube;
   tubeSegmentModel(node, p0, m0, p1, m1, flags, tube);
-  // The segment in view coordinates (Hermite and Bezier forms transform with
-  // their control points), then its sub-segment k.
-  vec4 a = vec4((tubeMCVC * vec4(p0.xyz, 1.0)).xyz, p0.w * tubeRadiusScale);
-  vec4 b = vec4((tubeMCVC * vec4(p1.xyz, 1.0)).xyz, p1.w * tubeRadiusScale);
-  vec4 da = vec4(mat3(tubeMCVC) * m0.xyz, m0.w * tubeRadiusScale);
-  vec4 db = vec4(mat3(tubeMCVC) * m1.xyz, m1.w * tubeRadiusScale);
+  a = vec4((tubeMCVC * vec4(p0.xyz, 1.0)).xyz, p0.w * tubeRadiusScale);
+  b = vec4((tubeMCVC * vec4(p1.xyz, 1.0)).xyz, p1.w * tubeRadiusScale);
+  da = vec4(mat3(tubeMCVC) * m0.xyz, m0.w * tubeRadiusScale);
+  db = vec4(mat3(tubeMCVC) * m1.xyz, m1.w * tubeRadiusScale);
   a.w = svDrawnRadius(a.w, a.z, tubeMinimumRadius);
   b.w = svDrawnRadius(b.w, b.z, tubeMinimumRadius);
-  vec4 q0;
-  vec4 q1;
-  vec4 q2;
-  svSplitSegment(a, da, b, db, subSegments, k, q0, q1, q2);
+}
 
-  // Straight segments and sub-segments (to within tubeStraightTolerance of
-  // their smallest radius and a quarter pixel) are intersected as round
-  // cones in closed form instead of by root finding: a straight segment is
-  // one rectangle (drawn by its first sub-segment), a pair of straight
-  // sub-segments (k, k + 1 for even k) one rectangle with two cones (drawn
-  // by the first), and a straight sub-segment alone one cone.
-  int mode = 0; // 0: root finding, 1: straight sub-segment, 2: straight segment, 3: straight pair
+// How sub-segment k (q0, q1, q2) of the segment is intersected. Straight
+// segments and sub-segments (to within tubeStraightTolerance of their
+// smallest radius and a quarter pixel) are intersected as round cones in
+// closed form instead of by root finding: a straight segment is one
+// rectangle (drawn by its first sub-segment), a pair of straight
+// sub-segments (k, k + 1 for even k) one rectangle with two cones (drawn by
+// the first), and a straight sub-segment alone one cone. Returns the mode (0:
+// root finding, 1: straight sub-segment, 2: straight segment, 3: straight
+// pair) and sets q0, q1, q2 to the control points to bound; -1 when another
+// sub-segment's rectangle draws this one.
+int tubeStraightMode(vec4 a, vec4 da, vec4 b, vec4 db, int k, inout vec4 q0, inout vec4 q1,
+  inout vec4 q2)
+{
+  int mode = 0;
   if (tubeStraightTolerance > 0.0)
   {
     float reach;
@@ -160,7 +148,7 @@ void main()
     }
     if ((mode == 2 && k != 0) || (mode == 3 && (k & 1) != 0))
     {
-      return; // drawn by another sub-segment's rectangle
+      return -1; // drawn by another sub-segment's rectangle
     }
     if (mode == 2)
     {
@@ -178,9 +166,14 @@ void main()
       q1 = 0.5 * (q0 + q2);
     }
   }
-  // Translucent: the part of the tube this rectangle draws, between the
-  // planes at its first and last sub-segment's ends (none at the tube's
-  // ends), so that neighbours never both draw a pixel (vtkRayCastTubeFS).
+  return mode;
+}
+
+// Translucent: the part of the tube this rectangle draws, between the
+// planes at its first and last sub-segment's ends (none at the tube's
+// ends), so that neighbours never both draw a pixel (vtkRayCastTubeFS).
+void tubeSetCutPlanes(vec4 a, vec4 da, vec4 b, vec4 db, int k, int mode, int flags)
+{
   tubeRect.cut0 = vec4(0.0, 0.0, 0.0, 1.0);
   tubeRect.cut1 = vec4(0.0, 0.0, 0.0, 1.0);
   if (tubeSingleLayer != 0)
@@ -196,10 +189,11 @@ void main()
       tubeRect.cut1 = -tubeCutPlane(a, da, b, db, last + 1);
     }
   }
-  tubeRect.q0 = q0;
-  tubeRect.q1 = q1;
-  tubeRect.q2 = q2;
-  tubeRect.info = ivec4(node, k, tube, flags | (mode << 2));
+}
+
+// The color spline's ends for the fragment stage.
+void tubeSetColors(int node)
+{
   if (tubeHaveColors == 1)
   {
     tubeRect.c0 = tubeNodeColor(node);
@@ -215,77 +209,76 @@ void main()
     tubeRect.c1 = tubeNodeModel(node + 1);
     tubeRect.d1 = tubeNodeDerivativeModel(node + 1);
   }
+}
 
-  // Fast path: the sub-segment lies in the convex hull of its control points
-  // with the largest radius (Bernstein property, radii >= 0); bound the
-  // projections of those three spheres. A sphere (center p, radius r, in
-  // front of the eye) projects onto the plane z = zp inside the segment of
-  // its center's projections scaled by s in [s_min, s_max], thickened by
-  // r * s_max, with s = zp / z for z in [p.z - r, p.z + r].
-  float rMax = max(max(q0.w, q1.w), q2.w);
-  float zNear = max(max(q0.z, q1.z), q2.z) + rMax; // nearest depth reached
-  if (zNear < -tubeNearPlane)
+// Fast path, for a sub-segment whose nearest depth reached, zNear, is in
+// front of the near plane: the sub-segment lies in the convex hull of its
+// control points with the largest radius rMax (Bernstein property, radii
+// >= 0); bound the projections of those three spheres. A sphere (center p,
+// radius r, in front of the eye) projects onto the plane z = zp inside the
+// segment of its center's projections scaled by s in [s_min, s_max],
+// thickened by r * s_max, with s = zp / z for z in [p.z - r, p.z + r].
+void tubeHullRectangle(vec4 q0, vec4 q1, vec4 q2, float rMax, float zNear)
+{
+  float zp = zNear;
+  vec2 u = vec2(1.0, 0.0);
+  vec2 chord = cameraParallel != 0 ? q2.xy - q0.xy : q2.xy / q2.z - q0.xy / q0.z;
+  if (length(chord) > 1e-20)
   {
-    float zp = zNear;
-    vec2 u = vec2(1.0, 0.0);
-    vec2 chord = cameraParallel != 0 ? q2.xy - q0.xy : q2.xy / q2.z - q0.xy / q0.z;
-    if (length(chord) > 1e-20)
-    {
-      u = normalize(chord);
-    }
-    vec2 v = vec2(-u.y, u.x);
-    vec2 lo = vec2(1e30);
-    vec2 hi = vec2(-1e30);
-    vec4 qs[3];
-    qs[0] = q0;
-    qs[1] = q1;
-    qs[2] = q2;
-    for (int i = 0; i < 3; ++i)
-    {
-      vec3 p = qs[i].xyz;
-      float sMin = 1.0;
-      float sMax = 1.0;
-      if (cameraParallel == 0)
-      {
-        sMin = zp / (p.z - rMax);
-        sMax = zp / (p.z + rMax);
-      }
-      vec2 uv = vec2(dot(p.xy, u), dot(p.xy, v));
-      float pad = rMax * sMax;
-      lo = min(lo, min(uv * sMin, uv * sMax) - vec2(pad));
-      hi = max(hi, max(uv * sMin, uv * sMax) + vec2(pad));
-    }
-    // Beyond the far plane: nothing (rectangles beside the viewport are
-    // clipped by the rasterizer at no fragment cost).
-    vec4 farClip = VCDCMatrix * vec4(0.0, 0.0, zNear, 1.0);
-    if (farClip.z <= farClip.w)
-    {
-      tubeRect.frame = vec4(u, zp, 1.0);
-      tubeRect.span = vec4(lo, hi);
-    }
-    return;
+    u = normalize(chord);
   }
+  vec2 v = vec2(-u.y, u.x);
+  vec2 lo = vec2(1e30);
+  vec2 hi = vec2(-1e30);
+  vec4 qs[3];
+  qs[0] = q0;
+  qs[1] = q1;
+  qs[2] = q2;
+  for (int i = 0; i < 3; ++i)
+  {
+    vec3 p = qs[i].xyz;
+    float sMin = 1.0;
+    float sMax = 1.0;
+    if (cameraParallel == 0)
+    {
+      sMin = zp / (p.z - rMax);
+      sMax = zp / (p.z + rMax);
+    }
+    vec2 uv = vec2(dot(p.xy, u), dot(p.xy, v));
+    float pad = rMax * sMax;
+    lo = min(lo, min(uv * sMin, uv * sMax) - vec2(pad));
+    hi = max(hi, max(uv * sMin, uv * sMax) + vec2(pad));
+  }
+  // Beyond the far plane: nothing (rectangles beside the viewport are
+  // clipped by the rasterizer at no fragment cost).
+  vec4 farClip = VCDCMatrix * vec4(0.0, 0.0, zNear, 1.0);
+  if (farClip.z <= farClip.w)
+  {
+    tubeRect.frame = vec4(u, zp, 1.0);
+    tubeRect.span = vec4(lo, hi);
+  }
+}
 
-  // The sub-segment may reach the near plane: bound its oriented box clipped
-  // to the near plane (rare: the camera is among the tubes).
+// The corners of the sub-segment's oriented box (bit 0: +x, bit 1: +y, bit
+// 2: +z), padded by a tiny fraction so that rounding never clips the
+// surface, and their nearest depth zMax (view z is negative in front); false
+// when the box is outside the view frustum (culled in clip space).
+bool tubeBoxCorners(vec4 q0, vec4 q1, vec4 q2, out vec3 corner[8], out float zMax)
+{
   SvBox box;
   svSubSegmentBox(q0, q1, q2, box);
-  // Pad by a tiny fraction so that rounding never clips the surface.
   vec3 h = box.halfSize * 1.001 + vec3(1e-6 * length(box.halfSize));
   vec3 ax = box.axis0 * h.x;
   vec3 ay = box.axis1 * h.y;
   vec3 az = box.axis2 * h.z;
   vec3 c = box.center;
-
-  // Corners (bit 0: +x, bit 1: +y, bit 2: +z); frustum culling in clip space.
-  vec3 corner[8];
   bool allLeft = true;
   bool allRight = true;
   bool allBelow = true;
   bool allAbove = true;
   bool allFar = true;
   bool allNear = true;
-  float zMax = -1e30; // nearest corner depth (view z is negative in front)
+  zMax = -1e30;
   for (int i = 0; i < 8; ++i)
   {
     vec3 p = c + ((i & 1) != 0 ? ax : -ax) + ((i & 2) != 0 ? ay : -ay) + ((i & 4) != 0 ? az : -az);
@@ -299,7 +292,16 @@ void main()
     allNear = allNear && p.z > -tubeNearPlane;
     zMax = max(zMax, p.z);
   }
-  if (allLeft || allRight || allBelow || allAbove || allFar || allNear)
+  return !(allLeft || allRight || allBelow || allAbove || allFar || allNear);
+}
+
+// The sub-segment may reach the near plane: bound its oriented box clipped
+// to the near plane (rare: the camera is among the tubes).
+void tubeClippedBoxRectangle(vec4 q0, vec4 q1, vec4 q2)
+{
+  vec3 corner[8];
+  float zMax;
+  if (!tubeBoxCorners(q0, q1, q2, corner, zMax))
   {
     return; // outside the frustum: nothing drawn
   }
@@ -364,4 +366,54 @@ void main()
 
   tubeRect.frame = vec4(u, zp, 1.0);
   tubeRect.span = vec4(lo, hi);
+}
+
+void main()
+{
+  tubeRect.frame = vec4(0.0); // not drawn (unless set below)
+  tubeRect.span = vec4(0.0);
+  int perChunk = tubeChunkSegments * subSegments;
+  int entry = gl_VertexID / perChunk;
+  int local = gl_VertexID - entry * perChunk;
+  uvec2 chunk = texelFetch(tubeChunkList, entry).xy;
+  if (local >= int(chunk.y) * subSegments)
+  {
+    tubeRect.info = ivec4(0);
+    tubeRect.q0 = tubeRect.q1 = tubeRect.q2 = vec4(0.0);
+    tubeRect.c0 = tubeRect.d0 = tubeRect.c1 = tubeRect.d1 = vec4(0.0);
+    return; // past the chunk's end: no rectangle
+  }
+  int node = int(chunk.x) + local / subSegments;
+  int k = local - (local / subSegments) * subSegments;
+  vec4 a;
+  vec4 da;
+  vec4 b;
+  vec4 db;
+  int flags;
+  int tube;
+  tubeViewSegment(node, a, da, b, db, flags, tube);
+  vec4 q0;
+  vec4 q1;
+  vec4 q2;
+  svSplitSegment(a, da, b, db, subSegments, k, q0, q1, q2);
+  int mode = tubeStraightMode(a, da, b, db, k, q0, q1, q2);
+  if (mode < 0)
+  {
+    return; // drawn by another sub-segment's rectangle
+  }
+  tubeSetCutPlanes(a, da, b, db, k, mode, flags);
+  tubeRect.q0 = q0;
+  tubeRect.q1 = q1;
+  tubeRect.q2 = q2;
+  tubeRect.info = ivec4(node, k, tube, flags | (mode << 2));
+  tubeSetColors(node);
+
+  float rMax = max(max(q0.w, q1.w), q2.w);
+  float zNear = max(max(q0.z, q1.z), q2.z) + rMax; // nearest depth reached
+  if (zNear < -tubeNearPlane)
+  {
+    tubeHullRectangle(q0, q1, q2, rMax, zNear);
+    return;
+  }
+  tubeClippedBoxRectangle(q0, q1, q2);
 }

@@ -420,6 +420,21 @@ real svqGeneralValueGradient(vec3 x, vec3 abc, SV_OUT(vec3) grad)
   return pu / a + pv / b - 1.0;
 }
 
+// The interval after interval (level, index) of the binary subdivision
+// svqIntersectGeneral walks (length len), climbing while it would be a left
+// child; false when the walk is back at level 0 (no interval is left).
+bool svqNextInterval(SV_INOUT(int) index, SV_INOUT(int) level, SV_INOUT(real) len)
+{
+  index += 1;
+  while (level > 0 && (index - 2 * (index / 2)) == 0)
+  {
+    index = index / 2;
+    level -= 1;
+    len = 2.0 * len;
+  }
+  return level != 0;
+}
+
 // First point (t >= 0) of the ray o + t d inside the (alpha, beta, c) solid,
 // within 3e-4 glyph units, with at most maxEvaluations evaluations of g (on
 // random rays: median 30 for hits, 3 for misses; 99.9 % of the rays within
@@ -497,19 +512,9 @@ bool svqIntersectGeneral(vec3 o, vec3 d, vec3 abc, vec4 blend, int maxEvaluation
       evaluations += 1;
       if (svqBlendAbs(lo.x, lo.y, lo.z, abc, blend) >= 1.0)
       {
-        // nothing inside [a, b]: the next interval, climbing while it would
-        // be a left child
-        index += 1;
-        while (level > 0 && (index - 2 * (index / 2)) == 0)
-        {
-          index = index / 2;
-          level -= 1;
-          len = 2.0 * len;
-        }
-        if (level == 0)
-        {
-          walking = false; // the piece is done
-        }
+        // nothing inside [a, b]: the next interval (the piece is done when
+        // there is none)
+        walking = svqNextInterval(index, level, len);
       }
       else
       {
@@ -543,17 +548,7 @@ bool svqIntersectGeneral(vec3 o, vec3 d, vec3 abc, vec4 blend, int maxEvaluation
             return true;
           }
           // nothing found: treat as empty (a sliver thinner than the tolerance)
-          index += 1;
-          while (level > 0 && (index - 2 * (index / 2)) == 0)
-          {
-            index = index / 2;
-            level -= 1;
-            len = 2.0 * len;
-          }
-          if (level == 0)
-          {
-            walking = false;
-          }
+          walking = svqNextInterval(index, level, len);
         }
         else
         {

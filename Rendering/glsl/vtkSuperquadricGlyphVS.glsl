@@ -47,6 +47,15 @@ out vec4 glyphColorVSOut; // rgba, a < 0: use the actor's colors
 //SV::TensorMath::Dec
 //SV::GlyphMath::Dec
 
+// The glyph's frame (columns: its u, v, w axes, the eigenvectors eu, ev, ew
+// scaled by s) and its quadratic form in glyph coordinates (l_i s_i^2), from
+// the eigenvalues l and semi-axes s in the order of the axes.
+void glyphAxes(vec3 l, vec3 s, vec3 eu, vec3 ev, vec3 ew, out mat3 frame, out vec3 form)
+{
+  frame = mat3(s.x * eu, s.y * ev, s.z * ew);
+  form = vec3(l.x * s.x * s.x, l.y * s.y * s.y, l.z * s.z * s.z);
+}
+
 void main()
 {
   glyphValidVSOut = 0;
@@ -106,13 +115,11 @@ void main()
     }
     if (axisE1)
     {
-      frameMC = mat3(s.z * e3, s.y * e2, s.x * e1);
-      form = vec3(lambda.z * s.z * s.z, lambda.y * s.y * s.y, lambda.x * s.x * s.x);
+      glyphAxes(lambda.zyx, s.zyx, e3, e2, e1, frameMC, form);
     }
     else
     {
-      frameMC = mat3(s.x * e1, s.y * e2, s.z * e3);
-      form = vec3(lambda.x * s.x * s.x, lambda.y * s.y * s.y, lambda.z * s.z * s.z);
+      glyphAxes(lambda, s, e1, e2, e3, frameMC, form);
     }
     glyphShapeVSOut = abc;
 #ifdef SQ_GENERAL_SHAPES
@@ -144,13 +151,11 @@ void main()
     // (Kindlmann's x axis), e3 otherwise (z axis).
     if (isLinear)
     {
-      frameMC = mat3(s.y * e2, s.z * e3, s.x * e1);
-      form = vec3(lambda.y * s.y * s.y, lambda.z * s.z * s.z, lambda.x * s.x * s.x);
+      glyphAxes(lambda.yzx, s.yzx, e2, e3, e1, frameMC, form);
     }
     else
     {
-      frameMC = mat3(s.x * e1, s.y * e2, s.z * e3);
-      form = vec3(lambda.x * s.x * s.x, lambda.y * s.y * s.y, lambda.z * s.z * s.z);
+      glyphAxes(lambda, s, e1, e2, e3, frameMC, form);
     }
     glyphShapeVSOut = vec3(alpha, beta, beta);
   }

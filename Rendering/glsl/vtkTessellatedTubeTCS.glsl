@@ -152,6 +152,30 @@ void tubeCull()
   gl_TessLevelInner[1] = 0.0;
 }
 
+// The levels of a patch drawn as one ring of `level` edges (a cap or a
+// seam): `level` along the first outer edge and the first inner direction,
+// 1 elsewhere.
+void tubeSetRingLevels(float level)
+{
+  gl_TessLevelOuter[0] = 1.0;
+  gl_TessLevelOuter[1] = level;
+  gl_TessLevelOuter[2] = 1.0;
+  gl_TessLevelOuter[3] = 1.0;
+  gl_TessLevelInner[0] = level;
+  gl_TessLevelInner[1] = 1.0;
+}
+
+// The patch's segment (Hermite form and frames) for the evaluation stage.
+void tubeSetPatchSegment(TubeSegment seg)
+{
+  tubePatchP0 = seg.p0;
+  tubePatchM0 = seg.m0;
+  tubePatchP1 = seg.p1;
+  tubePatchM1 = seg.m1;
+  tubePatchF0 = seg.f0;
+  tubePatchF1 = seg.f1;
+}
+
 bool tubeOutsideFrustum(vec3 a, vec3 b, vec3 c, vec3 d)
 {
   float margin = 0.5 * max(length(a - c), length(b - d));
@@ -287,12 +311,7 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
     // Caps are seen face-on, where a coarse polygon shows: edges of a
     // quarter of tubeSideLength, at least 8.
     float ring = tubeRingLevel(p, 4.0, 8.0);
-    gl_TessLevelOuter[0] = 1.0;
-    gl_TessLevelOuter[1] = ring;
-    gl_TessLevelOuter[2] = 1.0;
-    gl_TessLevelOuter[3] = 1.0;
-    gl_TessLevelInner[0] = ring;
-    gl_TessLevelInner[1] = 1.0;
+    tubeSetRingLevels(ring);
   }
   else
   {
@@ -324,12 +343,7 @@ void tubeSinglePatch(ivec4 info, int flags, int kind)
     gl_TessLevelInner[0] = max(ring0, ring1);
     gl_TessLevelInner[1] = along;
   }
-  tubePatchP0 = seg.p0;
-  tubePatchM0 = seg.m0;
-  tubePatchP1 = seg.p1;
-  tubePatchM1 = seg.m1;
-  tubePatchF0 = seg.f0;
-  tubePatchF1 = seg.f1;
+  tubeSetPatchSegment(seg);
   tubePatchParams = vec4(0.0, 1.0, tA, tD);
   tubePatchInfo = ivec4(info.x, info.y, info.z, flags | (kind << 2) | (count << 4));
 }
@@ -377,12 +391,7 @@ void main()
   if (kind != 0)
   {
     float seam = tubeSeamLevel(a, b);
-    gl_TessLevelOuter[0] = 1.0;
-    gl_TessLevelOuter[1] = seam;
-    gl_TessLevelOuter[2] = 1.0;
-    gl_TessLevelOuter[3] = 1.0;
-    gl_TessLevelInner[0] = seam;
-    gl_TessLevelInner[1] = 1.0;
+    tubeSetRingLevels(seam);
   }
   else
   {
@@ -407,12 +416,7 @@ void main()
   }
 
   TubeSegment seg = tubeLoadSegment(info.x);
-  tubePatchP0 = seg.p0;
-  tubePatchM0 = seg.m0;
-  tubePatchP1 = seg.p1;
-  tubePatchM1 = seg.m1;
-  tubePatchF0 = seg.f0;
-  tubePatchF1 = seg.f1;
+  tubeSetPatchSegment(seg);
   tubePatchParams =
     vec4(tubeAxisVSOutput[0].w, tubeAxisVSOutput[1].w, tubeTVSOutput[0], tubeTVSOutput[3]);
   tubePatchInfo = ivec4(info.x, info.y, info.z, flags | (kind << 2) | (1 << 4));

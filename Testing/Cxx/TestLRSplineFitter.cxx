@@ -18,6 +18,7 @@
 //    two blocks fitted together, a vector field (components and magnitude),
 //    the .lr file read back with vtkLRSplineReader, the boundary surface on
 //    output port 1 (closed, the mesh's bounds; empty for a point cloud).
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineFitter.h"
 #include "vtkLRSplineImageFitter.h"
 #include "vtkLRSplineReader.h"
@@ -191,8 +192,9 @@ void TestExactness(SplineVizTestStatus& status, const int p[3], const int m[3])
 // 0.3) over near it (centre closer than 2.5 S).
 double Localization(vtkUnstructuredGrid* grid)
 {
-  vtkDataArray* boxes = grid->GetCellData()->GetArray("LRParameterBox");
-  vtkDataArray* transform = grid->GetFieldData()->GetArray("LRPhysicalTransform");
+  vtkDataArray* boxes = grid->GetCellData()->GetArray(vtkLRSplineArrayNames::ParameterBox);
+  vtkDataArray* transform =
+    grid->GetFieldData()->GetArray(vtkLRSplineArrayNames::PhysicalTransform);
   if (!boxes || !transform)
   {
     return 0.0;

@@ -20,6 +20,7 @@
 //  - a vector field fitted by components, with spikes in one component;
 //  - output port 2 holds the outliers with their values and deviations, the
 //    field data "LRFitOutliers" their number.
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineFitter.h"
 
 #include "LRSplineFitTestImages.h"
@@ -210,7 +211,8 @@ void TestSpikes(SplineVizTestStatus& status)
   SV_CHECK_MSG(status, near <= 1.5 * referenceFresh + Tolerance, "near the spikes: " << near);
   SV_CHECK_MSG(status, run.Fitter->GetNumberOfElements() <= 1.25 * cleanElements + 64,
     "elements " << run.Fitter->GetNumberOfElements() << " against " << cleanElements);
-  vtkDataArray* deviation = outliers->GetPointData()->GetArray("LRFitOutlierDeviation");
+  vtkDataArray* deviation =
+    outliers->GetPointData()->GetArray(vtkLRSplineArrayNames::FitOutlierDeviation);
   vtkDataArray* value = outliers->GetPointData()->GetScalars();
   SV_CHECK(status, deviation && value && value->GetName() && std::string(value->GetName()) == "f");
   if (deviation)
@@ -220,7 +222,8 @@ void TestSpikes(SplineVizTestStatus& status)
     SV_CHECK_MSG(status, range[0] > run.Fitter->GetOutlierThreshold(), range[0]);
   }
   auto* grid = vtkUnstructuredGrid::SafeDownCast(run.Output()->GetBlock(0));
-  vtkDataArray* count = grid ? grid->GetFieldData()->GetArray("LRFitOutliers") : nullptr;
+  vtkDataArray* count =
+    grid ? grid->GetFieldData()->GetArray(vtkLRSplineArrayNames::FitOutliers) : nullptr;
   SV_CHECK(status, count && count->GetTuple1(0) == run.Fitter->GetNumberOfOutliers());
 
   // Negative control: the same data without RemoveOutliers. Chasing the

@@ -13,6 +13,7 @@
 //  - negative controls: with ReusePreviousMesh off, after a property
 //    change, for the same time step again, and when the domain moves (the
 //    points drift with time), nothing is reused.
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineField.h"
 #include "vtkLRSplineFitter.h"
 
@@ -226,7 +227,8 @@ int TestLRSplineFitterTime(int, char*[])
   {
     reuse->UpdateTimeStep(Steps[0]);
     auto* block = vtkMultiBlockDataSet::SafeDownCast(reuse->GetOutputDataObject(0))->GetBlock(0);
-    vtkDataArray* flag = block->GetFieldData()->GetArray("LRFitReusedPreviousMesh");
+    vtkDataArray* flag =
+      block->GetFieldData()->GetArray(vtkLRSplineArrayNames::FitReusedPreviousMesh);
     SV_CHECK(status, flag && flag->GetTuple1(0) == 1);
   }
   // Negative controls: the same step again (a re-execution forced by the

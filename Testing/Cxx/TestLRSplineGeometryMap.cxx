@@ -8,6 +8,7 @@
 // the outward normal are outside, pushed inward inside. Negative control: the
 // unbent (affine) map puts a bent point elsewhere. Rational: random positive
 // weights on the control points ("RationalWeights", VTK's rational Bezier).
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineField.h"
 #include "vtkLRSplineGeometryMap.h"
 #include "vtkLRSplineReader.h"
@@ -154,7 +155,7 @@ int CheckInversion(
   for (std::size_t p = 0; p < curved.size(); ++p)
   {
     vtkUnstructuredGrid* g = curved[p];
-    boxes = g->GetCellData()->GetArray("LRParameterBox");
+    boxes = g->GetCellData()->GetArray(vtkLRSplineArrayNames::ParameterBox);
     const vtkIdType nc = g->GetNumberOfCells();
     for (int k = 0; k < 400; ++k)
     {
@@ -328,7 +329,7 @@ int TestLRSplineGeometryMap(int, char*[])
     const double s[3] = { 0.3, 0.6, 0.4 };
     double x[3], sr[3], box[6], ur[3];
     Forward(bent, 5, s, x);
-    bent->GetCellData()->GetArray("LRParameterBox")->GetTuple(5, box);
+    bent->GetCellData()->GetArray(vtkLRSplineArrayNames::ParameterBox)->GetTuple(5, box);
     const vtkIdType e = flat.Invert(x, sr);
     double err = 1.0;
     if (e >= 0)

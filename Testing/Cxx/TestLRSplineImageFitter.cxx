@@ -21,6 +21,7 @@
 //    lie on voxel faces (even degree) or centres (odd), or are dyadic when
 //    alignment is off (then the octree look-up applies); composite input
 //    gives one patch per image.
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineElementLocator.h"
 #include "vtkLRSplineImageFitter.h"
 #include "vtkLRSplineReader.h"
@@ -212,9 +213,11 @@ void TestLocalRefinement(SplineVizTestStatus& status)
 
   vtkUnstructuredGrid* grid = Block(run.Output());
   SV_CHECK(status, grid && grid->GetNumberOfCells() == run.Fitter->GetNumberOfElements());
-  SV_CHECK(status, FieldValue(grid, "LRFitToleranceMet") == 1);
-  SV_CHECK_NEAR(status, FieldValue(grid, "LRFitMaximumError"), run.Fitter->GetMaximumError(), 0);
-  vtkDataArray* history = grid ? grid->GetFieldData()->GetArray("LRFitHistory") : nullptr;
+  SV_CHECK(status, FieldValue(grid, vtkLRSplineArrayNames::FitToleranceMet) == 1);
+  SV_CHECK_NEAR(status, FieldValue(grid, vtkLRSplineArrayNames::FitMaximumError),
+    run.Fitter->GetMaximumError(), 0);
+  vtkDataArray* history =
+    grid ? grid->GetFieldData()->GetArray(vtkLRSplineArrayNames::FitHistory) : nullptr;
   SV_CHECK(status, history && history->GetNumberOfTuples() == run.Fitter->GetNumberOfIterations());
 
   // Negative control: the initial spline alone does not meet the tolerance.
@@ -230,7 +233,8 @@ void TestLocalRefinement(SplineVizTestStatus& status)
 
   // Locality: the smallest elements (the finest level reached) lie at the
   // bump; the smooth part needs coarser ones only.
-  vtkDataArray* boxes = grid ? grid->GetCellData()->GetArray("LRParameterBox") : nullptr;
+  vtkDataArray* boxes =
+    grid ? grid->GetCellData()->GetArray(vtkLRSplineArrayNames::ParameterBox) : nullptr;
   std::vector<double> side, dist;
   for (vtkIdType e = 0; boxes && e < boxes->GetNumberOfTuples(); ++e)
   {
@@ -339,7 +343,7 @@ void TestLocalRefinement(SplineVizTestStatus& status)
     part.Fitter->SetInputData(image);
     part.Fitter->UpdatePiece(piece, 2, 0);
     vtkUnstructuredGrid* g = Block(part.Output());
-    vtkDataArray* ids = g ? g->GetCellData()->GetArray("LRElementId") : nullptr;
+    vtkDataArray* ids = g ? g->GetCellData()->GetArray(vtkLRSplineArrayNames::ElementId) : nullptr;
     const vtkIdType n = run.Fitter->GetNumberOfElements();
     SV_CHECK(status,
       ids && ids->GetNumberOfTuples() > 0 &&
@@ -381,7 +385,8 @@ void TestConvergence(SplineVizTestStatus& status)
   FitRun run;
   run.Fitter->SetTolerance(1e-3);
   SV_CHECK(status, run.Run(image));
-  vtkDataArray* history = Block(run.Output())->GetFieldData()->GetArray("LRFitHistory");
+  vtkDataArray* history =
+    Block(run.Output())->GetFieldData()->GetArray(vtkLRSplineArrayNames::FitHistory);
   bool monotone = history && history->GetNumberOfTuples() >= 3;
   for (vtkIdType i = 1; history && i < history->GetNumberOfTuples(); ++i)
   {
@@ -410,7 +415,7 @@ void TestKnotsAndComposite(SplineVizTestStatus& status)
       run.Fitter->SetAlignKnotsToVoxels(align);
       SV_CHECK(status, run.Run(image));
       vtkUnstructuredGrid* grid = Block(run.Output());
-      vtkDataArray* boxes = grid->GetCellData()->GetArray("LRParameterBox");
+      vtkDataArray* boxes = grid->GetCellData()->GetArray(vtkLRSplineArrayNames::ParameterBox);
       bool onGrid = true, dyadic = true;
       for (vtkIdType e = 0; e < boxes->GetNumberOfTuples(); ++e)
       {
@@ -472,7 +477,7 @@ void TestKnotsAndComposite(SplineVizTestStatus& status)
     const double tol = run.Fitter->GetAbsoluteTolerance();
     SV_CHECK(status, VoxelError(one, image) <= tol * (1 + 1e-9));
     SV_CHECK(status, VoxelError(two, second) <= tol * (1 + 1e-9));
-    SV_CHECK(status, FieldValue(Block(run.Output(), 1), "LRPatchIndex") == 1);
+    SV_CHECK(status, FieldValue(Block(run.Output(), 1), vtkLRSplineArrayNames::PatchIndex) == 1);
   }
 }
 }

@@ -7,6 +7,7 @@
 // domain's upper boundary; the same for the g2 tensor-product volume, in
 // field and geometry mode; physical bounds; pieces; a generated, locally
 // refined, non-dyadic LR volume written to .lr and read back.
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineBuilder.h"
 #include "vtkLRSplineField.h"
 #include "vtkLRSplineReader.h"
@@ -134,7 +135,7 @@ void CheckPatch(SplineVizTestStatus& status, vtkUnstructuredGrid* grid, const lr
 
   // VTK's own interpolation of the point data with the Bezier cell's basis.
   vtkDataArray* arr = grid->GetPointData()->GetArray(field.GetArrayName().c_str());
-  vtkDataArray* boxes = grid->GetCellData()->GetArray("LRParameterBox");
+  vtkDataArray* boxes = grid->GetCellData()->GetArray(vtkLRSplineArrayNames::ParameterBox);
   SV_CHECK(status, arr && boxes);
   if (!arr || !boxes)
   {
@@ -215,16 +216,16 @@ int TestLRSplineReader(int, char*[])
       continue;
     }
     SV_CHECK(status, grid->GetNumberOfCells() == 1240);
-    SV_CHECK(status, FieldId(grid, "LRNumberOfBasisFunctions") == 1176);
-    SV_CHECK(status, FieldId(grid, "LRNumberOfElements") == 1240);
-    SV_CHECK(status, FieldId(grid, "LRNumberOfMeshRectangles") == 189);
-    SV_CHECK(status, FieldId(grid, "LRPatchIndex") == static_cast<vtkIdType>(p));
+    SV_CHECK(status, FieldId(grid, vtkLRSplineArrayNames::NumberOfBasisFunctions) == 1176);
+    SV_CHECK(status, FieldId(grid, vtkLRSplineArrayNames::NumberOfElements) == 1240);
+    SV_CHECK(status, FieldId(grid, vtkLRSplineArrayNames::NumberOfMeshRectangles) == 189);
+    SV_CHECK(status, FieldId(grid, vtkLRSplineArrayNames::PatchIndex) == static_cast<vtkIdType>(p));
     SV_CHECK(status, grid->GetCellType(0) == VTK_BEZIER_HEXAHEDRON);
     vtkDataArray* deg = grid->GetCellData()->GetHigherOrderDegrees();
     SV_CHECK(status, deg && deg->GetComponent(0, 0) == 2 && deg->GetComponent(0, 2) == 2);
     SV_CHECK(status, grid->GetPointData()->GetVectors() != nullptr);
     SV_CHECK(status, grid->GetNumberOfPoints() < 1240 * 27); // merged
-    vtkDataArray* levels = grid->GetFieldData()->GetArray("LRRefinementLevels");
+    vtkDataArray* levels = grid->GetFieldData()->GetArray(vtkLRSplineArrayNames::RefinementLevels);
     SV_CHECK(status, levels && levels->GetComponent(0, 0) >= 1);
     CheckPatch(
       status, grid, brute[p], one, zero, 3000, ("cube patch " + std::to_string(p)).c_str());
@@ -301,7 +302,7 @@ int TestLRSplineReader(int, char*[])
         {
           continue;
         }
-        vtkDataArray* ids = grid->GetCellData()->GetArray("LRElementId");
+        vtkDataArray* ids = grid->GetCellData()->GetArray(vtkLRSplineArrayNames::ElementId);
         for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
         {
           seen[p].insert(static_cast<vtkIdType>(ids->GetComponent(c, 0)));
@@ -315,7 +316,7 @@ int TestLRSplineReader(int, char*[])
           SV_CHECK(status,
             field.Build(
               grid, nullptr, vtkLRSplineElementLocator::KD_FOREST, nullptr, false, &error));
-          vtkDataArray* boxes = grid->GetCellData()->GetArray("LRParameterBox");
+          vtkDataArray* boxes = grid->GetCellData()->GetArray(vtkLRSplineArrayNames::ParameterBox);
           double box[6];
           boxes->GetTuple(7, box);
           const double u[3] = { 0.3 * box[0] + 0.7 * box[3], 0.5 * (box[1] + box[4]), box[2] };
@@ -346,13 +347,13 @@ int TestLRSplineReader(int, char*[])
     if (grid)
     {
       SV_CHECK(status, grid->GetNumberOfCells() == 6);
-      SV_CHECK(status, FieldId(grid, "LRNumberOfBasisFunctions") == 72);
+      SV_CHECK(status, FieldId(grid, vtkLRSplineArrayNames::NumberOfBasisFunctions) == 72);
       vtkDataArray* deg = grid->GetCellData()->GetHigherOrderDegrees();
       SV_CHECK(status,
         deg->GetComponent(0, 0) == 3 && deg->GetComponent(0, 1) == 3 &&
           deg->GetComponent(0, 2) == 1);
-      auto* fmt =
-        vtkStringArray::SafeDownCast(grid->GetFieldData()->GetAbstractArray("LRSourceFormat"));
+      auto* fmt = vtkStringArray::SafeDownCast(
+        grid->GetFieldData()->GetAbstractArray(vtkLRSplineArrayNames::SourceFormat));
       SV_CHECK(status, fmt && fmt->GetValue(0).find("g2") != std::string::npos);
       CheckPatch(status, grid, bruteG2, one, zero, 3000, "g2 field mode");
     }
@@ -364,7 +365,7 @@ int TestLRSplineReader(int, char*[])
     {
       // The points are the geometry: VTK's Bezier map of parametric
       // coordinates gives the brute-force geometry.
-      vtkDataArray* boxes = grid->GetCellData()->GetArray("LRParameterBox");
+      vtkDataArray* boxes = grid->GetCellData()->GetArray(vtkLRSplineArrayNames::ParameterBox);
       vtkNew<vtkGenericCell> cell;
       std::mt19937 rng(11);
       std::uniform_real_distribution<double> U(0.0, 1.0);
@@ -390,7 +391,8 @@ int TestLRSplineReader(int, char*[])
       }
       std::cout << "g2 geometry mode: max |VTK location - brute force| = " << worst << std::endl;
       SV_CHECK_MSG(status, worst < 1e-12, "g2 geometry " << worst);
-      SV_CHECK(status, grid->GetPointData()->GetArray("LRParameterCoordinates") != nullptr);
+      SV_CHECK(status,
+        grid->GetPointData()->GetArray(vtkLRSplineArrayNames::ParameterCoordinates) != nullptr);
       vtkLRSplineField field;
       std::string error;
       // Physical space: the geometry map is inverted; its own coefficients
@@ -464,7 +466,8 @@ int TestLRSplineReader(int, char*[])
     {
       SV_CHECK(status, grid->GetNumberOfCells() == patch.GetNumberOfElements());
       CheckPatch(status, grid, bruteGen[0], one, zero, 2000, "generated LR volume");
-      vtkDataArray* levels = grid->GetFieldData()->GetArray("LRRefinementLevels");
+      vtkDataArray* levels =
+        grid->GetFieldData()->GetArray(vtkLRSplineArrayNames::RefinementLevels);
       SV_CHECK(status, levels->GetComponent(0, 0) >= 3);
     }
   }

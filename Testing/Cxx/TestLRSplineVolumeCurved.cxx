@@ -27,6 +27,7 @@
 #include "LRSplinePhysicalReference.h"
 #include "LRSplineVolumeTestUtilities.h"
 
+#include "vtkLRSplineArrayNames.h"
 #include "vtkLRSplineReader.h"
 #include "vtkLRSplineVolumeMapper.h"
 
@@ -127,7 +128,7 @@ vtkSmartPointer<vtkMultiBlockDataSet> CurvedData(const std::string& text, bool i
     if (ignoreGeometry)
     {
       vtkNew<vtkIntArray> mode;
-      mode->SetName("LRMode");
+      mode->SetName(vtkLRSplineArrayNames::Mode);
       mode->InsertNextValue(0);
       g->GetFieldData()->AddArray(mode);
     }

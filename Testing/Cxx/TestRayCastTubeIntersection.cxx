@@ -17,9 +17,9 @@
 // segments bend).
 #include "vtkSplineTubeMath.h"
 
+#include "SplineVizTestRandom.h"
 #include "SplineVizTestUtilities.h"
 
-#include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 
 #include <algorithm>
@@ -80,22 +80,8 @@ bool BruteForce(const vec3& origin, const vec3& dir, const vec4& q0, const vec4&
 int TestRayCastTubeIntersection(int, char*[])
 {
   SplineVizTestStatus status;
-  vtkNew<vtkMinimalStandardRandomSequence> random;
-  random->SetSeed(12345);
-  auto uniform = [&](double a, double b)
-  {
-    random->Next();
-    return random->GetRangeValue(a, b);
-  };
-  auto randomUnit = [&]()
-  {
-    vec3 v;
-    do
-    {
-      v = vec3(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-    } while (glm::length(v) < 0.1 || glm::length(v) > 1.0);
-    return glm::normalize(v);
-  };
+  SplineVizTest::Random random(12345);
+  auto uniform = [&](double a, double b) { return random.Uniform(a, b); };
 
   int hits = 0, misses = 0, grazing = 0, axial = 0, insides = 0;
   double worstDistance = 0.0; // relative to the sub-segment's largest radius
@@ -117,8 +103,8 @@ int TestRayCastTubeIntersection(int, char*[])
     // A target point near the tube and a ray towards it from far away.
     const double l = uniform(-0.2, 1.2);
     const vec4 c = svQuadratic(q0, q1, q2, std::min(1.0, std::max(0.0, l)));
-    vec3 target = vec3(c) + randomUnit() * uniform(0.0, 1.5 * rmax);
-    vec3 dir = randomUnit();
+    vec3 target = vec3(c) + random.UnitVector() * uniform(0.0, 1.5 * rmax);
+    vec3 dir = random.UnitVector();
     const int kind = trial % 4;
     if (kind == 1)
     {
@@ -236,8 +222,8 @@ int TestRayCastTubeIntersection(int, char*[])
   for (int trial = 0; trial < 1000; ++trial)
   {
     vec4 q0(0.0, 0.0, 0.0, 0.1), q1(0.5, uniform(-0.5, 0.5), 0.0, 0.12), q2(1.0, 0.0, 0.1, 0.08);
-    const vec3 dir = randomUnit();
-    const vec3 target = vec3(svQuadratic(q0, q1, q2, uniform(0, 1))) + randomUnit() * 0.05;
+    const vec3 dir = random.UnitVector();
+    const vec3 target = vec3(svQuadratic(q0, q1, q2, uniform(0, 1))) + random.UnitVector() * 0.05;
     const vec3 origin = target - 5.0 * dir;
     double d, l;
     bool in;
@@ -268,8 +254,8 @@ int TestRayCastTubeIntersection(int, char*[])
     vec4 q2(1.0, uniform(-0.5, 0.5), uniform(-0.2, 0.2), uniform(0.02, 0.4));
     const double rmax = std::max({ q0.w, q1.w, q2.w });
     const vec3 target =
-      vec3(svQuadratic(q0, q1, q2, uniform(0, 1))) + randomUnit() * uniform(0.0, 1.2 * rmax);
-    const vec3 dir = randomUnit();
+      vec3(svQuadratic(q0, q1, q2, uniform(0, 1))) + random.UnitVector() * uniform(0.0, 1.2 * rmax);
+    const vec3 dir = random.UnitVector();
     const vec3 origin = target - 5.0 * dir;
     const SvHit ref = svIntersectSubSegment(origin, dir, q0, q1, q2, 40, 3);
     if (!ref.hit)
@@ -313,7 +299,7 @@ int TestRayCastTubeIntersection(int, char*[])
     if (kind == 4)
     {
       // One end sphere containing the other (a degenerate cone).
-      b = vec4(vec3(a) + 0.5 * (a.w + 0.3) * randomUnit(), 0.0);
+      b = vec4(vec3(a) + 0.5 * (a.w + 0.3) * random.UnitVector(), 0.0);
       b.w = uniform(0.0, 0.3);
       a.w = glm::length(vec3(b) - vec3(a)) + b.w + uniform(0.0, 0.1);
       if (trial % 12 == 4)
@@ -329,8 +315,8 @@ int TestRayCastTubeIntersection(int, char*[])
     const vec4 m = 0.5 * (a + b);
     const double rmax = std::max(a.w, b.w);
     const vec3 c = vec3(a) + uniform(-0.2, 1.2) * (vec3(b) - vec3(a));
-    vec3 target = c + randomUnit() * uniform(0.0, 1.5 * rmax);
-    vec3 dir = randomUnit();
+    vec3 target = c + random.UnitVector() * uniform(0.0, 1.5 * rmax);
+    vec3 dir = random.UnitVector();
     if (kind == 1 && glm::length(vec3(b) - vec3(a)) > 0.0)
     {
       dir = glm::normalize(vec3(b) - vec3(a)); // along the axis
@@ -400,13 +386,8 @@ int TestRayCastTubeIntersection(int, char*[])
   // to left, clang: left to right), so the data set of the sections above
   // depends on the compiler; this one's must not (its tightness check is a
   // property of the data set).
-  vtkNew<vtkMinimalStandardRandomSequence> bandRandom;
-  bandRandom->SetSeed(20261202);
-  auto bandUniform = [&](double a, double b)
-  {
-    bandRandom->Next();
-    return bandRandom->GetRangeValue(a, b);
-  };
+  SplineVizTest::Random bandRandom(20261202);
+  auto bandUniform = [&](double a, double b) { return bandRandom.Uniform(a, b); };
   int bands = 0;
   double tightest = 1e30; // smallest (distance to the surface) / h at 1.05 h
   for (int trial = 0; trial < 600; ++trial)

@@ -26,12 +26,12 @@
 #include "vtkSplineTubeCore.h"
 #include "vtkSplineTubeMath.h"
 
+#include "SplineVizTestRandom.h"
 #include "SplineVizTestUtilities.h"
 
 #include "vtkCellArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
-#include "vtkMinimalStandardRandomSequence.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -134,22 +134,8 @@ vtkSmartPointer<vtkSplineTubeCore> MakeCore(
 int TestTessellatedTubeMath(int, char*[])
 {
   SplineVizTestStatus status;
-  vtkNew<vtkMinimalStandardRandomSequence> random;
-  random->SetSeed(4242);
-  auto uniform = [&](double a, double b)
-  {
-    random->Next();
-    return random->GetRangeValue(a, b);
-  };
-  auto randomUnit = [&]()
-  {
-    vec3 v;
-    do
-    {
-      v = vec3(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
-    } while (glm::length(v) < 0.1 || glm::length(v) > 1.0);
-    return glm::normalize(v);
-  };
+  SplineVizTest::Random random(4242);
+  auto uniform = [&](double a, double b) { return random.Uniform(a, b); };
 
   // 1. Hermite value and second derivative against a power-basis cubic.
   for (int trial = 0; trial < 100; ++trial)
@@ -174,7 +160,7 @@ int TestTessellatedTubeMath(int, char*[])
   double worstOct = 0.0;
   for (int trial = 0; trial < 20000; ++trial)
   {
-    vec3 n = randomUnit();
+    vec3 n = random.UnitVector();
     if (trial < 6)
     {
       n = vec3(0.0);
@@ -211,12 +197,12 @@ int TestTessellatedTubeMath(int, char*[])
     std::vector<vec3> pts;
     std::vector<double> radii;
     vec3 p(0.0);
-    vec3 dir = randomUnit();
+    vec3 dir = random.UnitVector();
     for (int i = 0; i < 15; ++i)
     {
       pts.push_back(p);
       radii.push_back(uniform(0.01, 0.06));
-      dir = glm::normalize(dir + 0.5 * randomUnit());
+      dir = glm::normalize(dir + 0.5 * random.UnitVector());
       p += 0.2 * dir;
     }
     cores.push_back(MakeCore(pts, radii));

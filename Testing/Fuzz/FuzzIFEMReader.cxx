@@ -18,7 +18,6 @@
 #include "vtkUnstructuredGrid.h"
 
 #include <algorithm>
-#include <cmath>
 
 namespace
 {
@@ -38,16 +37,7 @@ void CheckBlocks(vtkMultiBlockDataSet* out)
       {
         SplineVizFuzz::Fail("a patch block is not an unstructured grid");
       }
-      vtkPoints* pts = grid->GetPoints();
-      for (vtkIdType i = 0; pts && i < pts->GetNumberOfPoints(); ++i)
-      {
-        double x[3];
-        pts->GetPoint(i, x);
-        if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
-        {
-          SplineVizFuzz::Fail("a point is not finite");
-        }
-      }
+      SplineVizFuzz::CheckPointsFinite(grid->GetPoints());
     }
   }
 }

@@ -13,6 +13,7 @@
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,6 +66,20 @@ inline void ExtractAll(const std::vector<vtkLRSplinePatch>& patches)
     if (!patch.ExtractBezier(volume, &error, &warning, 0, patch.GetNumberOfElements()))
     {
       CheckMessage(error);
+    }
+  }
+}
+
+/// Every point of `pts` (none when null) must be finite.
+inline void CheckPointsFinite(vtkPoints* pts)
+{
+  for (vtkIdType i = 0; pts && i < pts->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    pts->GetPoint(i, x);
+    if (!std::isfinite(x[0]) || !std::isfinite(x[1]) || !std::isfinite(x[2]))
+    {
+      Fail("a point is not finite");
     }
   }
 }

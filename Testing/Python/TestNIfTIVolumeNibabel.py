@@ -30,13 +30,12 @@ except ImportError as error:
     sys.exit(125)
 
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkCommand
 
 import splineviz
 from splineviz_testing import output_dir
 
 out = output_dir()
-from splineviz_testing import Checker  # noqa: E402
+from splineviz_testing import Checker, Observed  # noqa: E402
 
 checker = Checker()
 rng = np.random.default_rng(29)
@@ -45,24 +44,9 @@ rng = np.random.default_rng(29)
 check = checker.check
 
 
-class Errors:
-    """Collects the errors and warnings of an algorithm."""
-
-    def __init__(self, algorithm):
-        self.messages = []
-        algorithm.AddObserver(vtkCommand.ErrorEvent, self)
-        algorithm.AddObserver(vtkCommand.WarningEvent, self)
-        algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, self)
-
-    def __call__(self, caller, event, data=None):
-        self.messages.append(str(data))
-
-    __call__.CallDataType = "string0"
-
-
 def read(path, **options):
     reader = splineviz.vtkNIfTIVolumeReader()
-    errors = Errors(reader)
+    errors = Observed(reader)
     reader.SetFileName(path)
     for key, value in options.items():
         getattr(reader, "Set" + key)(value)
@@ -137,7 +121,7 @@ cases.append((".hdr/.img pair", save(nib.Nifti1Pair(volume, flipped), "pair.img"
 for label, path, affine in cases:
     reader, image, errors = read(path)
     position, once, err = compare(image, affine, volume, label)
-    check(not errors.messages and position < 1e-4 and once and err == 0.0,
+    check(not errors.all_messages and position < 1e-4 and once and err == 0.0,
           "float32 volume, %s: nibabel's voxel at every point, value exact" % label)
     check(image.GetPointData().GetScalars().GetDataType() == 10,  # VTK_FLOAT
           "float32 volume, %s: float output" % label)

@@ -42,13 +42,12 @@ except ImportError as error:
     sys.exit(125)
 
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkCommand
 
 import splineviz
 
 out = os.environ.get("SPLINEVIZ_TEST_OUTPUT", ".")
 os.makedirs(out, exist_ok=True)
-from splineviz_testing import Checker  # noqa: E402
+from splineviz_testing import Checker, Observed  # noqa: E402
 
 checker = Checker()
 
@@ -56,24 +55,9 @@ checker = Checker()
 check = checker.check
 
 
-class Errors:
-    """Collects the errors and warnings of an algorithm (so they are not printed as failures)."""
-
-    def __init__(self, algorithm):
-        self.messages = []
-        algorithm.AddObserver(vtkCommand.ErrorEvent, self)
-        algorithm.AddObserver(vtkCommand.WarningEvent, self)
-        algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, self)
-
-    def __call__(self, caller, event, data=None):
-        self.messages.append(str(data))
-
-    __call__.CallDataType = "string0"
-
-
 def read_tractogram(path, *tsf, keep_empty=False):
     reader = splineviz.vtkTractogramReader()
-    errors = Errors(reader)
+    errors = Observed(reader)
     reader.SetFileName(path)
     for t in tsf:
         reader.AddScalarFileName(t)
@@ -156,7 +140,7 @@ for order in ("LAS", "RAS"):
 
 # our writer -> nibabel: .trk with scalars and properties (header geometry kept), .tck
 writer = splineviz.vtkTractogramWriter()
-writer_errors = Errors(writer)
+writer_errors = Observed(writer)
 writer.SetInputData(polydata)  # the last .trk read
 for name in per_point:
     writer.AddPointArrayName(name)
@@ -165,7 +149,7 @@ for name in per_line:
 ours_trk = os.path.join(out, "TestNeuroimagingNibabel-ours.trk")
 writer.SetFileName(ours_trk)
 writer.Write()
-check(writer.GetErrorCode() == 0 and not writer_errors.messages, "our .trk written")
+check(writer.GetErrorCode() == 0 and not writer_errors.all_messages, "our .trk written")
 loaded = nib.streamlines.load(ours_trk)
 err = max_difference(list(loaded.streamlines), streamlines)
 print("  our .trk read by nibabel: largest point difference %.3g mm" % err)
@@ -280,7 +264,7 @@ def save_fsl(path, affine, q):
 
 def read_tensors(path, layout=None, frame=None, companions=()):
     reader = splineviz.vtkNIfTITensorReader()
-    errors = Errors(reader)
+    errors = Observed(reader)
     reader.SetFileName(path)
     if layout is not None:
         reader.SetTensorLayout(layout)

@@ -17,11 +17,10 @@ import numpy as np
 from paraview import servermanager
 from paraview.simple import *  # noqa: F401,F403
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkCommand
 
 LoadPlugin(sys.argv[1], remote=False, ns=globals())
 
-from splineviz_testing import Checker  # noqa: E402
+from splineviz_testing import Checker, Observed  # noqa: E402
 
 checker = Checker()
 
@@ -170,20 +169,7 @@ for mode, both_ends in (("Either End", False), ("Both Ends", True)):
           "Endpoint, %s: %d streamlines (%d touch the sphere)" % (mode, got.sum(), touching.sum()))
 
 # Bad input: radius 0 is an error (RequestData fails), the output empty.
-class Errors:
-    CallDataType = "string0"
-
-    def __init__(self):
-        self.messages = []
-
-    def __call__(self, caller, event, data=None):
-        self.messages.append(str(data))
-
-
-errors = Errors()
-algorithm = selection.GetClientSideObject()
-algorithm.AddObserver(vtkCommand.ErrorEvent, errors)
-algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, errors)
+errors = Observed(selection.GetClientSideObject())
 selection.SphereRadius = 0.0
 selection.UpdatePipeline()
 out = servermanager.Fetch(selection)

@@ -42,7 +42,7 @@ from vtkmodules.vtkCommonTransforms import vtkTransform
 
 import splineviz
 
-from splineviz_testing import Checker  # noqa: E402
+from splineviz_testing import Checker, Observed  # noqa: E402
 
 checker = Checker()
 rng = np.random.default_rng(2929)
@@ -52,29 +52,6 @@ S = splineviz.vtkStreamlineSelection
 check = checker.check
 
 
-class Errors:
-    """Collects the errors and warnings of an algorithm (so they are not printed as failures)."""
-
-    def __init__(self, algorithm):
-        self.errors = []
-        self.warnings = []
-        algorithm.AddObserver(vtkCommand.ErrorEvent, self.error)
-        algorithm.AddObserver(vtkCommand.WarningEvent, self.warning)
-        algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, self.error)
-
-    def error(self, caller, event, data=None):
-        # The message without VTK's "ERROR: In file, line" prefix.
-        self.errors.append(str(data).strip().split("): ", 1)[-1])
-
-    error.CallDataType = "string0"
-
-    def warning(self, caller, event, data=None):
-        self.warnings.append(str(data))
-
-    warning.CallDataType = "string0"
-
-
-# --- data ---------------------------------------------------------------------
 def polydata(streamlines):
     """Polylines from a list of (n, 3) arrays, with a point and a cell array."""
     points = np.concatenate(streamlines).astype(np.float32)
@@ -269,7 +246,7 @@ def run(data, adders, combine_and=True, both=False, mark=False):
     f.SetIncludeCombination(S.COMBINE_AND if combine_and else S.COMBINE_OR)
     f.SetEndpointMode(S.BOTH_ENDS if both else S.EITHER_END)
     f.SetOutputMode(S.MARK_STREAMLINES if mark else S.SELECTED_STREAMLINES)
-    errors = Errors(f)
+    errors = Observed(f)
     f.Update()
     return f, errors
 
@@ -299,7 +276,7 @@ for trial in range(200):
     if errors.errors or not np.array_equal(got, expected):
         mismatches += 1
         if mismatches <= 3:
-            print("  trial %d: %d differ; errors %s" % (trial, np.sum(got != expected), errors.errors))
+            print("  trial %d: %d differ; errors %s" % (trial, np.sum(got != expected), errors.messages))
     if 0 < expected.sum() < len(streamlines):
         nontrivial += 1
     # Point sampling (vertices only) as a control: it must disagree somewhere.
@@ -480,18 +457,18 @@ for name, add, phrase in bad_cases:
     f.SetInputData(cb2)
     f.AddSphere(list(centre), 4.0, S.INCLUDE)  # a good region first
     add(f)
-    errors = Errors(f)
+    errors = Observed(f)
     f.Update()
-    check(any(phrase in e for e in errors.errors) and f.GetOutput().GetNumberOfPoints() == 0
-          and any("returned failure" in e for e in errors.errors),
+    check(any(phrase in e for e in errors.messages) and f.GetOutput().GetNumberOfPoints() == 0
+          and any("returned failure" in e for e in errors.messages),
           "bad input, %s: error naming it (%s), RequestData failed, empty output"
-          % (name, errors.errors[:1]))
+          % (name, errors.messages[:1]))
 
 f = S()
 f.SetInputData(cb2)
-errors = Errors(f)
+errors = Observed(f)
 f.Update()
-check(not errors.errors and any("No regions" in w for w in errors.warnings)
+check(not errors.errors and any("No regions" in w for w in errors.warning_messages)
       and f.GetOutput().GetNumberOfLines() == len(streamlines),
       "no regions: every streamline, with a warning")
 

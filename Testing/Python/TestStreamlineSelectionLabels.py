@@ -29,14 +29,14 @@ except ImportError as error:
     sys.exit(125)
 
 from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray, vtk_to_numpy
-from vtkmodules.vtkCommonCore import vtkCommand, vtkIdList, vtkPoints
+from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkImageData, vtkPolyData
 
 import splineviz
 from splineviz_testing import output_dir
 
 out_dir = output_dir()
-from splineviz_testing import Checker  # noqa: E402
+from splineviz_testing import Checker, Observed  # noqa: E402
 
 checker = Checker()
 rng = np.random.default_rng(4242)
@@ -44,21 +44,6 @@ S = splineviz.vtkStreamlineSelection
 
 
 check = checker.check
-
-
-class Errors:
-    """Collects an algorithm's errors (and warnings), without VTK's "ERROR: In file" prefix."""
-
-    CallDataType = "string0"
-
-    def __init__(self, algorithm):
-        self.errors = []
-        algorithm.AddObserver(vtkCommand.ErrorEvent, self)
-        algorithm.AddObserver(vtkCommand.WarningEvent, self)
-        algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, self)
-
-    def __call__(self, caller, event, data=None):
-        self.errors.append(str(data).strip().split("): ", 1)[-1])
 
 
 cb = np.load(os.path.join(os.path.dirname(get_fnames("small_64D")[0]), "cb_2.npz"))
@@ -201,7 +186,7 @@ for name, linear, mirror, sform_only in volumes:
     reader = splineviz.vtkNIfTIVolumeReader()
     reader.SetFileName(path)
     reader.SetArrayName("labels")
-    reader_messages = Errors(reader)  # the sheared file's warning
+    reader_messages = Observed(reader)  # the sheared file's warning
     reader.Update()
     image = reader.GetOutput()
     check(np.linalg.det(affine[:3, :3]) < 0
@@ -246,15 +231,15 @@ for name, linear, mirror, sform_only in volumes:
             else:
                 expected, wrong, vertex = (combine(expected, sphere), combine(wrong, sphere),
                                            combine(vertex, sphere))
-        errors = Errors(f)
+        errors = Observed(f)
         f.Update()
         got = np.zeros(N, dtype=bool)
         got[vtk_to_numpy(f.GetOutput().GetCellData().GetArray("StreamlineIndex"))] = True
-        if errors.errors or not np.array_equal(got, expected):
+        if errors.all_messages or not np.array_equal(got, expected):
             mismatches += 1
             if mismatches <= 3:
                 print("  %s trial %d (labels %s role %d): %d differ %s" % (
-                    name, trial, label_set, role, np.sum(got != expected), errors.errors))
+                    name, trial, label_set, role, np.sum(got != expected), errors.all_messages))
         nontrivial += int(0 < expected.sum() < N)
         vertex_disagrees += int(not np.array_equal(vertex, expected))
         flip_disagrees += int(not np.array_equal(wrong, expected))
@@ -331,16 +316,17 @@ for what, add, phrase in (
     f = S()
     f.SetInputData(pd)
     add(f)
-    errors = Errors(f)
+    errors = Observed(f)
     f.Update()
-    check(any(phrase in e for e in errors.errors) and any("returned failure" in e for e in errors.errors)
+    check(any(phrase in e for e in errors.all_messages)
+          and any("returned failure" in e for e in errors.all_messages)
           and f.GetOutput().GetNumberOfPoints() == 0,
-          "bad input, %s: %s" % (what, errors.errors[:1]))
+          "bad input, %s: %s" % (what, errors.all_messages[:1]))
 f = S()
 f.AddSphere(0, 0, 0, 1, S.INCLUDE)
-errors = Errors(f)
+errors = Observed(f)
 f.AddRegionLabel(0, 3)
-check(any("not a label-image region" in e for e in errors.errors),
+check(any("not a label-image region" in e for e in errors.all_messages),
       "AddRegionLabel on a sphere: an error")
 
 checker.finish()

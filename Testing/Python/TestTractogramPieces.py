@@ -44,7 +44,7 @@ import splineviz
 from splineviz_testing import output_dir
 
 out = output_dir()
-from splineviz_testing import Checker  # noqa: E402
+from splineviz_testing import Checker, Observed  # noqa: E402
 
 checker = Checker()
 PIECES = (1, 2, 3, 7)
@@ -53,27 +53,12 @@ PIECES = (1, 2, 3, 7)
 check = checker.check
 
 
-class Errors:
-    """Collects the errors and warnings of an algorithm (so they are not printed as failures)."""
-
-    def __init__(self, algorithm):
-        self.messages = []
-        algorithm.AddObserver(vtkCommand.ErrorEvent, self)
-        algorithm.AddObserver(vtkCommand.WarningEvent, self)
-        algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, self)
-
-    CallDataType = "string0"
-
-    def __call__(self, caller, event, data=None):
-        self.messages.append(str(data))
-
-
 class Piece:
     """One piece read: its streamlines (list of (n, 3) arrays), point and cell arrays."""
 
     def __init__(self, path, piece, pieces, tsf=(), keep_empty=False, subset=None):
         reader = splineviz.vtkTractogramReader()
-        self.errors = Errors(reader)
+        self.errors = Observed(reader)
         reader.SetFileName(path)
         for t in tsf:
             reader.AddScalarFileName(t)
@@ -162,7 +147,7 @@ def check_pieces(label, path, ref, data_bytes, longest_bytes, header_bytes=0, **
     """The union of the pieces is `ref`, for every number of pieces; each reads about 1/n."""
     for n in PIECES:
         parts = read_pieces(path, n, **kw)
-        ok = all(p.ok for p in parts) and not any(p.errors.messages for p in parts)
+        ok = all(p.ok for p in parts) and not any(p.errors.all_messages for p in parts)
         check(ok and same(union(parts), ref["lines"]),
               "%s, %d piece(s): the pieces' streamlines are nibabel's, in order, each once "
               "(%d streamlines, per piece %s)" % (label, n, len(ref["lines"]),
@@ -340,7 +325,7 @@ for keep in (False, True):
 
 def progress_run(path, piece, pieces, abort_at=None, **kw):
     reader = splineviz.vtkTractogramReader()
-    errors = Errors(reader)
+    errors = Observed(reader)
     reader.SetFileName(path)
     if kw.get("stride"):
         reader.SetSubsetModeToStride()
@@ -354,7 +339,7 @@ def progress_run(path, piece, pieces, abort_at=None, **kw):
 
     reader.AddObserver(vtkCommand.ProgressEvent, on_progress)
     reader.UpdatePiece(piece, pieces, 0)
-    return seen, reader.GetOutput().GetNumberOfCells(), errors.messages
+    return seen, reader.GetOutput().GetNumberOfCells(), errors.all_messages
 
 
 for label, path, kw in ((".tck", sub_tck, {}), (".tck every 3rd", sub_tck, {"stride": True}),
@@ -381,7 +366,7 @@ def damaged(name, data):
 def check_bad(label, path, pieces, expect_failed, tsf=()):
     parts = read_pieces(path, pieces, tsf=tsf)
     failed = [i for i, p in enumerate(parts) if not p.ok]
-    clear = all(p.errors.messages and p.message and p.cells == 0 for p in parts if not p.ok)
+    clear = all(p.errors.all_messages and p.message and p.cells == 0 for p in parts if not p.ok)
     print("  %s: failed pieces %s; %s" % (label, failed, [p.message for p in parts if not p.ok][0]))
     check(failed == expect_failed and clear and max(p.seconds for p in parts) < 5,
           "%s: pieces %s fail with a message and an empty output, quickly" % (label, expect_failed))

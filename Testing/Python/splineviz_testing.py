@@ -48,7 +48,10 @@ class Observed:
         self.errors = []
         self.warnings = []
         self.messages = []  # the errors' texts
+        self.warning_messages = []  # the warnings' texts
+        self.all_messages = []  # the errors' and warnings' texts, as they came
         self._error.__func__.CallDataType = VTK_STRING
+        self._warning.__func__.CallDataType = VTK_STRING
         algorithm.AddObserver("ErrorEvent", self._error)
         algorithm.AddObserver("WarningEvent", self._warning)
         algorithm.GetExecutive().AddObserver("ErrorEvent", self._error)
@@ -57,9 +60,13 @@ class Observed:
         self.errors.append(event)
         if message:
             self.messages.append(message)
+            self.all_messages.append(message)
 
-    def _warning(self, caller, event):
+    def _warning(self, caller, event, message=None):
         self.warnings.append(event)
+        if message:
+            self.warning_messages.append(message)
+            self.all_messages.append(message)
 
 
 def set_translation(display, translation):

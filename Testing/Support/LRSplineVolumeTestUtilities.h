@@ -205,6 +205,156 @@ inline double Scalar(
   return m;
 }
 
+/// The interval [t0, t1] of the ray (o, d) through pixel (i, j) that
+/// Render() samples: the field's bounds, the end depth, the clipping planes
+/// and the trimming depths of `settings`; false when it is empty.
+inline bool RayInterval(const View& view, const Settings& settings, const double bounds[6], int i,
+  int j, const double o[3], const double d[3], double& t0, double& t1)
+{
+  const vtkIdType pix = static_cast<vtkIdType>(j) * view.Width + i;
+  t0 = 0.0;
+  t1 = 1e300;
+  for (int k = 0; k < 3; ++k)
+  {
+    const double a = (bounds[2 * k] - o[k]) / d[k];
+    const double b = (bounds[2 * k + 1] - o[k]) / d[k];
+    t0 = std::max(t0, std::min(a, b));
+    t1 = std::min(t1, std::max(a, b));
+  }
+  if (settings.EndDepth)
+  {
+    t1 = std::min(t1, view.RayDepth(i, j, (*settings.EndDepth)[pix], o, d));
+  }
+  bool visible = true;
+  for (const auto& pl : settings.ClipPlanes)
+  {
+    const double denom = pl[0] * d[0] + pl[1] * d[1] + pl[2] * d[2];
+    const double dist = pl[0] * o[0] + pl[1] * o[1] + pl[2] * o[2] + pl[3];
+    if (std::abs(denom) < 1e-20)
+    {
+      visible = visible && dist >= 0;
+      continue;
+    }
+    const double t = -dist / denom;
+    if (denom > 0)
+    {
+      t0 = std::max(t0, t);
+    }
+    else
+    {
+      t1 = std::min(t1, t);
+    }
+  }
+  if (settings.TrimFront && settings.TrimBack)
+  {
+    const double f = (*settings.TrimFront)[pix], b = (*settings.TrimBack)[pix];
+    if (f >= 1.0 || b <= 0.0)
+    {
+      visible = false;
+    }
+    else
+    {
+      t0 = std::max(t0, view.RayDepth(i, j, f, o, d));
+      t1 = std::min(t1, view.RayDepth(i, j, b, o, d));
+    }
+  }
+  return visible && t1 > t0;
+}
+
+/// Color `rgb` of a sample lit with its gradient `grad` (data coordinates)
+/// into `out`, as the volume mapper does (two-sided; `inverse`: the inverse
+/// of the data-to-world matrix, whose transpose takes gradients to normals;
+/// material: ambient, diffuse, specular, specular power; toEye: the unit
+/// world direction to the eye).
+inline void ShadeSample(const View& view, const Settings& settings, vtkMatrix4x4* inverse,
+  const double material[4], const double toEye[3], const double rgb[3], const double grad[3],
+  double out[3])
+{
+  std::copy(rgb, rgb + 3, out);
+  if (!settings.Shade)
+  {
+    return;
+  }
+  double nw[3];
+  for (int r = 0; r < 3; ++r)
+  {
+    nw[r] = inverse->GetElement(0, r) * grad[0] + inverse->GetElement(1, r) * grad[1] +
+      inverse->GetElement(2, r) * grad[2];
+  }
+  const double len = std::sqrt(nw[0] * nw[0] + nw[1] * nw[1] + nw[2] * nw[2]);
+  if (!(len > 0))
+  {
+    return;
+  }
+  for (double& c : nw)
+  {
+    c /= len;
+  }
+  if (nw[0] * toEye[0] + nw[1] * toEye[1] + nw[2] * toEye[2] < 0)
+  {
+    for (double& c : nw)
+    {
+      c = -c;
+    }
+  }
+  const double* l = view.ToLight;
+  const double ln = l[0] * nw[0] + l[1] * nw[1] + l[2] * nw[2];
+  if (settings.Fuchs)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      out[k] = rgb[k] * std::max(0.4, std::abs(ln));
+    }
+    return;
+  }
+  const double ka = material[0], kd = material[1], ks = material[2], sp = material[3];
+  const double diffuse = std::max(ln, 0.0);
+  double h[3] = { l[0] + toEye[0], l[1] + toEye[1], l[2] + toEye[2] };
+  const double hl = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+  const double hn = hl > 0 ? (h[0] * nw[0] + h[1] * nw[1] + h[2] * nw[2]) / hl : 0.0;
+  const double specular = diffuse > 0 ? std::pow(std::max(hn, 0.0), sp) : 0.0;
+  for (int k = 0; k < 3; ++k)
+  {
+    out[k] = rgb[k] * (ka + kd * diffuse * view.LightColor[k]) + ks * specular * view.LightColor[k];
+  }
+}
+
+/// The iso values crossed between the samples (prevT, prevS) and (t, s) (a
+/// value met exactly at a sample counts once, arriving), each with the ray
+/// parameter of its crossing refined by bisection on `sample` (t -> value,
+/// see Render()): (t, iso) pairs, nearest first.
+template <class Sample>
+std::vector<std::pair<double, double>> IsoCrossings(const Sample& sample,
+  const std::vector<double>& isoValues, double prevT, double prevS, double t, double s)
+{
+  std::vector<std::pair<double, double>> roots; // (t, iso)
+  for (double c : isoValues)
+  {
+    if ((prevS - c) * (s - c) < 0 || (s == c && prevS != c))
+    {
+      double lo = prevT, hi = t, flo = prevS - c;
+      for (int it = 0; it < 60; ++it)
+      {
+        const double mid = 0.5 * (lo + hi);
+        double sm, gm[3];
+        const double fm = sample(mid, sm, gm) ? sm - c : flo;
+        if ((fm < 0) == (flo < 0))
+        {
+          lo = mid;
+          flo = fm;
+        }
+        else
+        {
+          hi = mid;
+        }
+      }
+      roots.emplace_back(0.5 * (lo + hi), c);
+    }
+  }
+  std::sort(roots.begin(), roots.end());
+  return roots;
+}
+
 /// The CPU reference rendering of `field` as `vol` (its property) is seen by
 /// `view`. Field: vtkLRSplineField, or an independent evaluator with the same
 /// GetBounds, GetNumberOfComponents and EvaluateWithHint (e.g.
@@ -223,8 +373,8 @@ inline Image Render(const Field& field, vtkVolume* vol, const View& view, const 
   vtkColorTransferFunction* ctf = property->GetRGBTransferFunction(0);
   vtkPiecewiseFunction* otf = property->GetScalarOpacity(0);
   const double unit = property->GetScalarOpacityUnitDistance(0);
-  const double ka = property->GetAmbient(0), kd = property->GetDiffuse(0),
-               ks = property->GetSpecular(0), sp = property->GetSpecularPower(0);
+  const double material[4] = { property->GetAmbient(0), property->GetDiffuse(0),
+    property->GetSpecular(0), property->GetSpecularPower(0) };
   double bounds[6];
   field.GetBounds(bounds);
   // The normal matrix (inverse transpose of the linear part).
@@ -246,53 +396,8 @@ inline Image Render(const Field& field, vtkVolume* vol, const View& view, const 
         view.ToWorldVector(d, dw);
         const double worldPerData = std::sqrt(dw[0] * dw[0] + dw[1] * dw[1] + dw[2] * dw[2]);
         double toEye[3] = { -dw[0] / worldPerData, -dw[1] / worldPerData, -dw[2] / worldPerData };
-        // Interval: box, depth, clipping planes, trimming.
-        double t0 = 0.0, t1 = 1e300;
-        for (int k = 0; k < 3; ++k)
-        {
-          const double a = (bounds[2 * k] - o[k]) / d[k];
-          const double b = (bounds[2 * k + 1] - o[k]) / d[k];
-          t0 = std::max(t0, std::min(a, b));
-          t1 = std::min(t1, std::max(a, b));
-        }
-        if (settings.EndDepth)
-        {
-          t1 = std::min(t1, view.RayDepth(i, j, (*settings.EndDepth)[pix], o, d));
-        }
-        bool visible = true;
-        for (const auto& pl : settings.ClipPlanes)
-        {
-          const double denom = pl[0] * d[0] + pl[1] * d[1] + pl[2] * d[2];
-          const double dist = pl[0] * o[0] + pl[1] * o[1] + pl[2] * o[2] + pl[3];
-          if (std::abs(denom) < 1e-20)
-          {
-            visible = visible && dist >= 0;
-            continue;
-          }
-          const double t = -dist / denom;
-          if (denom > 0)
-          {
-            t0 = std::max(t0, t);
-          }
-          else
-          {
-            t1 = std::min(t1, t);
-          }
-        }
-        if (settings.TrimFront && settings.TrimBack)
-        {
-          const double f = (*settings.TrimFront)[pix], b = (*settings.TrimBack)[pix];
-          if (f >= 1.0 || b <= 0.0)
-          {
-            visible = false;
-          }
-          else
-          {
-            t0 = std::max(t0, view.RayDepth(i, j, f, o, d));
-            t1 = std::min(t1, view.RayDepth(i, j, b, o, d));
-          }
-        }
-        if (!visible || !(t1 > t0))
+        double t0, t1;
+        if (!RayInterval(view, settings, bounds, i, j, o, d, t0, t1))
         {
           continue;
         }
@@ -311,55 +416,7 @@ inline Image Render(const Field& field, vtkVolume* vol, const View& view, const 
           return true;
         };
         auto shade = [&](const double rgb[3], const double grad[3], double out[3])
-        {
-          std::copy(rgb, rgb + 3, out);
-          if (!settings.Shade)
-          {
-            return;
-          }
-          double nw[3];
-          for (int r = 0; r < 3; ++r)
-          {
-            nw[r] = inverse->GetElement(0, r) * grad[0] + inverse->GetElement(1, r) * grad[1] +
-              inverse->GetElement(2, r) * grad[2];
-          }
-          const double len = std::sqrt(nw[0] * nw[0] + nw[1] * nw[1] + nw[2] * nw[2]);
-          if (!(len > 0))
-          {
-            return;
-          }
-          for (double& c : nw)
-          {
-            c /= len;
-          }
-          if (nw[0] * toEye[0] + nw[1] * toEye[1] + nw[2] * toEye[2] < 0)
-          {
-            for (double& c : nw)
-            {
-              c = -c;
-            }
-          }
-          const double* l = view.ToLight;
-          const double ln = l[0] * nw[0] + l[1] * nw[1] + l[2] * nw[2];
-          if (settings.Fuchs)
-          {
-            for (int k = 0; k < 3; ++k)
-            {
-              out[k] = rgb[k] * std::max(0.4, std::abs(ln));
-            }
-            return;
-          }
-          const double diffuse = std::max(ln, 0.0);
-          double h[3] = { l[0] + toEye[0], l[1] + toEye[1], l[2] + toEye[2] };
-          const double hl = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
-          const double hn = hl > 0 ? (h[0] * nw[0] + h[1] * nw[1] + h[2] * nw[2]) / hl : 0.0;
-          const double specular = diffuse > 0 ? std::pow(std::max(hn, 0.0), sp) : 0.0;
-          for (int k = 0; k < 3; ++k)
-          {
-            out[k] = rgb[k] * (ka + kd * diffuse * view.LightColor[k]) +
-              ks * specular * view.LightColor[k];
-          }
-        };
+        { ShadeSample(view, settings, inverse, material, toEye, rgb, grad, out); };
         double* px = &image.RGBA[4 * pix];
         const double h = settings.Step;
         const long long steps = static_cast<long long>(std::ceil((t1 - t0) / h));
@@ -430,32 +487,7 @@ inline Image Render(const Field& field, vtkVolume* vol, const View& view, const 
             const bool valid = sample(t, s, grad);
             if (valid && prevValid)
             {
-              std::vector<std::pair<double, double>> roots; // (t, iso)
-              for (double c : settings.IsoValues)
-              {
-                if ((prevS - c) * (s - c) < 0 || (s == c && prevS != c))
-                {
-                  double lo = prevT, hi = t, flo = prevS - c;
-                  for (int it = 0; it < 60; ++it)
-                  {
-                    const double mid = 0.5 * (lo + hi);
-                    double sm, gm[3];
-                    const double fm = sample(mid, sm, gm) ? sm - c : flo;
-                    if ((fm < 0) == (flo < 0))
-                    {
-                      lo = mid;
-                      flo = fm;
-                    }
-                    else
-                    {
-                      hi = mid;
-                    }
-                  }
-                  roots.emplace_back(0.5 * (lo + hi), c);
-                }
-              }
-              std::sort(roots.begin(), roots.end());
-              for (const auto& r : roots)
+              for (const auto& r : IsoCrossings(sample, settings.IsoValues, prevT, prevS, t, s))
               {
                 double sr, gr[3];
                 sample(r.first, sr, gr);
