@@ -16,13 +16,11 @@ the reference. Checks, for each renderer:
 """
 
 import numpy as np
-from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkWindowToImageFilter
-from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory)
 
 import splineviz
-from splineviz_testing import Checker, offscreen_window, output_dir
+from splineviz_testing import Checker, offscreen_window, output_dir, save_window
 
 checker = Checker()
 check = checker.check
@@ -48,16 +46,8 @@ def draw(mapper, fxaa, name):
     renderer.SetUseFXAA(fxaa)
     renderer.ResetCamera()
     window.Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(window)
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtkPNGWriter()
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.SetFileName("%s/TestLineAntialiasing-%s.png" % (out, name))
-    writer.Write()
-    rgb = vtk_to_numpy(grab.GetOutput().GetPointData().GetScalars())[:, :3]
-    return rgb.min(axis=1).astype(int)
+    rgb = save_window(window, "%s/TestLineAntialiasing-%s.png" % (out, name))
+    return rgb.min(axis=2).ravel()
 
 
 lines = draw(vtkPolyDataMapper(), 0, "vtk-lines")

@@ -262,6 +262,28 @@ def offscreen_window(actor, size, background=(1, 1, 1)):
     return win, ren
 
 
+def save_window(window, png):
+    """Write what `window` shows (its back buffer, rendered already) to the
+    PNG file `png` and return its RGB pixels as png_rgb() would read them
+    back: an int numpy array (height, width, 3), the first row at the bottom."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.vtkIOImage import vtkPNGWriter
+    from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
+
+    grab = vtkWindowToImageFilter()
+    grab.SetInput(window)
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    writer = vtkPNGWriter()
+    writer.SetInputConnection(grab.GetOutputPort())
+    writer.SetFileName(png)
+    writer.Write()
+    image = grab.GetOutput()
+    width, height, _ = image.GetDimensions()
+    scalars = vtk_to_numpy(image.GetPointData().GetScalars())
+    return scalars[:, :3].reshape(height, width, 3).astype(int)
+
+
 def openfoam_case(source_dir):
     """The .foam file of OpenFOAM's porous angled duct, run once by
     scripts/openfoam-case.sh into the tests' output (SPLINEVIZ_NO_INSTALL: the
