@@ -396,10 +396,9 @@ bool vtkIFEMFile::Scan(std::vector<Level>& levels, std::string* error)
 }
 
 //------------------------------------------------------------------------------
-bool vtkIFEMFile::OpenDataset(const std::string& path, int64_t& dataset, uint64_t& count,
-  int& typeClass, std::size_t& typeSize, bool& isSigned, std::string* error)
+bool vtkIFEMFile::OpenDataset(const std::string& path, Dataset& dataset, std::string* error)
 {
-  dataset = -1;
+  dataset = Dataset();
   if (!this->Exists(path))
   {
     return Fail(error, "\"" + path + "\" does not exist");
@@ -417,10 +416,10 @@ bool vtkIFEMFile::OpenDataset(const std::string& path, int64_t& dataset, uint64_
     H5Dclose(set);
     return Fail(error, "\"" + path + "\" has no usable shape or type");
   }
-  typeClass = static_cast<int>(H5Tget_class(type.Get()));
-  typeSize = H5Tget_size(type.Get());
-  isSigned = typeClass == H5T_INTEGER && H5Tget_sign(type.Get()) == H5T_SGN_2;
-  count = static_cast<uint64_t>(points);
+  const int typeClass = static_cast<int>(H5Tget_class(type.Get()));
+  const std::size_t typeSize = H5Tget_size(type.Get());
+  const bool isSigned = typeClass == H5T_INTEGER && H5Tget_sign(type.Get()) == H5T_SGN_2;
+  const uint64_t count = static_cast<uint64_t>(points);
   // Refuse absurd sizes before allocating: no dataset of an IFEM file
   // (uncompressed doubles and chars) is larger than the file.
   const double bytes = static_cast<double>(count) * 8.0;
@@ -436,7 +435,11 @@ bool vtkIFEMFile::OpenDataset(const std::string& path, int64_t& dataset, uint64_
           " bytes can hold: refused before allocating"
                         : sizeError);
   }
-  dataset = set;
+  dataset.Id = set;
+  dataset.Count = count;
+  dataset.TypeClass = typeClass;
+  dataset.TypeSize = typeSize;
+  dataset.IsSigned = isSigned;
   return true;
 }
 
@@ -444,17 +447,14 @@ bool vtkIFEMFile::OpenDataset(const std::string& path, int64_t& dataset, uint64_
 bool vtkIFEMFile::GetNumberOfValues(const std::string& path, uint64_t& count, std::string* error)
 {
   QuietErrors quiet;
-  hid_t set = -1;
-  int typeClass = 0;
-  std::size_t typeSize = 0;
-  bool isSigned = false;
-  count = 0;
-  if (!this->OpenDataset(path, set, count, typeClass, typeSize, isSigned, error))
+  Dataset dataset;
+  const bool ok = this->OpenDataset(path, dataset, error);
+  count = dataset.Count;
+  if (ok)
   {
-    return false;
+    H5Dclose(dataset.Id);
   }
-  H5Dclose(set);
-  return true;
+  return ok;
 }
 
 //------------------------------------------------------------------------------
@@ -462,23 +462,19 @@ bool vtkIFEMFile::ReadText(const std::string& path, std::string& text, std::stri
 {
   text.clear();
   QuietErrors quiet;
-  hid_t set = -1;
-  uint64_t count = 0;
-  int typeClass = 0;
-  std::size_t typeSize = 0;
-  bool isSigned = false;
-  if (!this->OpenDataset(path, set, count, typeClass, typeSize, isSigned, error))
+  Dataset found;
+  if (!this->OpenDataset(path, found, error))
   {
     return false;
   }
-  Handle dataset(set, H5Dclose);
-  if (typeClass != H5T_INTEGER || typeSize != 1)
+  Handle dataset(found.Id, H5Dclose);
+  if (found.TypeClass != H5T_INTEGER || found.TypeSize != 1)
   {
     return Fail(error, "\"" + path + "\" is not text (IFEM writes patches as 1-byte characters)");
   }
-  text.resize(static_cast<std::size_t>(count));
-  if (count > 0 &&
-    H5Dread(dataset.Get(), isSigned ? H5T_NATIVE_SCHAR : H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL,
+  text.resize(static_cast<std::size_t>(found.Count));
+  if (found.Count > 0 &&
+    H5Dread(dataset.Get(), found.IsSigned ? H5T_NATIVE_SCHAR : H5T_NATIVE_UCHAR, H5S_ALL, H5S_ALL,
       H5P_DEFAULT, &text[0]) < 0)
   {
     text.clear();
@@ -492,22 +488,18 @@ bool vtkIFEMFile::ReadDoubles(
 {
   values.clear();
   QuietErrors quiet;
-  hid_t set = -1;
-  uint64_t count = 0;
-  int typeClass = 0;
-  std::size_t typeSize = 0;
-  bool isSigned = false;
-  if (!this->OpenDataset(path, set, count, typeClass, typeSize, isSigned, error))
+  Dataset found;
+  if (!this->OpenDataset(path, found, error))
   {
     return false;
   }
-  Handle dataset(set, H5Dclose);
-  if (typeClass != H5T_INTEGER && typeClass != H5T_FLOAT)
+  Handle dataset(found.Id, H5Dclose);
+  if (found.TypeClass != H5T_INTEGER && found.TypeClass != H5T_FLOAT)
   {
     return Fail(error, "\"" + path + "\" does not hold numbers");
   }
-  values.resize(static_cast<std::size_t>(count));
-  if (count > 0 &&
+  values.resize(static_cast<std::size_t>(found.Count));
+  if (found.Count > 0 &&
     H5Dread(dataset.Get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0)
   {
     values.clear();

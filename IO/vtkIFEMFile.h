@@ -100,8 +100,16 @@ private:
   bool ListChildren(const std::string& path, std::vector<std::string>& names,
     std::vector<bool>* isGroup, std::string* error);
   bool ScanGroup(const std::string& path, Group& group, std::string* error);
-  bool OpenDataset(const std::string& path, int64_t& dataset, uint64_t& count, int& typeClass,
-    std::size_t& typeSize, bool& isSigned, std::string* error);
+  /// An open dataset (Id, to be closed by the caller), its number of values and their type.
+  struct Dataset
+  {
+    int64_t Id = -1;
+    uint64_t Count = 0;
+    int TypeClass = 0;
+    std::size_t TypeSize = 0;
+    bool IsSigned = false;
+  };
+  bool OpenDataset(const std::string& path, Dataset& dataset, std::string* error);
 
   int64_t File = -1;
   uint64_t FileBytes = 0;
