@@ -1145,13 +1145,7 @@ bool vtkSplineTubeMapper::GetNeedToRebuildShaders(
   const int variant = this->GetTubeColorMode() | (this->InputIsComposite ? 4 : 0);
   const bool superclass = this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act);
   // Shaders read the arrays from as many pages as the data needs.
-  std::vector<PagedBuffer> buffers;
-  this->GetPagedBuffers(buffers);
-  std::string paging;
-  for (const PagedBuffer& buffer : buffers)
-  {
-    paging += buffer.second->GetPagingKey() + ";";
-  }
+  const std::string paging = this->GetPagingKey();
   std::string& programPaging = this->ProgramPaging[&cellBO];
   const bool pagingChanged = programPaging != paging;
   programPaging = paging;
@@ -1168,20 +1162,38 @@ void vtkSplineTubeMapper::BuildShaders(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::BuildShaders(shaders, ren, act);
-  std::vector<PagedBuffer> buffers;
-  this->GetPagedBuffers(buffers);
   for (auto& stage : shaders)
   {
-    if (!stage.second)
+    if (stage.second)
     {
-      continue;
+      std::string source = stage.second->GetSource();
+      this->ApplyPaging(source);
+      stage.second->SetSource(source);
     }
-    std::string source = stage.second->GetSource();
-    for (const PagedBuffer& buffer : buffers)
-    {
-      buffer.second->ApplyPaging(source, buffer.first);
-    }
-    stage.second->SetSource(source);
+  }
+}
+
+//------------------------------------------------------------------------------
+std::string vtkSplineTubeMapper::GetPagingKey()
+{
+  std::vector<PagedBuffer> buffers;
+  this->GetPagedBuffers(buffers);
+  std::string key;
+  for (const PagedBuffer& buffer : buffers)
+  {
+    key += buffer.second->GetPagingKey() + ";";
+  }
+  return key;
+}
+
+//------------------------------------------------------------------------------
+void vtkSplineTubeMapper::ApplyPaging(std::string& source)
+{
+  std::vector<PagedBuffer> buffers;
+  this->GetPagedBuffers(buffers);
+  for (const PagedBuffer& buffer : buffers)
+  {
+    buffer.second->ApplyPaging(source, buffer.first);
   }
 }
 

@@ -486,6 +486,10 @@ protected:
    * shaders are rewritten to match (BuildShaders()).
    */
   virtual void GetPagedBuffers(std::vector<PagedBuffer>& buffers);
+  /// The page layouts of GetPagedBuffers(): shaders made for one key fit data with the same.
+  std::string GetPagingKey();
+  /// Rewrite one shader stage to read every array of GetPagedBuffers() from its pages.
+  void ApplyPaging(std::string& source);
 
   /// Binds the tubes buffer (ActivateTubeBuffers()).
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;

@@ -368,13 +368,7 @@ bool vtkTessellatedTubeMapper::LinkTessellationStages(
 
   // The stages read the per-node arrays from as many pages as the data needs
   // (vtkSplineVizGPUBuffer::ApplyPaging()): compiled again when that changes.
-  std::vector<PagedBuffer> buffers;
-  this->GetPagedBuffers(buffers);
-  std::string paging;
-  for (const PagedBuffer& buffer : buffers)
-  {
-    paging += buffer.second->GetPagingKey() + ";";
-  }
+  const std::string paging = this->GetPagingKey();
   if ((this->ControlShader || this->EvaluationShader) && paging != this->StagesPaging)
   {
     this->ReleaseTessellationStages();
@@ -389,11 +383,8 @@ bool vtkTessellatedTubeMapper::LinkTessellationStages(
     std::string error;
     std::string control = this->StagesVersion + this->GetTessellationControlShaderSource();
     std::string evaluation = this->StagesVersion + this->GetTessellationEvaluationShaderSource();
-    for (const PagedBuffer& buffer : buffers)
-    {
-      buffer.second->ApplyPaging(control, buffer.first);
-      buffer.second->ApplyPaging(evaluation, buffer.first);
-    }
+    this->ApplyPaging(control);
+    this->ApplyPaging(evaluation);
     this->StagesPaging = paging;
     this->ControlShader = CompileStage(GL_TESS_CONTROL_SHADER, control, error);
     if (!this->ControlShader)
