@@ -6,8 +6,10 @@
 // same uniform step) the RMS is at most 1.5/255 (0.5 measured; single
 // precision and the transfer-function supersampling), in several passes.
 // Negative controls: rays capped at a third of their samples
-// (MaximumNumberOfSteps) fail the comparison; on llvmpipe, one pass without
-// continuation (a huge MaximumStepsPerPass) is cut short and fails too.
+// (MaximumNumberOfSteps) fail the comparison; on the llvmpipe of Mesa 22
+// (Debian 12), one pass without continuation (a huge MaximumStepsPerPass) is
+// cut short and fails too. Mesa 25's llvmpipe (Debian 13) has no such limit:
+// there the single pass is reported, not checked.
 #include "LRSplineVolumeTestUtilities.h"
 
 #include "vtkLRSplineReader.h"
@@ -23,6 +25,7 @@
 #include "vtkVolumeProperty.h"
 
 #include <chrono>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -37,6 +40,7 @@ struct Run
   int Passes = 0;
   double Seconds = 0;
   bool Llvmpipe = false;
+  int MesaMajor = 0; // 0: not Mesa
 };
 
 Run Render(vtkMultiBlockDataSet* data, double distance, int stepsPerPass, int maxSteps,
@@ -76,6 +80,12 @@ Run Render(vtkMultiBlockDataSet* data, double distance, int stepsPerPass, int ma
   }
   const char* caps = win->ReportCapabilities();
   run.Llvmpipe = caps && std::string(caps).find("llvmpipe") != std::string::npos;
+  const std::string capabilities = caps ? caps : "";
+  const size_t mesa = capabilities.find("Mesa ");
+  if (mesa != std::string::npos)
+  {
+    run.MesaMajor = std::atoi(capabilities.c_str() + mesa + 5);
+  }
   run.Passes = mapper->GetNumberOfPasses();
   const std::vector<double> gpu = lrvolume::ReadRGB(win);
   const std::string out = std::string(SPLINEVIZ_TEST_OUTPUT_DIR) + "/TestLRSplineVolumeMultiPass-";
@@ -133,10 +143,16 @@ int TestLRSplineVolumeMultiPass(int, char*[])
     ++failures;
   }
   const Run single = Render(data, distance, 1000000000, 0, "single-pass", cpu);
-  if (single.Llvmpipe && !(single.RMS > 1.5))
+  const bool loopLimit = single.Llvmpipe && single.MesaMajor > 0 && single.MesaMajor <= 22;
+  if (loopLimit && !(single.RMS > 1.5))
   {
     std::cerr << "ERROR: one pass on llvmpipe was not cut short: RMS " << single.RMS << std::endl;
     ++failures;
+  }
+  else if (!loopLimit)
+  {
+    std::cout << "one pass (Mesa " << single.MesaMajor << ", no loop limit checked): RMS "
+              << single.RMS << std::endl;
   }
   return failures == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
