@@ -28,8 +28,13 @@ mkdir -p "$case_dir"
 cp -r "$tutorial/explicit/system" "$case_dir/"
 cp -r "$tutorial/common/0.orig" "$case_dir/0"
 cp -r "$tutorial/common/constant" "$case_dir/constant"
-rm -f "$case_dir/system/blockMeshDict.m4.gz" # a link to the common file
-zcat "$tutorial/common/blockMeshDict.m4.gz" > "$case_dir/system/blockMeshDict.m4"
+# (links to the common file; Debian 12 ships it compressed, Debian 13 not)
+rm -f "$case_dir/system/blockMeshDict.m4.gz" "$case_dir/system/blockMeshDict.m4"
+if [ -f "$tutorial/common/blockMeshDict.m4.gz" ]; then
+  zcat "$tutorial/common/blockMeshDict.m4.gz" > "$case_dir/system/blockMeshDict.m4"
+else
+  cp "$tutorial/common/blockMeshDict.m4" "$case_dir/system/blockMeshDict.m4"
+fi
 find "$case_dir" -name "*.gz" -exec gunzip -f {} +
 m4 "$case_dir/system/blockMeshDict.m4" > "$case_dir/system/blockMeshDict"
 (
