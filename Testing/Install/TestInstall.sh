@@ -2,19 +2,24 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The installed SplineViz, as another project and a ParaView user see it.
 #
-#   TestInstall.sh install    CMAKE BUILD PREFIX
-#       cmake --install into PREFIX (emptied first); the layout is checked.
+#   TestInstall.sh install    CMAKE BUILD PREFIX PYDEST
+#       cmake --install into PREFIX (emptied first); the layout is checked
+#       (PYDEST: the Python package's folder under PREFIX, as VTK's CMake
+#       package chose it: lib/python3.11/site-packages with ParaView 5.11,
+#       lib/python3/dist-packages with Debian 13's VTK 9.3).
 #   TestInstall.sh downstream CMAKE BUILD PREFIX WORK PYTHON
 #       builds Downstream/ with find_package(SplineViz) against PREFIX only
 #       (one program linking SplineViz::SplineViz, one only SplineViz::IO,
 #       which must not load any rendering library), runs them on .tck files
 #       written by write_tck.py (3 and 7 streamlines) and on a damaged file
 #       (must fail: negative control).
-#   TestInstall.sh plugin     CMAKE BUILD PREFIX WORK PYTHON PVBATCH
+#   TestInstall.sh python     CMAKE BUILD PREFIX PYDEST WORK PYTHON
+#       PYTHON (the Python of the VTK built against) imports the installed
+#       package and reads a .tck with it.
+#   TestInstall.sh plugin     CMAKE BUILD PREFIX PYDEST WORK PYTHON PVBATCH
 #       pvbatch loads the installed plugin through its .plugins file
 #       (PV_PLUGIN_CONFIG_FILE) and, without it, by the path the installed
-#       `splineviz` package finds; reads a .tck with it (TestInstalledPlugin.py);
-#       PYTHON imports the installed package too.
+#       `splineviz` package finds; reads a .tck with it (TestInstalledPlugin.py).
 # Nothing of the build tree is on any search path (the installed RUNPATHs
 # must be enough).
 set -euo pipefail
@@ -39,8 +44,7 @@ install)
   for m in Core Filters IO Rendering; do
     ls "$prefix"/lib/libSplineViz$m.so.* >/dev/null || fail "libSplineViz$m not installed"
   done
-  ls "$prefix"/lib/python3*/site-packages/splineviz/__init__.py >/dev/null ||
-    fail "Python package not installed"
+  [ -e "$prefix/$5/splineviz/__init__.py" ] || fail "Python package not installed in $prefix/$5"
   echo "installed into $prefix"
   ;;
 downstream)
@@ -80,23 +84,27 @@ downstream)
   done
   echo "truncated file refused"
   ;;
-plugin)
-  work="$5" python="$6" pvbatch="$7"
+python)
+  pythonpath="$prefix/$5" work="$6" python="$7"
   rm -rf "$work" && mkdir -p "$work"
   "$python" "$here/write_tck.py" "$work/lines5.tck" 5
-  pythonpath="$(ls -d "$prefix"/lib/python3*/site-packages | head -n1)"
+  PYTHONPATH="$pythonpath" "$python" -c "
+import splineviz, sys
+assert splineviz.__file__.startswith('$prefix'), splineviz.__file__
+r = splineviz.vtkTractogramReader(); r.SetFileName('$work/lines5.tck'); r.Update()
+assert r.GetOutput().GetNumberOfLines() == 5, r.GetOutput().GetNumberOfLines()
+print(sys.executable, 'imported', splineviz.__file__)"
+  ;;
+plugin)
+  pythonpath="$prefix/$5" work="$6" python="$7" pvbatch="$8"
+  rm -rf "$work" && mkdir -p "$work"
+  "$python" "$here/write_tck.py" "$work/lines5.tck" 5
   plugins_xml="$(ls "$prefix"/lib/paraview-*/plugins/SplineViz.plugins.xml | head -n1)"
   # ParaView's plugin manager reads .plugins files named by PV_PLUGIN_CONFIG_FILE.
   PYTHONPATH="$pythonpath" PV_PLUGIN_CONFIG_FILE="$plugins_xml" \
     "$pvbatch" --force-offscreen-rendering "$here/TestInstalledPlugin.py" "$prefix" "$work/lines5.tck" 5 startup
   PYTHONPATH="$pythonpath" \
     "$pvbatch" --force-offscreen-rendering "$here/TestInstalledPlugin.py" "$prefix" "$work/lines5.tck" 5 by-path
-  PYTHONPATH="$pythonpath" "$python" -c "
-import splineviz, sys
-assert splineviz.__file__.startswith('$prefix'), splineviz.__file__
-r = splineviz.vtkTractogramReader(); r.SetFileName('$work/lines5.tck'); r.Update()
-assert r.GetOutput().GetNumberOfLines() == 5, r.GetOutput().GetNumberOfLines()
-print('python3 imported', splineviz.__file__)"
   ;;
 *) fail "unknown mode $mode" ;;
 esac
