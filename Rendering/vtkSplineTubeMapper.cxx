@@ -48,6 +48,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <locale>
 #include <sstream>
 #include <vector>
 
@@ -1301,6 +1302,26 @@ void vtkSplineTubeMapper::UseWrittenFragDepth(std::string& FSSource)
   std::string tail = FSSource.substr(marker);
   vtkShaderProgram::Substitute(tail, "gl_FragCoord.z", "gl_FragDepth", true);
   vtkShaderProgram::Substitute(tail, "1.0/gl_FragCoord.w", "(-vertexVC.z)", true);
+  // The dual depth peeling's tolerance (its declaration "float epsilon = ...;"),
+  // widened where it is smaller.
+  const std::string declaration = "float epsilon = ";
+  const size_t at = tail.find(declaration);
+  const size_t end = at == std::string::npos ? at : tail.find(';', at);
+  if (end != std::string::npos)
+  {
+    const size_t value = at + declaration.size();
+    std::istringstream parsed(tail.substr(value, end - value));
+    parsed.imbue(std::locale::classic());
+    double epsilon = 0.0;
+    parsed >> epsilon;
+    if (epsilon < WrittenFragDepthTolerance)
+    {
+      std::ostringstream widened;
+      widened.imbue(std::locale::classic());
+      widened << std::scientific << WrittenFragDepthTolerance;
+      tail.replace(value, end - value, widened.str());
+    }
+  }
   FSSource = FSSource.substr(0, marker) + tail;
 }
 

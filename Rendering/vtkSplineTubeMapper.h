@@ -552,10 +552,24 @@ protected:
    * UseWrittenFragDepth(): from the marker on, render-pass code that reads
    * the fragment's depth (depth peeling, the shadow-map baker) reads the
    * written depth (gl_FragDepth; -vertexVC.z for 1/gl_FragCoord.w, the eye
-   * distance of a perspective camera) instead of the rasterized one.
+   * distance of a perspective camera) instead of the rasterized one. It also
+   * widens the tolerance of VTK's dual depth peeling to
+   * WrittenFragDepthTolerance: an interpolated depth is the same in every
+   * stage of the peeling, a depth the shader computes is not (see there).
    */
   static const char* GetFragDepthWrittenMarker();
   static void UseWrittenFragDepth(std::string& FSSource);
+  /**
+   * Window depths within this distance are the same layer for the depth
+   * peeling of shaders that write their depth. VTK's dual depth peeling
+   * compares a fragment's depth with the layers found by the previous stage,
+   * which ran a different program (depth initialisation, then peeling): the
+   * same arithmetic, compiled with different surroundings, is fused and
+   * rounded differently. Measured with Mesa 25's llvmpipe on the tessellated
+   * thin tubes (a ray-cylinder intersection per fragment): up to 2-5e-7,
+   * above VTK's 1e-7, which lost pixels of the front layer.
+   */
+  static constexpr double WrittenFragDepthTolerance = 2e-6;
   ///@}
 
   // The buffer objects are ours: the superclass' VBO/IBO path is not used.
