@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: BSD-3-Clause
 """LR splines for unstructured simulation data, side by side with ParaView's
-way, in one run (issue 30's benchmark). A program, not a timed test.
+way, in one run. A program, not a timed test.
 
     source build/splineviz-env.sh
     pvpython Benchmarks/BenchmarkLRSplineFitter.py [--quick] [TOLERANCE]
