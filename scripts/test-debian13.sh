@@ -13,7 +13,9 @@
 #                                            # module, its Python package in
 #                                            # Debian's python3, the tests
 #                                            # that need no plugin
-#   scripts/test-debian13.sh -R Plugin       # extra arguments go to ctest
+#   scripts/test-debian13.sh -R Plugin       # extra arguments go to
+#                                            # scripts/test.sh (--ci) and
+#                                            # ctest
 #   scripts/test-debian13.sh --prepare [--vtk]   # only bootstrap the root and
 #                                            # install its packages (.ci/run
 #                                            # does this while the host builds)
