@@ -1313,8 +1313,8 @@ void vtkSplineTubeMapper::UseWrittenFragDepth(std::string& FSSource)
     std::istringstream parsed(tail.substr(value, end - value));
     parsed.imbue(std::locale::classic());
     double epsilon = 0.0;
-    parsed >> epsilon;
-    if (epsilon < WrittenFragDepthTolerance)
+    // (only a plain number: anything else is left as VTK wrote it)
+    if ((parsed >> epsilon) && (parsed >> std::ws).eof() && epsilon < WrittenFragDepthTolerance)
     {
       std::ostringstream widened;
       widened.imbue(std::locale::classic());

@@ -18,14 +18,14 @@
  * - Evaluation stage: the refined vertices bent onto the tube, normals as in
  *   Salm Fig. 7; caps only at tube ends, their seams refined as silhouettes.
  * - Level of detail (LevelOfDetail, on by default; the paper's future work):
- *   per view (vtkTessellatedTubeLevels, on both cores), chunks of 16 segments
- *   are culled and given the fewest rings that keep chords within half
- *   MaxEdgeLength; tubes thin on screen are drawn as the view-facing half of
- *   their wall, and short chunks of them without the tessellator
+ *   per view (vtkTessellatedTubeLevels, in parallel with vtkSMPTools), the
+ *   chunks of vtkSplineTubeCore (up to ChunkSegments segments) are culled and given the fewest
+ * rings that keep chords within half MaxEdgeLength; tubes thin on screen are drawn as the
+ * view-facing half of their wall, and short chunks of them without the tessellator
  *   (vtkTessellatedTubeThinVS.glsl: three vertices per ring, the fragment
  *   stage writing the exact depth and normal of the tube's front surface).
- *   TestTubeFidelity holds them to coverage IoU >= 0.98 and depth within a
- *   quarter radius. docs/design.md gives the measurements behind this.
+ *   TestTubeFidelity holds them to coverage IoU >= 0.98 and eye depth within
+ *   a quarter radius on >= 98 % of the pixels. docs/design.md gives the measurements behind this.
  * - Fragment stage: VTK's lighting, opacity, clipping planes, depth peeling
  *   (one layer per tube, its front walls), cell and block picking; colors
  *   from the color spline per refined vertex; multisampling.
