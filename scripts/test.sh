@@ -56,6 +56,20 @@ if [ -n "$ci_subset" ]; then
   # Every test but the ones listed in Testing/Sanitizers/ci-exclude.txt
   # (slow GL image tests whose code paths other GL tests cover).
   exclude="$(grep -v '^#' "$here/Testing/Sanitizers/ci-exclude.txt" | grep -v '^$' | paste -sd '|' || true)"
+  # ctest keeps only its last -E: a caller's own -E joins the list.
+  merged=()
+  n=${#args[@]}
+  i=0
+  while [ "$i" -lt "$n" ]; do
+    if [ "${args[$i]}" = "-E" ] && [ $((i + 1)) -lt "$n" ]; then
+      exclude="${exclude:+$exclude|}${args[$((i + 1))]}"
+      i=$((i + 2))
+    else
+      merged+=("${args[$i]}")
+      i=$((i + 1))
+    fi
+  done
+  args=(${merged[@]+"${merged[@]}"})
   if [ -n "$exclude" ]; then
     args=(-E "$exclude" ${args[@]+"${args[@]}"})
   fi
