@@ -2,6 +2,7 @@
 #include "vtkRayCastTubeMapper.h"
 
 #include "vtkSplineTubeCore.h"
+#include "vtkSplineTubeVisibility.h"
 #include "vtkSplineVizGPUBuffer.h"
 
 #include "vtkActor.h"
@@ -107,6 +108,18 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
   vtkShaderProgram::Substitute(VSSource, "//SV::SplineTubeMath::Dec",
     math + GetTubeNodesDeclarations() + GetTubeColorDeclarations());
   std::string declarations = vtkRayCastTubeFS;
+  if (this->BuildingStraightProgram)
+  {
+    // The chunks every segment of which is straight: no root finding.
+    declarations = "#define SV_STRAIGHT_CHUNKS\n" + declarations;
+  }
+  if (getenv("XNOROOT"))
+  {
+    vtkShaderProgram::Substitute(declarations,
+      "hit = svIntersectSubSegment(origin, dir, tubeQ0VSOutput, tubeQ1VSOutput, tubeQ2VSOutput,\n  "
+      "    rootIterations, rootSamples);",
+      "hit = svIntersectRoundCone(origin, dir, tubeQ0VSOutput, tubeQ2VSOutput);");
+  }
   vtkShaderProgram::Substitute(declarations, "//SV::SplineTubeMath::Dec", math);
   const int colorMode = this->GetTubeColorMode();
   if (colorMode == 2)
@@ -242,12 +255,82 @@ void vtkRayCastTubeMapper::SetCameraShaderParameters(
 //------------------------------------------------------------------------------
 void vtkRayCastTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
 {
+  this->LastStraightChunks = 0;
+  this->LastRootFindingChunks = 0;
   if (this->Core->GetNumberOfSegments() == 0 || this->GetTubeBuffersSize() == 0)
   {
     return;
   }
-  vtkOpenGLHelper& helper = this->Primitives[PrimitiveTris];
+  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
+  vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
+  state->vtkglDisable(GL_CULL_FACE);
+
+  // Which chunks the vertex stage will draw without root finding in this
+  // view: those whose every segment is straight there (mode 2: straight to
+  // within StraightTolerance of its smallest radius and a quarter pixel, not
+  // near the eye), or, with two sub-segments, whose every sub-segment is
+  // (mode 1 or better). Decided conservatively, from the chunk's largest
+  // straightness (model units, times the view's largest stretch), its
+  // smallest pixel (at its sphere's nearest depth) and a margin for the
+  // vertex stage's float arithmetic.
+  float modelView[16];
+  float radiusScale = 1.0f;
+  this->ComputeTubeMatrices(ren, act, modelView, nullptr, radiusScale);
+  double clipping[2];
+  ren->GetActiveCamera()->GetClippingRange(clipping);
+  const bool parallel = ren->GetActiveCamera()->GetParallelProjection() != 0;
+  const double pixelScale = std::max(GetPixelScale(ren), 1e-300);
+  const float* spheres = this->Core->GetChunkSpheres()->GetPointer(0);
+  const float* straightness = this->Core->GetChunkStraightness()->GetPointer(0);
+  const double margin = this->StraightChunkMargin;
+  auto isStraight = [&](std::uint32_t c, double scale)
+  {
+    const float* s = spheres + 4 * c;
+    const double zNear = modelView[2] * s[0] + modelView[6] * s[1] + modelView[10] * s[2] +
+      modelView[14] + scale * s[3];
+    if (!parallel && zNear >= -clipping[0] * (1.0 + 1e-3))
+    {
+      return false; // near the eye: root finding
+    }
+    const double pixel = parallel ? 1.0 / pixelScale : -zNear / pixelScale;
+    const double maxError = margin * 0.25 * pixel;
+    const double maxRatio = margin * this->StraightTolerance * radiusScale;
+    const float* e = straightness + 4 * c;
+    return (e[0] * scale <= maxError && e[1] * scale <= maxRatio) ||
+      (this->SubSegments == 2 && e[2] * scale <= maxError && e[3] * scale <= maxRatio);
+  };
+
+  std::vector<std::uint32_t> straightChunks;
+  std::vector<std::uint32_t> otherChunks;
+  this->DrawVisibleChunks(ren, act,
+    [&](const std::vector<std::uint32_t>& chunks)
+    {
+      const bool split = this->StraightChunkProgram && this->StraightTolerance > 0.0;
+      const double scale = this->Visibility->GetViewScale();
+      straightChunks.clear();
+      otherChunks.clear();
+      for (std::uint32_t c : chunks)
+      {
+        (split && isStraight(c, scale) ? straightChunks : otherChunks).push_back(c);
+      }
+      this->DrawChunkList(ren, act, this->Primitives[PrimitiveTriStrips], true, straightChunks);
+      this->DrawChunkList(ren, act, this->Primitives[PrimitiveTris], false, otherChunks);
+    });
+  this->ChunkList->Deactivate();
+  this->DeactivateTubeBuffers();
+}
+
+//------------------------------------------------------------------------------
+void vtkRayCastTubeMapper::DrawChunkList(vtkRenderer* ren, vtkActor* act, vtkOpenGLHelper& helper,
+  bool straight, const std::vector<std::uint32_t>& chunks)
+{
+  if (chunks.empty())
+  {
+    return;
+  }
+  this->BuildingStraightProgram = straight;
   this->UpdateShaders(helper, ren, act);
+  this->BuildingStraightProgram = false;
   if (!helper.Program)
   {
     return;
@@ -255,52 +338,41 @@ void vtkRayCastTubeMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
   // UpdateShaders() may have released the VAO after binding it (new
   // program); the draw has no attributes but core profiles need a VAO bound.
   helper.VAO->Bind();
-  // One rectangle (4-vertex strip) per sub-segment; either winding.
-  vtkOpenGLState* state = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow())->GetState();
-  vtkOpenGLState::ScopedglEnableDisable cull(state, GL_CULL_FACE);
-  state->vtkglDisable(GL_CULL_FACE);
+  (straight ? this->LastStraightChunks : this->LastRootFindingChunks) +=
+    static_cast<vtkIdType>(chunks.size());
 
-  // One point per sub-segment of the chunks of each group: their list
-  // (first segment, count) read by the vertex stage, one draw per group.
+  // One point per sub-segment of the chunks: their list (first segment,
+  // count) read by the vertex stage; one rectangle (4-vertex strip) per
+  // sub-segment, either winding.
   const vtkTypeUInt32* chunkFirst = this->Core->GetChunkFirstSegments()->GetPointer(0);
   const vtkTypeUInt32* chunkTube = this->Core->GetChunkTubes()->GetPointer(0);
   auto* window = static_cast<vtkOpenGLRenderWindow*>(ren->GetRenderWindow());
-  vtkShaderProgram* program = helper.Program;
-  std::vector<vtkTypeUInt32> list;
-  this->DrawVisibleChunks(ren, act,
-    [&](const std::vector<std::uint32_t>& chunks)
+  std::vector<vtkTypeUInt32> list(2 * chunks.size());
+  for (size_t i = 0; i < chunks.size(); ++i)
+  {
+    list[2 * i] = chunkFirst[chunks[i]] + chunkTube[chunks[i]]; // its first node
+    list[2 * i + 1] = chunkFirst[chunks[i] + 1] - chunkFirst[chunks[i]];
+  }
+  if (!this->ChunkList->Upload(window, list.data(), chunks.size(), 2, VTK_TYPE_UINT32, GL_RG32UI))
+  {
+    vtkErrorMacro(<< "Could not upload the chunk list: " << this->ChunkList->GetLastUploadError());
+    return;
+  }
+  this->ChunkList->Activate(helper.Program, "tubeChunkList");
+  // In draws of at most DrawChunks chunks, each flushed: a software
+  // rasterizer (Mesa llvmpipe) bins a frame's primitives until a flush,
+  // about 2 kB per chunk; without flushes a million chunks take gigabytes.
+  const GLint perChunk = vtkSplineTubeCore::ChunkSegments * this->SubSegments;
+  for (size_t first = 0; first < chunks.size(); first += DrawChunks)
+  {
+    const size_t count = std::min<size_t>(DrawChunks, chunks.size() - first);
+    glDrawArrays(
+      GL_POINTS, static_cast<GLint>(first) * perChunk, static_cast<GLsizei>(count) * perChunk);
+    if (first + count < chunks.size())
     {
-      list.resize(2 * chunks.size());
-      for (size_t i = 0; i < chunks.size(); ++i)
-      {
-        list[2 * i] = chunkFirst[chunks[i]] + chunkTube[chunks[i]]; // its first node
-        list[2 * i + 1] = chunkFirst[chunks[i] + 1] - chunkFirst[chunks[i]];
-      }
-      if (!this->ChunkList->Upload(
-            window, list.data(), chunks.size(), 2, VTK_TYPE_UINT32, GL_RG32UI))
-      {
-        vtkErrorMacro(<< "Could not upload the chunk list: "
-                      << this->ChunkList->GetLastUploadError());
-        return;
-      }
-      this->ChunkList->Activate(program, "tubeChunkList");
-      // In draws of at most DrawChunks chunks, each flushed: a software
-      // rasterizer (Mesa llvmpipe) bins a frame's primitives until a flush,
-      // about 2 kB per chunk; without flushes a million chunks take gigabytes.
-      const GLint perChunk = vtkSplineTubeCore::ChunkSegments * this->SubSegments;
-      for (size_t first = 0; first < chunks.size(); first += DrawChunks)
-      {
-        const size_t count = std::min<size_t>(DrawChunks, chunks.size() - first);
-        glDrawArrays(
-          GL_POINTS, static_cast<GLint>(first) * perChunk, static_cast<GLsizei>(count) * perChunk);
-        if (first + count < chunks.size())
-        {
-          glFinish();
-        }
-      }
-    });
-  this->ChunkList->Deactivate();
-  this->DeactivateTubeBuffers();
+      glFinish();
+    }
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -311,4 +383,6 @@ void vtkRayCastTubeMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RootIterations: " << this->RootIterations << "\n";
   os << indent << "RootSamples: " << this->RootSamples << "\n";
   os << indent << "StraightTolerance: " << this->StraightTolerance << "\n";
+  os << indent << "StraightChunkProgram: " << (this->StraightChunkProgram ? "On" : "Off") << "\n";
+  os << indent << "StraightChunkMargin: " << this->StraightChunkMargin << "\n";
 }

@@ -41,7 +41,9 @@
 #include "SplineVizRenderingModule.h" // for export macro
 #include "vtkSplineTubeMapper.h"
 
-#include <memory> // for std::unique_ptr
+#include <cstdint> // for std::uint32_t
+#include <memory>  // for std::unique_ptr
+#include <vector>  // for std::vector
 
 class SPLINEVIZRENDERING_EXPORT vtkRayCastTubeMapper : public vtkSplineTubeMapper
 {
@@ -90,6 +92,35 @@ public:
   vtkGetMacro(StraightTolerance, double);
   ///@}
 
+  ///@{
+  /**
+   * On (default): per view, the chunks whose segments are all straight there
+   * (StraightTolerance and a quarter pixel, decided on the CPU with a
+   * margin, so that the vertex stage decides the same) are drawn by a second
+   * program whose fragment stage has no root finding; the rest by the full
+   * one. The picture is the same; on a software rasterizer (llvmpipe) the
+   * root-finding code alone, even where no fragment runs it, makes the
+   * fragment stage a fifth slower (docs/performance.md). Off: one program.
+   */
+  vtkSetMacro(StraightChunkProgram, bool);
+  vtkGetMacro(StraightChunkProgram, bool);
+  vtkBooleanMacro(StraightChunkProgram, bool);
+  ///@}
+
+  /**
+   * For tests only: the factor of the thresholds of that per-view choice;
+   * 0.9 (default) leaves a margin for the vertex stage's float arithmetic. A
+   * large factor sends curved chunks to the straight program (a negative
+   * control: their picture changes).
+   */
+  vtkSetMacro(StraightChunkMargin, double);
+
+  ///@{
+  /// Chunks the last frame drew with the straight program and with the full one.
+  vtkIdType GetLastNumberOfStraightChunks() const { return this->LastStraightChunks; }
+  vtkIdType GetLastNumberOfRootFindingChunks() const { return this->LastRootFindingChunks; }
+  ///@}
+
   size_t GetGPUMemorySize() override;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
@@ -120,6 +151,15 @@ private:
 
   /// The chunks of the group being drawn (first node, count).
   std::unique_ptr<vtkSplineVizGPUBuffer> ChunkList;
+  /// Set while the straight program (no root finding) is built.
+  bool BuildingStraightProgram = false;
+  bool StraightChunkProgram = true;
+  double StraightChunkMargin = 0.9;
+  vtkIdType LastStraightChunks = 0;
+  vtkIdType LastRootFindingChunks = 0;
+  /// Draw `chunks` (upload their list) with `helper`'s program, built first.
+  void DrawChunkList(vtkRenderer* ren, vtkActor* act, vtkOpenGLHelper& helper, bool straight,
+    const std::vector<std::uint32_t>& chunks);
   /// Chunks per draw call (bounds the memory a software rasterizer's geometry stage takes).
   static constexpr size_t DrawChunks = 16384;
 };

@@ -99,6 +99,38 @@ void SegmentBox(
   }
 }
 
+/// Grow `straightness` (4 values, see GetChunkStraightness()) by segment k's:
+/// the shared math's svSegmentStraightness() and svSubSegmentStraightness()
+/// of its two quadratic sub-segments, as the ray-cast tubes' vertex stage
+/// computes them, and their ratios to the smallest radius they are compared
+/// with there.
+void GrowStraightness(const double* p, const double* m, vtkIdType k, double straightness[4])
+{
+  const double* a = p + 4 * k;
+  const double* b = p + 4 * (k + 1);
+  const double* da = m + 4 * k;
+  const double* db = m + 4 * (k + 1);
+  const vec4 p0(a[0], a[1], a[2], a[3]);
+  const vec4 m0(da[0], da[1], da[2], da[3]);
+  const vec4 p1(b[0], b[1], b[2], b[3]);
+  const vec4 m1(db[0], db[1], db[2], db[3]);
+  auto grow = [](double* pair, double error, double radius)
+  {
+    pair[0] = std::max(pair[0], error);
+    pair[1] = std::max(pair[1], radius > 0.0 ? error / radius : double(VTK_FLOAT_MAX));
+  };
+  double reach = 0.0;
+  grow(straightness, vtkSplineTubeMath::svSegmentStraightness(p0, m0, p1, m1, reach),
+    std::min({ a[3], b[3], a[3] + da[3] / 3.0, b[3] - db[3] / 3.0 }));
+  for (int sub = 0; sub < 2; ++sub)
+  {
+    vec4 q0, q1, q2;
+    vtkSplineTubeMath::svSplitSegment(p0, m0, p1, m1, 2, sub, q0, q1, q2);
+    grow(straightness + 2, vtkSplineTubeMath::svSubSegmentStraightness(q0, q1, q2),
+      std::min({ q0.w, q1.w, q2.w }));
+  }
+}
+
 /// Grow the box `bounds` (xmin, xmax, ymin, ...) to contain `box`.
 void AddBox(double bounds[6], const double box[6])
 {
@@ -454,6 +486,8 @@ vtkSplineTubeCore::vtkSplineTubeCore()
   this->ChunkSizes->SetNumberOfComponents(3);
   this->ChunkSizes->SetName("ChunkSizes");
   this->SegmentSpheres->SetName("SegmentSpheres");
+  this->ChunkStraightness->SetNumberOfComponents(4);
+  this->ChunkStraightness->SetName("ChunkStraightness");
 }
 
 //------------------------------------------------------------------------------
@@ -475,6 +509,7 @@ void vtkSplineTubeCore::Initialize()
   this->ChunkSpheres->SetNumberOfTuples(0);
   this->ChunkSizes->SetNumberOfTuples(0);
   this->SegmentSpheres->SetNumberOfTuples(0);
+  this->ChunkStraightness->SetNumberOfTuples(0);
   vtkMath::UninitializeBounds(this->Bounds);
   vtkMath::UninitializeBounds(this->NodeBounds);
   this->ColorsGiven = false;
@@ -1159,6 +1194,7 @@ void vtkSplineTubeCore::BuildChunks()
   this->ChunkSpheres->SetNumberOfTuples(numChunks);
   this->ChunkSizes->SetNumberOfTuples(numChunks);
   this->SegmentSpheres->SetNumberOfTuples(numSegments);
+  this->ChunkStraightness->SetNumberOfTuples(numChunks);
   vtkMath::UninitializeBounds(this->Bounds);
   if (numChunks == 0)
   {
@@ -1170,6 +1206,7 @@ void vtkSplineTubeCore::BuildChunks()
   float* spheres = this->ChunkSpheres->GetPointer(0);
   float* sizes = this->ChunkSizes->GetPointer(0);
   vtkTypeUInt32* segmentSpheres = this->SegmentSpheres->GetPointer(0);
+  float* straightness = this->ChunkStraightness->GetPointer(0);
 
   // One pass over the tubes (the centre, the spheres' origin, is known from
   // AddPolyData()): per chunk its segments' boxes, from them its box, sizes
@@ -1191,6 +1228,7 @@ void vtkSplineTubeCore::BuildChunks()
         double length = 0.0;
         double maxLength = 0.0;
         double maxRadius = 0.0;
+        double chunkStraightness[4] = { 0.0, 0.0, 0.0, 0.0 };
         const vtkIdType stop = std::min<vtkIdType>(n - 1, k + ChunkSegments);
         const vtkIdType chunkSegments = stop - k;
         for (vtkIdType j = 0; j < chunkSegments; ++j, ++k)
@@ -1207,6 +1245,12 @@ void vtkSplineTubeCore::BuildChunks()
           length += polygon;
           maxLength = std::max(maxLength, polygon);
           maxRadius = std::max(maxRadius, r);
+          GrowStraightness(local.P.data(), local.M.data(), k, chunkStraightness);
+        }
+        for (int q = 0; q < 4; ++q)
+        {
+          straightness[4 * c + q] =
+            static_cast<float>(std::min(chunkStraightness[q], double(VTK_FLOAT_MAX)));
         }
         AddBox(local.B, box.B);
         sizes[3 * c] = static_cast<float>(length);
@@ -1249,8 +1293,9 @@ void vtkSplineTubeCore::BuildChunks()
 void vtkSplineTubeCore::BuildBounds()
 {
   const Internals& in = *this->Internal;
-  for (vtkDataArray* table : std::initializer_list<vtkDataArray*>{ this->TubeFirstChunks,
-         this->ChunkTubes, this->ChunkSpheres, this->ChunkSizes, this->SegmentSpheres })
+  for (vtkDataArray* table :
+    std::initializer_list<vtkDataArray*>{ this->TubeFirstChunks, this->ChunkTubes,
+      this->ChunkSpheres, this->ChunkSizes, this->SegmentSpheres, this->ChunkStraightness })
   {
     table->Initialize();
   }
@@ -1303,7 +1348,8 @@ size_t vtkSplineTubeCore::GetMemorySize() const
     static_cast<size_t>(this->TubeFirstChunks->GetActualMemorySize() +
       this->ChunkFirstSegments->GetActualMemorySize() + this->ChunkTubes->GetActualMemorySize() +
       this->ChunkSpheres->GetActualMemorySize() + this->ChunkSizes->GetActualMemorySize() +
-      this->SegmentSpheres->GetActualMemorySize()) *
+      this->SegmentSpheres->GetActualMemorySize() +
+      this->ChunkStraightness->GetActualMemorySize()) *
     1024;
 }
 

@@ -270,7 +270,13 @@ public:
    * (the length of its segments' Bezier control polygons, the longest such
    * polygon of one of its segments, its largest radius); per tube its first
    * chunk (one more tuple); per segment its sphere relative to its chunk's
-   * (vtkSplineTubeVisibility::EncodePart). Chunks of a tube are consecutive.
+   * (vtkSplineTubeVisibility::EncodePart); per chunk how straight its
+   * segments are, for the ray-cast tubes' choice of a program per view: the
+   * largest svSegmentStraightness() of its segments and the largest ratio of
+   * it to the segment's smallest radius, then the same for the two quadratic
+   * sub-segments of each segment (svSubSegmentStraightness(); ratios
+   * VTK_FLOAT_MAX where a radius is not positive). Chunks of a tube are
+   * consecutive.
    */
   vtkTypeUInt32Array* GetChunkFirstSegments() { return this->ChunkFirstSegments; }
   vtkTypeUInt32Array* GetChunkTubes() { return this->ChunkTubes; }
@@ -278,6 +284,7 @@ public:
   vtkFloatArray* GetChunkSizes() { return this->ChunkSizes; }
   vtkIdTypeArray* GetTubeFirstChunks() { return this->TubeFirstChunks; }
   vtkTypeUInt32Array* GetSegmentSpheres() { return this->SegmentSpheres; }
+  vtkFloatArray* GetChunkStraightness() { return this->ChunkStraightness; }
   ///@}
 
   /**
@@ -342,6 +349,7 @@ protected:
   vtkNew<vtkFloatArray> ChunkSpheres;
   vtkNew<vtkFloatArray> ChunkSizes;
   vtkNew<vtkTypeUInt32Array> SegmentSpheres;
+  vtkNew<vtkFloatArray> ChunkStraightness;
   double Bounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 };
   double NodeBounds[6] = { 1.0, -1.0, 1.0, -1.0, 1.0, -1.0 }; ///< of the tubes' nodes
 

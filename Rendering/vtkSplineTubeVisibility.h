@@ -142,6 +142,9 @@ public:
   vtkIdType GetNumberOfChunksHidden() const { return this->Hidden; }
   ///@}
 
+  /// The largest stretch of the frame's View::ModelView (set by BeginFrame()).
+  double GetViewScale() const { return this->Scale; }
+
   /**
    * For tests only: window depth added to every chunk's nearest depth before
    * the occlusion test. 0 (default) is exact; a positive bias hides visible
@@ -178,7 +181,7 @@ private:
   /// time); no per-chunk projection outlives BeginFrame().
   std::vector<Projected> OrderedProjection;
   std::vector<vtkIdType> GroupStarts;
-  std::vector<unsigned char> Visible; ///< per chunk: visible at the end of the last frame
+  std::vector<unsigned char> Visible;        ///< per chunk: visible at the end of the last frame
   std::vector<std::uint32_t> DrawnPositions; ///< positions in Order of the drawn chunks
   vtkIdType Drawn = 0;
   vtkIdType Hidden = 0;

@@ -67,9 +67,16 @@ bool tubeRayCast(vec3 fragmentVC, out vec3 hitVC, out vec3 normalVC, out float t
   }
   else
   {
+#ifdef SV_STRAIGHT_CHUNKS
+    // (the mapper draws here only chunks whose segments the vertex stage
+    // finds straight, with a margin: never reached; the chord's cone if it were)
+    hit = svIntersectRoundCone(origin, dir, tubeQ0VSOutput, tubeQ2VSOutput);
+    center = mix(tubeQ0VSOutput, tubeQ2VSOutput, hit.l);
+#else
     hit = svIntersectSubSegment(origin, dir, tubeQ0VSOutput, tubeQ1VSOutput, tubeQ2VSOutput,
       rootIterations, rootSamples);
     center = svQuadratic(tubeQ0VSOutput, tubeQ1VSOutput, tubeQ2VSOutput, hit.l);
+#endif
   }
   if (!hit.hit)
   {
