@@ -113,13 +113,6 @@ void vtkRayCastTubeMapper::ReplaceShaderValues(
     // The chunks every segment of which is straight: no root finding.
     declarations = "#define SV_STRAIGHT_CHUNKS\n" + declarations;
   }
-  if (getenv("XNOROOT"))
-  {
-    vtkShaderProgram::Substitute(declarations,
-      "hit = svIntersectSubSegment(origin, dir, tubeQ0VSOutput, tubeQ1VSOutput, tubeQ2VSOutput,\n  "
-      "    rootIterations, rootSamples);",
-      "hit = svIntersectRoundCone(origin, dir, tubeQ0VSOutput, tubeQ2VSOutput);");
-  }
   vtkShaderProgram::Substitute(declarations, "//SV::SplineTubeMath::Dec", math);
   const int colorMode = this->GetTubeColorMode();
   if (colorMode == 2)
