@@ -308,6 +308,53 @@ inline CoverageDifference CompareCoverage(const Frame& a, const Frame& b, int to
   return d;
 }
 
+/// Pixel-for-pixel comparison of two frames of the same scene drawn two
+/// ways (an optimization on and off): covered pixels (depth < 1 or a color
+/// away from `background`, 0-255, in either), pixels whose color differs by
+/// more than 2 in a channel, pixels whose window depth differs by more than
+/// 1e-5.
+struct PixelDifference
+{
+  long Covered = 0;
+  long Color = 0;
+  long Depth = 0;
+};
+
+inline PixelDifference ComparePixels(const Frame& a, const Frame& b, const int background[3])
+{
+  PixelDifference d;
+  for (int i = 0; i < a.Width * a.Height; ++i)
+  {
+    // (translucent geometry writes no depth, so its color counts too)
+    bool covered = a.Depth[i] < 1.0f || b.Depth[i] < 1.0f;
+    int worst = 0;
+    for (int c = 0; c < 3; ++c)
+    {
+      covered = covered || std::abs(int(a.RGB[3 * i + c]) - background[c]) > 3 ||
+        std::abs(int(b.RGB[3 * i + c]) - background[c]) > 3;
+      worst = std::max(worst, std::abs(int(a.RGB[3 * i + c]) - int(b.RGB[3 * i + c])));
+    }
+    d.Covered += covered ? 1 : 0;
+    d.Color += worst > 2 ? 1 : 0;
+    d.Depth += std::abs(a.Depth[i] - b.Depth[i]) > 1e-5f ? 1 : 0;
+  }
+  return d;
+}
+
+/// The camera on an orbit around the origin at `distance` (30 degree view
+/// angle, parallel scale 20 when `parallel`), clipping range reset.
+inline void SetOrbitView(vtkRenderer* renderer, int parallel, double distance)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(0.35 * distance, 0.25 * distance, distance);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(30);
+  camera->SetParallelProjection(parallel);
+  camera->SetParallelScale(20.0);
+  renderer->ResetCameraClippingRange();
+}
+
 /// View-space distance along -z of a window depth, for the camera's
 /// (fixed) clipping range.
 inline double ViewDepth(double windowDepth, vtkCamera* camera)

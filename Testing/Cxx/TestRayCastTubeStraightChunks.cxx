@@ -19,7 +19,6 @@
 #include "SplineVizTestUtilities.h"
 
 #include "vtkAppendPolyData.h"
-#include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkLookupTable.h"
 #include "vtkPointData.h"
@@ -34,63 +33,34 @@ using namespace SplineVizTest;
 namespace
 {
 const double BackgroundColor[3] = { 0.1, 0.1, 0.12 };
+const int Background[3] = { 26, 26, 31 }; // 255 * BackgroundColor, rounded
 
-struct Difference
-{
-  long Covered = 0;
-  long Color = 0; ///< pixels with a channel differing by more than 2
-  long Depth = 0; ///< pixels whose window depth differs by more than 1e-5
-};
-
-Difference Compare(const Frame& a, const Frame& b)
-{
-  Difference d;
-  const int background[3] = { 26, 26, 31 }; // 255 * BackgroundColor, rounded
-  for (int i = 0; i < a.Width * a.Height; ++i)
-  {
-    bool covered = a.Depth[i] < 1.0f || b.Depth[i] < 1.0f;
-    int worst = 0;
-    for (int c = 0; c < 3; ++c)
-    {
-      covered = covered || std::abs(int(a.RGB[3 * i + c]) - background[c]) > 3 ||
-        std::abs(int(b.RGB[3 * i + c]) - background[c]) > 3;
-      worst = std::max(worst, std::abs(int(a.RGB[3 * i + c]) - int(b.RGB[3 * i + c])));
-    }
-    d.Covered += covered ? 1 : 0;
-    d.Color += worst > 2 ? 1 : 0;
-    d.Depth += std::abs(a.Depth[i] - b.Depth[i]) > 1e-5f ? 1 : 0;
-  }
-  return d;
-}
-
-/// Curls: coarse helices (12 points a turn) whose segments bend far more
-/// than StraightTolerance allows, with a scalar along them.
+/// Coarse helices (12 points a turn) whose segments bend far more than
+/// StraightTolerance allows, with a scalar (FA, as the tractogram's) along them.
 vtkSmartPointer<vtkPolyData> CurledLines()
 {
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> lines;
-  vtkNew<vtkDoubleArray> scalars;
-  scalars->SetName("scalar");
+  std::vector<std::vector<Vec4>> curves;
   for (int curl = 0; curl < 6; ++curl)
   {
-    const double cx = -10.0 + 4.0 * curl;
-    const vtkIdType first = points->GetNumberOfPoints();
-    const int n = 40;
-    for (int i = 0; i < n; ++i)
+    std::vector<Vec4> curve;
+    for (int i = 0; i < 40; ++i)
     {
       const double angle = 2.0 * M_PI * i / 12.0;
-      points->InsertNextPoint(cx + 1.5 * std::cos(angle), -8.0 + 0.45 * i, 1.5 * std::sin(angle));
-      scalars->InsertNextValue(0.2 + 0.7 * i / (n - 1.0));
+      curve.push_back({ -10.0 + 4.0 * curl + 1.5 * std::cos(angle), -8.0 + 0.45 * i,
+        1.5 * std::sin(angle), 0.25 });
     }
-    lines->InsertNextCell(n);
-    for (int i = 0; i < n; ++i)
+    curves.push_back(curve);
+  }
+  vtkSmartPointer<vtkPolyData> curls = MakePolylines(curves);
+  vtkNew<vtkDoubleArray> scalars;
+  scalars->SetName("FA");
+  for (const auto& curve : curves)
+  {
+    for (size_t i = 0; i < curve.size(); ++i)
     {
-      lines->InsertCellPoint(first + i);
+      scalars->InsertNextValue(0.2 + 0.7 * i / (curve.size() - 1.0));
     }
   }
-  auto curls = vtkSmartPointer<vtkPolyData>::New();
-  curls->SetPoints(points);
-  curls->SetLines(lines);
   curls->GetPointData()->SetScalars(scalars);
   return curls;
 }
@@ -131,17 +101,7 @@ int TestRayCastTubeStraightChunks(int, char*[])
   window->SetSize(400, 320);
   window->SetMultiSamples(0);
   window->AddRenderer(renderer);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  auto view = [&](int parallel, double distance)
-  {
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    camera->SetPosition(0.35 * distance, 0.25 * distance, distance);
-    camera->SetViewUp(0, 1, 0);
-    camera->SetViewAngle(30);
-    camera->SetParallelProjection(parallel);
-    camera->SetParallelScale(20.0);
-    renderer->ResetCameraClippingRange();
-  };
+  auto view = [&](int parallel, double distance) { SetOrbitView(renderer, parallel, distance); };
 
   // One program, then two; the frame with two must be the one-program frame.
   auto compare = [&](const std::string& what, bool bothUsed)
@@ -154,7 +114,7 @@ int TestRayCastTubeStraightChunks(int, char*[])
     const Frame two = Grab(window);
     const vtkIdType straight = mapper->GetLastNumberOfStraightChunks();
     const vtkIdType full = mapper->GetLastNumberOfRootFindingChunks();
-    const Difference d = Compare(one, two);
+    const PixelDifference d = ComparePixels(one, two, Background);
     std::cout << what << ": " << straight << " chunks straight, " << full
               << " with root finding; covered " << d.Covered << " px, color differs on " << d.Color
               << ", depth on " << d.Depth << std::endl;
@@ -187,7 +147,7 @@ int TestRayCastTubeStraightChunks(int, char*[])
   mapper->SetStraightChunkMargin(10.0);
   const Frame wrong = Grab(window);
   mapper->SetStraightChunkMargin(0.9);
-  const Difference d = Compare(reference, wrong);
+  const PixelDifference d = ComparePixels(reference, wrong, Background);
   std::cout << "negative control (margin 10): " << mapper->GetLastNumberOfRootFindingChunks()
             << " chunks with root finding; color differs on " << d.Color << " px, depth on "
             << d.Depth << std::endl;

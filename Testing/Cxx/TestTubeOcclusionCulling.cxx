@@ -45,36 +45,7 @@ namespace
 const double BackgroundColor[3] = { 0.1, 0.1, 0.12 };
 const int Background[3] = { 26, 26, 31 }; // 255 * BackgroundColor, rounded
 
-struct Difference
-{
-  long Covered = 0;
-  long Color = 0; ///< pixels with a channel differing by more than 2
-  long Depth = 0; ///< pixels whose window depth differs by more than 1e-5
-};
-
-Difference Compare(const Frame& a, const Frame& b)
-{
-  Difference d;
-  for (int i = 0; i < a.Width * a.Height; ++i)
-  {
-    // Covered: something in front of the background (translucent geometry
-    // writes no depth, so its color counts too).
-    bool covered = a.Depth[i] < 1.0f || b.Depth[i] < 1.0f;
-    int worst = 0;
-    for (int c = 0; c < 3; ++c)
-    {
-      covered = covered || std::abs(int(a.RGB[3 * i + c]) - Background[c]) > 3 ||
-        std::abs(int(b.RGB[3 * i + c]) - Background[c]) > 3;
-      worst = std::max(worst, std::abs(int(a.RGB[3 * i + c]) - int(b.RGB[3 * i + c])));
-    }
-    d.Covered += covered ? 1 : 0;
-    d.Color += worst > 2 ? 1 : 0;
-    d.Depth += std::abs(a.Depth[i] - b.Depth[i]) > 1e-5f ? 1 : 0;
-  }
-  return d;
-}
-
-void Report(const std::string& what, const Difference& d)
+void Report(const std::string& what, const PixelDifference& d)
 {
   std::cout << what << ": covered " << d.Covered << " px, color differs on " << d.Color
             << ", depth on " << d.Depth << std::endl;
@@ -138,7 +109,6 @@ void TestMapper(SplineVizTestStatus& status, const std::string& name, vtkSplineT
   window->SetSize(width, height);
   window->SetMultiSamples(0);
   window->AddRenderer(renderer);
-  vtkCamera* camera = renderer->GetActiveCamera();
 
   // Culling off, then on twice (the first frame after the off one has no
   // visible chunks to start from; the second has).
@@ -160,7 +130,7 @@ void TestMapper(SplineVizTestStatus& status, const std::string& name, vtkSplineT
       // (the first frame may draw all: small views hold a single group)
       SV_CHECK_MSG(status, culled ? (hidden > 0 || pass == 0) : hidden == 0,
         what << ": " << hidden << " chunks hidden (expected " << (culled ? "some" : "none") << ")");
-      const Difference d = Compare(on, off);
+      const PixelDifference d = ComparePixels(on, off, Background);
       Report(what + ", culling on vs off", d);
       SV_CHECK_MSG(status, d.Covered > 5000, what << ": too little covered: " << d.Covered);
       // Equal up to rounding ties: at most 0.02 % of the covered pixels.
@@ -171,16 +141,7 @@ void TestMapper(SplineVizTestStatus& status, const std::string& name, vtkSplineT
     }
     return off;
   };
-  auto view = [&](int parallel, double distance)
-  {
-    camera->SetFocalPoint(0.0, 0.0, 0.0);
-    camera->SetPosition(0.35 * distance, 0.25 * distance, distance);
-    camera->SetViewUp(0, 1, 0);
-    camera->SetViewAngle(30);
-    camera->SetParallelProjection(parallel);
-    camera->SetParallelScale(20.0);
-    renderer->ResetCameraClippingRange();
-  };
+  auto view = [&](int parallel, double distance) { SetOrbitView(renderer, parallel, distance); };
 
   // The whole tractogram in perspective: culling must drop a good share of
   // the chunks there (a fifth of them at this small size: lines a pixel or
@@ -196,7 +157,7 @@ void TestMapper(SplineVizTestStatus& status, const std::string& name, vtkSplineT
   Grab(window);
   const Frame biased = Grab(window);
   mapper->SetOcclusionCullingDepthBias(0.0);
-  const Difference wrong = Compare(biased, reference);
+  const PixelDifference wrong = ComparePixels(biased, reference, Background);
   Report("negative control: depth bias 0.05", wrong);
   SV_CHECK_MSG(status, wrong.Color > wrong.Covered / 1000,
     "the comparison cannot tell visible chunks culled: " << wrong.Color << " pixels differ");
